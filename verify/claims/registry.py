@@ -1,0 +1,134 @@
+"""The claim registry and its runner.
+
+Checks register themselves with the :meth:`ClaimRegistry.claim` decorator; modules of
+checks are listed in :mod:`verify.claims.catalog`. The runner never lets a crashing check
+pass: an exception becomes an INCONCLUSIVE outcome that names the error.
+"""
+
+from __future__ import annotations
+
+import time
+import traceback
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+from verify.claims.model import (
+    CheckContext,
+    CheckFunction,
+    Claim,
+    ClaimResult,
+    Evidence,
+    EvidenceKind,
+    Outcome,
+    Verdict,
+)
+
+
+class ClaimRegistry:
+    """An ordered collection of claims with unique ids."""
+
+    def __init__(self) -> None:
+        self._claims: dict[str, Claim] = {}
+
+    def claim(
+        self,
+        *,
+        id: str,
+        section: str,
+        paper_ref: str,
+        paper_says: str,
+        statement: str,
+        method: str,
+        scope: str,
+    ) -> Callable[[CheckFunction], CheckFunction]:
+        """Decorator registering a check function under a claim id."""
+
+        def register(check: CheckFunction) -> CheckFunction:
+            if id in self._claims:
+                raise ValueError(f"claim id registered twice: {id}")
+            self._claims[id] = Claim(
+                id=id,
+                section=section,
+                paper_ref=paper_ref,
+                paper_says=paper_says,
+                statement=statement,
+                method=method,
+                scope=scope,
+                check=check,
+            )
+            return check
+
+        return register
+
+    def __iter__(self):
+        return iter(self._claims.values())
+
+    def __len__(self) -> int:
+        return len(self._claims)
+
+    def get(self, claim_id: str) -> Claim:
+        return self._claims[claim_id]
+
+    def ids(self) -> list[str]:
+        return list(self._claims)
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """All claim results of one run, in registry order."""
+
+    results: tuple[ClaimResult, ...]
+    seconds: float
+    seed: int
+
+    def counts(self) -> dict[str, int]:
+        out = {v.value: 0 for v in Verdict}
+        for r in self.results:
+            out[r.outcome.verdict.value] += 1
+        return out
+
+    def all_verified(self) -> bool:
+        return all(r.outcome.verdict is Verdict.VERIFIED for r in self.results)
+
+
+def run_claim(claim: Claim, context: CheckContext) -> ClaimResult:
+    """Run one check; a crash yields INCONCLUSIVE with the error as evidence."""
+    start = time.perf_counter()
+    try:
+        outcome = claim.check(context)
+        if not isinstance(outcome, Outcome):
+            raise TypeError(f"check returned {type(outcome).__name__}, not Outcome")
+    except Exception as exc:  # a broken check must never count as a pass
+        outcome = Outcome(
+            verdict=Verdict.INCONCLUSIVE,
+            finding=f"The check itself failed ({type(exc).__name__}: {exc}); no verdict.",
+            evidence=(
+                Evidence(
+                    EvidenceKind.NUMERICAL,
+                    "traceback of the failed check",
+                    {"traceback": traceback.format_exc(limit=5)},
+                    passed=False,
+                ),
+            ),
+        )
+    return ClaimResult(claim, outcome, time.perf_counter() - start)
+
+
+def run_claims(
+    claims: Iterable[Claim],
+    context: CheckContext,
+    progress: Callable[[ClaimResult], None] | None = None,
+) -> RunResult:
+    """Run the given claims in order and collect their results."""
+    start = time.perf_counter()
+    results = []
+    for claim in claims:
+        result = run_claim(claim, context)
+        results.append(result)
+        if progress is not None:
+            progress(result)
+    return RunResult(tuple(results), time.perf_counter() - start, context.seed)
+
+
+#: The registry of the paper's claims; populated by importing :mod:`verify.claims.catalog`.
+REGISTRY = ClaimRegistry()

@@ -1,0 +1,195 @@
+"""The ``verify`` command.
+
+Exit codes: 0 the run completed (and, with ``--strict`` or for gates, everything passed);
+1 some check failed or a claim is not verified under ``--strict``; 2 bad input, printed
+as one line on stderr; 3 an internal error of the tool (a bug; VERIFY_DEBUG=1 shows it).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from verify import __version__
+from verify.errors import VerifyInputError
+
+PLANNED = {
+    "check": (
+        "check a derivation file of your own, step by step (Lemma 1 / Theorem 1 proof checker)",
+        "issue 3",
+    ),
+    "gate": ("passivity gate for human models H(s) with exact KYP certificates", "issue 4"),
+    "certificates": ("re-check stored certificates with no solver", "issue 4"),
+    "simulate": ("reference closed-loop simulator with plots", "issue 5"),
+}
+
+
+def _build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="verify",
+        description="Machine checks of the claims of the SO(3) passivity paper: exact "
+        "symbolic proofs, passivity certificates and property-based simulation.",
+    )
+    parser.add_argument("--version", action="version", version=f"verify {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+
+    p_all = sub.add_parser("all", help="run every registered claim check and write reports/")
+    p_all.add_argument(
+        "--out", type=Path, default=Path("reports"), help="report directory (default: reports)"
+    )
+    p_all.add_argument(
+        "--strict", action="store_true", help="exit 1 unless every claim is 'verified'"
+    )
+    p_all.add_argument(
+        "--quick", action="store_true", help="fewer random samples in the numerical cross-checks"
+    )
+    p_all.add_argument("--seed", type=int, default=20261121, help="seed of the random samples")
+    p_all.add_argument(
+        "--only",
+        metavar="PREFIX",
+        action="append",
+        default=[],
+        help="run only claims whose id starts with PREFIX (repeatable)",
+    )
+
+    sub.add_parser("list", help="list the registered claims")
+
+    p_net = sub.add_parser("network", help="check the stealthy projector on network files")
+    p_net.add_argument(
+        "files",
+        nargs="+",
+        type=Path,
+        metavar="FILE",
+        help="TOML file with 'quaternions' or 'rotations'",
+    )
+    p_net.add_argument(
+        "--project",
+        action="store_true",
+        help="project rotation matrices onto SO(3) instead of rejecting them",
+    )
+    p_net.add_argument(
+        "--tolerance",
+        type=float,
+        default=1e-9,
+        help="max |R^T R - I| accepted as a rotation (default 1e-9)",
+    )
+
+    for name, (text, issue) in PLANNED.items():
+        p = sub.add_parser(name, help=f"{text} [not yet available: {issue}]")
+        p.add_argument("args", nargs=argparse.REMAINDER)
+    return parser
+
+
+def _cmd_all(args: argparse.Namespace) -> int:
+    from verify.claims.catalog import REGISTRY
+    from verify.claims.model import CheckContext
+    from verify.claims.registry import run_claims
+    from verify.report import write_report
+    from verify.report.render import VERDICT_MARK
+
+    claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
+    if not claims:
+        raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
+    context = CheckContext(seed=args.seed, quick=args.quick, out_dir=args.out)
+    width = max(len(c.id) for c in claims)
+
+    def progress(result) -> None:
+        mark = VERDICT_MARK[result.outcome.verdict]
+        print(f"  {result.claim.id:<{width}}  {mark:<22} {result.seconds:6.2f} s", flush=True)
+
+    print(f"verify all: {len(claims)} claims (seed {args.seed})")
+    run = run_claims(claims, context, progress=progress)
+    paths = write_report(run, args.out)
+    counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
+    print(f"{counts}; {run.seconds:.1f} s")
+    print("reports: " + ", ".join(str(p) for p in paths))
+    if args.strict and not run.all_verified():
+        print("--strict: some claims are not 'verified'", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _cmd_list(_: argparse.Namespace) -> int:
+    from verify.claims.catalog import REGISTRY
+
+    for c in REGISTRY:
+        print(f"{c.id:<26} {c.paper_ref}")
+    return 0
+
+
+def _cmd_network(args: argparse.Namespace) -> int:
+    import numpy as np
+
+    from verify.network_file import load_network
+    from verify.system.diagnostics import diagnose
+
+    # validate every file before printing results, so bad input fails fast and whole
+    networks = [load_network(f, project=args.project, tolerance=args.tolerance) for f in args.files]
+    status = 0
+    for path, net in zip(args.files, networks, strict=True):
+        d = diagnose(net.attitudes)
+        sv = ", ".join(f"{v:.3g}" for v in d.singular_values)
+        print(f"{path}: {net.name} (n = {d.n})")
+        if net.projected_by:
+            print(f"  projected onto SO(3): entries moved by up to {net.projected_by:.3g}")
+        print(f"  |sum d_i| = {d.abs_sum:.6g}, dbar = {np.array2string(d.dbar, precision=6)}")
+        print(
+            f"  singular values of W: {sv} -> rank 2; W^T W is singular, the paper's "
+            "(W^T W)^-1 is undefined, the pseudo-inverse is used"
+        )
+        print(
+            f"  condition number of W on its range: {d.kappa:.3g}; rounding bound "
+            f"{d.rounding_bound:.2g}"
+        )
+        dense = (
+            "skipped (n > 2000)"
+            if d.dense_vs_structured is None
+            else f"{d.dense_vs_structured:.2g}"
+        )
+        print(
+            f"  |J S A x|: {d.stealth_residual:.2g}, |A A x - A x|: "
+            f"{d.idempotence_residual:.2g}, dense vs structured: {dense}"
+        )
+        print(f"  {'ok' if d.ok else 'FAILED: a residual exceeds the rounding bound'}")
+        status = max(status, 0 if d.ok else 1)
+    return status
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = _build_parser()
+    args = parser.parse_args(argv)
+    if args.command is None:
+        parser.print_help()
+        return 2
+    if args.command in PLANNED:
+        text, issue = PLANNED[args.command]
+        print(
+            f"verify {args.command}: not yet available ({text}; planned in {issue})",
+            file=sys.stderr,
+        )
+        return 2
+    handlers = {"all": _cmd_all, "list": _cmd_list, "network": _cmd_network}
+    try:
+        return handlers[args.command](args)
+    except VerifyInputError as exc:
+        print(f"verify: error: {exc}", file=sys.stderr)
+        return 2
+    except Exception as exc:  # a bug of ours: one line, the traceback on request
+        if os.environ.get("VERIFY_DEBUG"):
+            raise
+        print(
+            f"verify: internal error: {type(exc).__name__}: {exc} "
+            "(set VERIFY_DEBUG=1 for the traceback)",
+            file=sys.stderr,
+        )
+        return 3
+    except KeyboardInterrupt:
+        print("verify: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

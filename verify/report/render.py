@@ -1,0 +1,204 @@
+"""Render a :class:`~verify.claims.registry.RunResult` as Markdown, HTML and JSON.
+
+The three renderings come from the same data: the claim registry's results. The text
+says, per claim, what the paper writes, what was checked, the verdict, the finding in
+plain words, the repair where one is needed, and the evidence.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import platform
+from datetime import UTC, datetime
+from importlib import metadata
+from itertools import groupby
+from typing import Any
+
+from verify import __version__
+from verify.claims.model import ClaimResult, Verdict
+from verify.claims.registry import RunResult
+
+REPORT_SCHEMA = "verify-report/1"
+
+VERDICT_MARK = {
+    Verdict.VERIFIED: "verified",
+    Verdict.REPAIRED: "verified with repair",
+    Verdict.REFUTED: "REFUTED",
+    Verdict.ASSUMPTION: "assumption",
+    Verdict.INCONCLUSIVE: "INCONCLUSIVE",
+}
+
+VERDICT_MEANING = {
+    Verdict.VERIFIED: "the statement holds, by exact arithmetic or an exactly re-checked "
+    "certificate; numerical falsification found nothing",
+    Verdict.REPAIRED: "the statement as written fails or is undefined; the stated repair "
+    "holds exactly",
+    Verdict.REFUTED: "the statement is false; an exactly checked witness is given",
+    Verdict.ASSUMPTION: "an assumption the argument needs (stated or implicit); not checkable",
+    Verdict.INCONCLUSIVE: "no verdict could be reached; the evidence says why",
+}
+
+
+def _versions() -> dict[str, str]:
+    out = {"python": platform.python_version(), "verify": __version__}
+    for pkg in ("numpy", "scipy", "sympy", "casadi", "cvxpy", "clarabel", "hypothesis"):
+        try:
+            out[pkg] = metadata.version(pkg)
+        except metadata.PackageNotFoundError:
+            out[pkg] = "not installed"
+    return out
+
+
+def report_data(run: RunResult, generated: datetime | None = None) -> dict[str, Any]:
+    """The JSON document of a run (schema ``verify-report/1``)."""
+    when = generated or datetime.now(UTC)
+    return {
+        "schema": REPORT_SCHEMA,
+        "generated": when.isoformat(timespec="seconds"),
+        "seed": run.seed,
+        "seconds": round(run.seconds, 3),
+        "environment": _versions(),
+        "counts": run.counts(),
+        "claims": [r.to_json() for r in run.results],
+    }
+
+
+def render_json(run: RunResult, generated: datetime | None = None) -> str:
+    return json.dumps(report_data(run, generated), indent=2, sort_keys=False) + "\n"
+
+
+def _md_escape(text: str) -> str:
+    return text.replace("|", "\\|").replace("\n", " ")
+
+
+def _sections(run: RunResult):
+    return groupby(run.results, key=lambda r: r.claim.section)
+
+
+def _evidence_line(e) -> str:
+    status = "pass" if e.passed else "FAIL"
+    path = f" (`{e.path}`)" if e.path else ""
+    return f"- [{e.kind.value}, {status}] {e.summary}{path}"
+
+
+def render_markdown(run: RunResult, generated: datetime | None = None) -> str:
+    data = report_data(run, generated)
+    lines = [
+        "# Verification report",
+        "",
+        "Machine checks of *Passivity-based Semi-autonomous Rotational Motion Navigation for "
+        "Rigid-body Networks* (the paper in `shared/paper/paper.tex`). Generated "
+        f"{data['generated']} by `verify all` (seed {run.seed}, {run.seconds:.1f} s).",
+        "",
+        "## Summary",
+        "",
+        "| claim | paper | verdict | seconds |",
+        "|---|---|---|---|",
+    ]
+    for r in run.results:
+        lines.append(
+            f"| [`{r.claim.id}`](#{r.claim.id.replace('.', '')}) | {_md_escape(r.claim.paper_ref)}"
+            f" | **{VERDICT_MARK[r.outcome.verdict]}** | {r.seconds:.2f} |"
+        )
+    counts = ", ".join(f"{v} {k}" for k, v in data["counts"].items() if v)
+    lines += ["", f"Totals: {counts}.", "", "Verdicts mean:", ""]
+    lines += [f"- **{VERDICT_MARK[v]}**: {m}." for v, m in VERDICT_MEANING.items()]
+    for section, results in _sections(run):
+        lines += ["", f"## Section {section}", ""]
+        for r in results:
+            lines += _claim_markdown(r)
+    lines += ["", "## Environment", ""]
+    lines += [f"- {k}: {v}" for k, v in data["environment"].items()]
+    return "\n".join(lines) + "\n"
+
+
+def _claim_markdown(r: ClaimResult) -> list[str]:
+    c, o = r.claim, r.outcome
+    out = [
+        f"### `{c.id}` — {VERDICT_MARK[o.verdict]}",
+        "",
+        f"- **Paper** ({c.paper_ref}): {c.paper_says}",
+        f"- **Checked**: {c.statement}",
+        f"- **How**: {c.method}",
+        f"- **Scope**: {c.scope}",
+        f"- **Finding**: {o.finding}",
+    ]
+    if o.repaired_statement:
+        out.append(f"- **Repaired statement**: {o.repaired_statement}")
+    out += ["- **Evidence**:", ""]
+    out += ["  " + _evidence_line(e) for e in o.evidence]
+    out.append("")
+    return out
+
+
+_CSS = """
+body{font-family:system-ui,sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;
+line-height:1.45;color:#222}
+table{border-collapse:collapse;width:100%}td,th{border:1px solid #ccc;padding:4px 8px;
+text-align:left;vertical-align:top}th{background:#f3f3f3}
+.verified{color:#176a1e;font-weight:bold}.verified-with-repair{color:#8a5a00;font-weight:bold}
+.refuted{color:#b00020;font-weight:bold}.assumption{color:#555;font-weight:bold}
+.inconclusive{color:#b00020;font-weight:bold}.claim{border-top:1px solid #ddd;padding-top:.5em}
+.fail{color:#b00020}code{background:#f6f6f6;padding:0 3px}details{margin:.3em 0}
+"""
+
+
+def render_html(run: RunResult, generated: datetime | None = None) -> str:
+    esc = html.escape
+    data = report_data(run, generated)
+    rows = "".join(
+        f"<tr><td><a href='#{esc(r.claim.id)}'><code>{esc(r.claim.id)}</code></a></td>"
+        f"<td>{esc(r.claim.paper_ref)}</td><td class='{r.outcome.verdict.value}'>"
+        f"{esc(VERDICT_MARK[r.outcome.verdict])}</td><td>{r.seconds:.2f}</td></tr>"
+        for r in run.results
+    )
+    parts = [
+        "<!doctype html><html lang='en'><head><meta charset='utf-8'>",
+        "<title>Verification report</title>",
+        f"<style>{_CSS}</style></head><body>",
+        "<h1>Verification report</h1>",
+        f"<p>Generated {esc(data['generated'])} by <code>verify all</code> "
+        f"(seed {run.seed}, {run.seconds:.1f} s).</p>",
+        "<h2>Summary</h2><table><tr><th>claim</th><th>paper</th><th>verdict</th>"
+        f"<th>seconds</th></tr>{rows}</table>",
+        "<ul>"
+        + "".join(
+            f"<li><span class='{v.value}'>{esc(VERDICT_MARK[v])}</span>: {esc(m)}</li>"
+            for v, m in VERDICT_MEANING.items()
+        )
+        + "</ul>",
+    ]
+    for section, results in _sections(run):
+        parts.append(f"<h2>Section {esc(section)}</h2>")
+        for r in results:
+            c, o = r.claim, r.outcome
+            ev = "".join(
+                f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
+                f"{'pass' if e.passed else 'FAIL'}] {esc(e.summary)}"
+                + (
+                    f"<details><summary>data</summary><pre>"
+                    f"{esc(json.dumps(e.to_json()['data'], indent=1))}</pre></details>"
+                    if e.data
+                    else ""
+                )
+                + "</li>"
+                for e in o.evidence
+            )
+            repair = (
+                f"<dt>Repaired statement</dt><dd>{esc(o.repaired_statement)}</dd>"
+                if o.repaired_statement
+                else ""
+            )
+            parts.append(
+                f"<div class='claim' id='{esc(c.id)}'><h3><code>{esc(c.id)}</code> — "
+                f"<span class='{o.verdict.value}'>{esc(VERDICT_MARK[o.verdict])}</span></h3>"
+                f"<dl><dt>Paper ({esc(c.paper_ref)})</dt><dd>{esc(c.paper_says)}</dd>"
+                f"<dt>Checked</dt><dd>{esc(c.statement)}</dd>"
+                f"<dt>How</dt><dd>{esc(c.method)}</dd><dt>Scope</dt><dd>{esc(c.scope)}</dd>"
+                f"<dt>Finding</dt><dd>{esc(o.finding)}</dd>{repair}"
+                f"<dt>Evidence</dt><dd><ul>{ev}</ul></dd></dl></div>"
+            )
+    env = "".join(f"<li>{esc(k)}: {esc(v)}</li>" for k, v in data["environment"].items())
+    parts.append(f"<h2>Environment</h2><ul>{env}</ul></body></html>")
+    return "\n".join(parts) + "\n"

@@ -1,0 +1,174 @@
+"""Section 2 of the paper: the collective direction d, S(d), dbar, its Jacobian, W(d), A(d).
+
+Notation (paper, Section 2): R_i in SO(3) are the body attitudes, d_i = R_i e3,
+s = sum_i d_i and dbar = s / |s|. Facts used below (each is a registered claim in
+:mod:`verify.claims.section2`, checked exactly):
+
+* the block S_i = -R_i hat(e3), so d_i' = S_i omega_i;
+* d dbar / d d_i = P / |s| with P = I - dbar dbar^T, the same block for every i;
+* W = ((d dbar / d d) S)^T has blocks W_i = hat(e3) R_i^T P / |s|, hence W dbar = 0:
+  W^T W is singular for every network, so the paper's (W^T W)^{-1} does not exist;
+* W has rank exactly 2 whenever dbar is defined; the repaired projector is
+  A = I - W W^+ (Moore-Penrose), equal to I - W M^{-1} W^T with M = W^T W + c dbar dbar^T
+  for any c > 0.
+
+S and A depend on the attitudes R_i, not on d alone (a yaw of body i about d_i turns
+block i by a body-frame rotation), so the functions here take the attitudes.
+
+Two ways to apply A: :func:`projector_dense` builds the 3n x 3n matrix from an SVD of W
+(the reference) and :func:`apply_projector` applies it in O(n) through the 3 x 3 Gram
+matrix of W.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from verify.errors import DbarUndefinedError, VerifyInputError
+from verify.so3 import E3, Array, check_rotations, hat, transpose
+
+#: |sum d_i| must exceed ``DBAR_RELATIVE_TOLERANCE * n`` for dbar to count as defined.
+DBAR_RELATIVE_TOLERANCE = 1e-9
+
+_HAT_E3 = hat(E3)
+
+
+def directions(R: ArrayLike) -> Array:
+    """The pointing directions d_i = R_i e3 (shape (n, 3)), paper Section 2."""
+    return np.asarray(R, dtype=float)[..., :, 2]
+
+
+def as_network(R: ArrayLike, *, check: bool = True) -> Array:
+    """Attitudes of a network as an (n, 3, 3) array, checked to lie in SO(3)."""
+    arr = check_rotations(R, name="body attitude") if check else np.asarray(R, dtype=float)
+    if arr.ndim != 3:
+        raise VerifyInputError(f"a network is an (n, 3, 3) array of attitudes, got {arr.shape}")
+    if arr.shape[0] == 0:
+        raise VerifyInputError("a network needs at least one body (n >= 1)")
+    return arr
+
+
+def s_blocks(R: ArrayLike) -> Array:
+    """Diagonal blocks S_i = -R_i hat(e3) of S(d) (shape (n, 3, 3))."""
+    return -np.asarray(R, dtype=float) @ _HAT_E3
+
+
+def s_matrix(R: ArrayLike) -> Array:
+    """The block-diagonal S(d) in R^{3n x 3n} (dense; for references and small n)."""
+    blocks = s_blocks(R)
+    n = blocks.shape[0]
+    S = np.zeros((3 * n, 3 * n))
+    for i in range(n):
+        S[3 * i : 3 * i + 3, 3 * i : 3 * i + 3] = blocks[i]
+    return S
+
+
+def direction_sum(R: ArrayLike) -> Array:
+    """s = sum_i d_i."""
+    return directions(R).sum(axis=0)
+
+
+def dbar(R: ArrayLike, tolerance: float = DBAR_RELATIVE_TOLERANCE) -> Array:
+    """The average direction dbar = s / |s| (paper, Section 2).
+
+    Raises :class:`~verify.errors.DbarUndefinedError` when |s| <= tolerance * n, where the
+    direction is undefined (s = 0) or dominated by rounding.
+    """
+    s = direction_sum(R)
+    n = np.asarray(R).shape[0]
+    norm = float(np.linalg.norm(s))
+    if not norm > tolerance * n:
+        raise DbarUndefinedError(
+            f"dbar is undefined: |sum d_i| = {norm:.3g} <= {tolerance:g} * n (n = {n}); "
+            "the bodies' directions cancel out"
+        )
+    return s / norm
+
+
+def dbar_jacobian_block(R: ArrayLike) -> Array:
+    """The common block d dbar / d d_i = (I - dbar dbar^T) / |s| (3 x 3)."""
+    u = dbar(R)
+    s_norm = float(np.linalg.norm(direction_sum(R)))
+    return (np.eye(3) - np.outer(u, u)) / s_norm
+
+
+def dbar_jacobian(R: ArrayLike) -> Array:
+    """d dbar / d d in R^{3 x 3n}: the block of :func:`dbar_jacobian_block` repeated n times."""
+    n = np.asarray(R).shape[0]
+    return np.tile(dbar_jacobian_block(R), (1, n))
+
+
+def w_blocks(R: ArrayLike, *, scaled: bool = True) -> Array:
+    """Blocks W_i = (J_i S_i)^T = hat(e3) R_i^T P / |s| of W(d) (shape (n, 3, 3)).
+
+    With ``scaled=False`` the factor 1/|s| is left out; A(d) does not depend on it.
+    """
+    R = np.asarray(R, dtype=float)
+    u = dbar(R)
+    P = np.eye(3) - np.outer(u, u)
+    blocks = _HAT_E3 @ transpose(R) @ P
+    if scaled:
+        blocks = blocks / float(np.linalg.norm(direction_sum(R)))
+    return blocks
+
+
+def w_matrix(R: ArrayLike, *, scaled: bool = True) -> Array:
+    """W(d) = ((d dbar / d d) S(d))^T in R^{3n x 3} (paper, Section 2)."""
+    return w_blocks(R, scaled=scaled).reshape(-1, 3)
+
+
+def projector_dense(R: ArrayLike) -> Array:
+    """Dense reference for the repaired stealthy projector A = I - W W^+ (3n x 3n).
+
+    W^+ is taken from the SVD of W keeping its two non-zero singular values: rank W = 2
+    exactly whenever dbar is defined (claim ``sec2.w-rank-two``), so no rcond guess.
+    """
+    W = w_matrix(R, scaled=False)
+    U, _, _ = np.linalg.svd(W, full_matrices=False)
+    U2 = U[:, :2]
+    A = -(U2 @ U2.T)
+    A[np.diag_indices_from(A)] += 1.0
+    return A
+
+
+def gram_matrix(R: ArrayLike) -> Array:
+    """Unscaled Gram matrix W~^T W~ = P (n I - sum d_i d_i^T) P, computed in O(n)."""
+    d = directions(R)
+    u = dbar(R)
+    P = np.eye(3) - np.outer(u, u)
+    n = d.shape[0]
+    return P @ (n * np.eye(3) - d.T @ d) @ P
+
+
+def apply_projector(R: ArrayLike, x: ArrayLike) -> Array:
+    """Apply the repaired projector A = I - W W^+ to ``x`` in O(n) (structured form).
+
+    ``x`` has shape (3n,) or (3n, k). Uses A = I - W~ M^{-1} W~^T with
+    M = W~^T W~ + c dbar dbar^T, c = tr(W~^T W~) / 2 (any c > 0 gives the same A because
+    W~ dbar = 0); W~ is W without the factor 1/|s|.
+    """
+    R = np.asarray(R, dtype=float)
+    n = R.shape[0]
+    x = np.asarray(x, dtype=float)
+    vector = x.ndim == 1
+    X = x.reshape(n, 3, -1)
+    u = dbar(R)
+    P = np.eye(3) - np.outer(u, u)
+    G = gram_matrix(R)
+    M = G + 0.5 * np.trace(G) * np.outer(u, u)
+    # W~^T x = sum_i P R_i hat(e3)^T x_i
+    Rt_blocks = R @ _HAT_E3.T  # R_i hat(e3)^T
+    wtx = P @ np.einsum("nij,njk->ik", Rt_blocks, X)
+    y = np.linalg.solve(M, wtx)
+    # (W~ y)_i = hat(e3) R_i^T P y
+    Wy = np.einsum("ij,njk,kl->nil", _HAT_E3, transpose(R), P @ y)
+    out = X - Wy
+    return out.reshape(3 * n) if vector else out.reshape(3 * n, -1)
+
+
+def stealthy_input(R: ArrayLike, omega_tilde_a: ArrayLike) -> Array:
+    """Autonomous body velocities Omega_a = A(d) Omega~_a as an (n, 3) array."""
+    R = np.asarray(R, dtype=float)
+    w = np.asarray(omega_tilde_a, dtype=float).reshape(-1)
+    return apply_projector(R, w).reshape(R.shape[0], 3)
