@@ -16,8 +16,8 @@ S and A depend on the attitudes R_i, not on d alone (a yaw of body i about d_i t
 block i by a body-frame rotation), so the functions here take the attitudes.
 
 Two ways to apply A: :func:`projector_dense` builds the 3n x 3n matrix from an SVD of W
-(the reference) and :func:`apply_projector` applies it in O(n) through the 3 x 3 Gram
-matrix of W.
+(the reference) and :func:`apply_projector` applies it in O(n) through a QR factorisation
+of the 3n x 2 matrix W E, E an orthonormal basis of the plane orthogonal to dbar.
 """
 
 from __future__ import annotations
@@ -132,39 +132,38 @@ def projector_dense(R: ArrayLike) -> Array:
     return A
 
 
-def gram_matrix(R: ArrayLike) -> Array:
-    """Unscaled Gram matrix W~^T W~ = P (n I - sum d_i d_i^T) P, computed in O(n)."""
-    d = directions(R)
-    u = dbar(R)
-    P = np.eye(3) - np.outer(u, u)
-    n = d.shape[0]
-    return P @ (n * np.eye(3) - d.T @ d) @ P
+def _tangent_basis(u: Array) -> Array:
+    """An orthonormal basis E (3 x 2) of the plane orthogonal to the unit vector u."""
+    helper = np.eye(3)[int(np.argmin(np.abs(u)))]
+    a = np.cross(u, helper)
+    a /= np.linalg.norm(a)
+    return np.stack([a, np.cross(u, a)], axis=1)
+
+
+def range_basis(R: ArrayLike) -> Array:
+    """Orthonormal basis Q (3n x 2) of range W, in O(n).
+
+    Since W~ dbar = 0, W~ = B E^T with E an orthonormal basis of the plane orthogonal to
+    dbar and B = W~ E (blocks hat(e3) R_i^T E, because P E = E). B has full column rank
+    2 (claim ``sec2.w-rank-two``), so a Householder QR of the 3n x 2 matrix B gives Q,
+    with rounding error of order eps * kappa(W) (no squaring of the condition number, as
+    the normal equations with W^T W would have).
+    """
+    R = np.asarray(R, dtype=float)
+    E = _tangent_basis(dbar(R))
+    B = (_HAT_E3 @ transpose(R) @ E).reshape(-1, 2)
+    Q, _ = np.linalg.qr(B)
+    return Q
 
 
 def apply_projector(R: ArrayLike, x: ArrayLike) -> Array:
-    """Apply the repaired projector A = I - W W^+ to ``x`` in O(n) (structured form).
+    """Apply the repaired projector A = I - W W^+ = I - Q Q^T to ``x`` in O(n).
 
-    ``x`` has shape (3n,) or (3n, k). Uses A = I - W~ M^{-1} W~^T with
-    M = W~^T W~ + c dbar dbar^T, c = tr(W~^T W~) / 2 (any c > 0 gives the same A because
-    W~ dbar = 0); W~ is W without the factor 1/|s|.
+    ``x`` has shape (3n,) or (3n, k); Q is :func:`range_basis`.
     """
-    R = np.asarray(R, dtype=float)
-    n = R.shape[0]
     x = np.asarray(x, dtype=float)
-    vector = x.ndim == 1
-    X = x.reshape(n, 3, -1)
-    u = dbar(R)
-    P = np.eye(3) - np.outer(u, u)
-    G = gram_matrix(R)
-    M = G + 0.5 * np.trace(G) * np.outer(u, u)
-    # W~^T x = sum_i P R_i hat(e3)^T x_i
-    Rt_blocks = R @ _HAT_E3.T  # R_i hat(e3)^T
-    wtx = P @ np.einsum("nij,njk->ik", Rt_blocks, X)
-    y = np.linalg.solve(M, wtx)
-    # (W~ y)_i = hat(e3) R_i^T P y
-    Wy = np.einsum("ij,njk,kl->nil", _HAT_E3, transpose(R), P @ y)
-    out = X - Wy
-    return out.reshape(3 * n) if vector else out.reshape(3 * n, -1)
+    Q = range_basis(R)
+    return x - Q @ (Q.T @ x)
 
 
 def stealthy_input(R: ArrayLike, omega_tilde_a: ArrayLike) -> Array:

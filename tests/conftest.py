@@ -1,0 +1,29 @@
+"""Hypothesis profiles: 'ci' (bounded, the default), 'dev', and 'deep'.
+
+Select with VERIFY_HYPOTHESIS_PROFILE=deep (or dev). Slow tests run with VERIFY_SLOW=1.
+"""
+
+import os
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+settings.register_profile(
+    "ci", max_examples=40, deadline=None, derandomize=True,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+settings.register_profile("dev", max_examples=150, deadline=None)
+settings.register_profile(
+    "deep", max_examples=2000, deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
+settings.load_profile(os.environ.get("VERIFY_HYPOTHESIS_PROFILE", "ci"))
+
+
+def pytest_collection_modifyitems(config, items):
+    if os.environ.get("VERIFY_SLOW") == "1":
+        return
+    skip = pytest.mark.skip(reason="slow deep check; set VERIFY_SLOW=1")
+    for item in items:
+        if "slow" in item.keywords:
+            item.add_marker(skip)
