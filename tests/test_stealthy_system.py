@@ -8,9 +8,9 @@ from hypothesis import strategies as hst
 
 from verify import so3
 from verify.errors import DbarUndefinedError, VerifyInputError
+from verify.strategies import near_cancelling_networks, networks
 from verify.system import laws
 from verify.system import stealthy as st
-from verify.strategies import near_cancelling_networks, networks
 
 EPS = np.finfo(float).eps
 
@@ -26,8 +26,10 @@ def _js_unscaled(R, y):
     return P @ np.einsum("nij,nj->i", st.s_blocks(R), y.reshape(-1, 3))
 
 
-@given(hst.one_of(networks(max_bodies=200), near_cancelling_networks(max_bodies=200)),
-       hst.integers(0, 2**31))
+@given(
+    hst.one_of(networks(max_bodies=200), near_cancelling_networks(max_bodies=200)),
+    hst.integers(0, 2**31),
+)
 def test_structured_projector_is_stealthy(R, seed):
     x = np.random.default_rng(seed).standard_normal(3 * R.shape[0])
     y = st.apply_projector(R, x)
@@ -36,8 +38,10 @@ def test_structured_projector_is_stealthy(R, seed):
     assert np.linalg.norm(st.apply_projector(R, y) - y) <= _bound(R) * np.linalg.norm(x)
 
 
-@given(hst.one_of(networks(max_bodies=40), near_cancelling_networks(max_bodies=40)),
-       hst.integers(0, 2**31))
+@given(
+    hst.one_of(networks(max_bodies=40), near_cancelling_networks(max_bodies=40)),
+    hst.integers(0, 2**31),
+)
 def test_dense_and_structured_projectors_agree(R, seed):
     x = np.random.default_rng(seed).standard_normal(3 * R.shape[0])
     A = st.projector_dense(R)
@@ -59,8 +63,9 @@ def test_dbar_jacobian_matches_casadi(R):
     n = R.shape[0]
     d = ca.SX.sym("d", 3 * n)
     s = sum(d[3 * i : 3 * i + 3] for i in range(n))
-    J_ad = np.array(ca.Function("J", [d], [ca.jacobian(s / ca.norm_2(s), d)])(
-        st.directions(R).reshape(-1)))
+    J_ad = np.array(
+        ca.Function("J", [d], [ca.jacobian(s / ca.norm_2(s), d)])(st.directions(R).reshape(-1))
+    )
     J = st.dbar_jacobian(R)
     assert np.max(np.abs(J_ad - J)) <= 1e-12 * np.max(np.abs(J))
 
@@ -70,7 +75,8 @@ def test_dbar_turns_with_the_human_command_only(R, seed):
     rng = np.random.default_rng(seed)
     omega_tilde = rng.standard_normal(3)
     omega = laws.human_body_velocities(R, omega_tilde) + st.stealthy_input(
-        R, rng.standard_normal((R.shape[0], 3)))
+        R, rng.standard_normal((R.shape[0], 3))
+    )
     rate = st.dbar_jacobian(R) @ (st.s_matrix(R) @ omega.reshape(-1))
     scale = 1 + np.abs(omega).max() * R.shape[0] / np.linalg.norm(st.direction_sum(R))
     assert np.max(np.abs(rate - np.cross(omega_tilde, st.dbar(R)))) <= _bound(R) * scale
@@ -108,8 +114,9 @@ def test_interface_and_leader_laws_match_the_paper_formulas():
     k = 2.5
     w = laws.interface_velocity(Rb, Rl, k)
     M = Rb.T @ Rl
-    assert np.allclose(w, k * Rb @ np.array([M[2, 1] - M[1, 2], M[0, 2] - M[2, 0],
-                                             M[1, 0] - M[0, 1]]) / 2)
+    assert np.allclose(
+        w, k * Rb @ np.array([M[2, 1] - M[1, 2], M[0, 2] - M[2, 0], M[1, 0] - M[0, 1]]) / 2
+    )
     # eq. (7): hat(omega~) R-bar = k_s R-bar sk(R-bar^T R_l)
     assert np.allclose(so3.hat(w) @ Rb, k * Rb @ so3.sk(M), atol=1e-14)
     wh = rng.standard_normal(3)

@@ -55,11 +55,11 @@ def _array(value: Any, where: str, tail: tuple[int, ...]) -> Array:
         arr = np.array(nested, dtype=float)
     except ValueError:
         raise VerifyInputError(f"{where}: ragged nesting, expected shape (n, {tail})") from None
+    if arr.shape[:1] == (0,):
+        raise VerifyInputError(f"{where}: a network needs at least one body")
     if arr.ndim != 1 + len(tail) or arr.shape[1:] != tail:
         shape = "(n, " + ", ".join(map(str, tail)) + ")"
         raise VerifyInputError(f"{where}: expected shape {shape}, got {arr.shape}")
-    if arr.shape[0] == 0:
-        raise VerifyInputError(f"{where}: a network needs at least one body")
     return arr
 
 

@@ -1,0 +1,100 @@
+"""The verify command: help, reports, bad input (one line, exit 2), planned commands."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from verify.cli import main
+
+DATA = Path(__file__).resolve().parents[1] / "verify" / "data" / "networks"
+
+
+def run_cli(*args, cwd=None):
+    return subprocess.run(
+        [sys.executable, "-m", "verify.cli", *args], capture_output=True, text=True, cwd=cwd
+    )
+
+
+def test_help_lists_current_and_planned_commands():
+    out = run_cli("--help")
+    assert out.returncode == 0
+    for cmd in ("all", "network", "check", "gate", "certificates", "simulate"):
+        assert cmd in out.stdout
+
+
+@pytest.mark.parametrize("cmd", ["check", "gate", "certificates", "simulate"])
+def test_planned_commands_say_not_yet_available(cmd, capsys):
+    assert main([cmd]) == 2
+    assert "not yet available" in capsys.readouterr().err
+
+
+def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys):
+    assert main(["all", "--quick", "--out", str(tmp_path)]) == 0
+    data = json.loads((tmp_path / "report.json").read_text())
+    verdicts = {c["id"]: c["verdict"] for c in data["claims"]}
+    assert verdicts["sec2.wtw-invertible"] == "refuted"
+    assert verdicts["sec2.stealthiness"] == "verified-with-repair"
+    md = (tmp_path / "report.md").read_text()
+    assert "Repaired statement" in md and "sec2.stealthiness" in md
+    assert "<table>" in (tmp_path / "report.html").read_text()
+    assert not list(tmp_path.glob(".*.tmp"))
+    assert main(["all", "--quick", "--out", str(tmp_path), "--only", "sec2.wtw", "--strict"]) == 1
+    assert main(["all", "--quick", "--out", str(tmp_path), "--only", "sec2.d-dot", "--strict"]) == 0
+
+
+def test_network_command_on_shipped_examples(capsys):
+    assert main(["network", *map(str, sorted(DATA.glob("*.toml")))]) == 0
+    out = capsys.readouterr().out
+    assert out.count("ok") >= 2 and "rank 2" in out
+
+
+BAD_FILES = {
+    "cancelling.toml": ("quaternions = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]", "undefined"),
+    "not_rotation.toml": (
+        "rotations = [[[2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]]",
+        "not in SO(3)",
+    ),
+    "reflection.toml": (
+        "rotations = [[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]]]",
+        "not in SO(3)",
+    ),
+    "nan.toml": ("quaternions = [[nan, 0.0, 0.0, 0.0]]", "NaN"),
+    "text.toml": ('quaternions = [["1", 0.0, 0.0, 0.0]]', "expected a number"),
+    "bool.toml": ("quaternions = [[true, 0.0, 0.0, 0.0]]", "expected a number"),
+    "shape.toml": ("quaternions = [[1.0, 0.0, 0.0]]", "shape"),
+    "ragged.toml": ("rotations = [[[1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]]", "ragged"),
+    "zero.toml": ("quaternions = [[0.0, 0.0, 0.0, 0.0]]", "zero"),
+    "empty.toml": ("quaternions = []", "at least one body"),
+    "both.toml": ("quaternions = [[1.0, 0, 0, 0]]\nrotations = []", "exactly one"),
+    "unknown.toml": ("quaternions = [[1.0, 0, 0, 0]]\nexec = 1", "unknown key"),
+    "syntax.toml": ("quaternions = [[1.0, 0", "not valid TOML"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(BAD_FILES))
+def test_bad_network_files_give_one_line_and_exit_2(tmp_path, name):
+    text, expected = BAD_FILES[name]
+    path = tmp_path / name
+    path.write_text(text + "\n")
+    out = run_cli("network", str(path))
+    assert out.returncode == 2, out.stderr
+    assert expected in out.stderr
+    assert len(out.stderr.strip().splitlines()) == 1
+    assert "Traceback" not in out.stderr and out.stdout == ""
+
+
+def test_missing_file_and_projection_option(tmp_path, capsys):
+    assert main(["network", str(tmp_path / "absent.toml")]) == 2
+    assert "cannot read" in capsys.readouterr().err
+    rough = tmp_path / "rough.toml"
+    rough.write_text("rotations = [[[1.0, 0.0001, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]]\n")
+    assert main(["network", str(rough)]) == 2
+    assert main(["network", "--project", str(rough)]) == 0
+    assert "projected onto SO(3)" in capsys.readouterr().out
+
+
+def test_no_command_prints_help_and_exits_2(capsys):
+    assert main([]) == 2
