@@ -90,36 +90,25 @@ def test_exact_projector_from_a_wrong_formula_is_not_stealthy():
     assert not (net.jacobian_unscaled * net.s_matrix * wrong).is_zero_matrix
 
 
+def _register(reg, claim_id):
+    labels = dict.fromkeys(
+        ("section", "paper_ref", "paper_says", "statement", "method", "scope"), "-"
+    )
+    return reg.claim(id=claim_id, **labels)
+
+
 def test_runner_turns_a_crashing_check_into_inconclusive():
     reg = ClaimRegistry()
 
-    @reg.claim(
-        id="x.crash",
-        section="t",
-        paper_ref="-",
-        paper_says="-",
-        statement="-",
-        method="-",
-        scope="-",
-    )
+    @_register(reg, "x.crash")
     def crash(ctx):
         raise RuntimeError("boom")
 
-    @reg.claim(
-        id="x.wrong-type",
-        section="t",
-        paper_ref="-",
-        paper_says="-",
-        statement="-",
-        method="-",
-        scope="-",
-    )
+    @_register(reg, "x.wrong-type")
     def wrong_type(ctx):
         return True
 
-    @reg.claim(
-        id="x.ok", section="t", paper_ref="-", paper_says="-", statement="-", method="-", scope="-"
-    )
+    @_register(reg, "x.ok")
     def ok(ctx):
         return Outcome(Verdict.VERIFIED, "fine", (Evidence(EvidenceKind.EXACT_IDENTITY, "e"),))
 

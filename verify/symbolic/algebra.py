@@ -14,7 +14,7 @@ the numerator is reduced modulo that relation before comparison.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 
 import sympy as sp
 
@@ -99,17 +99,3 @@ def is_zero_modulo_root(expr: sp.Expr, root: sp.Symbol, radicand: sp.Expr) -> bo
     remainder = sp.rem(sp.expand(numerator), root**2 - radicand, root)
     coefficients = sp.Poly(sp.expand(remainder), root).all_coeffs()
     return all(sp.expand(c) == 0 for c in coefficients)
-
-
-def first_nonzero_entry(M: sp.Matrix) -> tuple[int, int, sp.Expr] | None:
-    """Position and simplified value of the first non-zero entry (for reporting a failure)."""
-    for i in range(M.rows):
-        for j in range(M.cols):
-            if not is_zero(M[i, j]):
-                return i, j, sp.factor(sp.together(M[i, j]))
-    return None
-
-
-def substitute_all(M: sp.Matrix, values: Iterable[tuple[sp.Symbol, sp.Expr]]) -> sp.Matrix:
-    """Substitute exact values for symbols (returns a new matrix)."""
-    return M.subs(dict(values))

@@ -14,7 +14,6 @@ import numpy as np
 from verify.so3 import Array
 from verify.system import stealthy as st
 
-EPS = float(np.finfo(float).eps)
 DENSE_LIMIT = 2000  # bodies; the dense 3n x 3n reference is skipped above this
 
 
@@ -43,14 +42,12 @@ def diagnose(R: Array, probes: int = 8, seed: int = 0) -> NetworkDiagnostics:
     n = R.shape[0]
     u = st.dbar(R)
     sv = np.linalg.svd(st.w_matrix(R, scaled=False), compute_uv=False)
-    kappa = float(sv[0] / sv[1])
-    bound = 10.0 * 3 * n * EPS * kappa
+    bound, kappa = st.projector_rounding_bound(R)
     rng = np.random.default_rng(seed)
     X = rng.standard_normal((3 * n, probes))
     X /= np.linalg.norm(X, axis=0)
     AX = st.apply_projector(R, X)
-    P = np.eye(3) - np.outer(u, u)
-    JS_AX = P @ np.einsum("nij,njk->ik", st.s_blocks(R), AX.reshape(n, 3, probes))
+    JS_AX = st.dbar_rate_unscaled(R, AX.reshape(n, 3, probes))
     stealth = float(np.linalg.norm(JS_AX, axis=0).max())
     idem = float(np.linalg.norm(st.apply_projector(R, AX) - AX, axis=0).max())
     dense = None

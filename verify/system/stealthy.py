@@ -166,6 +166,29 @@ def apply_projector(R: ArrayLike, x: ArrayLike) -> Array:
     return x - Q @ (Q.T @ x)
 
 
+def dbar_rate_unscaled(R: ArrayLike, omega: ArrayLike) -> Array:
+    """|s| dbar' = P sum_i S_i omega_i for body velocities ``omega`` (eq. (3) times |s|).
+
+    ``omega`` has shape (n, 3) or (n, 3, k); the result (3,) or (3, k). Leaving out 1/|s|
+    keeps the residual of the stealthy identity on the scale of its inputs.
+    """
+    u = dbar(R)
+    P = np.eye(3) - np.outer(u, u)
+    return P @ np.einsum("nij,nj...->i...", s_blocks(R), np.asarray(omega, dtype=float))
+
+
+def projector_rounding_bound(R: ArrayLike) -> tuple[float, float]:
+    """Rounding bound per unit input for applying A, and kappa = s1/s2 of W~.
+
+    A backward-stable application of an orthogonal projector built from a rank-2 W~ has
+    forward error of order eps * kappa(W~), with a dimension factor 3n from the sums;
+    the constant 10 covers the few operations per entry: bound = 10 * 3n * eps * kappa.
+    """
+    sv = np.linalg.svd(w_matrix(R, scaled=False), compute_uv=False)
+    kappa = float(sv[0] / sv[1])
+    return 10.0 * 3 * np.asarray(R).shape[0] * float(np.finfo(float).eps) * kappa, kappa
+
+
 def stealthy_input(R: ArrayLike, omega_tilde_a: ArrayLike) -> Array:
     """Autonomous body velocities Omega_a = A(d) Omega~_a as an (n, 3) array."""
     R = np.asarray(R, dtype=float)
