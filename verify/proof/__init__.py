@@ -1,0 +1,78 @@
+"""A proof checker for derivations over SO(3) (issue 3; DESIGN.md, ``symbolic``).
+
+Write a derivation in Python with :class:`Context` and :class:`Derivation`, justify
+each step (:func:`by_algebra`, :func:`by_bound` with non-negative terms such as
+:func:`trace_lower_bound`, or :func:`by_citation`), and decide it with :func:`check`.
+The paper's Lemma 1 and Theorem 1 are written this way in :mod:`verify.paper_proofs`.
+"""
+
+from verify.proof.checker import DerivationResult, StepResult, check
+from verify.proof.derivation import Assumption, Condition, Context, Derivation
+from verify.proof.expr import (
+    I3,
+    ProofSyntaxError,
+    cos,
+    dot,
+    fro2,
+    hat,
+    lambda_min,
+    outer,
+    phi,
+    rodrigues,
+    sin,
+    sk,
+    substitute,
+    sym,
+    tr,
+    vee,
+)
+from verify.proof.falsify import SearchSettings
+from verify.proof.justify import (
+    KERNEL,
+    Nonneg,
+    assumed,
+    by_algebra,
+    by_bound,
+    by_citation,
+    positive,
+    square,
+    trace_lower_bound,
+    trace_psd_product,
+)
+
+__all__ = [
+    "I3",
+    "KERNEL",
+    "Assumption",
+    "Condition",
+    "Context",
+    "Derivation",
+    "DerivationResult",
+    "Nonneg",
+    "ProofSyntaxError",
+    "SearchSettings",
+    "StepResult",
+    "assumed",
+    "by_algebra",
+    "by_bound",
+    "by_citation",
+    "check",
+    "cos",
+    "dot",
+    "fro2",
+    "hat",
+    "lambda_min",
+    "outer",
+    "phi",
+    "positive",
+    "rodrigues",
+    "sin",
+    "sk",
+    "square",
+    "substitute",
+    "sym",
+    "tr",
+    "trace_lower_bound",
+    "trace_psd_product",
+    "vee",
+]

@@ -1,0 +1,210 @@
+"""Derivations as data: a context of variables and a chain of justified steps.
+
+A :class:`Context` declares the variables of an argument (rotations, unit vectors,
+angles, vectors, gains), the dynamics used to differentiate (``ctx.ddt``), equality
+side conditions (``ctx.condition``, e.g. "on the boundary cos theta = 0") and the
+assumptions of the paper (``ctx.assume``, e.g. "sym(R_rl) is positive definite").
+
+A :class:`Derivation` starts from an expression and adds steps ``equals``, ``le`` and
+``ge``, each relating the previous expression to a new one and carrying its
+justification (:mod:`verify.proof.justify`). Building a derivation checks shapes only;
+:func:`verify.proof.checker.check` decides every step.
+
+Example (the first equality of Lemma 1's h-dot chain, eq. (14))::
+
+    ctx = Context("Lemma 1")
+    Rr, Rb, Rl = ctx.rotation("R_r"), ctx.rotation("Rbar"), ctx.rotation("R_l")
+    ks = ctx.scalar("k_s", positive=True)
+    ctx.constant(Rr)
+    ctx.dynamics(Rb, ks * Rb * sk(Rb.T * Rl))          # eq. (13)
+    h = tr(Rr.T * Rb) - 1
+    d = Derivation("h-dot", ctx.ddt(h), ctx)
+    d.equals(ks * tr(Rr.T * Rb * sk(Rb.T * Rl)), by_algebra("eq. (13)"))
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from verify.proof.calculus import ddt
+from verify.proof.expr import (
+    MATRIX,
+    SCALAR,
+    Expr,
+    ProofSyntaxError,
+    Variable,
+    as_expr,
+    var,
+)
+from verify.proof.justify import Justification
+
+RELATIONS = ("=", "<=", ">=")
+
+
+@dataclass(frozen=True)
+class Condition:
+    """An exact side condition ``lhs = rhs`` (scalar) under which steps are claimed."""
+
+    label: str
+    lhs: Expr
+    rhs: Expr
+
+    @property
+    def difference(self) -> Expr:
+        return self.lhs - self.rhs
+
+
+@dataclass(frozen=True)
+class Assumption:
+    """A sign assumption of the paper: ``kind`` in pd, psd (of sym(M)), pos, nonneg."""
+
+    label: str
+    expr: Expr
+    kind: str
+    cite: str = ""
+
+    def __post_init__(self) -> None:
+        if self.kind in ("pd", "psd") and self.expr.shape != MATRIX:
+            raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a matrix")
+        if self.kind in ("pos", "nonneg") and self.expr.shape != SCALAR:
+            raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a scalar")
+        if self.kind not in ("pd", "psd", "pos", "nonneg"):
+            raise ProofSyntaxError(f"unknown assumption kind {self.kind!r}")
+
+
+class Context:
+    """Variables, dynamics, side conditions and assumptions of one argument."""
+
+    def __init__(self, name: str):
+        self.name = name
+        self._dynamics: dict[int, Expr | None] = {}
+        self.variables: list[Variable] = []
+
+    # -- variables ----------------------------------------------------------------------
+    def _new(self, name: str, kind: str, positive: bool = False) -> Expr:
+        v = Variable(name, kind, positive)
+        self.variables.append(v)
+        if kind == "scalar":
+            self._dynamics[v.uid] = None  # gains are constant unless declared otherwise
+        return var(v)
+
+    def rotation(self, name: str) -> Expr:
+        return self._new(name, "rotation")
+
+    def unit_vector(self, name: str) -> Expr:
+        return self._new(name, "unit_vector")
+
+    def angle(self, name: str) -> Expr:
+        return self._new(name, "angle")
+
+    def vector(self, name: str) -> Expr:
+        return self._new(name, "vector")
+
+    def matrix(self, name: str) -> Expr:
+        return self._new(name, "matrix")
+
+    def symmetric(self, name: str) -> Expr:
+        return self._new(name, "symmetric")
+
+    def scalar(self, name: str, positive: bool = False) -> Expr:
+        return self._new(name, "scalar", positive)
+
+    # -- dynamics -----------------------------------------------------------------------
+    def dynamics(self, variable: Expr, derivative: Expr) -> None:
+        """Declare d/dt of a variable (for ``ddt``)."""
+        v = _variable(variable)
+        derivative = as_expr(derivative)
+        if derivative.shape != variable.shape:
+            raise ProofSyntaxError(f"derivative of {v.name} has the wrong shape")
+        self._dynamics[v.uid] = derivative
+
+    def constant(self, *variables: Expr) -> None:
+        for variable in variables:
+            self._dynamics[_variable(variable).uid] = None
+
+    def ddt(self, e: Expr) -> Expr:
+        """Time derivative of ``e`` along the declared dynamics (product rule)."""
+        return ddt(e, self._dynamics)
+
+    # -- side conditions and assumptions ---------------------------------------------------
+    def condition(self, label: str, lhs: Expr, rhs: Expr | int = 0) -> Condition:
+        lhs, rhs = as_expr(lhs), as_expr(rhs)
+        if lhs.shape != SCALAR or rhs.shape != SCALAR:
+            raise ProofSyntaxError(f"condition '{label}' must equate two scalars")
+        return Condition(label, lhs, rhs)
+
+    def assume(self, label: str, expr: Expr, kind: str, cite: str = "") -> Assumption:
+        return Assumption(label, as_expr(expr), kind, cite)
+
+
+def _variable(e: Expr) -> Variable:
+    if not isinstance(e, Expr) or e.op != "var":
+        raise ProofSyntaxError("expected a variable created by the context")
+    return e.data
+
+
+@dataclass
+class Step:
+    """``previous relation expr``, on the grounds of ``because``."""
+
+    relation: str
+    lhs: Expr
+    rhs: Expr
+    because: Justification
+    where: tuple[Condition, ...] = ()
+    note: str = ""
+
+
+@dataclass
+class Derivation:
+    """A chain start = e1 <= e2 = e3 ... with one justification per step."""
+
+    name: str
+    start: Expr
+    context: Context
+    where: tuple[Condition, ...] = ()
+    assumes: tuple[Assumption, ...] = ()
+    statement: str = ""
+    cite: str = ""
+    steps: list[Step] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        self.start = as_expr(self.start)
+        self.where = tuple(self.where)
+        self.assumes = tuple(self.assumes)
+
+    @property
+    def current(self) -> Expr:
+        return self.steps[-1].rhs if self.steps else self.start
+
+    def _add(self, relation: str, expr, because: Justification, where, note) -> Derivation:
+        expr = as_expr(expr)
+        if expr.shape != self.start.shape:
+            raise ProofSyntaxError(
+                f"{self.name}: step {len(self.steps) + 1} changes the shape of the expression"
+            )
+        if relation != "=" and expr.shape != SCALAR:
+            raise ProofSyntaxError(f"{self.name}: inequalities relate scalars")
+        if not isinstance(because, Justification):
+            raise ProofSyntaxError(f"{self.name}: step {len(self.steps) + 1} needs a justification")
+        used = {s.relation for s in self.steps if s.relation != "="} | (
+            {relation} - {"="}
+        )
+        if len(used) > 1:
+            raise ProofSyntaxError(f"{self.name}: a chain cannot mix <= and >=")
+        self.steps.append(Step(relation, self.current, expr, because, tuple(where), note))
+        return self
+
+    def equals(self, expr, because: Justification, where=(), note: str = "") -> Derivation:
+        return self._add("=", expr, because, where, note)
+
+    def le(self, expr, because: Justification, where=(), note: str = "") -> Derivation:
+        return self._add("<=", expr, because, where, note)
+
+    def ge(self, expr, because: Justification, where=(), note: str = "") -> Derivation:
+        return self._add(">=", expr, because, where, note)
+
+    @property
+    def conclusion_relation(self) -> str:
+        rels = {s.relation for s in self.steps} - {"="}
+        return rels.pop() if rels else "="

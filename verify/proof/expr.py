@@ -1,0 +1,379 @@
+"""Expressions of the proof language: matrices, vectors and scalars over SO(3).
+
+An expression is an immutable tree (:class:`Expr`) built with Python operators and the
+functions of this module (``tr``, ``sk``, ``sym``, ``hat``, ``vee``, ...). The tree is
+not evaluated when it is built; the checker evaluates the same tree in three algebras
+(:mod:`verify.proof.evaluate`): exact rational functions of the parameters, batched
+floating point (numpy) and CasADi symbols for optimisation-based falsification.
+
+Shapes are checked when a tree is built, so a derivation with a shape error fails where
+it is written, not later in the checker. Exact constants only: ints and
+:class:`fractions.Fraction` are accepted, floats are refused (a proof step written with
+0.5 would silently become inexact).
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any
+
+SCALAR: tuple[int, ...] = ()
+VECTOR: tuple[int, ...] = (3,)
+MATRIX: tuple[int, ...] = (3, 3)
+ANGLE: tuple[str, ...] = ("angle",)
+
+_ids = itertools.count()
+
+
+class ProofSyntaxError(TypeError):
+    """An expression or derivation is malformed (wrong shapes, floats, unknown names)."""
+
+
+@dataclass(frozen=True, eq=False)
+class Variable:
+    """A free variable of a derivation; ``kind`` fixes its parametrisation.
+
+    Kinds and their exact parametrisations (every value is reached, up to a closed set
+    of measure zero, which continuity makes irrelevant for identities and non-strict
+    inequalities between continuous functions):
+
+    - ``rotation``: quaternion (w, x, y, z) != 0, R = I + 2(w q^ + q^ q^)/|q|^2;
+    - ``unit_vector``: stereographic (a, b), u = (2a, 2b, a^2 + b^2 - 1)/(a^2 + b^2 + 1);
+    - ``angle``: t = tan(theta/2), cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2);
+    - ``vector``, ``matrix``, ``symmetric``: free real entries;
+    - ``scalar``: a real number, ``positive=True`` for a gain such as k_s > 0.
+    """
+
+    name: str
+    kind: str
+    positive: bool = False
+    uid: int = field(default_factory=lambda: next(_ids))
+
+    @property
+    def parameter_count(self) -> int:
+        return {
+            "rotation": 4,
+            "unit_vector": 2,
+            "angle": 1,
+            "vector": 3,
+            "matrix": 9,
+            "symmetric": 6,
+            "scalar": 1,
+        }[self.kind]
+
+    @property
+    def shape(self) -> tuple:
+        return {
+            "rotation": MATRIX,
+            "unit_vector": VECTOR,
+            "angle": ANGLE,
+            "vector": VECTOR,
+            "matrix": MATRIX,
+            "symmetric": MATRIX,
+            "scalar": SCALAR,
+        }[self.kind]
+
+
+def _shape_name(shape: tuple) -> str:
+    return {SCALAR: "scalar", VECTOR: "3-vector", MATRIX: "3x3 matrix", ANGLE: "angle"}[shape]
+
+
+class Expr:
+    """A node of an expression tree. Build with operators and the module functions."""
+
+    __slots__ = ("__weakref__", "args", "data", "label", "op", "shape")
+    __array_priority__ = 1000  # keep numpy from broadcasting over an Expr
+
+    def __init__(self, op: str, args: tuple[Expr, ...], shape: tuple, data: Any = None):
+        self.op = op
+        self.args = args
+        self.shape = shape
+        self.data = data
+        self.label: str | None = None
+
+    # -- naming -----------------------------------------------------------------------
+    def named(self, label: str) -> Expr:
+        """A copy printed as ``label`` (evaluation is unchanged)."""
+        copy = Expr(self.op, self.args, self.shape, self.data)
+        copy.label = label
+        return copy
+
+    # -- arithmetic -------------------------------------------------------------------
+    def __add__(self, other: Any) -> Expr:
+        other = as_expr(other)
+        _same_shape("+", self, other)
+        return Expr("add", (self, other), self.shape)
+
+    def __radd__(self, other: Any) -> Expr:
+        return as_expr(other) + self
+
+    def __neg__(self) -> Expr:
+        _not_angle("-", self)
+        return Expr("neg", (self,), self.shape)
+
+    def __sub__(self, other: Any) -> Expr:
+        return self + (-as_expr(other))
+
+    def __rsub__(self, other: Any) -> Expr:
+        return as_expr(other) - self
+
+    def __mul__(self, other: Any) -> Expr:
+        return _product(self, as_expr(other))
+
+    def __rmul__(self, other: Any) -> Expr:
+        return _product(as_expr(other), self)
+
+    def __matmul__(self, other: Any) -> Expr:
+        return _product(self, as_expr(other))
+
+    def __truediv__(self, other: Any) -> Expr:
+        if isinstance(other, Expr):
+            raise ProofSyntaxError("division is only by an exact constant (int or Fraction)")
+        return _product(as_expr(Fraction(1) / _exact(other)), self)
+
+    def __pow__(self, power: int) -> Expr:
+        if not isinstance(power, int) or power < 1:
+            raise ProofSyntaxError("only positive integer powers are supported")
+        if self.shape not in (SCALAR, MATRIX):
+            raise ProofSyntaxError(f"cannot raise a {_shape_name(self.shape)} to a power")
+        result = self
+        for _ in range(power - 1):
+            result = _product(result, self)
+        return result
+
+    @property
+    def T(self) -> Expr:  # noqa: N802  (the usual name for a transpose)
+        if self.shape == MATRIX:
+            return Expr("transpose", (self,), MATRIX)
+        if self.shape == SCALAR:
+            return self
+        raise ProofSyntaxError(f"cannot transpose a {_shape_name(self.shape)}")
+
+    def __bool__(self) -> bool:
+        raise ProofSyntaxError("an expression has no truth value; state relations as steps")
+
+    def __repr__(self) -> str:
+        from verify.proof.printing import to_text
+
+        return f"Expr({to_text(self)})"
+
+    def __str__(self) -> str:
+        from verify.proof.printing import to_text
+
+        return to_text(self)
+
+
+def _exact(value: Any) -> Fraction:
+    if isinstance(value, bool) or not isinstance(value, int | Fraction):
+        raise ProofSyntaxError(
+            f"constants in a derivation must be int or Fraction, not {type(value).__name__}"
+            " (a float would make the check inexact)"
+        )
+    return Fraction(value)
+
+
+def as_expr(value: Any) -> Expr:
+    """An Expr as is, or an exact scalar constant."""
+    if isinstance(value, Expr):
+        return value
+    return Expr("const", (), SCALAR, _exact(value))
+
+
+def _not_angle(op: str, *exprs: Expr) -> None:
+    for e in exprs:
+        if e.shape == ANGLE:
+            raise ProofSyntaxError(f"an angle can only be used inside cos() or sin(), not in {op}")
+
+
+def _same_shape(op: str, a: Expr, b: Expr) -> None:
+    _not_angle(op, a, b)
+    if a.shape != b.shape:
+        raise ProofSyntaxError(
+            f"'{op}' needs equal shapes, got {_shape_name(a.shape)} and {_shape_name(b.shape)}"
+        )
+
+
+def _product(a: Expr, b: Expr) -> Expr:
+    _not_angle("*", a, b)
+    if a.shape == SCALAR or b.shape == SCALAR:
+        scalar, other = (a, b) if a.shape == SCALAR else (b, a)
+        return Expr("scale", (scalar, other), other.shape)
+    if a.shape == MATRIX and b.shape == MATRIX:
+        return Expr("matmul", (a, b), MATRIX)
+    if a.shape == MATRIX and b.shape == VECTOR:
+        return Expr("matmul", (a, b), VECTOR)
+    raise ProofSyntaxError(
+        f"no product of a {_shape_name(a.shape)} and a {_shape_name(b.shape)}"
+        " (use dot(u, v) or outer(u, v) for vectors)"
+    )
+
+
+# -- constructors ---------------------------------------------------------------------
+def var(variable: Variable) -> Expr:
+    e = Expr("var", (), variable.shape, variable)
+    e.label = variable.name
+    return e
+
+
+def identity() -> Expr:
+    """The 3x3 identity I_3."""
+    e = Expr("identity", (), MATRIX)
+    e.label = "I"
+    return e
+
+
+I3 = identity()
+
+
+def zero(shape: tuple = MATRIX) -> Expr:
+    return Expr("zero", (), shape)
+
+
+def tr(m: Expr) -> Expr:
+    """Trace of a 3x3 matrix."""
+    _require(m, MATRIX, "tr")
+    return Expr("trace", (m,), SCALAR)
+
+
+def sk(m: Expr) -> Expr:
+    """Skew-symmetric part (M - M^T)/2 (paper, Section 3)."""
+    _require(m, MATRIX, "sk")
+    return Expr("sk", (m,), MATRIX)
+
+
+def sym(m: Expr) -> Expr:
+    """Symmetric part (M + M^T)/2 (paper, Lemma 1)."""
+    _require(m, MATRIX, "sym")
+    return Expr("sym", (m,), MATRIX)
+
+
+def hat(v: Expr) -> Expr:
+    """hat(v) w = v x w."""
+    _require(v, VECTOR, "hat")
+    return Expr("hat", (v,), MATRIX)
+
+
+def vee(m: Expr) -> Expr:
+    """vee of the skew part of M, so vee(hat(v)) = v and vee(M) = vee(sk(M))."""
+    _require(m, MATRIX, "vee")
+    return Expr("vee", (m,), VECTOR)
+
+
+def dot(u: Expr, v: Expr) -> Expr:
+    _require(u, VECTOR, "dot")
+    _require(v, VECTOR, "dot")
+    return Expr("dot", (u, v), SCALAR)
+
+
+def outer(u: Expr, v: Expr) -> Expr:
+    """u v^T."""
+    _require(u, VECTOR, "outer")
+    _require(v, VECTOR, "outer")
+    return Expr("outer", (u, v), MATRIX)
+
+
+def cos(theta: Expr) -> Expr:
+    _require(theta, ANGLE, "cos")
+    return Expr("cos", (theta,), SCALAR)
+
+
+def sin(theta: Expr) -> Expr:
+    _require(theta, ANGLE, "sin")
+    return Expr("sin", (theta,), SCALAR)
+
+
+def lambda_min(m: Expr) -> Expr:
+    """Smallest eigenvalue of a symmetric matrix.
+
+    Exactly, lambda_min is an algebraic function, not a rational one; the checker treats
+    each distinct lambda_min(M) as an opaque real number, so an identity is verified
+    only if it holds whatever that number is. Inequalities about it enter through the
+    spectral lemma of :mod:`verify.proof.lemmas` (A - lambda_min(A) I is PSD).
+    """
+    _require(m, MATRIX, "lambda_min")
+    return Expr("lambda_min", (m,), SCALAR)
+
+
+def fro2(m: Expr) -> Expr:
+    """Squared Frobenius norm tr(M^T M)."""
+    _require(m, MATRIX, "fro2")
+    return tr(m.T * m)
+
+
+def phi(r: Expr) -> Expr:
+    """The energy function phi(R) = tr(I - R)/2 of Theorem 1's proof."""
+    return Fraction(1, 2) * tr(I3 - r)
+
+
+def rodrigues(axis: Expr, angle: Expr) -> Expr:
+    """exp(theta hat(xi)) = I + sin(theta) hat(xi) + (1 - cos(theta)) hat(xi)^2 (Lemma 1)."""
+    k = hat(axis)
+    return I3 + sin(angle) * k + (1 - cos(angle)) * (k * k)
+
+
+def _require(e: Expr, shape: tuple, op: str) -> None:
+    if not isinstance(e, Expr):
+        raise ProofSyntaxError(f"{op}() needs an expression, got {type(e).__name__}")
+    if e.shape != shape:
+        raise ProofSyntaxError(
+            f"{op}() needs a {_shape_name(shape)}, got a {_shape_name(e.shape)}"
+        )
+
+
+def variables_of(*exprs: Expr) -> list[Variable]:
+    """The free variables of expressions, in first-appearance order."""
+    seen: dict[int, Variable] = {}
+    stack = list(reversed(exprs))
+    visited: set[int] = set()
+    while stack:
+        e = stack.pop()
+        if id(e) in visited:
+            continue
+        visited.add(id(e))
+        if e.op == "var":
+            seen.setdefault(e.data.uid, e.data)
+        stack.extend(reversed(e.args))
+    return list(seen.values())
+
+
+def structural_key(e: Expr) -> tuple:
+    """A hashable key equal for structurally equal trees (labels ignored)."""
+    if e.op == "var":
+        return ("var", e.data.uid)
+    if e.op == "const":
+        return ("const", e.data)
+    return (e.op, *(structural_key(a) for a in e.args))
+
+
+def substitute(e: Expr, mapping: dict) -> Expr:
+    """Replace variables: ``mapping`` sends a variable expression to an expression of its shape."""
+    table: dict[int, Expr] = {}
+    for k, v in mapping.items():
+        if not isinstance(k, Expr) or k.op != "var":
+            raise ProofSyntaxError("substitute() maps variables to expressions")
+        v = as_expr(v)
+        if v.shape != k.shape:
+            raise ProofSyntaxError(f"substitute(): {k.data.name} and its value differ in shape")
+        table[k.data.uid] = v
+    cache: dict[int, Expr] = {}
+
+    def walk(node: Expr) -> Expr:
+        if id(node) in cache:
+            return cache[id(node)]
+        if node.op == "var":
+            out = table.get(node.data.uid, node)
+        elif not node.args:
+            out = node
+        else:
+            args = tuple(walk(a) for a in node.args)
+            if all(a is b for a, b in zip(args, node.args, strict=True)):
+                out = node
+            else:
+                out = Expr(node.op, args, node.shape, node.data)
+                out.label = None
+        cache[id(node)] = out
+        return out
+
+    return walk(e)

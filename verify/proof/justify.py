@@ -1,0 +1,255 @@
+"""Justifications of steps, and the small trusted kernel behind inequalities.
+
+An equality step is justified ``by_algebra``: the checker decides lhs - rhs = 0 exactly.
+
+An inequality step ``lhs >= rhs`` is justified ``by_bound(t1, t2, ...)``: the checker
+decides exactly that lhs - rhs - (t1 + t2 + ...) = 0, where every t_k is a
+:class:`Nonneg` term, a quantity known to be >= 0 for a stated reason. Terms are built
+from a short list of facts (the trusted kernel, listed in :data:`KERNEL`) whose side
+premises (a matrix is symmetric, a matrix is c G^T G for a given G) are themselves
+checked exactly, and from assumptions of the paper, which are reported as such. A
+term's reason never rests on a solver or on floating point.
+
+``by_citation(source)`` records a step the paper takes from elsewhere without a
+premise the checker can decide; such a step is never verified, only falsified or left
+inconclusive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import TYPE_CHECKING
+
+from verify.proof.expr import (
+    MATRIX,
+    SCALAR,
+    VECTOR,
+    Expr,
+    ProofSyntaxError,
+    as_expr,
+    dot,
+    fro2,
+    lambda_min,
+    sym,
+    tr,
+)
+
+if TYPE_CHECKING:
+    from verify.proof.derivation import Assumption
+
+KERNEL = {
+    "squares": "a sum of squares (tr(G^T G), |v|^2, s^2) is >= 0",
+    "positive": "a variable declared positive is > 0; a non-negative constant is >= 0",
+    "products": "sums and products of non-negative numbers are >= 0",
+    "spectral": "for symmetric A, A - lambda_min(A) I is positive semidefinite",
+    "congruence": "for P positive semidefinite, tr(G P G^T) >= 0",
+}
+
+
+@dataclass(frozen=True)
+class ExactPremise:
+    """A premise decided exactly: ``expr`` is identically zero (any shape)."""
+
+    label: str
+    expr: Expr
+
+
+@dataclass(frozen=True)
+class Nonneg:
+    """A scalar quantity ``value`` that is >= 0, with the grounds for it."""
+
+    value: Expr
+    reason: str
+    premises: tuple[ExactPremise, ...] = ()
+    assumptions: tuple[Assumption, ...] = ()
+    kernel: frozenset[str] = field(default_factory=frozenset)
+
+    def _merge(self, other: Nonneg, value: Expr, reason: str) -> Nonneg:
+        return Nonneg(
+            value,
+            reason,
+            self.premises + other.premises,
+            self.assumptions + tuple(a for a in other.assumptions if a not in self.assumptions),
+            self.kernel | other.kernel | {"products"},
+        )
+
+    def __add__(self, other: Nonneg) -> Nonneg:
+        if not isinstance(other, Nonneg):
+            raise ProofSyntaxError("only non-negative terms can be added to a non-negative term")
+        return self._merge(other, self.value + other.value, f"({self.reason}) + ({other.reason})")
+
+    def __mul__(self, other) -> Nonneg:
+        if isinstance(other, Nonneg):
+            return self._merge(
+                other, self.value * other.value, f"({self.reason}) * ({other.reason})"
+            )
+        c = Fraction(other) if isinstance(other, int | Fraction) else None
+        if c is None or isinstance(other, bool) or c < 0:
+            raise ProofSyntaxError("a non-negative term can be scaled by a constant >= 0 only")
+        return Nonneg(
+            as_expr(c) * self.value,
+            f"{c} * ({self.reason})",
+            self.premises,
+            self.assumptions,
+            self.kernel | {"products"},
+        )
+
+    __rmul__ = __mul__
+
+
+def square(g: Expr) -> Nonneg:
+    """tr(G^T G), |v|^2 or s^2 (kernel: squares)."""
+    if g.shape == MATRIX:
+        value = fro2(g)
+    elif g.shape == VECTOR:
+        value = dot(g, g)
+    elif g.shape == SCALAR:
+        value = g * g
+    else:
+        raise ProofSyntaxError("square() needs a matrix, vector or scalar")
+    return Nonneg(value, f"square of {g}", kernel=frozenset({"squares"}))
+
+
+def positive(k: Expr) -> Nonneg:
+    """A scalar variable declared positive, e.g. the gain k_s (kernel: positive)."""
+    if k.op != "var" or k.data.kind != "scalar" or not k.data.positive:
+        raise ProofSyntaxError(f"{k} is not a variable declared positive")
+    return Nonneg(k, f"{k} > 0 (declared)", kernel=frozenset({"positive"}))
+
+
+def assumed(assumption: Assumption) -> Nonneg:
+    """A scalar assumption (kind pos or nonneg) used as a non-negative term."""
+    if assumption.kind not in ("pos", "nonneg"):
+        raise ProofSyntaxError("assumed() takes a scalar assumption (pos or nonneg)")
+    return Nonneg(assumption.expr, f"assumed: {assumption.label}", assumptions=(assumption,))
+
+
+def _psd_by_gram(label: str, b: Expr, gram: Expr, scale: Nonneg | int | Fraction):
+    """Premise sym(B) = c G^T G, returning (premise, scale term)."""
+    if isinstance(scale, Nonneg):
+        c_term = scale
+    else:
+        c_term = Nonneg(as_expr(Fraction(scale)), f"{scale} >= 0", kernel=frozenset({"positive"}))
+        if Fraction(scale) < 0:
+            raise ProofSyntaxError("a Gram scale must be >= 0")
+    premise = ExactPremise(f"{label}: sym({b}) = c G^T G", sym(b) - c_term.value * (gram.T * gram))
+    return premise, c_term
+
+
+def trace_lower_bound(
+    a: Expr, b: Expr, *, gram: Expr | None, gram_scale: Nonneg | int | Fraction = 1
+) -> Nonneg:
+    """tr(A B) - lambda_min(A) tr(B) >= 0 for A symmetric and sym(B) positive semidefinite.
+
+    The trace inequality quoted in Lemma 1 (from Hatanaka et al. 2015) with the premise
+    it needs: sym(B) = c G^T G for a given G and c >= 0. Then
+    tr(AB) - lambda tr B = tr((A - lambda I) sym B) = c tr(G (A - lambda I) G^T) >= 0
+    (kernel: spectral, congruence). Without ``gram`` the premise cannot be decided.
+    """
+    value = tr(a * b) - lambda_min(a) * tr(b)
+    premises = [ExactPremise(f"{a} is symmetric", a - a.T)]
+    if gram is None:
+        raise ProofSyntaxError(
+            "trace_lower_bound needs gram=G with sym(B) = c G^T G; as quoted, without a "
+            "premise on B, the inequality is false (see lemma1.trace-inequality-as-quoted)"
+        )
+    premise, c_term = _psd_by_gram("B", b, gram, gram_scale)
+    premises.append(premise)
+    return Nonneg(
+        value,
+        f"trace inequality tr(AB) >= lambda_min(A) tr(B), A = {a}, B = {b}",
+        tuple(premises) + c_term.premises,
+        c_term.assumptions,
+        frozenset({"spectral", "congruence"}) | c_term.kernel,
+    )
+
+
+def trace_psd_product(
+    a: Expr,
+    b: Expr,
+    *,
+    a_psd: Assumption | None = None,
+    a_gram: Expr | None = None,
+    b_gram: Expr,
+    b_scale: Nonneg | int | Fraction = 1,
+) -> Nonneg:
+    """tr(A B) >= 0 for A symmetric PSD (assumed, or A = G^T G) and sym(B) = c H^T H."""
+    premises = [ExactPremise(f"{a} is symmetric", a - a.T)]
+    assumptions: tuple = ()
+    if a_psd is not None:
+        if a_psd.kind not in ("pd", "psd"):
+            raise ProofSyntaxError("a_psd must be a pd or psd assumption")
+        premises.append(ExactPremise(f"{a} = sym of the assumed matrix", a - sym(a_psd.expr)))
+        assumptions = (a_psd,)
+    elif a_gram is not None:
+        premises.append(ExactPremise(f"{a} = G^T G", a - a_gram.T * a_gram))
+    else:
+        raise ProofSyntaxError("trace_psd_product needs a_psd= or a_gram=")
+    premise, c_term = _psd_by_gram("B", b, b_gram, b_scale)
+    premises.append(premise)
+    return Nonneg(
+        tr(a * b),
+        f"trace of a product of PSD matrices, A = {a}, B = {b}",
+        tuple(premises) + c_term.premises,
+        assumptions + c_term.assumptions,
+        frozenset({"congruence"}) | c_term.kernel,
+    )
+
+
+class Justification:
+    """Grounds of one step."""
+
+    kind = "justification"
+
+    def __init__(self, note: str = ""):
+        self.note = note
+
+    def describe(self) -> str:
+        return self.note
+
+
+class ByAlgebra(Justification):
+    """An equality decided exactly (under the step's side conditions)."""
+
+    kind = "algebra"
+
+    def describe(self) -> str:
+        return f"algebra ({self.note})" if self.note else "algebra"
+
+
+class ByBound(Justification):
+    """lhs - rhs (or rhs - lhs for <=) is exactly a sum of non-negative terms."""
+
+    kind = "bound"
+
+    def __init__(self, terms: tuple[Nonneg, ...], note: str = ""):
+        super().__init__(note)
+        if not terms or not all(isinstance(t, Nonneg) for t in terms):
+            raise ProofSyntaxError("by_bound needs at least one non-negative term")
+        self.terms = terms
+
+    def describe(self) -> str:
+        reasons = "; ".join(t.reason for t in self.terms)
+        return f"{self.note}: {reasons}" if self.note else reasons
+
+
+class ByCitation(Justification):
+    """A step taken from elsewhere; cannot be decided, only falsified."""
+
+    kind = "citation"
+
+    def describe(self) -> str:
+        return f"cited: {self.note}"
+
+
+def by_algebra(note: str = "") -> ByAlgebra:
+    return ByAlgebra(note)
+
+
+def by_bound(*terms: Nonneg, note: str = "") -> ByBound:
+    return ByBound(tuple(terms), note)
+
+
+def by_citation(source: str) -> ByCitation:
+    return ByCitation(source)
