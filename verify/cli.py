@@ -17,10 +17,6 @@ from verify import __version__
 from verify.errors import VerifyInputError
 
 PLANNED = {
-    "check": (
-        "check a derivation file of your own, step by step (Lemma 1 / Theorem 1 proof checker)",
-        "issue 3",
-    ),
     "gate": ("passivity gate for human models H(s) with exact KYP certificates", "issue 4"),
     "certificates": ("re-check stored certificates with no solver", "issue 4"),
     "simulate": ("reference closed-loop simulator with plots", "issue 5"),
@@ -77,6 +73,17 @@ def _build_parser() -> argparse.ArgumentParser:
         help="max |R^T R - I| accepted as a rotation (default 1e-9)",
     )
 
+    p_check = sub.add_parser(
+        "check",
+        help="check the derivations of a Python file of your own, step by step",
+        description="Exit 0 if every step of every derivation is verified, 1 if some step "
+        "is refuted or inconclusive, 2 if the file is malformed.",
+    )
+    p_check.add_argument("file", type=Path, metavar="FILE", help="Python file with DERIVATIONS")
+    p_check.add_argument("--quick", action="store_true", help="less falsification effort")
+    p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
+    p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
+
     for name, (text, issue) in PLANNED.items():
         p = sub.add_parser(name, help=f"{text} [not yet available: {issue}]")
         p.add_argument("args", nargs=argparse.REMAINDER)
@@ -110,6 +117,38 @@ def _cmd_all(args: argparse.Namespace) -> int:
         print("--strict: some claims are not 'verified'", file=sys.stderr)
         return 1
     return 0
+
+
+def _cmd_check(args: argparse.Namespace) -> int:
+    import json
+
+    from verify.claims.model import CheckContext, to_jsonable
+    from verify.claims.proofs import search_settings
+    from verify.proof import check
+    from verify.proof.user_file import load_derivations
+    from verify.report.atomic import write_atomic
+
+    derivations = load_derivations(args.file)
+    context = CheckContext(seed=args.seed, quick=args.quick)
+    results = []
+    for k, d in enumerate(derivations):
+        r = check(d, search_settings(context, 101 * k))
+        results.append(r)
+        print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.start} {r.relation} {r.end}")
+        for s in r.steps:
+            print(f"  step {s.index} {s.relation:<2} {s.verdict:<12} {s.justification}")
+            if s.verdict != "verified":
+                print(f"      {s.exact}")
+            if s.counterexample:
+                values = "; ".join(f"{n} = {v['value']}"
+                                   for n, v in s.counterexample["values"].items())
+                print(f"      counterexample (exact): {values}")
+    verified = sum(r.verdict == "verified" for r in results)
+    print(f"{verified} of {len(results)} derivation(s) verified in every step")
+    if args.json:
+        write_atomic(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
+                                           indent=2) + "\n")
+    return 0 if verified == len(results) else 1
 
 
 def _cmd_list(_: argparse.Namespace) -> int:
@@ -171,7 +210,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 2
-    handlers = {"all": _cmd_all, "list": _cmd_list, "network": _cmd_network}
+    handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
+                "network": _cmd_network}
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:

@@ -37,6 +37,7 @@ class EvidenceKind(enum.StrEnum):
     NUMERICAL = "numerical"  # floating-point falsification attempts (never a proof)
     CERTIFICATE = "certificate"  # a file under certificates/
     FIGURE = "figure"  # a file under reports/
+    DERIVATION = "derivation"  # a derivation checked step by step (verify.proof)
 
 
 @dataclass(frozen=True)

@@ -17,6 +17,7 @@ from verify.proof import (
     assumed,
     by_algebra,
     by_bound,
+    by_citation,
     cos,
     dot,
     hat,
@@ -89,12 +90,12 @@ def h_dot() -> list[Derivation]:
     h = tr(Rbr) - 1
     d = Derivation(
         "lemma1.h-dot",
-        ctx.ddt(h),
+        ctx.ddt(h).named("ḣ"),
         ctx,
         statement="ḣ = (k_s/2) tr(R_rl - R_rlᵀ R̄_r²) along eq. (13)",
         cite="Lemma 1 proof, eq. (15)",
     )
-    d.equals(tr(ctx.ddt(Rbr)), by_algebra("h = tr(R̄_r) - 1, R_r constant"))
+    d.equals(tr(ctx.ddt(Rbr).named("(d/dt R̄_r)")), by_algebra("h = tr(R̄_r) - 1, R_r constant"))
     d.equals(ks * tr(Rr.T * Rb * sk(Rb.T * Rl)), by_algebra("eq. (13)"))
     d.equals(ks * tr(Rbr * sk(Rbr.T * Rrl)), by_algebra("R̄ᵀR_l = R̄_rᵀR_rl"))
     d.equals(HALF * ks * tr(Rrl - Rrl.T * Rbr * Rbr), by_algebra("cyclic trace"))
@@ -230,5 +231,36 @@ def gradient() -> list[Derivation]:
     return [directional, norm, vanishing]
 
 
+def trace_inequality() -> list[Derivation]:
+    """tr(AB) >= lambda_min(A) tr(B): as quoted (B any square matrix), and repaired."""
+    ctx = Context("trace inequality")
+    A, B = ctx.symmetric("A"), ctx.matrix("B")
+    G, v = ctx.matrix("G"), ctx.vector("v")
+    as_quoted = Derivation(
+        "lemma1.trace-inequality-as-quoted",
+        tr(A * B),
+        ctx,
+        statement="tr(AB) ≥ λmin(A) tr(B) for A symmetric, B any square matrix",
+        cite="Lemma 1 proof, citing Hatanaka et al. (2015)",
+    ).ge(lambda_min(A) * tr(B), by_citation("Hatanaka et al. 2015, as quoted in Lemma 1"))
+    psd = (G.T * G).named("GᵀG")
+    repaired = Derivation(
+        "lemma1.trace-inequality-psd",
+        tr(A * psd),
+        ctx,
+        statement="tr(AB) ≥ λmin(A) tr(B) for A symmetric and B = GᵀG ⪰ 0",
+        cite="repair of the quoted inequality",
+    ).ge(lambda_min(A) * tr(psd), by_bound(trace_lower_bound(A, psd, gram=G)))
+    nonsym = (G.T * G + hat(v)).named("(GᵀG + hat v)")
+    square_b = Derivation(
+        "lemma1.trace-inequality-sym-psd",
+        tr(A * nonsym),
+        ctx,
+        statement="B need not be symmetric: sym(B) ⪰ 0 suffices (tr(A hat v) = 0)",
+        cite="repair of the quoted inequality",
+    ).ge(lambda_min(A) * tr(nonsym), by_bound(trace_lower_bound(A, nonsym, gram=G)))
+    return [as_quoted, repaired, square_b]
+
+
 __all__ = ["boundary", "closed_loop_context", "gradient", "h_dot", "rbar_dot_form",
-           "rodrigues_spectrum"]
+           "rodrigues_spectrum", "trace_inequality"]

@@ -82,6 +82,7 @@ class DerivationResult:
             "name": self.name,
             "statement": self.statement,
             "cite": self.cite,
+            "start": self.start,
             "conclusion": f"{self.start} {self.relation} {self.end}",
             "verdict": self.verdict,
             "assumptions": self.assumptions,

@@ -144,7 +144,7 @@ class Expr:
         return result
 
     @property
-    def T(self) -> Expr:  # noqa: N802  (the usual name for a transpose)
+    def T(self) -> Expr:
         if self.shape == MATRIX:
             return Expr("transpose", (self,), MATRIX)
         if self.shape == SCALAR:
@@ -304,7 +304,7 @@ def fro2(m: Expr) -> Expr:
 
 def phi(r: Expr) -> Expr:
     """The energy function phi(R) = tr(I - R)/2 of Theorem 1's proof."""
-    return Fraction(1, 2) * tr(I3 - r)
+    return (Fraction(1, 2) * tr(I3 - r)).named(f"φ({r})")
 
 
 def rodrigues(axis: Expr, angle: Expr) -> Expr:

@@ -1,0 +1,90 @@
+"""Turn checked derivations (:mod:`verify.proof`) into claim outcomes and evidence."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
+from verify.proof import Derivation, DerivationResult, SearchSettings, check
+
+
+def search_settings(context: CheckContext, salt: int = 0) -> SearchSettings:
+    """Falsification effort per step: full by default, reduced with --quick."""
+    if context.quick:
+        return SearchSettings(samples=96, hypothesis_examples=25, ipopt_starts=1,
+                              seed=context.seed + salt)
+    return SearchSettings(samples=256, hypothesis_examples=60, ipopt_starts=3,
+                          seed=context.seed + salt)
+
+
+def derivation_evidence(result: DerivationResult) -> list[Evidence]:
+    """One derivation evidence item (its step table), plus one per exact counterexample."""
+    verdict = result.verdict
+    out = [
+        Evidence(
+            EvidenceKind.DERIVATION,
+            f"{result.name}: {result.start} {result.relation} {result.end} — {verdict} "
+            f"({len(result.steps)} step(s), {result.seconds:.2f} s)",
+            result.to_json(),
+            passed=verdict == "verified",
+        )
+    ]
+    for step in result.steps:
+        if step.counterexample is not None:
+            values = "; ".join(
+                f"{name} = {v['value']} (parameters {', '.join(v['parameters'])})"
+                for name, v in step.counterexample["values"].items()
+            )
+            out.append(
+                Evidence(
+                    EvidenceKind.COUNTEREXAMPLE,
+                    f"{result.name}, step {step.index} ({step.relation}) fails exactly at: "
+                    f"{values}",
+                    step.counterexample,
+                    passed=False,
+                )
+            )
+    return out
+
+
+def check_all(
+    derivations: Iterable[Derivation], context: CheckContext, salt: int = 0
+) -> tuple[list[DerivationResult], list[Evidence]]:
+    results, evidence = [], []
+    for k, d in enumerate(derivations):
+        r = check(d, search_settings(context, salt + 101 * k))
+        results.append(r)
+        evidence += derivation_evidence(r)
+    return results, evidence
+
+
+def outcome_from(
+    results: list[DerivationResult],
+    evidence: list[Evidence],
+    finding: str,
+    *,
+    expect_refuted: frozenset[str] = frozenset(),
+    success: Verdict = Verdict.VERIFIED,
+    repaired: str | None = None,
+) -> Outcome:
+    """Claim verdict from its derivations.
+
+    ``success`` when every derivation came out as expected (verified, or refuted for the
+    ids in ``expect_refuted``, which the claim is about); REFUTED if the claim is about a
+    refutation that holds; INCONCLUSIVE otherwise, naming what did not come out.
+    """
+    unexpected = [
+        r.name for r in results
+        if (r.verdict != "refuted" if r.name in expect_refuted else r.verdict != "verified")
+    ]
+    if unexpected:
+        return Outcome(
+            Verdict.INCONCLUSIVE,
+            "Not every derivation came out as the check expects: "
+            + ", ".join(f"{n} ({next(r.verdict for r in results if r.name == n)})"
+                        for n in unexpected)
+            + ". " + finding,
+            tuple(evidence),
+            repaired,
+        )
+    return Outcome(success, finding, tuple(evidence), repaired)
