@@ -154,7 +154,8 @@ def boundary() -> list[Derivation]:
         HALF * ks * tr(Rrl - Rrl.T * Rbr * Rbr),
         ctx,
         where=(on_boundary,),
-        statement="on the boundary ḣ = k_s tr{sym(R_rl)(I - ξξᵀ)} ≥ k_s λmin(sym R_rl) tr(I - ξξᵀ) ≥ 0",
+        statement="on the boundary ḣ = k_s tr{sym(R_rl)(I - ξξᵀ)} "
+        "≥ k_s λmin(sym R_rl) tr(I - ξξᵀ) ≥ 0",
         cite="Lemma 1 proof, after eq. (15)",
     )
     rewrite.equals(

@@ -155,7 +155,7 @@ def storage_sign() -> list[Derivation]:
 
 def v_dot(loop: ClosedLoop | None = None) -> list[Derivation]:
     c = loop or ClosedLoop()
-    ks, Rbr, Rrl = c.ks, c.Rbr, c.Rrl
+    ks = c.ks
     identity = (
         -QUARTER * ks * (tr(c.A1 * (I3 - c.Rb.T * c.Rl)) + tr(c.A2 * (I3 - c.Q)))
     )

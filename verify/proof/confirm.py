@@ -191,7 +191,7 @@ def _sign_at(value, xp: ExactPoint, atoms: dict) -> int | None:
             elif num.degree(g) > 0 or den.degree(g) > 0:
                 return None
         lo, hi = _interval_poly(num, boxes)
-        dlo, dhi = _interval_poly(den, boxes)
+        dlo, _ = _interval_poly(den, boxes)
         if dlo > 0 and (lo > 0 or hi < 0):
             return 1 if lo > 0 else -1
         if all(a.lo == a.hi for a in unknown.values()):
