@@ -25,7 +25,7 @@ def test_help_lists_current_and_planned_commands():
         assert cmd in out.stdout
 
 
-@pytest.mark.parametrize("cmd", ["check", "gate", "certificates", "simulate"])
+@pytest.mark.parametrize("cmd", ["gate", "certificates", "simulate"])
 def test_planned_commands_say_not_yet_available(cmd, capsys):
     assert main([cmd]) == 2
     assert "not yet available" in capsys.readouterr().err
@@ -37,6 +37,17 @@ def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys)
     verdicts = {c["id"]: c["verdict"] for c in data["claims"]}
     assert verdicts["sec2.wtw-invertible"] == "refuted"
     assert verdicts["sec2.stealthiness"] == "verified-with-repair"
+    assert verdicts["lemma1.trace-inequality"] == "refuted"
+    assert verdicts["thm1.v-dot"] == "verified"
+    assert verdicts["lemma1.nagumo-gradient"] == "verified-with-repair"
+    steps = [
+        s
+        for c in data["claims"]
+        for e in c["evidence"]
+        if e["kind"] == "derivation"
+        for s in e["data"]["steps"]
+    ]
+    assert len(steps) > 40 and all(s["verdict"] in ("verified", "refuted") for s in steps)
     md = (tmp_path / "report.md").read_text()
     assert "Repaired statement" in md and "sec2.stealthiness" in md
     assert "<table>" in (tmp_path / "report.html").read_text()

@@ -264,6 +264,7 @@ def _describe(problem: StepProblem, xp: ExactPoint) -> dict:
         out[v.name] = {
             "kind": v.kind,
             "parameters": exact,
+            "approx_parameters": approx,
             "value": np.round(np.array(_flatten(value) if isinstance(value, list) else value,
                                        dtype=float), 6).tolist(),
         }

@@ -346,13 +346,14 @@ def _assumption_constraints(kind: str, value) -> list:
 def search(problem: StepProblem, cfg: SearchSettings, confirm=None):
     """Run the searches in turn; stop at the first candidate ``confirm`` accepts.
 
-    hypothesis goes first: its counterexamples are shrunk to short rationals.
+    The cheap batch of random points goes first; confirmation rounds a candidate to
+    the shortest rationals that still fail, so reported points stay readable.
 
     Returns the report and the confirmed counterexample (or None).
     """
     report = SearchReport()
     tried = 0
-    for run in (hypothesis_search, random_search, ipopt_search):
+    for run in (random_search, hypothesis_search, ipopt_search):
         with np.errstate(all="ignore"):
             run(problem, cfg, report)
         if confirm is None:
