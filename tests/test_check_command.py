@@ -81,3 +81,11 @@ def test_missing_and_non_python_files_exit_2(tmp_path, capsys):
     other = tmp_path / "d.txt"
     other.write_text("x")
     assert main(["check", str(other)]) == 2
+
+
+def test_the_readme_example_checks(tmp_path):
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+    start = readme.index("```python\nfrom fractions") + len("```python\n")
+    path = tmp_path / "readme_example.py"
+    path.write_text(readme[start : readme.index("```", start)])
+    assert main(["check", str(path), "--quick"]) == 0

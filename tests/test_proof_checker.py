@@ -221,3 +221,24 @@ def test_floats_and_shape_errors_are_refused_where_written():
     d = Derivation("mix", tr(R), ctx).le(3, by_citation("x"))
     with pytest.raises(ProofSyntaxError, match="mix"):
         d.ge(-1, by_citation("x"))
+
+
+def test_ipopt_finds_a_violation_confined_to_a_small_region():
+    """tr R >= -1 + 1/1000 fails only within ~0.045 rad of angle pi; one random point and
+    one hypothesis example will not see it, the slack minimisation does."""
+    ctx = Context("small region")
+    R = ctx.rotation("R")
+    d = Derivation("near pi", tr(R), ctx).ge(-1 + Fraction(1, 1000), by_citation("mutated"))
+    cfg = SearchSettings(samples=1, hypothesis_examples=1, ipopt_starts=2, seed=3)
+    result = check(d, cfg)
+    step = result.steps[0]
+    assert step.verdict == "refuted"
+    assert step.falsification["ipopt_runs"] >= 1
+    assert _violation_at_counterexample(d, 0, step.counterexample) > 0
+
+
+def test_matrix_chains_may_end_in_zero():
+    ctx = Context("zero")
+    R = ctx.rotation("R")
+    d = Derivation("skew of identity", sk(R.T * R), ctx).equals(0, by_algebra("RᵀR = I"))
+    assert check(d, QUICK).verdict == "verified"

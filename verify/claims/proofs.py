@@ -17,8 +17,13 @@ def search_settings(context: CheckContext, salt: int = 0) -> SearchSettings:
                           seed=context.seed + salt)
 
 
-def derivation_evidence(result: DerivationResult) -> list[Evidence]:
-    """One derivation evidence item (its step table), plus one per exact counterexample."""
+def derivation_evidence(result: DerivationResult, expected: str = "verified") -> list[Evidence]:
+    """One derivation evidence item (its step table), plus one per exact counterexample.
+
+    ``passed`` means the derivation came out as the claim's check expects (verified, or
+    refuted for a statement the claim shows false); a counterexample item is passed when
+    it was confirmed exactly, which it always is once reported.
+    """
     verdict = result.verdict
     out = [
         Evidence(
@@ -26,7 +31,7 @@ def derivation_evidence(result: DerivationResult) -> list[Evidence]:
             f"{result.name}: {result.start} {result.relation} {result.end} — {verdict} "
             f"({len(result.steps)} step(s), {result.seconds:.2f} s)",
             result.to_json(),
-            passed=verdict == "verified",
+            passed=verdict == expected,
         )
     ]
     for step in result.steps:
@@ -41,7 +46,7 @@ def derivation_evidence(result: DerivationResult) -> list[Evidence]:
                     f"{result.name}, step {step.index} ({step.relation}) fails exactly at: "
                     f"{values}",
                     step.counterexample,
-                    passed=False,
+                    passed=True,
                 )
             )
     return out
@@ -49,20 +54,17 @@ def derivation_evidence(result: DerivationResult) -> list[Evidence]:
 
 def check_all(
     derivations: Iterable[Derivation], context: CheckContext, salt: int = 0
-) -> tuple[list[DerivationResult], list[Evidence]]:
-    results, evidence = [], []
-    for k, d in enumerate(derivations):
-        r = check(d, search_settings(context, salt + 101 * k))
-        results.append(r)
-        evidence += derivation_evidence(r)
-    return results, evidence
+) -> list[DerivationResult]:
+    return [
+        check(d, search_settings(context, salt + 101 * k)) for k, d in enumerate(derivations)
+    ]
 
 
 def outcome_from(
     results: list[DerivationResult],
-    evidence: list[Evidence],
     finding: str,
     *,
+    extra: Iterable[Evidence] = (),
     expect_refuted: frozenset[str] = frozenset(),
     success: Verdict = Verdict.VERIFIED,
     repaired: str | None = None,
@@ -73,6 +75,12 @@ def outcome_from(
     ids in ``expect_refuted``, which the claim is about); REFUTED if the claim is about a
     refutation that holds; INCONCLUSIVE otherwise, naming what did not come out.
     """
+    evidence: list[Evidence] = []
+    for r in results:
+        evidence += derivation_evidence(
+            r, "refuted" if r.name in expect_refuted else "verified"
+        )
+    evidence += list(extra)
     unexpected = [
         r.name for r in results
         if (r.verdict != "refuted" if r.name in expect_refuted else r.verdict != "verified")

@@ -42,10 +42,9 @@ def _kernel_evidence() -> Evidence:
     scope="every rotation (axis ξ by stereographic parameters, angle by tan(θ/2))",
 )
 def rodrigues_spectrum(context: CheckContext) -> Outcome:
-    results, evidence = check_all(lemma1.rodrigues_spectrum(), context, 1)
+    results = check_all(lemma1.rodrigues_spectrum(), context, 1)
     return outcome_from(
         results,
-        evidence,
         "The spectral decomposition gives eigenvalue 2 on ξ and 2cosθ (twice) on ξ⊥, so "
         "R + Rᵀ ⪰ 0 ⟺ cosθ ≥ 0 ⟺ tr R ≥ 1, as the paper says.",
     )
@@ -61,8 +60,8 @@ def rodrigues_spectrum(context: CheckContext) -> Outcome:
     scope="all R̄, R_l in SO(3), k_s > 0",
 )
 def rbar_dot_form(context: CheckContext) -> Outcome:
-    results, evidence = check_all(lemma1.rbar_dot_form(), context, 2)
-    return outcome_from(results, evidence, "The attitude-synchronisation form (13) holds.")
+    results = check_all(lemma1.rbar_dot_form(), context, 2)
+    return outcome_from(results, "The attitude-synchronisation form (13) holds.")
 
 
 @REGISTRY.claim(
@@ -77,8 +76,8 @@ def rbar_dot_form(context: CheckContext) -> Outcome:
     scope="all R_r, R̄, R_l in SO(3), k_s > 0",
 )
 def h_dot(context: CheckContext) -> Outcome:
-    results, evidence = check_all(lemma1.h_dot(), context, 3)
-    return outcome_from(results, evidence, "Every step of eq. (15) holds exactly.")
+    results = check_all(lemma1.h_dot(), context, 3)
+    return outcome_from(results, "Every step of eq. (15) holds exactly.")
 
 
 @REGISTRY.claim(
@@ -94,15 +93,14 @@ def h_dot(context: CheckContext) -> Outcome:
     scope="R̄_r = exp(θ hat ξ) with cosθ = 0, any R_rl, k_s > 0",
 )
 def boundary(context: CheckContext) -> Outcome:
-    results, evidence = check_all(lemma1.boundary(), context, 4)
-    evidence.append(_kernel_evidence())
+    results = check_all(lemma1.boundary(), context, 4)
     return outcome_from(
         results,
-        evidence,
         "Every step holds. The trace-inequality step is valid here because its matrix B = "
         "I - ξξᵀ is positive semidefinite (exactly hat(ξ)ᵀhat(ξ)); the inequality as the "
         "paper quotes it, for any square B, is false (lemma1.trace-inequality). The sign "
         "uses Assumption 1, item 2; in fact ḣ > 0 strictly on the boundary then.",
+        extra=(_kernel_evidence(),),
     )
 
 
@@ -117,10 +115,9 @@ def boundary(context: CheckContext) -> Outcome:
     scope="3x3 matrices",
 )
 def trace_inequality(context: CheckContext) -> Outcome:
-    results, evidence = check_all(lemma1.trace_inequality(), context, 5)
+    results = check_all(lemma1.trace_inequality(), context, 5)
     return outcome_from(
         results,
-        evidence,
         "As quoted the inequality is false (exact counterexample above). It holds when "
         "sym(B) ⪰ 0, and both places the paper uses it (Lemma 1 with B = I - ξξᵀ, "
         "Theorem 1 with B = I - R̄ᵀR_l and I - R_lᵀR̄, where sym(B) = ½(I - Q)ᵀ(I - Q)) "
@@ -143,10 +140,9 @@ def trace_inequality(context: CheckContext) -> Outcome:
     scope="all R̄_r in SO(3)",
 )
 def nagumo_gradient(context: CheckContext) -> Outcome:
-    results, evidence = check_all(lemma1.gradient(), context, 6)
+    results = check_all(lemma1.gradient(), context, 6)
     return outcome_from(
         results,
-        evidence,
         "The paper's argument uses the gradient in R^{3x3}, which is I everywhere, including "
         "at angle π where the gradient on the manifold vanishes; on a manifold that "
         "premise proves nothing. The premise Nagumo's theorem needs does hold: on the "
@@ -191,8 +187,8 @@ def invariance(context: CheckContext) -> Outcome:
     scope="all R in SO(3)",
 )
 def phi(context: CheckContext) -> Outcome:
-    results, evidence = check_all(theorem1.phi_identity(), context, 7)
-    return outcome_from(results, evidence, "Holds (it uses RᵀR = I).")
+    results = check_all(theorem1.phi_identity(), context, 7)
+    return outcome_from(results, "Holds (it uses RᵀR = I).")
 
 
 @REGISTRY.claim(
@@ -209,14 +205,13 @@ def phi(context: CheckContext) -> Outcome:
 def storage_derivatives(context: CheckContext) -> Outcome:
     loop = theorem1.ClosedLoop()
     derivations = theorem1.s_r_dot(loop) + theorem1.s_rl_dot(loop) + theorem1.storage_sign()
-    results, evidence = check_all(derivations, context, 8)
-    evidence.append(_kernel_evidence())
+    results = check_all(derivations, context, 8)
     return outcome_from(
         results,
-        evidence,
         "Every step holds. The bounds use the trace inequality with B = I - R̄ᵀR_l (or its "
         "transpose), whose symmetric part ½(I - B')ᵀ(I - B') is PSD; no assumption is "
         "needed for the two chains themselves.",
+        extra=(_kernel_evidence(),),
     )
 
 
@@ -234,15 +229,14 @@ def storage_derivatives(context: CheckContext) -> Outcome:
 def v_dot(context: CheckContext) -> Outcome:
     loop = theorem1.ClosedLoop()
     derivations = theorem1.v_dot(loop)
-    results, evidence = check_all(derivations, context, 9)
-    evidence.append(_kernel_evidence())
+    results = check_all(derivations, context, 9)
     return outcome_from(
         results,
-        evidence,
         "The human terms cancel exactly and V̇ equals the trace expression for every "
         "command; the bound follows; V̇ ≤ 0 under Lemma 1 and item 2. Also checked: "
         "(k_s/8)(λ1+λ2)‖I - R_lᵀR̄‖² ≤ -V̇, so V̇ = 0 forces R_l = R̄ when λ1 + λ2 > 0, "
         "and V̇ = 0 on R_l = R̄ for any command: 'V̇ = 0 iff R_l = R̄' holds.",
+        extra=(_kernel_evidence(),),
     )
 
 
@@ -257,10 +251,9 @@ def v_dot(context: CheckContext) -> Outcome:
     scope="all rotations and commands",
 )
 def lasalle_derivative(context: CheckContext) -> Outcome:
-    results, evidence = check_all(theorem1.lasalle(), context, 10)
+    results = check_all(theorem1.lasalle(), context, 10)
     return outcome_from(
         results,
-        evidence,
         "On R_l = R̄ the derivative is -hat(R_lᵀω_h^s), zero only for ω_h^s = 0, as the "
         "paper says. The intermediate remark 'V̇ ≡ 0 implies sk(R_lᵀR̄) = 0' is weaker than "
         "what the formula uses: sk = 0 also allows R_lᵀR̄ = 2ξξᵀ - I (angle π), where the "

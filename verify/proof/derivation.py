@@ -35,6 +35,7 @@ from verify.proof.expr import (
     Variable,
     as_expr,
     var,
+    zero,
 )
 from verify.proof.justify import Justification
 
@@ -178,6 +179,8 @@ class Derivation:
         return self.steps[-1].rhs if self.steps else self.start
 
     def _add(self, relation: str, expr, because: Justification, where, note) -> Derivation:
+        if isinstance(expr, int) and expr == 0 and self.start.shape != SCALAR:
+            expr = zero(self.start.shape)  # ".equals(0)" for a matrix or vector chain
         expr = as_expr(expr)
         if expr.shape != self.start.shape:
             raise ProofSyntaxError(
