@@ -110,10 +110,5 @@ def _sum(x: Expr | None, y: Expr | None) -> Expr | None:
 
 
 def _mul(op: str, x: Expr, y: Expr) -> Expr:
-    return Expr(op, (x, y), _product_shape(op, x, y))
-
-
-def _product_shape(op: str, x: Expr, y: Expr) -> tuple:
-    if op == "scale":
-        return y.shape
-    return y.shape  # matmul: (3x3)(3x3) -> 3x3, (3x3)(3) -> 3
+    """A product node like the original: scale(s, X) and matmul(M, X) have X's shape."""
+    return Expr(op, (x, y), y.shape)

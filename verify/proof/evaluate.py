@@ -77,14 +77,12 @@ def _apply(node: Expr, alg: Algebra, env, ev: Callable[[Expr], Value]) -> Value:
     if op == "trace":
         m = a[0]
         return m[0][0] + m[1][1] + m[2][2]
-    if op in ("sk", "sym"):
+    if op == "sym":
         m, half = a[0], alg.const(Fraction(1, 2))
-        sign = -1 if op == "sk" else 1
-        return [
-            [half * (m[i][j] + m[j][i]) if sign > 0 else half * (m[i][j] - m[j][i])
-             for j in range(3)]
-            for i in range(3)
-        ]
+        return [[half * (m[i][j] + m[j][i]) for j in range(3)] for i in range(3)]
+    if op == "sk":
+        m, half = a[0], alg.const(Fraction(1, 2))
+        return [[half * (m[i][j] - m[j][i]) for j in range(3)] for i in range(3)]
     if op == "hat":
         x, y, z = a[0]
         zero = alg.const(Fraction(0))

@@ -322,9 +322,8 @@ def _require(e: Expr, shape: tuple, op: str) -> None:
         )
 
 
-def variables_of(*exprs: Expr) -> list[Variable]:
-    """The free variables of expressions, in first-appearance order."""
-    seen: dict[int, Variable] = {}
+def nodes(*exprs: Expr):
+    """Every node of the trees once (shared subtrees once), depth first, left to right."""
     stack = list(reversed(exprs))
     visited: set[int] = set()
     while stack:
@@ -332,9 +331,16 @@ def variables_of(*exprs: Expr) -> list[Variable]:
         if id(e) in visited:
             continue
         visited.add(id(e))
+        yield e
+        stack.extend(reversed(e.args))
+
+
+def variables_of(*exprs: Expr) -> list[Variable]:
+    """The free variables of expressions, in first-appearance order."""
+    seen: dict[int, Variable] = {}
+    for e in nodes(*exprs):
         if e.op == "var":
             seen.setdefault(e.data.uid, e.data)
-        stack.extend(reversed(e.args))
     return list(seen.values())
 
 

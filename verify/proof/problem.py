@@ -15,7 +15,7 @@ from verify.proof.algebras import ExactAlgebra, ExactSpace
 from verify.proof.derivation import Assumption, Condition
 from verify.proof.evaluate import evaluate
 from verify.proof.exact import KnownFraction
-from verify.proof.expr import Expr, Variable, structural_key, variables_of
+from verify.proof.expr import Expr, Variable, nodes, structural_key, variables_of
 
 
 def _flatten(value) -> list:
@@ -27,15 +27,9 @@ def _flatten(value) -> list:
 def lambda_min_nodes(*exprs: Expr) -> list[Expr]:
     """Structurally distinct lambda_min nodes in expressions."""
     found: dict[tuple, Expr] = {}
-    stack, seen = list(exprs), set()
-    while stack:
-        e = stack.pop()
-        if id(e) in seen:
-            continue
-        seen.add(id(e))
+    for e in nodes(*exprs):
         if e.op == "lambda_min":
             found.setdefault(structural_key(e.args[0]), e)
-        stack.extend(e.args)
     return list(found.values())
 
 
