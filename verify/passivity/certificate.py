@@ -1,0 +1,158 @@
+"""KYP certificates: the exact check, and their JSON form under ``certificates/``.
+
+A certificate of passivity for a minimal realisation (A, B, C, D) of H(s) is a rational
+symmetric P with
+
+    P > 0   and   M(P) = [[A^T P + P A, P B - C^T], [B^T P - C, -(D + D^T)]] <= 0,
+
+the KYP (positive-real) lemma; x^T P x / 2 is then a storage function of the human
+(Theorem 1's S_h). :func:`check_kyp` decides both conditions in exact rational
+arithmetic (:mod:`verify.passivity.exact`): no solver, no floating point. The model
+data travel inside the certificate as exact rationals, so a certificate is checked
+against the model it names, and editing either makes the check fail unless the edited
+pair is itself valid.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from verify.passivity import exact as ex
+
+SCHEMA = "verify-kyp-certificate/1"
+
+
+@dataclass(frozen=True)
+class ExactModel:
+    """Exact rational (A, B, C, D) of a model; n may be 0."""
+
+    A: ex.RationalMatrix
+    B: ex.RationalMatrix
+    C: ex.RationalMatrix
+    D: ex.RationalMatrix
+
+    @property
+    def n(self) -> int:
+        return len(self.A)
+
+    @property
+    def m(self) -> int:
+        return len(self.D)
+
+    def fingerprint(self) -> str:
+        """sha256 of the exact data (binds a certificate to its model)."""
+        text = json.dumps([ex.to_strings(x) for x in (self.A, self.B, self.C, self.D)])
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def to_json(self) -> dict[str, Any]:
+        return {k: ex.to_strings(getattr(self, k)) for k in ("A", "B", "C", "D")}
+
+
+def exact_model(A, B, C, D) -> ExactModel:
+    n, m = len(A), len(D)
+    return ExactModel(
+        ex.to_rational(A) if n else [],
+        ex.to_rational(B) if n else [],
+        ex.to_rational(C) if n else [[] for _ in range(m)],
+        ex.to_rational(D),
+    )
+
+
+def kyp_matrix(model: ExactModel, P: ex.RationalMatrix) -> ex.RationalMatrix:
+    """M(P) of the KYP lemma, exactly."""
+    A, B, C, D = model.A, model.B, model.C, model.D
+    S = ex.add(D, ex.transpose(D))
+    if model.n == 0:
+        return ex.scale(-1, S)
+    AtP = ex.matmul(ex.transpose(A), P)
+    top_left = ex.add(AtP, ex.transpose(AtP))
+    off = ex.add(ex.matmul(P, B), ex.transpose(C), -1)
+    return ex.block([[top_left, off], [ex.transpose(off), ex.scale(-1, S)]])
+
+
+@dataclass(frozen=True)
+class KypCheck:
+    ok: bool
+    reason: str
+
+
+def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
+    """Exact decision of P = P^T > 0 and M(P) <= 0."""
+    n = model.n
+    if (n and ex.shape(P) != (n, n)) or (not n and any(P)):
+        return KypCheck(False, f"P must be {n} x {n}")
+    if n and not ex.is_symmetric(P):
+        return KypCheck(False, "P is not symmetric")
+    if n:
+        pd = ex.pd_ldl(P)
+        if not pd.ok:
+            return KypCheck(False, f"P is not positive definite ({pd.reason})")
+    negm = ex.scale(-1, kyp_matrix(model, P))
+    nsd = ex.psd_ldl(negm)
+    if not nsd.ok:
+        return KypCheck(False, f"the KYP matrix is not negative semidefinite ({nsd.reason})")
+    return KypCheck(True, "P > 0 and the KYP matrix is <= 0, by exact LDL^T")
+
+
+@dataclass(frozen=True)
+class Certificate:
+    name: str
+    source: str
+    model: ExactModel
+    P: ex.RationalMatrix
+    meta: dict
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "schema": SCHEMA,
+            "name": self.name,
+            "source": self.source,
+            "fingerprint": self.model.fingerprint(),
+            "statement": "P = P^T > 0 and [[A'P + PA, PB - C'], [B'P - C, -(D + D')]] <= 0",
+            "model": self.model.to_json(),
+            "P": ex.to_strings(self.P),
+            "meta": self.meta,
+        }
+
+
+def write_certificate(cert: Certificate, path: Path) -> None:
+    from verify.report.atomic import write_atomic
+
+    write_atomic(path, json.dumps(cert.to_json(), indent=1) + "\n")
+
+
+def read_certificate(path: Path) -> Certificate:
+    """Parse a certificate file; raises ValueError with one line on malformed content."""
+    try:
+        data = json.loads(Path(path).read_text())
+    except (OSError, json.JSONDecodeError) as exc:
+        raise ValueError(f"{path}: not a readable JSON certificate ({exc})") from None
+    if not isinstance(data, dict) or data.get("schema") != SCHEMA:
+        raise ValueError(f"{path}: schema is not {SCHEMA}")
+    try:
+        m = data["model"]
+        model = ExactModel(*(ex.from_strings(m[k]) for k in ("A", "B", "C", "D")))
+        P = ex.from_strings(data["P"])
+    except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
+        raise ValueError(f"{path}: malformed certificate ({exc})") from None
+    n, m = model.n, model.m
+    shapes = [(model.A, n, n), (model.B, n, m), (model.D, m, m)]
+    if any(len(x) != r or any(len(row) != c for row in x) for x, r, c in shapes) or len(
+        model.C
+    ) != m or any(len(row) != n for row in model.C) or m == 0:
+        raise ValueError(f"{path}: model matrices have inconsistent shapes")
+    return Certificate(str(data.get("name", "")), str(data.get("source", "")), model, P,
+                       data.get("meta", {}))
+
+
+def check_certificate_file(path: Path) -> KypCheck:
+    """Re-verify a stored certificate with no solver (``verify certificates check``)."""
+    cert = read_certificate(path)
+    data = json.loads(Path(path).read_text())
+    if data.get("fingerprint") != cert.model.fingerprint():
+        return KypCheck(False, "fingerprint does not match the model data")
+    return check_kyp(cert.model, cert.P)

@@ -1,0 +1,147 @@
+"""The passivity verdict of a model: passive / not passive / inconclusive (issue 4, item 2).
+
+Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
+certificate is sought and checked exactly (passive); failing that, witnesses are sought:
+an exact RHP pole or a bad pole at 0 (small models), and frequencies where the smallest
+eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. Anything
+else is inconclusive with the reason. A margin nu0 asks for nu(w) >= nu0 everywhere,
+decided as passivity of H - nu0 I (exactly: nu0 is rational).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from gmpy2 import mpq
+
+from verify.passivity.certificate import Certificate, ExactModel, exact_model
+from verify.passivity.kyp import find_certificate
+from verify.passivity.witness import (
+    Witness,
+    frequency_witness,
+    infinity_witness,
+    pole_witness,
+)
+
+if TYPE_CHECKING:
+    from verify.passivity.model import LTIModel
+
+PASSIVE, NOT_PASSIVE, INCONCLUSIVE = "passive", "not passive", "inconclusive"
+
+
+@dataclass
+class Decision:
+    model: LTIModel
+    verdict: str
+    reason: str
+    certificate: Certificate | None = None
+    witness: Witness | None = None
+    nu_min: tuple[float, float] | None = None  # (omega, nu) of the smallest nu found
+    margin: Fraction = Fraction(0)
+    seconds: float = 0.0
+
+    def to_json(self) -> dict:
+        return {
+            "name": self.model.name,
+            "source": self.model.source,
+            "verdict": self.verdict,
+            "reason": self.reason,
+            "margin": str(self.margin),
+            "states": self.model.n,
+            "ports": self.model.m,
+            "witness": None if self.witness is None else {
+                "kind": self.witness.kind, "summary": self.witness.summary,
+                **self.witness.data},
+            "nu_min": None if self.nu_min is None else {
+                "omega": self.nu_min[0], "nu": self.nu_min[1]},
+            "seconds": round(self.seconds, 4),
+        }
+
+
+def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
+    """nu(w) = lambda_min(H(jw) + H(jw)^H)/2 at each frequency (floating point)."""
+    n, m = model_A.shape[0], D.shape[0]
+    out = np.empty(len(omega))
+    for k, w in enumerate(omega):
+        if n:
+            try:
+                H = C @ np.linalg.solve(1j * w * np.eye(n) - model_A, B) + D
+            except np.linalg.LinAlgError:
+                out[k] = np.nan
+                continue
+        else:
+            H = D.astype(complex)
+        out[k] = np.linalg.eigvalsh(H + H.conj().T)[0] / 2
+    return out
+
+
+def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tuple]:
+    """Frequencies where nu is smallest: a log sweep around the poles, then refinement."""
+    eig = np.abs(np.linalg.eigvals(A)) if A.shape[0] else np.array([1.0])
+    eig = eig[eig > 0] if np.any(eig > 0) else np.array([1.0])
+    lo, hi = np.log10(eig.min()) - 3, np.log10(eig.max()) + 3
+    grid = np.concatenate([[0.0], np.logspace(lo, hi, count)])
+    with np.errstate(all="ignore"):
+        values = nu(A, B, C, D, grid)
+    values = np.where(np.isfinite(values), values, np.inf)
+    order = np.argsort(values)[:5]
+    found = []
+    for k in order:
+        w0 = grid[k]
+        if w0 > 0:
+            res = minimize_scalar(
+                lambda x: nu(A, B, C, D, np.array([10.0**x]))[0],
+                bounds=(np.log10(w0) - 0.1, np.log10(w0) + 0.1),
+                method="bounded",
+                options={"xatol": 1e-10},
+            )
+            if np.isfinite(res.fun) and res.fun < values[k]:
+                found.append((float(10.0**res.x), float(res.fun)))
+                continue
+        found.append((float(w0), float(values[k])))
+    found.sort(key=lambda p: p[1])
+    return [w for w, _ in found], found[0]
+
+
+def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
+    """Verdict for passivity of H (or of H - margin I when a margin is asked for)."""
+    start = time.perf_counter()
+    A, B, C, D = model.A, model.B, model.C, model.D
+    em = exact_model(A, B, C, D)
+    if margin:  # H - margin I, exactly
+        shift = mpq(margin)
+        em = ExactModel(em.A, em.B, em.C, [[x - shift if i == j else x for j, x in enumerate(row)]
+                                           for i, row in enumerate(em.D)])
+        D = D - float(margin) * np.eye(model.m)
+
+    def done(verdict, reason, **kw) -> Decision:
+        return Decision(model, verdict, reason, margin=margin,
+                        seconds=time.perf_counter() - start, **kw)
+
+    w = infinity_witness(em)
+    if w is not None:
+        return done(NOT_PASSIVE, w.summary, witness=w)
+    search = find_certificate(em, A, B, C, D)
+    if search.P is not None:
+        cert = Certificate(model.name, model.source, em, search.P,
+                           {"margin": str(margin), "numerical_margin": search.margin,
+                            **{k: v for k, v in model.meta.items()
+                               if isinstance(v, str | int | float | bool)}})
+        return done(PASSIVE, f"KYP certificate checked exactly: {search.reason}",
+                    certificate=cert)
+    w = pole_witness(em)
+    if w is not None:
+        return done(NOT_PASSIVE, w.summary, witness=w)
+    candidates, best = candidate_frequencies(A, B, C, D)
+    for omega in candidates:
+        w = frequency_witness(em, omega)
+        if w is not None:
+            return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
+    return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search.reason}; "
+                f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g})", nu_min=best)

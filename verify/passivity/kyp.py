@@ -1,0 +1,143 @@
+"""Find a KYP certificate numerically, then make it exact (untrusted search, trusted check).
+
+1. Balance the state coordinates with a diagonal similarity of powers of two (exact, so
+   the certificate maps back without rounding): badly scaled models (poles near 1e12
+   and 1e-4 together) become tractable.
+2. Solve the KYP LMI with cvxpy + Clarabel, maximising a margin t: P >= t I and
+   -M(P) >= t on every direction where a margin is possible (the state block and the
+   range of D + D^T), with tr P = n. Directions in the kernel of S = D + D^T carry the
+   equality (P B - C^T) N = 0 instead (N spans ker S; for a strictly proper model
+   N = I and the constraint is P B = C^T exactly).
+3. Round P to dyadic rationals, restore the equality constraints exactly by a symmetric
+   rank-2k correction (Peyrl-Parrilo style projection), and check P > 0, M(P) <= 0 by
+   exact LDL^T (:mod:`verify.passivity.certificate`). Several rounding precisions are
+   tried; the solver's status never decides anything.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import cvxpy as cp
+import numpy as np
+import scipy.linalg as sla
+import sympy as sp
+from gmpy2 import mpq
+
+from verify.passivity import exact as ex
+from verify.passivity.certificate import ExactModel, check_kyp
+
+
+@dataclass
+class KypSearch:
+    P: ex.RationalMatrix | None
+    margin: float | None
+    status: str
+    reason: str
+
+
+def _kernel_basis(S: ex.RationalMatrix) -> ex.RationalMatrix:
+    """Exact rational basis of ker S as columns (m x k); k may be 0."""
+    m = len(S)
+    M = sp.Matrix(m, m, lambda i, j: sp.Rational(int(S[i][j].numerator),
+                                                  int(S[i][j].denominator)))
+    vecs = M.nullspace()
+    if not vecs:
+        return [[] for _ in range(m)]
+    cols = [[mpq(int(sp.fraction(x)[0]), int(sp.fraction(x)[1])) for x in v] for v in vecs]
+    return ex.transpose(cols)
+
+
+def _balance(A: np.ndarray) -> np.ndarray:
+    """Diagonal scaling T (powers of 2) so that T^-1 A T is balanced."""
+    if A.shape[0] == 0:
+        return np.ones(0)
+    _, (scaling, _) = sla.matrix_balance(A, permute=False, separate=True)
+    return np.asarray(scaling, dtype=float)
+
+
+def solve_numeric(A, B, C, D, N: np.ndarray) -> tuple[np.ndarray | None, float | None, str]:
+    """Max-margin KYP solution in the given coordinates (cvxpy + Clarabel)."""
+    n, m = A.shape[0], D.shape[0]
+    S = D + D.T
+    P = cp.Variable((n, n), symmetric=True)
+    t = cp.Variable()
+    M = cp.bmat([[A.T @ P + P @ A, P @ B - C.T], [B.T @ P - C, -S]])
+    # margin on the state block and on the range of S (not on ker S)
+    if N.shape[1]:
+        Q, _ = np.linalg.qr(N)
+        range_proj = np.eye(m) - Q @ Q.T
+    else:
+        range_proj = np.eye(m)
+    E = sla.block_diag(np.eye(n), range_proj)
+    cons = [P >> t * np.eye(n), -M >> t * E, cp.trace(P) == n, t <= 1.0]
+    if N.shape[1]:
+        cons.append((P @ B - C.T) @ N == 0)
+    prob = cp.Problem(cp.Maximize(t), cons)
+    try:
+        prob.solve(solver=cp.CLARABEL)
+    except (cp.error.SolverError, ValueError) as exc:
+        return None, None, f"solver error: {exc}"
+    if P.value is None:
+        return None, None, f"solver status {prob.status}"
+    return np.asarray(P.value), float(t.value), str(prob.status)
+
+
+def _project_equalities(P: ex.RationalMatrix, G: ex.RationalMatrix, target: ex.RationalMatrix):
+    """Symmetric exact correction so that P G = target (G full column rank, G^T target sym)."""
+    R = ex.add(target, ex.matmul(P, G), -1)
+    GtG = sp.Matrix(ex.matmul(ex.transpose(G), G))
+    H = GtG.inv()
+    Hq = [[mpq(int(sp.fraction(H[i, j])[0]), int(sp.fraction(H[i, j])[1]))
+           for j in range(H.shape[1])] for i in range(H.shape[0])]
+    RH = ex.matmul(R, Hq)
+    GH = ex.matmul(G, Hq)
+    GtR = ex.matmul(ex.transpose(G), R)
+    term1 = ex.matmul(RH, ex.transpose(G))
+    term2 = ex.matmul(GH, ex.transpose(R))
+    term3 = ex.matmul(ex.matmul(GH, GtR), ex.matmul(Hq, ex.transpose(G)))
+    delta = ex.add(ex.add(term1, term2), term3, -1)
+    return ex.add(P, delta)
+
+
+def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
+    """Search, round, project and check; returns an exactly checked P or the reason."""
+    n, m = model.n, model.m
+    S = ex.add(model.D, ex.transpose(model.D))
+    N_exact = _kernel_basis(S)
+    k = len(N_exact[0]) if m else 0
+    if n == 0:
+        ok = check_kyp(model, [])
+        return KypSearch([] if ok.ok else None, None, "static", ok.reason)
+    scaling = _balance(A)
+    T, Ti = np.diag(scaling), np.diag(1.0 / scaling)
+    Ab, Bb, Cb = Ti @ A @ T, Ti @ B, C @ T
+    N = np.array([[float(x) for x in row] for row in N_exact]) if k else np.zeros((m, 0))
+    Pb, margin, status = solve_numeric(Ab, Bb, Cb, D, N)
+    if Pb is None:
+        return KypSearch(None, None, status, f"no numerical KYP solution ({status})")
+    P_float = Ti.T @ Pb @ Ti  # back to the model's coordinates
+    P_float = (P_float + P_float.T) / 2
+    if k:
+        G = ex.matmul(model.B, N_exact)
+        target = ex.matmul(ex.transpose(model.C), N_exact)
+        GtT = ex.matmul(ex.transpose(G), target)
+        if not ex.is_symmetric(GtT):
+            return KypSearch(None, margin, status,
+                             "N^T C B N is not symmetric, so P B N = C^T N has no symmetric P")
+        if sp.Matrix(ex.matmul(ex.transpose(G), G)).det() == 0:
+            return KypSearch(None, margin, status, "B N is rank deficient (not handled)")
+    scale = max(1.0, float(np.max(np.abs(P_float))))
+    last = "not tried"
+    for bits in (24, 36, 48, 60):
+        step_bits = max(bits - int(np.ceil(np.log2(scale))), 8)
+        P = ex.rationalize(P_float, step_bits)
+        P = [[(P[i][j] + P[j][i]) / 2 for j in range(n)] for i in range(n)]
+        if k:
+            P = _project_equalities(P, G, target)
+        result = check_kyp(model, P)
+        if result.ok:
+            return KypSearch(P, margin, status, f"{result.reason} ({bits}-bit rounding)")
+        last = result.reason
+    return KypSearch(None, margin, status,
+                     f"the rounded numerical solution fails the exact check: {last}")

@@ -1,0 +1,208 @@
+"""Witnesses of non-passivity, each checked in exact arithmetic (issue 4, item 4).
+
+- at infinity: a rational v with v^T (D + D^T) v < 0, so H(jw) + H(jw)^H has a negative
+  eigenvalue for all large w;
+- at a frequency: a rational w* and a rational complex vector v = a + jb with
+  v^H (H(jw*) + H(jw*)^H) v < 0, H(jw*) computed exactly over Q(j) by solving
+  (jw*I - A) X = B as a real 2n x 2n rational system;
+- a pole in the open right half-plane, or a pole of H at s = 0 that is not simple with a
+  positive semidefinite residue: from the exact transfer matrix (sympy, small models),
+  with the pole isolated by exact complex root isolation.
+
+A positive-real H is analytic in Re s > 0, has H(jw) + H(jw)^H >= 0 where defined, and
+only simple imaginary-axis poles with PSD residues, so each witness refutes passivity.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import numpy as np
+import sympy as sp
+from gmpy2 import mpq
+
+from verify.passivity import exact as ex
+from verify.passivity.certificate import ExactModel
+
+
+@dataclass
+class Witness:
+    kind: str  # "infinity", "frequency", "unstable-pole", "pole-at-zero"
+    summary: str
+    data: dict = field(default_factory=dict)
+
+
+def _rational_vector(v: np.ndarray, bits: int) -> list[mpq]:
+    scale = 2**bits
+    return [mpq(int(round(float(x) * scale)), scale) for x in v]
+
+
+def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
+    return sum((v[i] * M[i][j] * v[j] for i in range(len(v)) for j in range(len(v))), mpq(0))
+
+
+def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
+    """A rational v with v^T M v < 0 (exact), from the float eigenvector; None if none found."""
+    F = np.array([[float(x) for x in row] for row in M])
+    w, V = np.linalg.eigh((F + F.T) / 2)
+    if w[0] >= 0:
+        # the float eigenvalue may miss a tiny negative one; LDL decides below
+        if ex.psd_ldl(M).ok:
+            return None
+    v = V[:, 0] / np.max(np.abs(V[:, 0]))
+    for bits in (8, 16, 32, 53, 80):
+        q = _rational_vector(v, bits)
+        value = _quadratic(M, q)
+        if value < 0:
+            return q, value
+    return None
+
+
+def infinity_witness(model: ExactModel) -> Witness | None:
+    S = ex.add(model.D, ex.transpose(model.D))
+    found = _negative_direction(S)
+    if found is None:
+        return None
+    v, value = found
+    return Witness(
+        "infinity",
+        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {float(value):.3g} < 0 at v = "
+        f"{[str(x) for x in v]}, so H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞",
+        {"v": [str(x) for x in v], "value": str(value)},
+    )
+
+
+def _solve(M: ex.RationalMatrix, rhs: ex.RationalMatrix) -> ex.RationalMatrix | None:
+    """Exact Gaussian elimination M X = rhs; None if M is singular."""
+    n = len(M)
+    k = len(rhs[0]) if rhs else 0
+    a = [row[:] + r[:] for row, r in zip(M, rhs, strict=True)]
+    for col in range(n):
+        pivot = next((r for r in range(col, n) if a[r][col] != 0), None)
+        if pivot is None:
+            return None
+        a[col], a[pivot] = a[pivot], a[col]
+        p = a[col][col]
+        for r in range(n):
+            if r != col and a[r][col] != 0:
+                f = a[r][col] / p
+                a[r] = [x - f * y for x, y in zip(a[r], a[col], strict=True)]
+    return [[a[i][n + j] / a[i][i] for j in range(k)] for i in range(n)]
+
+
+def hermitian_part_at(model: ExactModel, omega: Fraction) -> ex.RationalMatrix | None:
+    """Real 2m x 2m form [[Re, -Im], [Im, Re]] of H(jw) + H(jw)^H, exactly; None at a pole."""
+    n, m = model.n, model.m
+    w = mpq(omega)
+    if n:
+        A, B, C = model.A, model.B, model.C
+        negA = ex.scale(-1, A)
+        wI = [[w if i == j else mpq(0) for j in range(n)] for i in range(n)]
+        big = ex.block([[negA, ex.scale(-1, wI)], [wI, negA]])
+        rhs = ex.block([[B], [ex.zeros(n, m)]])
+        X = _solve(big, rhs)
+        if X is None:
+            return None
+        Hr = ex.add(ex.matmul(C, X[:n]), model.D)
+        Hi = ex.matmul(C, X[n:])
+    else:
+        Hr, Hi = model.D, ex.zeros(m, m)
+    Pr = ex.add(Hr, ex.transpose(Hr))
+    Pi = ex.add(Hi, ex.transpose(Hi), -1)
+    return ex.block([[Pr, ex.scale(-1, Pi)], [Pi, Pr]])
+
+
+def frequency_witness(model: ExactModel, omega: float) -> Witness | None:
+    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at a rational w near omega."""
+    for limit in (10, 1000, 10**6, 10**12):
+        w = Fraction(omega).limit_denominator(limit) if omega else Fraction(0)
+        M = hermitian_part_at(model, w)
+        if M is None:
+            continue
+        found = _negative_direction(M)
+        if found is not None:
+            v, value = found
+            m = model.m
+            return Witness(
+                "frequency",
+                f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
+                f"{float(value):.3g} < 0 for an exact rational vector v = a + jb",
+                {"omega": str(w), "a": [str(x) for x in v[:m]],
+                 "b": [str(x) for x in v[m:]], "value": str(value)},
+            )
+    return None
+
+
+EXACT_POLE_LIMIT = 12  # states; the exact transfer matrix is formed with sympy
+
+
+def _transfer_entries(model: ExactModel):
+    s = sp.Symbol("s")
+    n = model.n
+
+    def q(x):
+        return sp.Rational(int(x.numerator), int(x.denominator))
+
+    A = sp.Matrix(n, n, lambda i, j: q(model.A[i][j]))
+    B = sp.Matrix(n, model.m, lambda i, j: q(model.B[i][j]))
+    C = sp.Matrix(model.m, n, lambda i, j: q(model.C[i][j]))
+    resolvent_num = (s * sp.eye(n) - A).adjugate()
+    det = (s * sp.eye(n) - A).det()
+    H = C * resolvent_num * B
+    return s, H, det
+
+
+def pole_witness(model: ExactModel) -> Witness | None:
+    """An exact RHP pole, or a non-simple / non-PSD-residue pole at 0 (small models)."""
+    if model.n == 0 or model.n > EXACT_POLE_LIMIT:
+        return None
+    s, H, det = _transfer_entries(model)
+    m = model.m
+    for i in range(m):
+        for j in range(m):
+            num, den = sp.fraction(sp.cancel(H[i, j] / det))
+            poly = sp.Poly(den, s)
+            if poly.degree() < 1:
+                continue
+            real, cplx = poly.intervals(all=True, eps=sp.Rational(1, 10**6))
+            for (lo, hi), _ in real:
+                if lo > 0:
+                    return Witness(
+                        "unstable-pole",
+                        f"H[{i},{j}] has a real pole in ({lo}, {hi}], in the right half-plane",
+                        {"entry": [i, j], "denominator": str(poly.as_expr()),
+                         "interval": [str(lo), str(hi)]},
+                    )
+            for (c1, c2), _ in cplx:
+                if sp.re(c1) > 0:
+                    return Witness(
+                        "unstable-pole",
+                        f"H[{i},{j}] has a complex pole in the rectangle [{c1}, {c2}], in the "
+                        "right half-plane",
+                        {"entry": [i, j], "denominator": str(poly.as_expr()),
+                         "rectangle": [str(c1), str(c2)]},
+                    )
+    # a pole at s = 0 must be simple with a Hermitian PSD residue
+    Hs = (H / det).applyfunc(sp.cancel)
+    multiplicity = 0
+    for e in Hs:
+        den = sp.Poly(sp.fraction(e)[1], s)
+        k = 0
+        while den.degree() > 0 and den.eval(0) == 0:
+            den = sp.Poly(sp.quo(den.as_expr(), s), s)
+            k += 1
+        multiplicity = max(multiplicity, k)
+    if multiplicity >= 2:
+        return Witness("pole-at-zero", f"H has a pole of order {multiplicity} at s = 0",
+                       {"order": multiplicity})
+    if multiplicity == 1:
+        residue = (Hs * s).applyfunc(lambda e: sp.cancel(e).subs(s, 0))
+        as_q = [[mpq(Fraction(str(x))) for x in row] for row in residue.tolist()]
+        if residue != residue.T or not ex.psd_ldl(as_q).ok:
+            return Witness(
+                "pole-at-zero",
+                f"the residue of H at s = 0 is {residue.tolist()}, not symmetric PSD",
+                {"residue": [[str(x) for x in row] for row in residue.tolist()]},
+            )
+    return None
