@@ -16,9 +16,8 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy.optimize import minimize_scalar
-
 from gmpy2 import mpq
+from scipy.optimize import minimize_scalar
 
 from verify.passivity.certificate import Certificate, ExactModel, exact_model
 from verify.passivity.kyp import find_certificate
@@ -66,7 +65,7 @@ class Decision:
 
 def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
     """nu(w) = lambda_min(H(jw) + H(jw)^H)/2 at each frequency (floating point)."""
-    n, m = model_A.shape[0], D.shape[0]
+    n, _m = model_A.shape[0], D.shape[0]
     out = np.empty(len(omega))
     for k, w in enumerate(omega):
         if n:

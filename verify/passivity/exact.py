@@ -35,7 +35,7 @@ def to_rational(a: np.ndarray | Sequence) -> RationalMatrix:
 def rationalize(a: np.ndarray, bits: int = 40) -> RationalMatrix:
     """Round a float matrix to dyadic rationals with ``bits`` fractional bits."""
     scale = 2**bits
-    return [[mpq(int(round(float(x) * scale)), scale) for x in row] for row in np.asarray(a)]
+    return [[mpq(round(float(x) * scale), scale) for x in row] for row in np.asarray(a)]
 
 
 def to_strings(m: RationalMatrix) -> list[list[str]]:
@@ -69,8 +69,8 @@ def transpose(m: RationalMatrix) -> RationalMatrix:
 
 
 def matmul(a: RationalMatrix, b: RationalMatrix) -> RationalMatrix:
-    ra, ca = shape(a)
-    rb, cb = shape(b)
+    _ra, ca = shape(a)
+    rb, _cb = shape(b)
     if ca != rb:
         raise ValueError("shape mismatch in matmul")
     bt = transpose(b)

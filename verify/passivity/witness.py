@@ -35,7 +35,7 @@ class Witness:
 
 def _rational_vector(v: np.ndarray, bits: int) -> list[mpq]:
     scale = 2**bits
-    return [mpq(int(round(float(x) * scale)), scale) for x in v]
+    return [mpq(round(float(x) * scale), scale) for x in v]
 
 
 def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
@@ -161,7 +161,7 @@ def pole_witness(model: ExactModel) -> Witness | None:
     m = model.m
     for i in range(m):
         for j in range(m):
-            num, den = sp.fraction(sp.cancel(H[i, j] / det))
+            _num, den = sp.fraction(sp.cancel(H[i, j] / det))
             poly = sp.Poly(den, s)
             if poly.degree() < 1:
                 continue
