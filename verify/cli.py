@@ -17,8 +17,6 @@ from verify import __version__
 from verify.errors import VerifyInputError
 
 PLANNED = {
-    "gate": ("passivity gate for human models H(s) with exact KYP certificates", "issue 4"),
-    "certificates": ("re-check stored certificates with no solver", "issue 4"),
     "simulate": ("reference closed-loop simulator with plots", "issue 5"),
 }
 
@@ -83,6 +81,29 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--quick", action="store_true", help="less falsification effort")
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
+
+    p_gate = sub.add_parser(
+        "gate",
+        help="passivity gate for human models H(s): exact KYP certificates or witnesses",
+        description="Exit 0 if every model is passive (with an exactly checked certificate), "
+        "1 if some model is not passive or inconclusive, 2 on bad input.",
+    )
+    p_gate.add_argument("models", nargs="+", type=Path, metavar="MODEL",
+                        help="TOML model file ([state_space] or [transfer_function])")
+    p_gate.add_argument("--margin", default="0", metavar="NU",
+                        help="require nu(w) >= NU for all w (exact rational, default 0)")
+    p_gate.add_argument("--band", metavar="W1:W2",
+                        help="passivity over a finite band only (not available yet)")
+    p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
+                        metavar="DIR", help="where certificates are written")
+    p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
+    p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+
+    p_cert = sub.add_parser("certificates", help="certificates/ tools")
+    cert_sub = p_cert.add_subparsers(dest="cert_command", metavar="ACTION", required=True)
+    p_cc = cert_sub.add_parser("check", help="re-verify stored certificates with no solver")
+    p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
+                      default=[Path("certificates")])
 
     for name, (text, issue) in PLANNED.items():
         p = sub.add_parser(name, help=f"{text} [not yet available: {issue}]")
@@ -151,6 +172,51 @@ def _cmd_check(args: argparse.Namespace) -> int:
     return 0 if verified == len(results) else 1
 
 
+def _cmd_gate(args: argparse.Namespace) -> int:
+    from verify.passivity.gate import parse_margin, run_gate, write_json, write_junit
+    from verify.passivity.model_file import load_model
+
+    if args.band:
+        raise VerifyInputError("--band: finite-band analysis is not available yet")
+    margin = parse_margin(args.margin)
+    models = [load_model(path) for path in args.models]  # validate all before any work
+    results = run_gate(models, margin, args.certificates)
+    for r in results:
+        print(r.line(), flush=True)
+    passed = sum(r.passed for r in results)
+    print(f"{passed} of {len(results)} model(s) passive" + (f" with margin {margin}"
+                                                          if margin else ""))
+    if args.json:
+        write_json(results, args.json)
+    if args.junit:
+        write_junit(results, args.junit)
+    return 0 if passed == len(results) else 1
+
+
+def _cmd_certificates(args: argparse.Namespace) -> int:
+    from verify.passivity.certificate import check_certificate_file
+
+    files: list[Path] = []
+    for p in args.paths:
+        if p.is_dir():
+            files += sorted(p.glob("*.json"))
+        elif p.is_file():
+            files.append(p)
+        else:
+            raise VerifyInputError(f"{p}: no such file or directory")
+    checks = []
+    for f in files:
+        try:
+            checks.append((f, check_certificate_file(f)))
+        except ValueError as exc:
+            raise VerifyInputError(str(exc)) from None
+    for f, c in checks:
+        print(f"{'ok     ' if c.ok else 'INVALID'} {f}: {c.reason}")
+    bad = sum(not c.ok for _, c in checks)
+    print(f"{len(checks) - bad} of {len(checks)} certificate(s) valid (exact re-check, no solver)")
+    return 0 if bad == 0 else 1
+
+
 def _cmd_list(_: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
 
@@ -211,7 +277,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         )
         return 2
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
-                "network": _cmd_network}
+                "network": _cmd_network, "gate": _cmd_gate,
+                "certificates": _cmd_certificates}
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:

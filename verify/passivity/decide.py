@@ -84,7 +84,7 @@ def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tu
     """Frequencies where nu is smallest: a log sweep around the poles, then refinement."""
     eig = np.abs(np.linalg.eigvals(A)) if A.shape[0] else np.array([1.0])
     eig = eig[eig > 0] if np.any(eig > 0) else np.array([1.0])
-    lo, hi = np.log10(eig.min()) - 3, np.log10(eig.max()) + 3
+    lo, hi = np.log10(eig.min()) - 4, np.log10(eig.max()) + 6
     grid = np.concatenate([[0.0], np.logspace(lo, hi, count)])
     with np.errstate(all="ignore"):
         values = nu(A, B, C, D, grid)

@@ -5,7 +5,8 @@
    and 1e-4 together) become tractable.
 2. Solve the KYP LMI with cvxpy + Clarabel, maximising a margin t: P >= t I and
    -M(P) >= t on every direction where a margin is possible (the state block and the
-   range of D + D^T), with tr P = n. Directions in the kernel of S = D + D^T carry the
+   range of D + D^T), t <= 1. (No trace normalisation: for a strictly proper model
+   P B = C^T fixes the scale of P.) Directions in the kernel of S = D + D^T carry the
    equality (P B - C^T) N = 0 instead (N spans ker S; for a strictly proper model
    N = I and the constraint is P B = C^T exactly).
 3. Round P to dyadic rationals, restore the equality constraints exactly by a symmetric
@@ -16,6 +17,7 @@
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import cvxpy as cp
@@ -70,12 +72,14 @@ def solve_numeric(A, B, C, D, N: np.ndarray) -> tuple[np.ndarray | None, float |
     else:
         range_proj = np.eye(m)
     E = sla.block_diag(np.eye(n), range_proj)
-    cons = [P >> t * np.eye(n), -M >> t * E, cp.trace(P) == n, t <= 1.0]
+    cons = [P >> t * np.eye(n), -M >> t * E, t <= 1.0]
     if N.shape[1]:
         cons.append((P @ B - C.T) @ N == 0)
     prob = cp.Problem(cp.Maximize(t), cons)
     try:
-        prob.solve(solver=cp.CLARABEL)
+        with warnings.catch_warnings():  # an inaccurate solution is caught by the exact check
+            warnings.simplefilter("ignore")
+            prob.solve(solver=cp.CLARABEL)
     except (cp.error.SolverError, ValueError) as exc:
         return None, None, f"solver error: {exc}"
     if P.value is None:

@@ -1,0 +1,95 @@
+"""`verify gate`: the passivity check a lab runs in CI on new human models (issue 4, item 7).
+
+Every model file is validated before any is analysed (bad input fails fast and whole).
+A passive verdict writes its exactly checked KYP certificate under the certificates
+directory; a JSON summary and a JUnit XML file (one test case per model) are optional.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from xml.sax.saxutils import escape, quoteattr
+
+from verify.errors import VerifyInputError
+from verify.passivity.certificate import write_certificate
+from verify.passivity.decide import PASSIVE, Decision, decide
+from verify.report.atomic import write_atomic
+
+
+def parse_margin(text: str) -> Fraction:
+    """A margin nu0 as an exact rational ("1e-8", "0.01", "1/100"); one-line error otherwise."""
+    try:
+        value = Fraction(text.strip())
+    except (ValueError, ZeroDivisionError):
+        raise VerifyInputError(f"--margin {text!r} is not a finite number") from None
+    return value
+
+
+def _slug(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "-", name).strip("-") or "model"
+
+
+@dataclass
+class GateResult:
+    decision: Decision
+    certificate_path: Path | None
+
+    @property
+    def passed(self) -> bool:
+        return self.decision.verdict == PASSIVE
+
+    def line(self) -> str:
+        d = self.decision
+        head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
+               f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
+        if self.passed:
+            return f"{head}; certificate {self.certificate_path}"
+        return f"{head}; {d.reason}"
+
+
+def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResult]:
+    results = []
+    for model in models:
+        d = decide(model, margin)
+        path = None
+        if d.certificate is not None:
+            tag = d.certificate.model.fingerprint()[:12]
+            path = certificates_dir / f"{_slug(model.name)}-{tag}.json"
+            write_certificate(d.certificate, path)
+        results.append(GateResult(d, path))
+    return results
+
+
+def write_json(results: list[GateResult], path: Path) -> None:
+    data = [
+        {**r.decision.to_json(), "passed": r.passed,
+         "certificate": None if r.certificate_path is None else str(r.certificate_path)}
+        for r in results
+    ]
+    write_atomic(path, json.dumps(data, indent=2) + "\n")
+
+
+def write_junit(results: list[GateResult], path: Path) -> None:
+    failures = sum(not r.passed for r in results)
+    total = sum(r.decision.seconds for r in results)
+    cases = []
+    for r in results:
+        d = r.decision
+        body = "" if r.passed else (
+            f"<failure message={quoteattr(d.verdict + ': ' + d.reason)}>"
+            f"{escape(d.reason)}</failure>"
+        )
+        cases.append(
+            f'  <testcase classname="verify.gate" name={quoteattr(d.model.name)} '
+            f'file={quoteattr(d.model.source)} time="{d.seconds:.4f}">{body}</testcase>'
+        )
+    xml = (
+        '<?xml version="1.0" encoding="utf-8"?>\n'
+        f'<testsuite name="passivity gate" tests="{len(results)}" failures="{failures}" '
+        f'errors="0" time="{total:.4f}">\n' + "\n".join(cases) + "\n</testsuite>\n"
+    )
+    write_atomic(path, xml)
