@@ -1,0 +1,73 @@
+"""`verify gate` and `verify certificates check`: exit codes, outputs, tampering."""
+
+from __future__ import annotations
+
+import json
+import xml.etree.ElementTree as ET
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+from verify.cli import main
+
+MODELS = Path(__file__).resolve().parents[1] / "verify" / "data" / "models"
+
+
+def test_gate_on_shipped_models_writes_checked_certificates_and_reports(tmp_path, capsys):
+    certs = tmp_path / "certs"
+    code = main(["gate", *map(str, sorted(MODELS.glob("*.toml"))), "--certificates",
+                 str(certs), "--json", str(tmp_path / "g.json"), "--junit",
+                 str(tmp_path / "g.xml")])
+    assert code == 1  # the reconstructed k_s = 2.5 model is not passive
+    data = {d["name"]: d for d in json.loads((tmp_path / "g.json").read_text())}
+    assert data["reconstructed k_s = 3.0"]["verdict"] == "passive"
+    bad = data["reconstructed k_s = 2.5"]
+    assert bad["verdict"] == "not passive" and bad["witness"]["kind"] == "frequency"
+    assert Fraction(bad["witness"]["omega"]) > 2  # the violation is only above 2 rad/s
+    suite = ET.parse(tmp_path / "g.xml").getroot()
+    assert suite.get("tests") == "3" and suite.get("failures") == "1"
+    assert main(["certificates", "check", str(certs)]) == 0
+    assert len(list(certs.glob("*.json"))) == 2
+
+
+def test_gate_exit_0_when_all_passive(tmp_path):
+    assert main(["gate", str(MODELS / "reconstructed_ks3p0.toml"), "--certificates",
+                 str(tmp_path)]) == 0
+
+
+def test_tampered_certificate_is_rejected(tmp_path, capsys):
+    main(["gate", str(MODELS / "example_state_space.toml"), "--certificates", str(tmp_path)])
+    (path,) = tmp_path.glob("*.json")
+    data = json.loads(path.read_text())
+    data["P"][0][0] = "1/1000"
+    path.write_text(json.dumps(data))
+    assert main(["certificates", "check", str(tmp_path)]) == 1
+    assert "INVALID" in capsys.readouterr().out
+    data = json.loads(path.read_text())
+    data["model"]["A"][0][0] = "-5"  # the model edited: fingerprint no longer matches
+    path.write_text(json.dumps(data))
+    assert main(["certificates", "check", str(path)]) == 1
+
+
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--margin", "abc"], "not a finite number"),
+        (["--band", "1:2"], "not available"),
+    ],
+)
+def test_bad_options_exit_2(args, message, capsys):
+    assert main(["gate", str(MODELS / "example_state_space.toml"), *args]) == 2
+    assert message in capsys.readouterr().err
+
+
+def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[state_space]\nA = [[nan]]\nB = [[1.0]]\nC = [[1.0]]\nD = [[0.0]]\n")
+    assert main(["gate", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1
+    broken = tmp_path / "c.json"
+    broken.write_text("{not json")
+    assert main(["certificates", "check", str(broken)]) == 2

@@ -1,0 +1,1 @@
+"""Passivity of LTI human models (issue 4)."""

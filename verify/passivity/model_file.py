@@ -1,0 +1,129 @@
+"""Model files: a human model H(s) as TOML, numbers only (issue 4, item 1).
+
+```toml
+name = "optional label"            # default: the file name without suffix
+description = "optional text"
+k_s = 2.5                          # optional, a number > 0 (the gain of Section 4)
+units = "optional text"
+reconstructed = true               # optional bool: the model was reconstructed, not measured
+
+# exactly one of the two tables:
+[state_space]                      # continuous time; A = [] (then B = C = []) for n = 0
+A = [[-1.0, 0.0], [0.0, -2.0]]
+B = [[1.0], [1.0]]
+C = [[1.0, 1.0]]
+D = [[0.0]]
+
+[transfer_function]                # element (i, j): coefficients, descending powers of s
+num = [[[1.2, 0.8], [0.05]], [[-0.05], [1.2, 0.8]]]
+den = [[[1.0, 2.0, 1.5], [1.0]], [[1.0], [1.0, 2.0, 1.5]]]
+```
+
+Values are read with ``tomllib`` and checked to be real finite numbers (TOML's ``nan`` and
+``inf`` are refused); nothing is evaluated. Unknown keys, at the top level or inside a
+table, are refused by name. A transfer function is realised minimally and checked by
+:func:`verify.passivity.model.from_transfer_function`. Every problem is a one-line
+:class:`~verify.errors.VerifyInputError` starting with the file path.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from verify.errors import VerifyInputError
+from verify.passivity.model import LTIModel, _state_space_model, _transfer_function_model
+
+TABLES = {"state_space": ("A", "B", "C", "D"), "transfer_function": ("num", "den")}
+TEXT_KEYS = ("name", "description", "units")
+ALLOWED_KEYS = {*TABLES, *TEXT_KEYS, "k_s", "reconstructed"}
+
+
+def _table(data: dict[str, Any], key: str, source: str) -> dict[str, Any]:
+    table = data[key]
+    if not isinstance(table, dict):
+        raise VerifyInputError(f"{source}: '{key}' must be a table [{key}]")
+    allowed = TABLES[key]
+    unknown = sorted(set(table) - set(allowed))
+    if unknown:
+        raise VerifyInputError(
+            f"{source}: unknown key(s) {', '.join(unknown)} in [{key}]; allowed: "
+            f"{', '.join(allowed)}"
+        )
+    missing = [k for k in allowed if k not in table]
+    if missing:
+        raise VerifyInputError(f"{source}: [{key}] is missing key(s) {', '.join(missing)}")
+    return table
+
+
+def _meta(data: dict[str, Any], source: str) -> dict[str, Any]:
+    meta: dict[str, Any] = {}
+    for key in TEXT_KEYS:
+        if key in data and not isinstance(data[key], str):
+            raise VerifyInputError(
+                f"{source}: '{key}' must be a string, got {type(data[key]).__name__}"
+            )
+    for key in ("description", "units"):
+        if key in data:
+            meta[key] = data[key]
+    if "k_s" in data:
+        k = data["k_s"]
+        if isinstance(k, bool) or not isinstance(k, int | float):
+            raise VerifyInputError(f"{source}: 'k_s' must be a number, got {type(k).__name__}")
+        if not math.isfinite(k) or k <= 0:
+            raise VerifyInputError(f"{source}: 'k_s' must be a finite number > 0, got {k!r}")
+        meta["k_s"] = float(k)
+    if "reconstructed" in data:
+        if not isinstance(data["reconstructed"], bool):
+            raise VerifyInputError(
+                f"{source}: 'reconstructed' must be true or false, got "
+                f"{type(data['reconstructed']).__name__}"
+            )
+        meta["reconstructed"] = data["reconstructed"]
+    return meta
+
+
+def parse_model(data: dict[str, Any], source: str) -> LTIModel:
+    """Validate a parsed TOML document and return the model (``source`` names the file)."""
+    unknown = sorted(set(data) - ALLOWED_KEYS)
+    if unknown:
+        raise VerifyInputError(
+            f"{source}: unknown key(s) {', '.join(unknown)}; "
+            f"allowed: {', '.join(sorted(ALLOWED_KEYS))}"
+        )
+    present = [key for key in TABLES if key in data]
+    if len(present) != 1:
+        raise VerifyInputError(
+            f"{source}: give exactly one of the tables [state_space] or [transfer_function]"
+            + (" (both are present)" if present else " (neither is present)")
+        )
+    meta = _meta(data, source)
+    name = data.get("name", Path(source).stem)
+    kind = present[0]
+    table = _table(data, kind, source)
+    ctx = f"{source} [{kind}]"
+    if kind == "state_space":
+        return _state_space_model(
+            table["A"], table["B"], table["C"], table["D"], ctx,
+            name=name, source=source, meta=meta,
+        )  # fmt: skip
+    return _transfer_function_model(
+        table["num"], table["den"], ctx, name=name, source=source, meta=meta
+    )
+
+
+def load_model(path: str | Path) -> LTIModel:
+    """Read and validate a model file; every problem is a one-line VerifyInputError."""
+    path = Path(path)
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise VerifyInputError(f"{path}: cannot read ({exc.strerror})") from None
+    try:
+        data = tomllib.loads(raw.decode("utf-8"))
+    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
+        message = " ".join(str(exc).split())
+        raise VerifyInputError(f"{path}: not valid TOML ({message})") from None
+    return parse_model(data, str(path))
