@@ -47,6 +47,8 @@ CASES = {
         ss([[-1e-4, 0], [0, -1e12]], [[1], [1e6]], [[1, 1e6]], [[0]]), PASSIVE),
     "badly scaled, not passive": (
         ss([[-1e-4, 0], [0, -1e12]], [[1], [1e6]], [[1, -2e6]], [[0]]), NOT_PASSIVE),
+    # on the boundary: nu(w) > 0 but ~ 1/w^4, and the KYP LMI pins P[0][0] = 2 exactly
+    "(s+1)/(s^2+s+1)": (ss([[0, 1], [-1, -1]], [[0], [1]], [[1, 1]], [[0]]), PASSIVE),
     # a frequency-domain violation at a finite frequency
     "1/(s^2+s+1)": (ss([[0, 1], [-1, -1]], [[0], [1]], [[1, 0]], [[0]]), NOT_PASSIVE),
 }

@@ -41,6 +41,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "--quick", action="store_true", help="fewer random samples in the numerical cross-checks"
     )
     p_all.add_argument("--seed", type=int, default=20261121, help="seed of the random samples")
+    p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
+                       metavar="DIR", help="where certificates are written (default certificates)")
     p_all.add_argument(
         "--only",
         metavar="PREFIX",
@@ -121,7 +123,8 @@ def _cmd_all(args: argparse.Namespace) -> int:
     claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
-    context = CheckContext(seed=args.seed, quick=args.quick, out_dir=args.out)
+    context = CheckContext(seed=args.seed, quick=args.quick, out_dir=args.out,
+                           certificates_dir=args.certificates)
     width = max(len(c.id) for c in claims)
 
     def progress(result) -> None:

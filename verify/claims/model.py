@@ -79,6 +79,7 @@ class CheckContext:
     max_bodies: int = 200
     out_dir: Path = Path("reports")
     quick: bool = False
+    certificates_dir: Path | None = None  # where passive verdicts store certificates
 
     def rng(self, salt: str) -> np.random.Generator:
         """A generator seeded from the run seed and the claim id, so claims are independent."""

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
+from fractions import Fraction
 
 import cvxpy as cp
 import numpy as np
@@ -104,6 +105,23 @@ def _project_equalities(P: ex.RationalMatrix, G: ex.RationalMatrix, target: ex.R
     return ex.add(P, delta)
 
 
+def _roundings(P_float: np.ndarray):
+    """Rational candidates near P: dyadic at several precisions, then short fractions.
+
+    Short continued-fraction rationals recover exact solutions on the boundary of the LMI
+    (e.g. a lossless direction that pins an entry of P to 2), which no dyadic rounding of
+    a floating-point P meets exactly.
+    """
+    scale = max(1.0, float(np.max(np.abs(P_float))))
+    for bits in (24, 36, 48, 60):
+        step_bits = max(bits - int(np.ceil(np.log2(scale))), 8)
+        yield f"{bits}-bit", ex.rationalize(P_float, step_bits)
+    for limit in (16, 1000, 10**6):
+        yield f"continued-fraction (denominators <= {limit})", [
+            [mpq(Fraction(float(x)).limit_denominator(limit)) for x in row] for row in P_float
+        ]
+
+
 def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
     """Search, round, project and check; returns an exactly checked P or the reason."""
     n, m = model.n, model.m
@@ -131,17 +149,14 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
                              "N^T C B N is not symmetric, so P B N = C^T N has no symmetric P")
         if sp.Matrix(ex.matmul(ex.transpose(G), G)).det() == 0:
             return KypSearch(None, margin, status, "B N is rank deficient (not handled)")
-    scale = max(1.0, float(np.max(np.abs(P_float))))
     last = "not tried"
-    for bits in (24, 36, 48, 60):
-        step_bits = max(bits - int(np.ceil(np.log2(scale))), 8)
-        P = ex.rationalize(P_float, step_bits)
+    for label, P in _roundings(P_float):
         P = [[(P[i][j] + P[j][i]) / 2 for j in range(n)] for i in range(n)]
         if k:
             P = _project_equalities(P, G, target)
         result = check_kyp(model, P)
         if result.ok:
-            return KypSearch(P, margin, status, f"{result.reason} ({bits}-bit rounding)")
+            return KypSearch(P, margin, status, f"{result.reason} ({label} rounding)")
         last = result.reason
     return KypSearch(None, margin, status,
                      f"the rounded numerical solution fails the exact check: {last}")
