@@ -105,7 +105,8 @@ def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tu
                 continue
         found.append((float(w0), float(values[k])))
     found.sort(key=lambda p: p[1])
-    return [w for w, _ in found], found[0]
+    # only frequencies where nu is negative in floating point are worth an exact check
+    return [w for w, v in found if v < 0], found[0]
 
 
 def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
