@@ -14,3 +14,4 @@ class DbarUndefinedError(VerifyInputError):
 
     It needs sum d_i != 0; near zero the direction is numerically meaningless.
     """
+

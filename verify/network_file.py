@@ -14,7 +14,6 @@ matrices must lie in SO(3) within a tolerance, or be projected onto it on reques
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -25,6 +24,7 @@ from verify import so3
 from verify.errors import VerifyInputError
 from verify.so3 import Array
 from verify.system.stealthy import as_network, dbar
+from verify.toml_input import read_toml
 
 ALLOWED_KEYS = {"name", "description", "quaternions", "rotations"}
 
@@ -107,12 +107,4 @@ def load_network(
 ) -> Network:
     """Read and validate a network file; every problem is a one-line VerifyInputError."""
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise VerifyInputError(f"{path}: cannot read ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise VerifyInputError(f"{path}: not valid TOML ({exc})") from None
-    return parse_network(data, str(path), project=project, tolerance=tolerance)
+    return parse_network(read_toml(path), str(path), project=project, tolerance=tolerance)

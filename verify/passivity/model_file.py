@@ -29,12 +29,12 @@ table, are refused by name. A transfer function is realised minimally and checke
 from __future__ import annotations
 
 import math
-import tomllib
 from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
 from verify.passivity.model import LTIModel, _state_space_model, _transfer_function_model
+from verify.toml_input import read_toml
 
 TABLES = {"state_space": ("A", "B", "C", "D"), "transfer_function": ("num", "den")}
 TEXT_KEYS = ("name", "description", "units")
@@ -117,13 +117,4 @@ def parse_model(data: dict[str, Any], source: str) -> LTIModel:
 def load_model(path: str | Path) -> LTIModel:
     """Read and validate a model file; every problem is a one-line VerifyInputError."""
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise VerifyInputError(f"{path}: cannot read ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        message = " ".join(str(exc).split())
-        raise VerifyInputError(f"{path}: not valid TOML ({message})") from None
-    return parse_model(data, str(path))
+    return parse_model(read_toml(path), str(path))
