@@ -36,7 +36,7 @@ from verify.proof import (
     trace_lower_bound,
 )
 from verify.proof.evaluate import NumpyAlgebra, evaluate
-from verify.proof.problem import _flatten
+from verify.proof.problem import flatten
 
 QUICK = SearchSettings(samples=96, hypothesis_examples=25, ipopt_starts=1, seed=5)
 HALF = Fraction(1, 2)
@@ -53,8 +53,8 @@ def _violation_at_counterexample(d: Derivation, index: int, cx: dict) -> float:
     for v in variables:
         params = cx["values"][v.name]["approx_parameters"]
         env[v.uid] = alg.bind(v, [np.array([p]) for p in params])
-    lhs = np.array(_flatten(evaluate(step.lhs, alg, env)), dtype=float).ravel()
-    rhs = np.array(_flatten(evaluate(step.rhs, alg, env)), dtype=float).ravel()
+    lhs = np.array(flatten(evaluate(step.lhs, alg, env)), dtype=float).ravel()
+    rhs = np.array(flatten(evaluate(step.rhs, alg, env)), dtype=float).ravel()
     size = 1 + np.abs(lhs).max() + np.abs(rhs).max()
     if step.relation == "=":
         return float(np.abs(lhs - rhs).max() / size)

@@ -127,6 +127,11 @@ def write_certificate(cert: Certificate, path: Path) -> None:
 
 def read_certificate(path: Path) -> Certificate:
     """Parse a certificate file; raises ValueError with one line on malformed content."""
+    return _load(path)[0]
+
+
+def _load(path: Path) -> tuple[Certificate, dict]:
+    """The certificate and the raw JSON it was read from (one read, one parse)."""
     try:
         data = json.loads(Path(path).read_text())
     except (OSError, json.JSONDecodeError) as exc:
@@ -145,14 +150,14 @@ def read_certificate(path: Path) -> Certificate:
         model.C
     ) != m or any(len(row) != n for row in model.C) or m == 0:
         raise ValueError(f"{path}: model matrices have inconsistent shapes")
-    return Certificate(str(data.get("name", "")), str(data.get("source", "")), model, P,
+    cert = Certificate(str(data.get("name", "")), str(data.get("source", "")), model, P,
                        data.get("meta", {}))
+    return cert, data
 
 
 def check_certificate_file(path: Path) -> KypCheck:
     """Re-verify a stored certificate with no solver (``verify certificates check``)."""
-    cert = read_certificate(path)
-    data = json.loads(Path(path).read_text())
+    cert, data = _load(path)
     if data.get("fingerprint") != cert.model.fingerprint():
         return KypCheck(False, "fingerprint does not match the model data")
     return check_kyp(cert.model, cert.P)

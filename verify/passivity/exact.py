@@ -55,6 +55,21 @@ def from_strings(rows: Sequence[Sequence[str]]) -> RationalMatrix:
     return out
 
 
+def to_sympy(m: RationalMatrix, rows: int | None = None, cols: int | None = None):
+    """The same exact matrix as a sympy Matrix (shape given explicitly for empty matrices)."""
+    import sympy as sp
+
+    r = len(m) if rows is None else rows
+    c = (len(m[0]) if m else 0) if cols is None else cols
+    return sp.Matrix(r, c, lambda i, j: sp.Rational(int(m[i][j].numerator),
+                                                    int(m[i][j].denominator)))
+
+
+def from_sympy(matrix) -> RationalMatrix:
+    """An exact rational sympy Matrix (entries sympy Rationals) as mpq rows."""
+    return [[mpq(int(x.p), int(x.q)) for x in row] for row in matrix.tolist()]
+
+
 def zeros(r: int, c: int) -> RationalMatrix:
     return [[mpq(0)] * c for _ in range(r)]
 

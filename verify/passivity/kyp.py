@@ -41,14 +41,10 @@ class KypSearch:
 
 def _kernel_basis(S: ex.RationalMatrix) -> ex.RationalMatrix:
     """Exact rational basis of ker S as columns (m x k); k may be 0."""
-    m = len(S)
-    M = sp.Matrix(m, m, lambda i, j: sp.Rational(int(S[i][j].numerator),
-                                                  int(S[i][j].denominator)))
-    vecs = M.nullspace()
+    vecs = ex.to_sympy(S).nullspace()
     if not vecs:
-        return [[] for _ in range(m)]
-    cols = [[mpq(int(sp.fraction(x)[0]), int(sp.fraction(x)[1])) for x in v] for v in vecs]
-    return ex.transpose(cols)
+        return [[] for _ in range(len(S))]
+    return ex.from_sympy(sp.Matrix.hstack(*vecs))
 
 
 def _balance(A: np.ndarray) -> np.ndarray:
@@ -122,10 +118,7 @@ def riccati_candidate(A, B, C, D) -> np.ndarray | None:
 def _project_equalities(P: ex.RationalMatrix, G: ex.RationalMatrix, target: ex.RationalMatrix):
     """Symmetric exact correction so that P G = target (G full column rank, G^T target sym)."""
     R = ex.add(target, ex.matmul(P, G), -1)
-    GtG = sp.Matrix(ex.matmul(ex.transpose(G), G))
-    H = GtG.inv()
-    Hq = [[mpq(int(sp.fraction(H[i, j])[0]), int(sp.fraction(H[i, j])[1]))
-           for j in range(H.shape[1])] for i in range(H.shape[0])]
+    Hq = ex.from_sympy(ex.to_sympy(ex.matmul(ex.transpose(G), G)).inv())
     RH = ex.matmul(R, Hq)
     GH = ex.matmul(G, Hq)
     GtR = ex.matmul(ex.transpose(G), R)
@@ -173,7 +166,7 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
         if not ex.is_symmetric(GtT):
             return KypSearch(None, None, "structure",
                              "N^T C B N is not symmetric, so P B N = C^T N has no symmetric P")
-        if sp.Matrix(ex.matmul(ex.transpose(G), G)).det() == 0:
+        if ex.to_sympy(ex.matmul(ex.transpose(G), G)).det() == 0:
             return KypSearch(None, None, "structure", "B N is rank deficient (not handled)")
     last, margin, status = "not tried", None, "riccati"
     for method in ("riccati", "sdp"):

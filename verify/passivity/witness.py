@@ -33,11 +33,6 @@ class Witness:
     data: dict = field(default_factory=dict)
 
 
-def _rational_vector(v: np.ndarray, bits: int) -> list[mpq]:
-    scale = 2**bits
-    return [mpq(round(float(x) * scale), scale) for x in v]
-
-
 def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
     return sum((v[i] * M[i][j] * v[j] for i in range(len(v)) for j in range(len(v))), mpq(0))
 
@@ -52,7 +47,7 @@ def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
             return None
     v = V[:, 0] / np.max(np.abs(V[:, 0]))
     for bits in (8, 16, 32, 53, 80):
-        q = _rational_vector(v, bits)
+        (q,) = ex.rationalize([v], bits)
         value = _quadratic(M, q)
         if value < 0:
             return q, value
@@ -140,13 +135,9 @@ EXACT_POLE_LIMIT = 12  # states; the exact transfer matrix is formed with sympy
 def _transfer_entries(model: ExactModel):
     s = sp.Symbol("s")
     n = model.n
-
-    def q(x):
-        return sp.Rational(int(x.numerator), int(x.denominator))
-
-    A = sp.Matrix(n, n, lambda i, j: q(model.A[i][j]))
-    B = sp.Matrix(n, model.m, lambda i, j: q(model.B[i][j]))
-    C = sp.Matrix(model.m, n, lambda i, j: q(model.C[i][j]))
+    A = ex.to_sympy(model.A, n, n)
+    B = ex.to_sympy(model.B, n, model.m)
+    C = ex.to_sympy(model.C, model.m, n)
     resolvent_num = (s * sp.eye(n) - A).adjugate()
     det = (s * sp.eye(n) - A).det()
     H = C * resolvent_num * B
@@ -158,11 +149,11 @@ def pole_witness(model: ExactModel) -> Witness | None:
     if model.n == 0 or model.n > EXACT_POLE_LIMIT:
         return None
     s, H, det = _transfer_entries(model)
+    Hs = (H / det).applyfunc(sp.cancel)
     m = model.m
     for i in range(m):
         for j in range(m):
-            _num, den = sp.fraction(sp.cancel(H[i, j] / det))
-            poly = sp.Poly(den, s)
+            poly = sp.Poly(sp.fraction(Hs[i, j])[1], s)
             if poly.degree() < 1:
                 continue
             real, cplx = poly.intervals(all=True, eps=sp.Rational(1, 10**6))
@@ -184,7 +175,6 @@ def pole_witness(model: ExactModel) -> Witness | None:
                          "rectangle": [str(c1), str(c2)]},
                     )
     # a pole at s = 0 must be simple with a Hermitian PSD residue
-    Hs = (H / det).applyfunc(sp.cancel)
     multiplicity = 0
     for e in Hs:
         den = sp.Poly(sp.fraction(e)[1], s)
@@ -198,8 +188,7 @@ def pole_witness(model: ExactModel) -> Witness | None:
                        {"order": multiplicity})
     if multiplicity == 1:
         residue = (Hs * s).applyfunc(lambda e: sp.cancel(e).subs(s, 0))
-        as_q = [[mpq(Fraction(str(x))) for x in row] for row in residue.tolist()]
-        if residue != residue.T or not ex.psd_ldl(as_q).ok:
+        if residue != residue.T or not ex.psd_ldl(ex.from_sympy(residue)).ok:
             return Witness(
                 "pole-at-zero",
                 f"the residue of H at s = 0 is {residue.tolist()}, not symmetric PSD",

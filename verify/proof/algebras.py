@@ -95,6 +95,15 @@ class CasadiAlgebra(Algebra):
         return symmetric_lambda_min(matrix)
 
 
+def det3(m: Sequence[Sequence[Value]]) -> Value:
+    """Determinant of a 3x3 matrix of scalars (any scalar type), by cofactors."""
+    return (
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    )
+
+
 def symmetric_lambda_min(m: Sequence[Sequence[Value]]) -> Value:
     """Closed-form smallest eigenvalue of sym(M), 3x3 (trigonometric formula).
 
@@ -107,11 +116,6 @@ def symmetric_lambda_min(m: Sequence[Sequence[Value]]) -> Value:
     p2 = (a[0][0] - q) ** 2 + (a[1][1] - q) ** 2 + (a[2][2] - q) ** 2 + 2 * p1
     p = ca.sqrt(p2 / 6 + 1e-30)
     b = [[(a[i][j] - (q if i == j else 0)) / p for j in range(3)] for i in range(3)]
-    det = (
-        b[0][0] * (b[1][1] * b[2][2] - b[1][2] * b[2][1])
-        - b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0])
-        + b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0])
-    )
-    r = ca.fmin(ca.fmax(det / 2, -1 + 1e-12), 1 - 1e-12)
+    r = ca.fmin(ca.fmax(det3(b) / 2, -1 + 1e-12), 1 - 1e-12)
     angle = ca.acos(r) / 3
     return q + 2 * p * ca.cos(angle + 2 * math.pi / 3)

@@ -15,9 +15,11 @@ from verify.proof.expr import (
     ANGLE,
     Expr,
     ProofSyntaxError,
+    cos,
     dot,
     hat,
     outer,
+    sin,
     sk,
     sym,
     tr,
@@ -86,19 +88,16 @@ def _rule(e: Expr, dyn, cache) -> Expr | None:
         return _sum(left, right)
     if op in ("cos", "sin"):
         theta = e.args[0].data
-        rate = dyn.get(theta.uid) if theta.uid in dyn else _missing(theta.name)
+        if theta.uid not in dyn:
+            raise ProofSyntaxError(f"no dynamics declared for angle {theta.name}")
+        rate = dyn[theta.uid]
         if rate is None:
             return None
-        from verify.proof.expr import cos, sin
 
         if op == "cos":
             return -(sin(e.args[0]) * rate)
         return cos(e.args[0]) * rate
     raise ProofSyntaxError(f"cannot differentiate operation {op}")
-
-
-def _missing(name: str):
-    raise ProofSyntaxError(f"no dynamics declared for angle {name}")
 
 
 def _sum(x: Expr | None, y: Expr | None) -> Expr | None:

@@ -21,7 +21,7 @@ from sympy import QQ
 
 from verify.proof.evaluate import Algebra
 from verify.proof.falsify import Point, _gen_index, _solve_parameter
-from verify.proof.problem import StepProblem, _flatten
+from verify.proof.problem import StepProblem, flatten
 
 REFINEMENTS = 80
 
@@ -265,7 +265,7 @@ def _describe(problem: StepProblem, xp: ExactPoint) -> dict:
             "kind": v.kind,
             "parameters": exact,
             "approx_parameters": approx,
-            "value": np.round(np.array(_flatten(value) if isinstance(value, list) else value,
+            "value": np.round(np.array(flatten(value) if isinstance(value, list) else value,
                                        dtype=float), 6).tolist(),
         }
     return out

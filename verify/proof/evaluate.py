@@ -184,7 +184,3 @@ class NumpyAlgebra(Algebra):
         stacked = np.stack([np.stack(row, axis=-1) for row in matrix], axis=-2)
         return np.linalg.eigvalsh(0.5 * (stacked + np.swapaxes(stacked, -1, -2)))[..., 0]
 
-
-def to_numpy_matrix(value: Value) -> np.ndarray:
-    """(N,3,3) array of an entry-wise numpy matrix value."""
-    return np.stack([np.stack(row, axis=-1) for row in value], axis=-2)

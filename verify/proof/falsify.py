@@ -21,10 +21,10 @@ from hypothesis import HealthCheck, find, settings
 from hypothesis import strategies as st
 from hypothesis.errors import NoSuchExample
 
-from verify.proof.algebras import CasadiAlgebra
+from verify.proof.algebras import CasadiAlgebra, det3
 from verify.proof.evaluate import NumpyAlgebra, evaluate
-from verify.proof.expr import Variable
-from verify.proof.problem import StepProblem, _flatten
+from verify.proof.expr import Variable, lambda_min
+from verify.proof.problem import StepProblem, flatten
 
 Point = dict[int, np.ndarray]  # variable uid -> parameter vector
 
@@ -155,7 +155,7 @@ def numeric_values(problem: StepProblem, params: dict, exprs) -> list:
     alg = NumpyAlgebra(next(iter(params.values())).shape[0] if params else 1)
     env = {v.uid: alg.bind(v, [params[v.uid][:, i] for i in range(v.parameter_count)])
            for v in problem.variables}
-    return [[np.asarray(x, dtype=float) for x in _flatten(evaluate(e, alg, env))] for e in exprs]
+    return [[np.asarray(x, dtype=float) for x in flatten(evaluate(e, alg, env))] for e in exprs]
 
 
 def assumptions_hold(problem: StepProblem, params: dict) -> np.ndarray:
@@ -163,15 +163,12 @@ def assumptions_hold(problem: StepProblem, params: dict) -> np.ndarray:
     ok = np.ones(n, dtype=bool)
     if not problem.assumptions:
         return ok
-    values = numeric_values(problem, params, [a.expr for a in problem.assumptions])
-    for a, entries in zip(problem.assumptions, values, strict=True):
-        if a.kind in ("pd", "psd"):
-            m = np.stack(entries, axis=-1).reshape(n, 3, 3)
-            lam = np.linalg.eigvalsh(0.5 * (m + np.swapaxes(m, 1, 2)))[:, 0]
-            ok &= lam > 1e-9 if a.kind == "pd" else lam >= 0
-        else:
-            (x,) = entries
-            ok &= x > 1e-12 if a.kind == "pos" else x >= 0
+    # a matrix assumption is about lambda_min of its symmetric part, as the algebra computes it
+    exprs = [lambda_min(a.expr) if a.kind in ("pd", "psd") else a.expr
+             for a in problem.assumptions]
+    for a, (x,) in zip(problem.assumptions, numeric_values(problem, params, exprs), strict=True):
+        threshold = {"pd": 1e-9, "pos": 1e-12}.get(a.kind)
+        ok &= x > threshold if threshold is not None else x >= 0
     return ok
 
 
@@ -281,10 +278,10 @@ def ipopt_search(problem: StepProblem, cfg: SearchSettings, report: SearchReport
         lower += [lo] * c
         upper += [hi] * c
         k += c
-    (slack,) = _flatten(evaluate(problem.slack_expr, alg, env))
+    (slack,) = flatten(evaluate(problem.slack_expr, alg, env))
     g, glo, ghi = [], [], []
     for cond in problem.conditions:
-        (d,) = _flatten(evaluate(cond.difference, alg, env))
+        (d,) = flatten(evaluate(cond.difference, alg, env))
         g.append(d)
         glo.append(0.0)
         ghi.append(0.0)
@@ -332,11 +329,7 @@ def _assumption_constraints(kind: str, value) -> list:
     m = [[0.5 * (value[i][j] + value[j][i]) for j in range(3)] for i in range(3)]
     m1 = m[0][0]
     m2 = m[0][0] * m[1][1] - m[0][1] * m[1][0]
-    det = (
-        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
-    )
+    det = det3(m)
     if kind == "pd":
         return [m1, m2, det]  # Sylvester's criterion
     minors2 = [m2, m[0][0] * m[2][2] - m[0][2] ** 2, m[1][1] * m[2][2] - m[1][2] ** 2]

@@ -18,9 +18,10 @@ from verify.proof.exact import KnownFraction
 from verify.proof.expr import Expr, Variable, nodes, structural_key, variables_of
 
 
-def _flatten(value) -> list:
+def flatten(value) -> list:
+    """Entries of a scalar, vector or matrix value as one list (scalars: one element)."""
     if isinstance(value, list):
-        return [x for item in value for x in _flatten(item)]
+        return [x for item in value for x in flatten(item)]
     return [value]
 
 
@@ -70,7 +71,7 @@ class StepProblem:
     def exact(self, e: Expr) -> list[KnownFraction]:
         """Exact entries of any expression (scalars give a one-element list)."""
         alg, env = self._algebra
-        return _flatten(evaluate(e, alg, env))
+        return flatten(evaluate(e, alg, env))
 
     @cached_property
     def exact_slack(self) -> list[KnownFraction]:
