@@ -1,11 +1,18 @@
-"""Public hypothesis strategies for users' own test suites (rotations and networks).
+"""Public hypothesis strategies for users' own test suites.
 
 >>> from hypothesis import given
->>> from verify.strategies import networks
+>>> from verify.strategies import networks, scenarios
 >>> @given(networks(max_bodies=50))
 ... def test_my_controller(R): ...
 
-Networks always have a well-defined dbar (|sum d_i| above the tool's threshold).
+* rotations: :func:`rotations`, :func:`rotations_near_angle`, :func:`rotations_within`;
+* networks (n, 3, 3) with a well-defined dbar: :func:`networks`,
+  :func:`near_cancelling_networks`;
+* LTI models (``verify.passivity.model.LTIModel``): :func:`passive_lti_models`,
+  :func:`non_passive_lti_models`;
+* simulator humans meeting the passivity item of Assumption 1: :func:`passive_humans`;
+* closed-loop scenarios (``verify.sim.scenario.Scenario``) meeting Assumption 1 at
+  t = 0: :func:`scenarios`.
 """
 
 from __future__ import annotations
@@ -67,3 +74,130 @@ def near_cancelling_networks(draw, max_bodies: int = 200) -> np.ndarray:
     residual = 10.0 ** draw(st.floats(-6.0, -2.0))
     seed = draw(st.integers(0, 2**32 - 1))
     return near_cancelling_network(np.random.default_rng(seed), n, residual)
+
+
+# --------------------------------------------------------------------------- human models
+
+_gains = st.floats(0.3, 3.0, allow_nan=False)
+
+
+def _matrix(shape: tuple[int, int], bound: float = 1.0):
+    return hnp.arrays(np.float64, shape, elements=st.floats(-bound, bound, allow_nan=False,
+                                                              width=64))
+
+
+@st.composite
+def passive_lti_models(draw, max_states: int = 3, ports: int = 2):
+    """Passive LTI models (port-Hamiltonian with a strictly passive feedthrough).
+
+    x' = (J - R) Q x + G u, y = G^T Q x + (S + N) u with J, N skew, R, Q > 0 and S > 0,
+    so x^T Q x / 2 is a storage and D + D^T = 2 S > 0 keeps the KYP LMI strictly feasible
+    after floating-point rounding of the entries.
+    """
+    from verify.passivity.model import from_state_space
+
+    n = draw(st.integers(1, max_states))
+    J = draw(_matrix((n, n)))
+    L = draw(_matrix((n, n)))
+    M = draw(_matrix((n, n)))
+    G = draw(_matrix((n, ports), 2.0))
+    N = draw(_matrix((ports, ports)))
+    s = draw(_gains)
+    Q = M @ M.T + 0.5 * np.eye(n)
+    A = (J - J.T - (L @ L.T + 0.3 * np.eye(n))) @ Q
+    D = s * np.eye(ports) + 0.5 * (N - N.T)
+    return from_state_space(A, G, G.T @ Q, D, name="random port-Hamiltonian")
+
+
+@st.composite
+def non_passive_lti_models(draw, max_states: int = 3, ports: int = 2):
+    """Stable LTI models that are not passive.
+
+    Either a passive model with its feedthrough pushed negative (nu(inf) < 0), or a
+    lagging diagonal c / (s + a)^2 per port, whose phase passes -90 degrees.
+    """
+    from verify.passivity.model import from_state_space
+
+    if draw(st.booleans()):
+        base = draw(passive_lti_models(max_states, ports))
+        shift = draw(st.floats(0.5, 3.0)) + float(np.max(np.linalg.eigvalsh(
+            0.5 * (base.D + base.D.T))))
+        return from_state_space(base.A, base.B, base.C, base.D - shift * np.eye(ports),
+                                name="port-Hamiltonian with negative feedthrough")
+    a = draw(st.floats(0.5, 3.0))
+    c = draw(st.floats(1.0, 10.0))
+    # c / (s + a)^2 per port: x1' = -a x1 + u, x2' = -a x2 + x1, y = c x2
+    A1 = np.array([[-a, 0.0], [1.0, -a]])
+    A = np.kron(np.eye(ports), A1)
+    B = np.kron(np.eye(ports), np.array([[1.0], [0.0]]))
+    C = np.kron(np.eye(ports), np.array([[0.0, c]]))
+    return from_state_space(A, B, C, np.zeros((ports, ports)), name="second-order lag")
+
+
+@st.composite
+def passive_humans(draw, max_states: int = 3):
+    """Human models for the simulator that satisfy the passivity item of Assumption 1.
+
+    A static gain K with K + K^T > 0, or an LTI model with an exactly checked KYP
+    certificate from the passivity gate (its P gives the storage x^T P x / 2).
+    """
+    from verify.sim.humans import LTIHuman, StaticGainHuman
+
+    if draw(st.booleans()):
+        k = draw(_gains)
+        skew = draw(st.floats(-1.0, 1.0))
+        return StaticGainHuman(np.array([[k, skew], [-skew, k]]))
+    model = draw(passive_lti_models(max_states))
+    return LTIHuman.from_model(model, P=_certificate_matrix(model))
+
+
+def _certificate_matrix(model) -> np.ndarray:
+    from verify.passivity.decide import PASSIVE, decide
+
+    decision = decide(model)
+    assume(decision.verdict == PASSIVE)
+    return np.array([[float(v) for v in row] for row in decision.certificate.P])
+
+
+# --------------------------------------------------------------------------- scenarios
+
+
+@st.composite
+def rotations_within(draw, center: np.ndarray, max_angle: float) -> np.ndarray:
+    """Rotations center @ exp(w) with |w| <= max_angle (uniform-ish in the ball)."""
+    axis = draw(hnp.arrays(np.float64, 3, elements=_unit_floats))
+    norm = float(np.linalg.norm(axis))
+    if norm < 1e-3:
+        axis, norm = np.array([0.0, 0.0, 1.0]), 1.0
+    angle = draw(st.floats(0.0, max_angle))
+    return np.asarray(center) @ exp(axis / norm * angle)
+
+
+@st.composite
+def scenarios(draw, max_bodies: int = 6, humans=None, autonomous=("zero", "random",
+                                                                   "consensus")):
+    """Closed-loop scenarios meeting Assumption 1 at t = 0.
+
+    The bodies are spread within 60 degrees of a common attitude (so dbar is well
+    defined); R-bar(0) is their quasi-average with a drawn yaw; R_r is within 90 degrees
+    of R-bar(0) (tr(R-bar_r) >= 1, Lemma 1's boundary included) and R_l(0) within 80
+    degrees of R_r (sym(R_rl) > 0 needs less than 90).
+    """
+    from verify.sim.inputs import Reference, autonomous_input
+    from verify.sim.scenario import Scenario
+    from verify.system.laws import quasi_average_initial
+
+    n = draw(st.integers(1, max_bodies))
+    center = draw(rotations())
+    R0 = np.stack([draw(rotations_within(center, np.pi / 3)) for _ in range(n)])
+    yaw = draw(st.floats(-np.pi, np.pi))
+    R_bar0 = quasi_average_initial(R0, yaw)
+    R_r = draw(rotations_within(R_bar0, np.pi / 2))  # tr(R_r^T R-bar) >= 1 up to rounding
+    assume(np.trace(R_r.T @ R_bar0) >= 1.0)
+    R_l0 = draw(rotations_within(R_r, np.deg2rad(80)))
+    human = draw(humans if humans is not None else passive_humans())
+    kind = draw(st.sampled_from(list(autonomous)))
+    seed = draw(st.integers(0, 2**31 - 1))
+    k_s = draw(st.floats(0.5, 5.0))
+    return Scenario(R0, k_s, human, Reference.constant(R_r), R_l0=R_l0,
+                    autonomous=autonomous_input(kind, n, seed), rbar_yaw=yaw)

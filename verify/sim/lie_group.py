@@ -58,3 +58,29 @@ def integrate(
         if observe is not None:
             observe((k + 1) * dt, Y)
     return Y
+
+
+# --- rotations together with a Euclidean part (the human's state, running integrals) ---
+
+MixedField = Callable[[float, Array, Array], tuple[Array, Array]]
+
+
+def cf4_mixed_step(f: MixedField, t: float, Y: Array, x: Array, h: float) -> tuple[Array, Array]:
+    """One CF4 step for (Y, x) in SO(3)^m x R^k with Y' = hat(F) Y and x' = g.
+
+    ``f(t, Y, x)`` returns (F, g). On the Euclidean factor the exponential is a
+    translation, so the same stages reduce to the classical Runge-Kutta method of order
+    4; the two parts are advanced with the same stage values, so coupling between them
+    keeps order 4.
+    """
+    F1, g1 = f(t, Y, x)
+    Y2, x2 = exp(0.5 * h * F1) @ Y, x + 0.5 * h * g1
+    F2, g2 = f(t + 0.5 * h, Y2, x2)
+    Y3, x3 = exp(0.5 * h * F2) @ Y, x + 0.5 * h * g2
+    F3, g3 = f(t + 0.5 * h, Y3, x3)
+    Y4, x4 = exp(0.5 * h * (2.0 * F3 - F1)) @ Y2, x2 + 0.5 * h * (2.0 * g3 - g1)
+    F4, g4 = f(t + h, Y4, x4)
+    first = exp(h / 12.0 * (3.0 * F1 + 2.0 * F2 + 2.0 * F3 - F4))
+    second = exp(h / 12.0 * (-F1 + 2.0 * F2 + 2.0 * F3 + 3.0 * F4))
+    x_next = x + h / 6.0 * (g1 + 2.0 * g2 + 2.0 * g3 + g4)
+    return second @ (first @ Y), x_next

@@ -1,0 +1,185 @@
+"""The paper's dynamic conclusions as checks on simulated trajectories (issue 5, item 4).
+
+Each check runs a scenario twice, with steps h and h/2; the difference of a quantity
+between the two runs, times 16/15 (Richardson, order 4), estimates the integration error
+of the h-run. A check passes when its violation is at most twice that estimate plus a
+rounding floor of 16 eps per step on the quantity's scale; the tolerance is therefore
+derived from the integrator, not chosen per test.
+
+The paper's assumptions are evaluated along every trajectory and returned with the
+verdict; a check whose assumptions fail says so (``holds`` is None) instead of passing.
+
+* stealthiness (Section 2, eq. (3)): dbar is the same with and without Omega~_a;
+* quasi-average (Section 3): R-bar e3 = dbar;
+* Lemma 1: tr(R-bar_r) >= 1 while lambda_min(R_rl + R_rl^T) > 0;
+* Theorem 1: V non-increasing (per segment of constant R_r) and V' below eq. (9);
+* LaSalle (Theorem 1): |dbar - d_r| shrinks to ``lasalle_fraction`` of its start.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from verify.sim.energy import Energy, energy
+from verify.sim.inputs import Autonomous
+from verify.sim.run import Trajectory, simulate
+from verify.sim.scenario import LOOP_RATE, Scenario
+from verify.so3 import E3, Array
+
+EPS = float(np.finfo(float).eps)
+SAFETY = 2.0  # multiple of the Richardson error estimate allowed
+COHERENCE_MIN = 1e-3  # |sum d_i|/n below this: dbar (and A(d)) are ill-conditioned
+
+
+@dataclass
+class PropertyResult:
+    """Outcome of one property on one scenario."""
+
+    name: str
+    holds: bool | None  # None: an assumption failed along the trajectory
+    violation: float  # how far the conclusion is from failing (<= tolerance: holds)
+    tolerance: float
+    assumptions: dict[str, bool] = field(default_factory=dict)
+    detail: str = ""
+
+    def line(self) -> str:
+        state = {True: "holds", False: "FAILS", None: "assumption failed"}[self.holds]
+        failed = [k for k, ok in self.assumptions.items() if not ok]
+        why = f" ({', '.join(failed)})" if failed else ""
+        return (f"{self.name}: {state}{why}; violation {self.violation:.3g} vs tolerance "
+                f"{self.tolerance:.3g}. {self.detail}").strip()
+
+
+@dataclass
+class RunPair:
+    """A scenario run with steps h and h/2 (the error estimate's two runs)."""
+
+    coarse: Trajectory
+    fine: Trajectory
+
+    @classmethod
+    def of(cls, scenario: Scenario, seconds: float, h: float = 1.0 / LOOP_RATE) -> RunPair:
+        return cls(simulate(scenario, seconds, h), simulate(scenario, seconds, h / 2))
+
+    def error(self, coarse: Array, fine: Array) -> Array:
+        """Per-sample error estimate of a quantity of the coarse run (leading axis time)."""
+        diff = np.abs(np.asarray(coarse) - np.asarray(fine)[::2])
+        diff = diff.reshape(diff.shape[0], -1).max(axis=1)
+        return diff * 16.0 / 15.0
+
+    def floor(self, scale: float) -> float:
+        return 16.0 * EPS * self.fine.t.shape[0] * max(1.0, scale)
+
+    def tolerance(self, coarse: Array, fine: Array) -> float:
+        scale = float(np.max(np.abs(coarse)))
+        return SAFETY * float(self.error(coarse, fine).max()) + self.floor(scale)
+
+
+def _coherent(traj: Trajectory) -> bool:
+    return bool(np.min(traj.coherence) > COHERENCE_MIN)
+
+
+def stealthiness(scenario: Scenario, seconds: float, h: float = 1.0 / LOOP_RATE
+                 ) -> PropertyResult:
+    """max_t |dbar_with(t) - dbar_without(t)| within the error of the two pairs of runs."""
+    with_a = RunPair.of(scenario, seconds, h)
+    without = RunPair.of(replace(scenario, autonomous=Autonomous()), seconds, h)
+    violation = float(np.max(np.linalg.norm(with_a.coarse.dbar - without.coarse.dbar, axis=1)))
+    tol = (with_a.tolerance(with_a.coarse.dbar, with_a.fine.dbar)
+           + without.tolerance(without.coarse.dbar, without.fine.dbar))
+    ok = {"dbar defined (|sum d_i|/n > 1e-3)": _coherent(with_a.coarse)}
+    return _result("stealthiness", violation, tol, ok,
+                   f"autonomous input {scenario.autonomous.name}, n = {scenario.n}")
+
+
+def quasi_average_axis(pair: RunPair) -> PropertyResult:
+    """max_t |R-bar(t) e3 - dbar(t)| (Section 3: R-bar e3 stays equal to dbar)."""
+    c, f = pair.coarse, pair.fine
+    violation = float(np.max(np.linalg.norm(c.R_bar @ E3 - c.dbar, axis=1)))
+    tol = pair.tolerance(c.dbar, f.dbar) + pair.tolerance(c.R_bar @ E3, f.R_bar @ E3)
+    ok = {"dbar defined (|sum d_i|/n > 1e-3)": _coherent(c)}
+    return _result("R-bar e3 = dbar", violation, tol, ok)
+
+
+def _segments(traj: Trajectory) -> list[slice]:
+    """Index ranges of constant reference (the energy functions jump at a switch)."""
+    switches = [int(round(ts / traj.h)) for ts in traj.scenario.reference.switch_times(
+        float(traj.t[-1]))]
+    bounds = [0, *switches, traj.t.shape[0]]
+    return [slice(a, b) for a, b in zip(bounds[:-1], bounds[1:], strict=True)]
+
+
+def _lemma1_premise(E: Energy, seg: slice) -> bool:
+    return bool(np.min(E.lmin_rl[seg]) > 0.0)
+
+
+def lemma1_invariance(pair: RunPair) -> PropertyResult:
+    """min_t tr(R-bar_r) - 1 >= 0 on each segment that starts with it >= 0 (Lemma 1)."""
+    Ec, Ef = energy(pair.coarse, False), energy(pair.fine, False)
+    segs = _segments(pair.coarse)
+    premise = all(_lemma1_premise(Ec, s) for s in segs)
+    starts = all(Ec.h[s.start] >= 0 for s in segs)
+    violation = max(float(-np.min(Ec.h[s])) for s in segs)
+    tol = pair.tolerance(Ec.h, Ef.h)
+    ok = {"sym(R_rl) > 0 along the trajectory": premise,
+          "tr(R-bar_r) >= 1 at each start": starts}
+    return _result("Lemma 1 invariance", violation, tol, ok,
+                   f"min tr(R-bar_r) - 1 = {np.min(Ec.h):.3g}")
+
+
+def lyapunov_decrease(pair: RunPair, use_storage: bool = True) -> PropertyResult:
+    """V non-increasing on each segment, and V' <= the bound of eq. (9) at every sample.
+
+    With ``use_storage`` and a human carrying a KYP storage x^T P x / 2, S_h is that
+    storage (passivity is then used); otherwise S_h is the running supply integral.
+    """
+    Ec, Ef = energy(pair.coarse, use_storage), energy(pair.fine, use_storage)
+    V_c, V_f = Ec.V, Ef.V
+    segs = _segments(pair.coarse)
+    rises = []
+    for s in segs:
+        v = V_c[s]
+        rises.append(float(np.max(v[1:] - np.minimum.accumulate(v)[:-1], initial=0.0)))
+    rise = max(rises)
+    tol_rise = pair.tolerance(V_c, V_f)
+    # V' and its bound come from the vector field at the same state: only rounding apart
+    scale = np.abs(Ec.V_dot) + np.abs(Ec.V_dot_bound) + pair.coarse.scenario.k_s
+    slack = float(np.max((Ec.V_dot - Ec.V_dot_bound) / scale))
+    tol_slack = 1e3 * EPS
+    premise = all(_lemma1_premise(Ec, s) for s in segs) and all(
+        np.min(Ec.h[s]) >= -tol_rise for s in segs)
+    ok = {"sym(R_rl) > 0 and sym(R-bar_r) >= 0 along the trajectory": premise}
+    if use_storage:
+        ok["human has a storage function (KYP certificate)"] = Ec.uses_storage
+    holds = None if not all(ok.values()) else bool(rise <= tol_rise and slack <= tol_slack)
+    detail = (f"S_h = {'x^T P x / 2' if Ec.uses_storage else 'running supply'}; "
+              f"largest (V' - bound)/scale = {slack:.3g} (tolerance {tol_slack:.3g})")
+    return PropertyResult("Lyapunov decrease", holds, rise, tol_rise, ok, detail)
+
+
+def lasalle_convergence(pair: RunPair, fraction: float = 0.1) -> PropertyResult:
+    """|dbar(T) - d_r| <= fraction * |dbar(0) - d_r| (constant reference, Theorem 1)."""
+    c, f = pair.coarse, pair.fine
+    d_r = c.R_r[:, :, 2]
+    err_c = np.linalg.norm(c.dbar - d_r, axis=1)
+    err_f = np.linalg.norm(f.dbar - f.R_r[:, :, 2], axis=1)
+    target = fraction * err_c[0]
+    violation = float(err_c[-1] - target)
+    tol = pair.tolerance(err_c, err_f)
+    Ec = energy(c, True)
+    ok = {
+        "R_r constant": c.scenario.reference.is_constant,
+        "sym(R_rl) > 0 along the trajectory": bool(np.min(Ec.lmin_rl) > 0),
+        "human has a storage function (KYP certificate)": Ec.uses_storage,
+        "dbar defined (|sum d_i|/n > 1e-3)": _coherent(c),
+    }
+    return _result("LaSalle convergence", violation, tol, ok,
+                   f"|dbar - d_r| from {err_c[0]:.3g} to {err_c[-1]:.3g} in {c.t[-1]:.3g} s")
+
+
+def _result(name: str, violation: float, tol: float, ok: dict[str, bool], detail: str = ""
+            ) -> PropertyResult:
+    holds = None if not all(ok.values()) else bool(violation <= tol)
+    return PropertyResult(name, holds, violation, tol, ok, detail)

@@ -1,0 +1,97 @@
+"""Run a scenario: fixed-step CF4 on SO(3)^(n+2) x R^k, inputs held per loop period.
+
+The loop period is the step (1/120 s by default, Section 4); the reference and a sampled
+human command are read at the start of each step and held over it, so a switch of R_r
+every 15 s falls on a step boundary.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from verify.errors import VerifyInputError
+from verify.sim.lie_group import cf4_mixed_step
+from verify.sim.scenario import LOOP_RATE, ClosedLoop, Scenario
+from verify.so3 import Array
+from verify.system.stealthy import directions, direction_sum
+
+Progress = Callable[[int, int], None]
+
+
+@dataclass
+class Trajectory:
+    """Samples of a run at every step (bodies' directions every ``direction_every`` steps)."""
+
+    scenario: Scenario
+    h: float
+    t: Array  # (T,)
+    R_bar: Array  # (T, 3, 3)
+    R_l: Array  # (T, 3, 3)
+    R_r: Array  # (T, 3, 3), the reference held over the step that starts at t
+    x: Array  # (T, m + 1): human state, then the supply w
+    dbar: Array  # (T, 3), dbar of the bodies
+    coherence: Array  # (T,), |sum d_i| / n: dbar is defined while this stays away from 0
+    direction_times: Array  # (T_d,)
+    d: Array | None  # (T_d, n, 3), the bodies' directions d_i
+    final_bodies: Array  # (n, 3, 3)
+
+    @property
+    def human_state(self) -> Array:
+        return self.x[:, :-1]
+
+    @property
+    def supply(self) -> Array:
+        return self.x[:, -1]
+
+
+def simulate(
+    scenario: Scenario,
+    seconds: float,
+    h: float = 1.0 / LOOP_RATE,
+    *,
+    direction_every: int = 0,
+    progress: Progress | None = None,
+) -> Trajectory:
+    """Integrate ``scenario`` over [0, seconds] with step ``h`` (rounded to divide it).
+
+    ``direction_every`` > 0 stores every body's direction d_i each that many steps (memory
+    n * T / direction_every * 3 floats); 0 stores none.
+    """
+    scenario.validate()
+    if not (np.isfinite(seconds) and seconds > 0):
+        raise VerifyInputError(f"the simulated time must be positive, got {seconds}")
+    if not (np.isfinite(h) and h > 0):
+        raise VerifyInputError(f"the step must be positive, got {h}")
+    steps = max(1, int(np.ceil(seconds / h - 1e-9)))
+    dt = seconds / steps
+    loop = ClosedLoop(scenario)
+    n = scenario.n
+    Y, x = scenario.initial_state()
+
+    T = steps + 1
+    t = np.arange(T) * dt
+    R_bar, R_l, R_r = np.empty((T, 3, 3)), np.empty((T, 3, 3)), np.empty((T, 3, 3))
+    xs, dbars, coherence = np.empty((T, x.shape[0])), np.empty((T, 3)), np.empty(T)
+    keep = np.arange(0, T, direction_every) if direction_every > 0 else np.zeros(0, int)
+    d = np.empty((keep.shape[0], n, 3)) if direction_every > 0 else None
+
+    def record(k: int, Y: Array, x: Array, held_R_r: Array) -> None:
+        R_bar[k], R_l[k], R_r[k], xs[k] = Y[n], Y[n + 1], held_R_r, x
+        s = direction_sum(Y[:n])
+        norm = float(np.linalg.norm(s))
+        coherence[k] = norm / n
+        dbars[k] = s / norm if norm > 0 else np.nan
+        if d is not None and k % direction_every == 0:
+            d[k // direction_every] = directions(Y[:n])
+
+    for k in range(steps):
+        held = loop.hold(k * dt, Y)
+        record(k, Y, x, held.R_r)
+        Y, x = cf4_mixed_step(loop.field(held), k * dt, Y, x, dt)
+        if progress is not None:
+            progress(k + 1, steps)
+    record(steps, Y, x, loop.hold(steps * dt, Y).R_r)
+    return Trajectory(scenario, dt, t, R_bar, R_l, R_r, xs, dbars, coherence, t[keep], d, Y[:n].copy())
