@@ -1,4 +1,4 @@
-"""The verify command: help, reports, bad input (one line, exit 2), planned commands."""
+"""The verify command: help, reports, bad input (one line, exit 2)."""
 
 import json
 import subprocess
@@ -18,17 +18,11 @@ def run_cli(*args, cwd=None):
     )
 
 
-def test_help_lists_current_and_planned_commands():
+def test_help_lists_every_command():
     out = run_cli("--help")
     assert out.returncode == 0
     for cmd in ("all", "network", "check", "gate", "certificates", "simulate"):
         assert cmd in out.stdout
-
-
-@pytest.mark.parametrize("cmd", ["simulate"])
-def test_planned_commands_say_not_yet_available(cmd, capsys):
-    assert main([cmd]) == 2
-    assert "not yet available" in capsys.readouterr().err
 
 
 def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys):

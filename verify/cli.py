@@ -16,10 +16,6 @@ from pathlib import Path
 from verify import __version__
 from verify.errors import VerifyInputError
 
-PLANNED = {
-    "simulate": ("reference closed-loop simulator with plots", "issue 5"),
-}
-
 
 def _build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
@@ -107,9 +103,34 @@ def _build_parser() -> argparse.ArgumentParser:
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
                       default=[Path("certificates")])
 
-    for name, (text, issue) in PLANNED.items():
-        p = sub.add_parser(name, help=f"{text} [not yet available: {issue}]")
-        p.add_argument("args", nargs=argparse.REMAINDER)
+    p_sim = sub.add_parser(
+        "simulate",
+        help="run the closed loop of Sections 2-3 and write the trajectory and plots",
+        description="Simulate n bodies, the quasi-average, the virtual leader and a human "
+        "model with Lie-group steps on SO(3); write the trajectory (NPZ or CSV) and plots "
+        "of V(t), tr(R-bar_r)(t), |dbar - d_r| and the d_i on the sphere. Exit 2 on bad input.",
+    )
+    p_sim.add_argument("--n", type=int, default=8, help="number of bodies (default 8)")
+    p_sim.add_argument("--ks", type=float, default=3.0, help="coupling gain k_s > 0 (default 3)")
+    p_sim.add_argument("--human", choices=("vr", "static", "model"), default=None,
+                       help="human model: the VR operator of Section 4 (default), a static "
+                       "gain, or an LTI model file (default when --model is given)")
+    p_sim.add_argument("--model", type=Path, metavar="FILE",
+                       help="LTI human model H(s), a TOML file as for 'verify gate'")
+    p_sim.add_argument("--gain", type=float, default=1.0, help="static gain k (K = k I)")
+    p_sim.add_argument("--seconds", type=float, default=30.0, help="simulated time (default 30)")
+    p_sim.add_argument("--step", type=float, default=1 / 120, help="step in s (default 1/120)")
+    p_sim.add_argument("--seed", type=int, default=0, help="seed of attitudes and inputs")
+    p_sim.add_argument("--autonomous", choices=("zero", "random", "consensus"),
+                       default="consensus", help="autonomous input (default consensus)")
+    p_sim.add_argument("--reference", choices=("constant", "switching"), default="constant",
+                       help="constant R_r or a new one every 15 s")
+    p_sim.add_argument("--network", type=Path, metavar="FILE",
+                       help="initial attitudes from a network file (as for 'verify network')")
+    p_sim.add_argument("--out", type=Path, default=Path("reports/simulation"),
+                       help="output directory (default reports/simulation)")
+    p_sim.add_argument("--format", choices=("npz", "csv"), default="npz", dest="fmt")
+    p_sim.add_argument("--no-plots", action="store_true", help="write the trajectory only")
     return parser
 
 
@@ -220,6 +241,17 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
     return 0 if bad == 0 else 1
 
 
+def _cmd_simulate(args: argparse.Namespace) -> int:
+    from verify.sim.command import SimulateSettings, run_simulate
+
+    human = args.human or ("model" if args.model is not None else "vr")
+    return run_simulate(SimulateSettings(
+        n=args.n, k_s=args.ks, human=human, model=args.model, gain=args.gain,
+        seconds=args.seconds, step=args.step, seed=args.seed, autonomous=args.autonomous,
+        reference=args.reference, network=args.network, out=args.out, fmt=args.fmt,
+        plots=not args.no_plots))
+
+
 def _cmd_list(_: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
 
@@ -272,16 +304,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return 2
-    if args.command in PLANNED:
-        text, issue = PLANNED[args.command]
-        print(
-            f"verify {args.command}: not yet available ({text}; planned in {issue})",
-            file=sys.stderr,
-        )
-        return 2
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
                 "network": _cmd_network, "gate": _cmd_gate,
-                "certificates": _cmd_certificates}
+                "certificates": _cmd_certificates, "simulate": _cmd_simulate}
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:

@@ -146,7 +146,9 @@ class StaticGainHuman(Human):
         return _pad(self.K @ e[: self.ports])
 
     def storage(self, x: Array) -> float | None:
-        return 0.0
+        """0 (a memoryless passive map stores nothing); None when K + K^T is not PSD."""
+        passive = np.linalg.eigvalsh(self.K + self.K.T)[0] >= 0
+        return 0.0 if passive else None
 
     def storage_rate(self, x: Array, e: Array) -> float:
         return 0.0

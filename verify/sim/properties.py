@@ -18,6 +18,7 @@ verdict; a check whose assumptions fail says so (``holds`` is None) instead of p
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -105,10 +106,10 @@ def quasi_average_axis(pair: RunPair) -> PropertyResult:
 
 def _segments(traj: Trajectory) -> list[slice]:
     """Index ranges of constant reference (the energy functions jump at a switch)."""
-    switches = [int(round(ts / traj.h)) for ts in traj.scenario.reference.switch_times(
+    switches = [round(ts / traj.h) for ts in traj.scenario.reference.switch_times(
         float(traj.t[-1]))]
     bounds = [0, *switches, traj.t.shape[0]]
-    return [slice(a, b) for a, b in zip(bounds[:-1], bounds[1:], strict=True)]
+    return [slice(a, b) for a, b in itertools.pairwise(bounds)]
 
 
 def _lemma1_premise(E: Energy, seg: slice) -> bool:

@@ -16,7 +16,7 @@ from verify.errors import VerifyInputError
 from verify.sim.lie_group import cf4_mixed_step
 from verify.sim.scenario import LOOP_RATE, ClosedLoop, Scenario
 from verify.so3 import Array
-from verify.system.stealthy import directions, direction_sum
+from verify.system.stealthy import direction_sum, directions
 
 Progress = Callable[[int, int], None]
 
@@ -94,4 +94,5 @@ def simulate(
         if progress is not None:
             progress(k + 1, steps)
     record(steps, Y, x, loop.hold(steps * dt, Y).R_r)
-    return Trajectory(scenario, dt, t, R_bar, R_l, R_r, xs, dbars, coherence, t[keep], d, Y[:n].copy())
+    return Trajectory(scenario, dt, t, R_bar, R_l, R_r, xs, dbars, coherence, t[keep], d,
+                      Y[:n].copy())

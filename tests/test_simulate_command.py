@@ -1,0 +1,90 @@
+"""``verify simulate``: outputs, summary, and bad input (one line, exit 2)."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+MODELS = Path(__file__).resolve().parents[1] / "verify" / "data" / "models"
+
+
+def run_cli(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "verify.cli", *args], capture_output=True,
+                          text=True, cwd=cwd)
+
+
+def test_default_run_writes_trajectory_and_four_plots(tmp_path):
+    out = run_cli("simulate", "--seconds", "3", "--out", str(tmp_path))
+    assert out.returncode == 0, out.stderr
+    names = {p.name for p in tmp_path.iterdir()}
+    assert names == {"trajectory.npz", "energy.png", "lemma1.png", "dbar_error.png",
+                     "sphere.png"}
+    data = np.load(tmp_path / "trajectory.npz")
+    t = data["t"]
+    assert t[-1] == pytest.approx(3.0) and t.shape[0] == 361  # 120 Hz
+    assert data["d"].shape[1:] == (8, 3)  # the bodies' directions, n = 8
+    # the quasi-average keeps R-bar e3 = dbar (Section 3), recorded independently
+    assert np.max(np.abs(data["R_bar"][:, :, 2] - data["dbar"])) < 1e-9
+    assert "Lemma 1: min tr(R-bar_r)" in out.stdout
+    assert "orthogonality drift" in out.stdout
+
+
+def test_csv_with_passive_model_uses_certificate_storage(tmp_path):
+    model = MODELS / "reconstructed_ks3p0.toml"
+    out = run_cli("simulate", "--model", str(model), "--ks", "3", "--seconds", "2",
+                  "--format", "csv", "--no-plots", "--autonomous", "zero",
+                  "--out", str(tmp_path))
+    assert out.returncode == 0, out.stderr
+    assert "passive (KYP certificate checked exactly)" in out.stdout
+    assert [p.name for p in tmp_path.iterdir()] == ["trajectory.csv"]
+    table = np.genfromtxt(tmp_path / "trajectory.csv", delimiter=",", names=True)
+    assert np.all(np.diff(table["V"]) <= 1e-9)  # Theorem 1 with S_h = x^T P x / 2
+    assert np.all(table["V_dot"] <= table["V_dot_bound"] + 1e-12)
+
+
+def test_non_passive_model_is_reported(tmp_path):
+    model = MODELS / "reconstructed_ks2p5.toml"
+    out = run_cli("simulate", "--model", str(model), "--seconds", "1", "--no-plots",
+                  "--out", str(tmp_path))
+    assert out.returncode == 0, out.stderr
+    assert "not passive" in out.stdout and "running supply" in out.stdout
+
+
+def _bad_model(tmp_path: Path) -> Path:
+    path = tmp_path / "wide.toml"
+    path.write_text("[state_space]\nA = [[-1.0]]\nB = [[1.0, 0.0]]\nC = [[1.0]]\n"
+                    "D = [[0.0, 0.0]]\n")
+    return path
+
+
+def _cancelling_network(tmp_path: Path) -> Path:
+    path = tmp_path / "cancel.toml"
+    path.write_text("quaternions = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]\n")
+    return path
+
+
+BAD = {
+    "n = 0": (lambda p: ["--n", "0"], "at least 1"),
+    "k_s = 0": (lambda p: ["--ks", "0"], "k_s"),
+    "k_s < 0": (lambda p: ["--ks", "-2"], "--ks"),
+    "k_s nan": (lambda p: ["--ks", "nan"], "--ks"),
+    "seconds": (lambda p: ["--seconds", "-1"], "--seconds"),
+    "non-square model": (lambda p: ["--model", str(_bad_model(p))], "square"),
+    "undefined dbar": (lambda p: ["--network", str(_cancelling_network(p))], "dbar"),
+    "model missing": (lambda p: ["--human", "model"], "--model"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_bad_input_one_line_exit_2_and_nothing_written(tmp_path, case):
+    args, expected = BAD[case]
+    out_dir = tmp_path / "out"
+    out = run_cli("simulate", "--seconds", "1", "--out", str(out_dir), *args(tmp_path))
+    assert out.returncode == 2, (out.stdout, out.stderr)
+    assert expected in out.stderr
+    assert len(out.stderr.strip().splitlines()) == 1 and "Traceback" not in out.stderr
+    assert not out_dir.exists()
