@@ -31,14 +31,16 @@ EXPECTED = {
     "thm1.v-dot": Verdict.VERIFIED,
     "thm1.lasalle-derivative": Verdict.VERIFIED,
     "thm1.lasalle-storage": Verdict.ASSUMPTION,
+    "lemma1.premise-needed": Verdict.VERIFIED,
+    "thm1.passivity-needed": Verdict.ASSUMPTION,
     "sec4.model-class": Verdict.VERIFIED,
     "sec4.nu-criterion": Verdict.REPAIRED,
     "sec4.reconstructed-models": Verdict.VERIFIED,
 }
 
 
-def test_every_claim_gets_its_verdict_with_passing_evidence():
-    run = run_claims(REGISTRY, CheckContext(quick=True))
+def test_every_claim_gets_its_verdict_with_passing_evidence(tmp_path):
+    run = run_claims(REGISTRY, CheckContext(quick=True, out_dir=tmp_path))
     got = {r.claim.id: r.outcome.verdict for r in run.results}
     assert got == EXPECTED
     for r in run.results:
@@ -51,6 +53,9 @@ def test_every_claim_gets_its_verdict_with_passing_evidence():
             assert all(e.passed for e in r.outcome.evidence), r.claim.id
         if r.outcome.verdict is Verdict.REPAIRED:
             assert r.outcome.repaired_statement
+        for e in r.outcome.evidence:
+            if e.kind is EvidenceKind.FIGURE:
+                assert (tmp_path / e.path).stat().st_size > 1000, r.claim.id
         if r.outcome.verdict is Verdict.REFUTED:
             assert any(
                 e.kind is EvidenceKind.COUNTEREXAMPLE and e.passed for e in r.outcome.evidence

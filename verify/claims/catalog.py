@@ -3,6 +3,7 @@
 from verify.claims import (
     section2,  # noqa: F401  (Section 2, stealthy control)
     section3,  # noqa: F401  (Lemma 1 and Theorem 1)
+    section3_dynamics,  # noqa: F401  (trajectories; dropped assumptions)
     section4,  # noqa: F401  (human passivity)
 )
 from verify.claims.registry import REGISTRY

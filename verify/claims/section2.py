@@ -452,13 +452,15 @@ def check_stealthiness(ctx: CheckContext) -> Outcome:
             max_dense_vs_structured_over_bound=worst_dense,
         )
     )
-    return _verdict_from(
+    from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
+
+    return cross_checked(_verdict_from(
         evidence,
         Verdict.REPAIRED,
         "Holds once (W^T W)^{-1} is replaced by the pseudo-inverse: every autonomous input "
         "passed through A(d) leaves dbar unchanged, for any number of bodies.",
         "A(d) = I - W W^+ (Moore-Penrose) gives (d dbar/d d) S(d) A(d) = 0 whenever sum d_i != 0.",
-    )
+    ), trajectory_evidence(ctx, "stealthiness"))
 
 
 @REGISTRY.claim(

@@ -165,7 +165,9 @@ def nagumo_gradient(context: CheckContext) -> Outcome:
     scope="closed loop (9), (12), (13) with any human command",
 )
 def invariance(context: CheckContext) -> Outcome:
-    return Outcome(
+    from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
+
+    return cross_checked(Outcome(
         Verdict.ASSUMPTION,
         "ḣ ≥ 0 on the boundary holds exactly under Assumption 1, item 2 (lemma1.boundary), "
         "and the boundary is regular on SO(3) (lemma1.nagumo-gradient). What remains is "
@@ -174,7 +176,7 @@ def invariance(context: CheckContext) -> Outcome:
         "piecewise continuous in time). And item 2 (sym(R_rl) ≻ 0 for all t) is a "
         "requirement on the operator's behaviour in closed loop, not a property of H(s).",
         (Evidence(EvidenceKind.ARGUMENT, "Uses lemma1.boundary and lemma1.nagumo-gradient."),),
-    )
+    ), trajectory_evidence(context, "lemma1"))
 
 
 @REGISTRY.claim(
@@ -227,17 +229,19 @@ def storage_derivatives(context: CheckContext) -> Outcome:
     "(Lemma 1) and λ2 > 0 (Assumption 1, item 2)",
 )
 def v_dot(context: CheckContext) -> Outcome:
+    from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
+
     loop = theorem1.ClosedLoop()
     derivations = theorem1.v_dot(loop)
     results = check_all(derivations, context, 9)
-    return outcome_from(
+    return cross_checked(outcome_from(
         results,
         "The human terms cancel exactly and V̇ equals the trace expression for every "
         "command; the bound follows; V̇ ≤ 0 under Lemma 1 and item 2. Also checked: "
         "(k_s/8)(λ1+λ2)‖I - R_lᵀR̄‖² ≤ -V̇, so V̇ = 0 forces R_l = R̄ when λ1 + λ2 > 0, "
         "and V̇ = 0 on R_l = R̄ for any command: 'V̇ = 0 iff R_l = R̄' holds.",
         extra=(_kernel_evidence(),),
-    )
+    ), trajectory_evidence(context, "lyapunov"))
 
 
 @REGISTRY.claim(
@@ -273,7 +277,9 @@ def lasalle_derivative(context: CheckContext) -> Outcome:
     scope="the closed loop with a human operator",
 )
 def lasalle_storage(context: CheckContext) -> Outcome:
-    return Outcome(
+    from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
+
+    return cross_checked(Outcome(
         Verdict.ASSUMPTION,
         "S_h is an integral over the past, not a function of the current state, and the "
         "human is not given a state, so LaSalle's principle does not apply as written. "
@@ -283,4 +289,4 @@ def lasalle_storage(context: CheckContext) -> Outcome:
         "stay bounded (item 4). Item 3 (ω_h^s ≡ 0 only if d_l ≡ d_r) then closes the "
         "argument. These are assumptions the report lists; they are not checked here.",
         (Evidence(EvidenceKind.ARGUMENT, "Uses thm1.v-dot and thm1.lasalle-derivative."),),
-    )
+    ), trajectory_evidence(context, "lasalle"))

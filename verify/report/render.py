@@ -79,7 +79,10 @@ def _sections(run: RunResult):
 def _evidence_line(e) -> str:
     status = "pass" if e.passed else "FAIL"
     path = f" (`{e.path}`)" if e.path else ""
-    return f"- [{e.kind.value}, {status}] {e.summary}{path}"
+    line = f"- [{e.kind.value}, {status}] {e.summary}{path}"
+    if e.kind is EvidenceKind.FIGURE and e.path and e.path.endswith(".png"):
+        line += f"\n\n    ![{_md_escape(e.summary)[:80]}]({e.path})\n"
+    return line
 
 
 def _step_rows(results) -> list[dict[str, str]]:
@@ -258,6 +261,10 @@ def render_html(run: RunResult, generated: datetime | None = None) -> str:
             ev = "".join(
                 f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
                 f"{'pass' if e.passed else 'FAIL'}] {esc(e.summary)}"
+                + (f"<br><img src='{esc(e.path)}' alt='{esc(e.summary[:80])}' "
+                   "style='max-width:100%'>"
+                   if e.kind is EvidenceKind.FIGURE and e.path and e.path.endswith(".png")
+                   else "")
                 + (
                     f"<details><summary>data</summary><pre>"
                     f"{esc(json.dumps(e.to_json()['data'], indent=1))}</pre></details>"

@@ -138,3 +138,24 @@ def write_outputs(out_dir: Path, traj: Trajectory, E: Energy, fmt: str, title: s
         files.update({out_dir / name: data for name, data in plots(traj, E, title).items()})
     write_all_atomic(files)
     return list(files)
+
+
+def counterexample_figure(traj: Trajectory, E: Energy, title: str) -> bytes:
+    """Two panels: Lemma 1's quantities, and |dbar - d_r| with the human's supply."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    s = series(traj, E)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.4, 4.8), sharex=True)
+    top.plot(s["t"], s["tr_Rbar_r"], label="tr(R-bar_r)")
+    top.plot(s["t"], 1.0 + s["lambda_min_sym_R_rl"], lw=0.8, label="1 + lambda_min(sym R_rl)")
+    top.axhline(1.0, color="k", lw=0.6, ls="--")
+    top.legend(fontsize=8)
+    top.set_title(title, fontsize=10)
+    bottom.plot(s["t"], s["dbar_error"], label="|dbar - d_r|")
+    bottom.plot(s["t"], traj.supply, lw=0.8, label="int e^T omega_h^b dt")
+    bottom.set_xlabel("t [s]")
+    bottom.legend(fontsize=8)
+    return _png(fig)
