@@ -92,10 +92,9 @@ class Synchronisation(Autonomous):
     def __call__(self, t: float, R: Array) -> Array:
         if R.shape[0] < 2:
             return np.zeros((R.shape[0], 3))
-        Rt = transpose(R)
-        ahead = vee(Rt @ np.roll(R, -1, axis=0))
-        behind = vee(Rt @ np.roll(R, 1, axis=0))
-        return self.gain * (ahead + behind)
+        ahead = vee(transpose(R) @ np.roll(R, -1, axis=0))  # sk(R_i^T R_{i+1})^vee
+        # sk(R_i^T R_{i-1})^vee = -sk(R_{i-1}^T R_i)^vee: the previous body's "ahead" term
+        return self.gain * (ahead - np.roll(ahead, 1, axis=0))
 
 
 AUTONOMOUS_KINDS = ("zero", "random", "consensus")
