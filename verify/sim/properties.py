@@ -11,8 +11,9 @@ verdict; a check whose assumptions fail says so (``holds`` is None) instead of p
 
 * stealthiness (Section 2, eq. (3)): dbar is the same with and without Omega~_a;
 * quasi-average (Section 3): R-bar e3 = dbar;
-* Lemma 1: tr(R-bar_r) >= 1 while lambda_min(R_rl + R_rl^T) > 0;
-* Theorem 1: V non-increasing (per segment of constant R_r) and V' below eq. (9);
+* Lemma 1: tr(R-bar_r) >= 1 while lambda_min(R_rl + R_rl^T) > 0 (checked on that prefix);
+* Theorem 1: V' below eq. (9) everywhere; V non-increasing (per segment of constant R_r)
+  while the premises of V' <= 0 hold;
 * LaSalle (Theorem 1): |dbar - d_r| shrinks to ``lasalle_fraction`` of its start.
 """
 
@@ -23,7 +24,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from verify.sim.energy import Energy, energy
+from verify.sim.energy import energy
 from verify.sim.inputs import Autonomous
 from verify.sim.run import Trajectory, simulate
 from verify.sim.scenario import LOOP_RATE, Scenario
@@ -112,51 +113,68 @@ def _segments(traj: Trajectory) -> list[slice]:
     return [slice(a, b) for a, b in itertools.pairwise(bounds)]
 
 
-def _lemma1_premise(E: Energy, seg: slice) -> bool:
-    return bool(np.min(E.lmin_rl[seg]) > 0.0)
+def _while(condition: Array, seg: slice) -> slice:
+    """The longest prefix of ``seg`` on which ``condition`` holds at every sample."""
+    bad = np.flatnonzero(~condition[seg])
+    return slice(seg.start, seg.start + (int(bad[0]) if bad.size else seg.stop - seg.start))
+
+
+def _prefix_note(kept: list[slice], segs: list[slice], t: Array) -> str:
+    cut = [k for k, s in zip(kept, segs, strict=True) if k.stop < s.stop]
+    return "" if not cut else f" (premise lost at t = {t[cut[0].stop]:.3g} s; checked before)"
 
 
 def lemma1_invariance(pair: RunPair) -> PropertyResult:
-    """min_t tr(R-bar_r) - 1 >= 0 on each segment that starts with it >= 0 (Lemma 1)."""
+    """tr(R-bar_r) >= 1 while sym(R_rl) > 0, on each segment that starts with it (Lemma 1).
+
+    The samples after the first loss of sym(R_rl) > 0 in a segment are not checked: the
+    lemma says nothing about them.
+    """
     Ec, Ef = energy(pair.coarse, False), energy(pair.fine, False)
     segs = _segments(pair.coarse)
-    premise = all(_lemma1_premise(Ec, s) for s in segs)
+    kept = [_while(Ec.lmin_rl > 0, s) for s in segs]
     starts = all(Ec.h[s.start] >= 0 for s in segs)
-    violation = max(float(-np.min(Ec.h[s])) for s in segs)
+    violation = max((float(-np.min(Ec.h[k])) for k in kept if k.stop > k.start),
+                    default=-np.inf)
     tol = pair.tolerance(Ec.h, Ef.h)
-    ok = {"sym(R_rl) > 0 along the trajectory": premise,
+    ok = {"sym(R_rl) > 0 at each start": all(k.stop > k.start for k in kept),
           "tr(R-bar_r) >= 1 at each start": starts}
     return _result("Lemma 1 invariance", violation, tol, ok,
-                   f"min tr(R-bar_r) - 1 = {np.min(Ec.h):.3g}")
+                   f"min tr(R-bar_r) - 1 = {-violation:.3g}"
+                   + _prefix_note(kept, segs, pair.coarse.t))
 
 
 def lyapunov_decrease(pair: RunPair, use_storage: bool = True) -> PropertyResult:
-    """V non-increasing on each segment, and V' <= the bound of eq. (9) at every sample.
+    """V' <= the bound of eq. (9) at every sample, and V non-increasing while it applies.
 
+    The bound holds at every state; V' <= 0 needs sym(R_rl) > 0 and tr(R-bar_r) >= 1, so
+    monotonicity is checked on the prefix of each segment (constant R_r) where both hold.
     With ``use_storage`` and a human carrying a KYP storage x^T P x / 2, S_h is that
     storage (passivity is then used); otherwise S_h is the running supply integral.
     """
     Ec, Ef = energy(pair.coarse, use_storage), energy(pair.fine, use_storage)
     V_c, V_f = Ec.V, Ef.V
     segs = _segments(pair.coarse)
-    rises = []
-    for s in segs:
-        v = V_c[s]
-        rises.append(float(np.max(v[1:] - np.minimum.accumulate(v)[:-1], initial=0.0)))
-    rise = max(rises)
     tol_rise = pair.tolerance(V_c, V_f)
+    premise = (Ec.lmin_rl > 0) & (Ec.h >= -pair.tolerance(Ec.h, Ef.h))
+    kept = [_while(premise, s) for s in segs]
+    rise = 0.0
+    for k in kept:
+        v = V_c[k]
+        if v.shape[0] > 1:
+            rise = max(rise, float(np.max(v[1:] - np.minimum.accumulate(v)[:-1])))
     # V' and its bound come from the vector field at the same state: only rounding apart
     scale = np.abs(Ec.V_dot) + np.abs(Ec.V_dot_bound) + pair.coarse.scenario.k_s
     slack = float(np.max((Ec.V_dot - Ec.V_dot_bound) / scale))
     tol_slack = 1e3 * EPS
-    premise = all(_lemma1_premise(Ec, s) for s in segs) and all(
-        np.min(Ec.h[s]) >= -tol_rise for s in segs)
-    ok = {"sym(R_rl) > 0 and sym(R-bar_r) >= 0 along the trajectory": premise}
+    ok = {"sym(R_rl) > 0 and sym(R-bar_r) >= 0 at each start":
+          all(k.stop > k.start for k in kept)}
     if use_storage:
         ok["human has a storage function (KYP certificate)"] = Ec.uses_storage
     holds = None if not all(ok.values()) else bool(rise <= tol_rise and slack <= tol_slack)
     detail = (f"S_h = {'x^T P x / 2' if Ec.uses_storage else 'running supply'}; "
-              f"largest (V' - bound)/scale = {slack:.3g} (tolerance {tol_slack:.3g})")
+              f"largest (V' - bound)/scale = {slack:.3g} (tolerance {tol_slack:.3g})"
+              + _prefix_note(kept, segs, pair.coarse.t))
     return PropertyResult("Lyapunov decrease", holds, rise, tol_rise, ok, detail)
 
 
