@@ -22,7 +22,7 @@ from verify.errors import VerifyInputError
 from verify.sim.humans import Human
 from verify.sim.inputs import Autonomous, Reference
 from verify.so3 import Array, check_rotations, vee
-from verify.system.laws import quasi_average_initial
+from verify.system.laws import interface_velocity, leader_velocity, quasi_average_initial
 from verify.system.stealthy import dbar, stealthy_input
 
 LOOP_RATE = 120.0  # Hz, the simulator loop of Section 4 ("Simulation Setup")
@@ -89,16 +89,16 @@ class ClosedLoop:
 
     def signals(self, Y: Array, x: Array, held: Held) -> tuple[Array, Array, Array]:
         """(omega~_h^s, e, omega_h^b) at a state."""
-        n, k_s = self.n, self.s.k_s
+        n = self.n
         R_bar, R_l = Y[n], Y[n + 1]
-        omega_tilde = k_s * (R_bar @ vee(R_bar.T @ R_l))
+        omega_tilde = interface_velocity(R_bar, R_l, self.s.k_s)  # eq. (6a)
         e = vee(R_l.T @ held.R_r)
         omega_b = self.s.human.command(x[: self.m], e, R_l, held.human)
         return omega_tilde, e, omega_b
 
     def leader_velocity(self, R_l: Array, R_bar: Array, omega_b: Array) -> Array:
         """omega_l = k_s sk(R_l^T R-bar)^vee + omega_h^b, eq. (6b) (a body velocity)."""
-        return self.s.k_s * vee(R_l.T @ R_bar) + omega_b
+        return leader_velocity(R_l, R_bar, self.s.k_s, R_l @ omega_b)
 
     def field(self, held: Held):
         n, human, autonomous = self.n, self.s.human, self.s.autonomous
