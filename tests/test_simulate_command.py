@@ -33,13 +33,15 @@ def test_default_run_writes_trajectory_and_four_plots(tmp_path):
     assert "orthogonality drift" in out.stdout
 
 
-def test_csv_with_passive_model_uses_certificate_storage(tmp_path):
+def test_csv_with_passive_model_uses_certificate_storage_and_checks(tmp_path):
     model = MODELS / "reconstructed_ks3p0.toml"
     out = run_cli("simulate", "--model", str(model), "--ks", "3", "--seconds", "2",
-                  "--format", "csv", "--no-plots", "--autonomous", "zero",
+                  "--format", "csv", "--no-plots", "--autonomous", "zero", "--check",
                   "--out", str(tmp_path))
     assert out.returncode == 0, out.stderr
     assert "passive (KYP certificate checked exactly)" in out.stdout
+    checks = [line for line in out.stdout.splitlines() if "violation" in line]
+    assert len(checks) == 5 and all(": holds;" in line for line in checks), out.stdout
     assert [p.name for p in tmp_path.iterdir()] == ["trajectory.csv"]
     table = np.genfromtxt(tmp_path / "trajectory.csv", delimiter=",", names=True)
     assert np.all(np.diff(table["V"]) <= 1e-9)  # Theorem 1 with S_h = x^T P x / 2

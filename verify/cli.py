@@ -131,6 +131,9 @@ def _build_parser() -> argparse.ArgumentParser:
                        help="output directory (default reports/simulation)")
     p_sim.add_argument("--format", choices=("npz", "csv"), default="npz", dest="fmt")
     p_sim.add_argument("--no-plots", action="store_true", help="write the trajectory only")
+    p_sim.add_argument("--check", action="store_true",
+                       help="also check stealthiness, R-bar e3 = dbar, Lemma 1, V decrease and "
+                       "LaSalle on this run, within the integrator's error (3 more runs)")
     return parser
 
 
@@ -249,7 +252,7 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
         n=args.n, k_s=args.ks, human=human, model=args.model, gain=args.gain,
         seconds=args.seconds, step=args.step, seed=args.seed, autonomous=args.autonomous,
         reference=args.reference, network=args.network, out=args.out, fmt=args.fmt,
-        plots=not args.no_plots))
+        plots=not args.no_plots, check=args.check))
 
 
 def _cmd_list(_: argparse.Namespace) -> int:

@@ -42,6 +42,7 @@ class SimulateSettings:
     out: Path = Path("reports/simulation")
     fmt: str = "npz"
     plots: bool = True
+    check: bool = False  # also run the property checks (two more runs, h and h/2)
 
 
 def _finite_positive(value: float, what: str) -> float:
@@ -158,6 +159,8 @@ def run_simulate(s: SimulateSettings) -> int:
     wall = time.perf_counter() - start
     E = energy(traj)
     _summary(traj, E, wall)
+    if s.check:
+        _check_properties(scenario, seconds, step)
     title = f"n={scenario.n}, k_s={scenario.k_s:g}"
     paths = write_outputs(s.out, traj, E, s.fmt, title, with_plots=s.plots)
     print("  wrote: " + ", ".join(str(p) for p in paths))
@@ -174,7 +177,7 @@ def _summary(traj, E, wall: float) -> None:
           "holds)")
     V = E.V
     rise = float(np.max(V[1:] - np.minimum.accumulate(V)[:-1], initial=0.0))
-    label = "x^T P x/2" if E.uses_storage else "running supply"
+    label = "human storage (x^T P x/2; 0 if static)" if E.uses_storage else "running supply"
     print(f"  V (S_h = {label}): {V[0]:.6g} -> {V[-1]:.6g}; largest rise {rise:.3g}"
           + ("" if traj.scenario.reference.is_constant else " (the reference switches: V "
              "jumps at switches)"))
@@ -184,3 +187,17 @@ def _summary(traj, E, wall: float) -> None:
                 float(np.max(orthogonality_error(traj.final_bodies))))
     print(f"  orthogonality drift max |R^T R - I| = {drift:.2g} (no re-projection); "
           f"{wall:.2f} s wall, {wall / t[-1]:.3g} s per simulated second")
+
+
+def _check_properties(scenario: Scenario, seconds: float, step: float) -> None:
+    """The paper's conclusions on this scenario, within the integrator's error."""
+    from verify.sim import properties as props
+
+    print("  property checks (runs with h and h/2; tolerance from their difference):")
+    pair = props.RunPair.of(scenario, seconds, step)
+    results = [props.stealthiness(scenario, seconds, step), props.quasi_average_axis(pair),
+               props.lemma1_invariance(pair), props.lyapunov_decrease(pair)]
+    if scenario.reference.is_constant:
+        results.append(props.lasalle_convergence(pair))
+    for r in results:
+        print(f"    {r.line()}")

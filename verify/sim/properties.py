@@ -172,7 +172,7 @@ def lyapunov_decrease(pair: RunPair, use_storage: bool = True) -> PropertyResult
     if use_storage:
         ok["human has a storage function (KYP certificate)"] = Ec.uses_storage
     holds = None if not all(ok.values()) else bool(rise <= tol_rise and slack <= tol_slack)
-    detail = (f"S_h = {'x^T P x / 2' if Ec.uses_storage else 'running supply'}; "
+    detail = (f"S_h = {'human storage' if Ec.uses_storage else 'running supply'}; "
               f"largest (V' - bound)/scale = {slack:.3g} (tolerance {tol_slack:.3g})"
               + _prefix_note(kept, segs, pair.coarse.t))
     return PropertyResult("Lyapunov decrease", holds, rise, tol_rise, ok, detail)
