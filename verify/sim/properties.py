@@ -194,7 +194,8 @@ def lasalle_convergence(pair: RunPair, fraction: float = 0.1) -> PropertyResult:
         "human has a storage function (KYP certificate)": Ec.uses_storage,
         "dbar defined (|sum d_i|/n > 1e-3)": _coherent(c),
     }
-    return _result("LaSalle convergence", violation, tol, ok,
+    return _result(f"LaSalle convergence (finite-horizon proxy: to {fraction:g} of the start "
+                   f"by T)", violation, tol, ok,
                    f"|dbar - d_r| from {err_c[0]:.3g} to {err_c[-1]:.3g} in {c.t[-1]:.3g} s")
 
 
