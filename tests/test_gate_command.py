@@ -54,12 +54,19 @@ def test_tampered_certificate_is_rejected(tmp_path, capsys):
     "args, message",
     [
         (["--margin", "abc"], "not a finite number"),
-        (["--band", "1:2"], "not available"),
+        (["--band", "2:1"], "need W1 < W2"),
+        (["--band", "1:1"], "need W1 < W2"),
+        (["--band=-1:2"], "must be >= 0"),
+        (["--band", "nan:2"], "not a finite number"),
+        (["--band", "0:inf"], "not a finite number"),
+        (["--band", "a:b"], "not a finite number"),
+        (["--band", "1"], "expected W1:W2"),
     ],
 )
 def test_bad_options_exit_2(args, message, capsys):
     assert main(["gate", str(MODELS / "example_state_space.toml"), *args]) == 2
-    assert message in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1
 
 
 def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):

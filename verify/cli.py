@@ -95,7 +95,8 @@ def _build_parser() -> argparse.ArgumentParser:
     p_gate.add_argument("--margin", default="0", metavar="NU",
                         help="require nu(w) >= NU for all w (exact rational, default 0)")
     p_gate.add_argument("--band", metavar="W1:W2",
-                        help="passivity over a finite band only (not available yet)")
+                        help="passivity on the band W1 <= w <= W2 rad/s only (generalized "
+                        "KYP certificate or exact witness inside the band)")
     p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
                         metavar="DIR", help="where certificates are written")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
@@ -176,19 +177,29 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
-    from verify.passivity.gate import parse_margin, run_gate, write_json, write_junit
+    from verify.passivity.band import parse_band
+    from verify.passivity.gate import (
+        parse_margin,
+        run_band_gate,
+        run_gate,
+        write_json,
+        write_junit,
+    )
     from verify.passivity.model_file import load_model
 
-    if args.band:
-        raise VerifyInputError("--band: finite-band analysis is not available yet")
     margin = parse_margin(args.margin)
+    band = parse_band(args.band) if args.band is not None else None
     models = [load_model(path) for path in args.models]  # validate all before any work
-    results = run_gate(models, margin, args.certificates)
+    if band is None:
+        results = run_gate(models, margin, args.certificates)
+    else:
+        results = run_band_gate(models, band, margin, args.certificates)
     for r in results:
         print(r.line(), flush=True)
     passed = sum(r.passed for r in results)
-    print(f"{passed} of {len(results)} model(s) passive" + (f" with margin {margin}"
-                                                          if margin else ""))
+    where = "" if band is None else f" on [{band[0]}, {band[1]}] rad/s"
+    print(f"{passed} of {len(results)} model(s) passive{where}"
+          + (f" with margin {margin}" if margin else ""))
     if args.json:
         write_json(results, args.json)
     if args.junit:
@@ -197,7 +208,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.certificate import check_certificate_file
+    from verify.passivity.stored import check_stored_certificate
 
     files: list[Path] = []
     for p in args.paths:
@@ -210,7 +221,7 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
     checks = []
     for f in files:
         try:
-            checks.append((f, check_certificate_file(f)))
+            checks.append((f, check_stored_certificate(f)))
         except ValueError as exc:
             raise VerifyInputError(str(exc)) from None
     for f, c in checks:

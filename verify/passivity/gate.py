@@ -2,7 +2,9 @@
 
 Every model file is validated before any is analysed (bad input fails fast and whole).
 A passive verdict writes its exactly checked KYP certificate under the certificates
-directory; a JSON summary and a JUnit XML file (one test case per model) are optional.
+directory (with ``--band W1:W2``, a generalized KYP certificate for that band, see
+:mod:`verify.passivity.band`); a JSON summary and a JUnit XML file (one test case per
+model) are optional.
 """
 
 from __future__ import annotations
@@ -60,6 +62,25 @@ def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResul
             tag = d.certificate.model.fingerprint()[:12]
             path = certificates_dir / f"{_slug(model.name)}-{tag}.json"
             write_certificate(d.certificate, path)
+        results.append(GateResult(d, path))
+    return results
+
+
+def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
+                  certificates_dir: Path) -> list[GateResult]:
+    """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
+    from verify.passivity.band import decide_band
+    from verify.passivity.gkyp import write_band_certificate
+
+    results = []
+    for model in models:
+        d = decide_band(model, band, margin)
+        path = None
+        if d.certificate is not None:
+            tag = d.certificate.model.fingerprint()[:12]
+            label = f"band-{float(band[0]):.6g}-{float(band[1]):.6g}"
+            path = certificates_dir / f"{_slug(model.name)}-{label}-{tag}.json"
+            write_band_certificate(d.certificate, path)
         results.append(GateResult(d, path))
     return results
 

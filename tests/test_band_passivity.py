@@ -1,0 +1,131 @@
+"""Finite-band passivity (generalized KYP, Iwasaki-Hara 2005): gate, certificates, witnesses.
+
+The reconstructed k_s = 2.5 model has nu(w) = Re h(jw) with Re h |den|^2 = 2 - w^2/2, so
+it is passive exactly on bands inside [0, 2] rad/s (paper, Section 4: "not satisfied for
+k_s = 2.5 at frequencies above approximately 2 rad/s").
+"""
+
+from __future__ import annotations
+
+import json
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from gmpy2 import mpq
+
+from verify.cli import main
+from verify.passivity.band import decide_band, parse_band
+from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
+from verify.passivity.gkyp import check_gkyp
+from verify.passivity.hamiltonian import nu_values
+from verify.passivity.model import from_state_space
+from verify.passivity.model_file import load_model
+from verify.passivity.witness import hermitian_part_at
+
+KS25 = "verify/data/models/reconstructed_ks2p5.toml"
+F = Fraction
+
+
+@pytest.fixture(scope="module")
+def ks25():
+    return load_model(KS25)
+
+
+def test_gate_band_passes_below_two_and_fails_above(tmp_path, capsys):
+    certs = tmp_path / "certs"
+    assert main(["gate", KS25, "--band", "0:1.5", "--certificates", str(certs)]) == 0
+    out = capsys.readouterr().out
+    assert "PASS" in out and "on [0, 3/2] rad/s" in out
+    (path,) = certs.glob("*.json")
+    assert json.loads(path.read_text())["schema"] == "verify-gkyp-certificate/1"
+    assert main(["certificates", "check", str(certs)]) == 0
+    capsys.readouterr()
+    assert main(["gate", KS25, "--band", "1:10", "--certificates", str(certs),
+                 "--json", str(tmp_path / "g.json")]) == 1
+    line = capsys.readouterr().out.splitlines()[0]
+    assert line.startswith("FAIL") and "not passive on [1, 10]" in line
+    (data,) = json.loads((tmp_path / "g.json").read_text())
+    omega = Fraction(data["witness"]["omega"])
+    assert 2 < omega <= 10 and data["band"] == ["1", "10"]
+
+
+def test_band_witness_lies_inside_the_band_and_is_exact(ks25):
+    d = decide_band(ks25, (F(1), F(10)))
+    assert d.verdict == NOT_PASSIVE
+    w = Fraction(d.witness.data["omega"])
+    assert F(1) <= w <= F(10)
+    a = [mpq(Fraction(x)) for x in d.witness.data["a"]]
+    b = [mpq(Fraction(x)) for x in d.witness.data["b"]]
+    v = a + b  # real form of a + jb
+    d_cert = decide_band(ks25, (F(0), F(3, 2)))
+    M = hermitian_part_at(d_cert.certificate.model, w)
+    value = sum(v[i] * M[i][j] * v[j] for i in range(len(v)) for j in range(len(v)))
+    assert value < 0
+
+
+def test_narrow_bands_near_the_boundary(ks25):
+    assert decide_band(ks25, (F(0), F(199, 100))).verdict == PASSIVE
+    assert decide_band(ks25, (F(201, 100), F(3))).verdict == NOT_PASSIVE
+    # nu(2) = 0 exactly: no strict certificate exists and no witness either
+    assert decide_band(ks25, (F(0), F(2))).verdict == INCONCLUSIVE
+
+
+def test_certificate_does_not_transfer_to_another_band(ks25):
+    """Soundness: the certificate for [0, 3/2] fails the exact check on [1, 10]."""
+    cert = decide_band(ks25, (F(0), F(3, 2))).certificate
+    assert check_gkyp(cert.model, cert.P, cert.Q, cert.band).ok
+    assert not check_gkyp(cert.model, cert.P, cert.Q, (F(1), F(10))).ok
+
+
+def test_tampered_band_certificate_is_rejected(tmp_path, capsys):
+    main(["gate", KS25, "--band", "0:1.5", "--certificates", str(tmp_path)])
+    (path,) = tmp_path.glob("*.json")
+    original = path.read_text()
+    for edit in ("band", "Q", "model"):
+        data = json.loads(original)
+        if edit == "band":
+            data["band"] = ["0", "5"]  # the model is not passive at 2 < w <= 5
+        elif edit == "Q":
+            data["Q"]["re"][0][0] = "-1"
+        else:
+            data["model"]["D"][0][1] = "1"  # fingerprint no longer matches
+        path.write_text(json.dumps(data))
+        assert main(["certificates", "check", str(path)]) == 1
+        assert "INVALID" in capsys.readouterr().out
+    path.write_text("{\"schema\": \"verify-gkyp-certificate/1\", \"model\": 3}")
+    assert main(["certificates", "check", str(path)]) == 2
+    assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
+def test_band_verdict_agrees_with_nu_on_random_bands(ks25):
+    """Cross-check against floating-point nu on a fine grid (never a proof, a falsifier)."""
+    rng = np.random.default_rng(4)
+    for _ in range(6):
+        w1, w2 = sorted(rng.uniform(0, 4, 2))
+        band = (F(w1).limit_denominator(100), F(w2).limit_denominator(100))
+        if band[0] >= band[1]:
+            continue
+        d = decide_band(ks25, band)
+        grid = np.linspace(float(band[0]), float(band[1]), 2001)
+        lowest = nu_values(ks25.A, ks25.B, ks25.C, ks25.D, grid).min()
+        if d.verdict == PASSIVE:
+            assert lowest > -1e-12
+        elif d.verdict == NOT_PASSIVE:
+            assert lowest < 0
+
+
+def test_static_and_unstable_models_on_a_band():
+    static = from_state_space(np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)),
+                              np.array([[-1.0]]), name="static")
+    assert decide_band(static, (F(0), F(1))).verdict == NOT_PASSIVE
+    # s/(s-1): unstable, yet Re H(jw) = w^2/(1 + w^2) >= 0, so passive on every band
+    unstable = from_state_space(np.array([[1.0]]), np.array([[1.0]]), np.array([[1.0]]),
+                                np.array([[1.0]]), name="s/(s-1)")
+    assert decide_band(unstable, (F(1), F(3))).verdict == PASSIVE
+
+
+@pytest.mark.parametrize("text", ["0:1.5", " 1/2 : 3 ", "1e-3:2"])
+def test_parse_band_is_exact(text):
+    w1, w2 = parse_band(text)
+    assert isinstance(w1, Fraction) and w1 < w2
