@@ -78,3 +78,13 @@ def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):
     broken = tmp_path / "c.json"
     broken.write_text("{not json")
     assert main(["certificates", "check", str(broken)]) == 2
+
+
+def test_gate_indices_are_printed_and_written(tmp_path, capsys):
+    out_json = tmp_path / "g.json"
+    assert main(["gate", str(MODELS / "reconstructed_ks3p0.toml"), "--indices",
+                 "--certificates", str(tmp_path), "--json", str(out_json)]) == 0
+    out = capsys.readouterr().out
+    assert "ν_IFP = 0 exactly" in out and "ρ_OFP = 0 exactly" in out
+    (data,) = json.loads(out_json.read_text())
+    assert data["indices"]["IFP"]["lower"] == "0" and data["indices"]["OFP"]["exact"]

@@ -97,6 +97,10 @@ def _build_parser() -> argparse.ArgumentParser:
     p_gate.add_argument("--band", metavar="W1:W2",
                         help="passivity on the band W1 <= w <= W2 rad/s only (generalized "
                         "KYP certificate or exact witness inside the band)")
+    p_gate.add_argument("--indices", action="store_true",
+                        help="also report the passivity indices nu_IFP and rho_OFP: numerical "
+                        "estimates with exact rational lower (certificate) and upper (witness) "
+                        "bounds")
     p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
                         metavar="DIR", help="where certificates are written")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
@@ -179,6 +183,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
 def _cmd_gate(args: argparse.Namespace) -> int:
     from verify.passivity.band import parse_band
     from verify.passivity.gate import (
+        add_indices,
         parse_margin,
         run_band_gate,
         run_gate,
@@ -194,6 +199,8 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         results = run_gate(models, margin, args.certificates)
     else:
         results = run_band_gate(models, band, margin, args.certificates)
+    if args.indices:
+        add_indices(results)
     for r in results:
         print(r.line(), flush=True)
     passed = sum(r.passed for r in results)

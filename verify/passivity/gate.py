@@ -39,6 +39,7 @@ def _slug(name: str) -> str:
 class GateResult:
     decision: Decision
     certificate_path: Path | None
+    indices: tuple | None = None  # (IFP, OFP) IndexBounds when asked for
 
     @property
     def passed(self) -> bool:
@@ -48,9 +49,11 @@ class GateResult:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
-        if self.passed:
-            return f"{head}; certificate {self.certificate_path}"
-        return f"{head}; {d.reason}"
+        text = f"{head}; certificate {self.certificate_path}" if self.passed \
+            else f"{head}; {d.reason}"
+        for index in self.indices or ():
+            text += f"\n  {index.summary()}"
+        return text
 
 
 def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResult]:
@@ -85,10 +88,20 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
     return results
 
 
+def add_indices(results: list[GateResult]) -> None:
+    """Attach the passivity indices nu_IFP and rho_OFP (estimates and exact bounds)."""
+    from verify.passivity.indices import indices
+
+    for r in results:
+        r.indices = indices(r.decision.model)
+
+
 def write_json(results: list[GateResult], path: Path) -> None:
     data = [
         {**r.decision.to_json(), "passed": r.passed,
-         "certificate": None if r.certificate_path is None else str(r.certificate_path)}
+         "certificate": None if r.certificate_path is None else str(r.certificate_path),
+         **({} if r.indices is None else {
+             "indices": {i.kind: i.to_json() for i in r.indices}})}
         for r in results
     ]
     write_atomic(path, json.dumps(data, indent=2) + "\n")
