@@ -129,3 +129,30 @@ def test_static_and_unstable_models_on_a_band():
 def test_parse_band_is_exact(text):
     w1, w2 = parse_band(text)
     assert isinstance(w1, Fraction) and w1 < w2
+
+
+def test_random_models_band_verdicts_are_consistent_with_nu():
+    """Falsification: a certified band has nu >= 0 on a fine grid; a witness lies in the band
+    and nu is negative there."""
+    rng = np.random.default_rng(11)
+    seen = set()
+    for _ in range(8):
+        n, m = int(rng.integers(1, 4)), int(rng.integers(1, 3))
+        A = rng.normal(size=(n, n))
+        A -= (np.max(np.linalg.eigvals(A).real) + 0.3) * np.eye(n)
+        B, C = rng.normal(size=(n, m)), rng.normal(size=(m, n))
+        D = 1.5 * np.eye(m) + 0.2 * rng.normal(size=(m, m))
+        model = from_state_space(A, B, C, D, name="random")
+        w1 = F(float(rng.uniform(0, 2))).limit_denominator(100)
+        band = (w1, w1 + F(float(rng.uniform(0.1, 3))).limit_denominator(100))
+        d = decide_band(model, band)
+        seen.add(d.verdict)
+        grid = np.linspace(float(band[0]), float(band[1]), 4001)
+        lowest = nu_values(A, B, C, D, grid).min()
+        if d.verdict == PASSIVE:
+            assert lowest > -1e-12
+        elif d.verdict == NOT_PASSIVE:
+            w = Fraction(d.witness.data["omega"])
+            assert band[0] <= w <= band[1]
+            assert nu_values(A, B, C, D, np.array([float(w)]))[0] < 0
+    assert PASSIVE in seen

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from verify.passivity.decide import NOT_PASSIVE, candidate_frequencies, decide
-from verify.passivity.hamiltonian import level_crossings, nu_minimum, nu_values
+from verify.passivity.hamiltonian import LEVEL_GAP, level_crossings, nu_minimum, nu_values
 from verify.passivity.model import from_state_space
 
 
@@ -76,3 +76,34 @@ def test_a_narrow_notch_between_grid_points_is_found_and_witnessed_exactly():
     d = decide(from_state_space(A, B, C, D, name="notch"))
     assert d.verdict == NOT_PASSIVE and d.witness.kind == "frequency"
     assert abs(float(Fraction(d.witness.data["omega"])) - 3.7) < 1e-4
+
+
+def _random_stable(rng, n: int, m: int):
+    A = rng.normal(size=(n, n))
+    A -= (np.max(np.linalg.eigvals(A).real) + rng.uniform(0.05, 1.0)) * np.eye(n)
+    return A, rng.normal(size=(n, m)), rng.normal(size=(m, n)), rng.normal(size=(m, m))
+
+
+def _check_against_grid(seed: int, count: int) -> None:
+    """The located minimum is a value of nu at a point, no more than the level gap above a
+    dense grid's minimum, and the certified-by-crossings level lies below that minimum."""
+    rng = np.random.default_rng(seed)
+    grid = np.concatenate([[0.0], np.logspace(-3, 3, 20001), [math.inf]])
+    for _ in range(count):
+        A, B, C, D = _random_stable(rng, int(rng.integers(1, 6)), int(rng.integers(1, 3)))
+        found = nu_minimum(A, B, C, D)
+        reference = float(np.nanmin(nu_values(A, B, C, D, grid)))
+        scale = max(1.0, abs(reference))
+        assert found.lower <= reference + 1e-12 * scale
+        assert found.value <= reference + 2 * LEVEL_GAP * scale
+        again = nu_values(A, B, C, D, np.array([found.omega]))[0]
+        assert again == pytest.approx(found.value, abs=1e-12)
+
+
+def test_random_models_against_a_dense_grid():
+    _check_against_grid(seed=7, count=8)
+
+
+@pytest.mark.slow
+def test_random_models_against_a_dense_grid_deep():
+    _check_against_grid(seed=8, count=200)

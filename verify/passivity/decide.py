@@ -23,7 +23,7 @@ from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
 from verify.passivity.certificate import Certificate, ExactModel, exact_model
-from verify.passivity.hamiltonian import nu_minimum
+from verify.passivity.hamiltonian import nu_minimum, nu_values
 from verify.passivity.kyp import find_certificate
 from verify.passivity.witness import (
     Witness,
@@ -69,19 +69,7 @@ class Decision:
 
 def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
     """nu(w) = lambda_min(H(jw) + H(jw)^H)/2 at each frequency (floating point)."""
-    n, _m = model_A.shape[0], D.shape[0]
-    out = np.empty(len(omega))
-    for k, w in enumerate(omega):
-        if n:
-            try:
-                H = C @ np.linalg.solve(1j * w * np.eye(n) - model_A, B) + D
-            except np.linalg.LinAlgError:
-                out[k] = np.nan
-                continue
-        else:
-            H = D.astype(complex)
-        out[k] = np.linalg.eigvalsh(H + H.conj().T)[0] / 2
-    return out
+    return nu_values(model_A, B, C, D, np.asarray(omega, dtype=float))
 
 
 def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tuple]:
