@@ -61,6 +61,7 @@ def test_tampered_certificate_is_rejected(tmp_path, capsys):
         (["--band", "0:inf"], "not a finite number"),
         (["--band", "a:b"], "not a finite number"),
         (["--band", "1"], "expected W1:W2"),
+        (["--band", "0:1e400"], "above 1e12"),
     ],
 )
 def test_bad_options_exit_2(args, message, capsys):

@@ -91,3 +91,11 @@ def test_round_up_keeps_the_bound():
     x = Fraction(-465533256644351906551893, 9922240128700779205909760)
     q = round_up(x)
     assert q >= x and q - x <= Fraction(1, 10**6) and q.denominator <= 10**12
+
+
+def test_ofp_upper_bound_next_to_a_pole_on_the_axis():
+    """0.1 + s/(s^2 + 4): Re(1/H) -> 0 at the pole w = 2, so rho_OFP = 0; the witness must
+    be taken beside the pole, where H(jw) is defined."""
+    model = ss([[0, 1], [-4, 0]], [[0], [1]], [[0, 1]], [[0.1]])
+    index = ofp_index(model)
+    assert index.lower == 0 and index.upper is not None and index.upper < Fraction(1, 100)

@@ -52,6 +52,8 @@ def parse_band(text: str) -> tuple[Fraction, Fraction]:
             raise VerifyInputError(f"--band {text!r}: {part.strip()!r} is not a finite "
                                    "number") from None
     w1, w2 = values
+    if max(abs(w1), abs(w2)) > 10**12:
+        raise VerifyInputError(f"--band {text!r}: frequencies above 1e12 rad/s are not supported")
     if w1 < 0:
         raise VerifyInputError(f"--band {text!r}: frequencies must be >= 0 rad/s")
     if w1 >= w2:

@@ -132,10 +132,13 @@ def _rational_vector(v: np.ndarray, bits: int = 30) -> list[mpq]:
 
 
 def _frequencies(omega: float) -> list[Fraction | None]:
-    """Rational approximations of omega (None stands for w -> infinity)."""
+    """Rational approximations of omega and of two neighbours (for a minimiser next to a
+    pole, where H(jw) itself is undefined); None stands for w -> infinity."""
     if math.isinf(omega):
         return [None]
-    return list(dict.fromkeys(Fraction(omega).limit_denominator(k) for k in (1000, 10**6)))
+    near = [omega, omega * (1 - 1e-6), omega * (1 + 1e-6)] if omega > 0 else [omega, 1e-6]
+    return list(dict.fromkeys(Fraction(w).limit_denominator(k) for w in near
+                              for k in (1000, 10**6)))
 
 
 def _response(em: ExactModel, w: Fraction | None):
