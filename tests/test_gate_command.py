@@ -57,6 +57,7 @@ def test_tampered_certificate_is_rejected(tmp_path, capsys):
         (["--band", "2:1"], "need W1 < W2"),
         (["--band", "1:1"], "need W1 < W2"),
         (["--band=-1:2"], "must be >= 0"),
+        (["--band", "-1:2"], "must be >= 0"),
         (["--band", "nan:2"], "not a finite number"),
         (["--band", "0:inf"], "not a finite number"),
         (["--band", "a:b"], "not a finite number"),

@@ -284,9 +284,20 @@ def _cmd_network(args: argparse.Namespace) -> int:
     return status
 
 
+def _attach_band_value(argv: Sequence[str]) -> list[str]:
+    """``--band -1:2`` as ``--band=-1:2``: argparse would take the negative band for an
+    option and print usage; joined, the band check reports it in one line."""
+    out = list(argv)
+    for i, token in enumerate(out[:-1]):
+        if token == "--band" and out[i + 1].startswith("-") and ":" in out[i + 1]:
+            out[i : i + 2] = [f"--band={out[i + 1]}"]
+            break
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = _build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_attach_band_value(sys.argv[1:] if argv is None else argv))
     if args.command is None:
         parser.print_help()
         return 2
