@@ -1,4 +1,4 @@
-"""Claims of Section 4: passivity of the human models (issue 4, items 2 and 6).
+"""Claims of Section 4: passivity of the human models (issue 4, items 2, 5 and 6).
 
 The paper identifies 2x2 human models with diagonal (b1 s + b0)/(s^2 + a1 s + a0) and
 constant off-diagonal entries, and judges passivity from nu(w) >= 0. These claims derive
@@ -17,8 +17,11 @@ import sympy as sp
 
 from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
 from verify.claims.registry import REGISTRY
+from verify.passivity.band import decide_band
 from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide
-from verify.passivity.gate import run_gate
+from verify.passivity.gate import run_band_gate, run_gate
+from verify.passivity.hamiltonian import nu_minimum
+from verify.passivity.indices import indices
 from verify.passivity.model import from_state_space
 from verify.passivity.model_file import load_model
 from verify.report.figures import bode_figure, nu_figure
@@ -200,11 +203,6 @@ def reconstructed_models(context: CheckContext) -> Outcome:
     "illustrate, the verdict rests on the exact evidence",
 )
 def nu_curves_indices(context: CheckContext) -> Outcome:
-    from verify.passivity.band import decide_band
-    from verify.passivity.gate import run_band_gate
-    from verify.passivity.hamiltonian import nu_minimum
-    from verify.passivity.indices import indices
-
     m25, m30 = (_shipped_model(f) for f in ("reconstructed_ks2p5.toml",
                                              "reconstructed_ks3p0.toml"))
     evidence: list[Evidence] = []
