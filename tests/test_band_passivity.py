@@ -156,3 +156,17 @@ def test_random_models_band_verdicts_are_consistent_with_nu():
             assert band[0] <= w <= band[1]
             assert nu_values(A, B, C, D, np.array([float(w)]))[0] < 0
     assert PASSIVE in seen
+
+
+def test_a_pole_inside_the_band_is_named_in_the_verdict():
+    """1/s: Re H(jw) = 0 for w != 0, so nu >= 0 on the band where H is defined; the pole
+    at w = 0 is stated, not hidden."""
+    integrator = from_state_space(np.array([[0.0]]), np.array([[1.0]]), np.array([[1.0]]),
+                                  np.array([[0.0]]), name="1/s")
+    d = decide_band(integrator, (F(0), F(1)))
+    assert d.verdict == PASSIVE and "poles at ω ≈ 0" in d.reason
+    # 1/s^2 has nu -> -infinity at its pole: the witness comes from another band point
+    double = from_state_space(np.array([[0.0, 1.0], [0.0, 0.0]]), np.array([[0.0], [1.0]]),
+                              np.array([[1.0, 0.0]]), np.array([[0.0]]), name="1/s^2")
+    d = decide_band(double, (F(0), F(1)))
+    assert d.verdict == NOT_PASSIVE and F(0) < Fraction(d.witness.data["omega"]) <= F(1)

@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING
 
 import cvxpy as cp
 import numpy as np
+import scipy.linalg as sla
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
@@ -146,23 +147,49 @@ def _hermitian_rational(X: np.ndarray, bits: int) -> ComplexMatrix:
             [[(Xi[i][j] - Xi[j][i]) / 2 for j in range(n)] for i in range(n)])
 
 
+def _unbalance(X: ComplexMatrix, t: list[mpq]) -> ComplexMatrix:
+    """T^-H X T^-1 for T = diag(t), exactly (back from balanced to model coordinates)."""
+    return tuple([[row[j] / (t[i] * t[j]) for j in range(len(t))] for i, row in enumerate(part)]
+                 for part in X)  # type: ignore[return-value]
+
+
 def band_certificate(em: ExactModel, A, B, C, D, band: tuple[Fraction, Fraction]
                      ) -> tuple[ComplexMatrix, ComplexMatrix, float | None, str] | None:
-    """Search, round and check exactly; (P, Q, margin, rounding) or None."""
+    """Search, round and check exactly; (P, Q, margin, rounding) or None.
+
+    The LMI is solved in coordinates balanced by a diagonal power-of-two similarity T
+    (x = T xb), rounded there, and mapped back exactly by P = T^-H Pb T^-1 (same for Q),
+    so badly scaled models keep their relative precision.
+    """
     if em.n == 0:
         return (([], []), ([], []), None, "static") if check_gkyp(em, ([], []), ([], []),
                                                                   band).ok else None
-    found = solve_gkyp(A, B, C, D, (float(band[0]), float(band[1])))
+    _, (scaling, _) = sla.matrix_balance(A, permute=False, separate=True)
+    t = np.asarray(scaling, dtype=float)
+    Ab, Bb, Cb = A * (1.0 / t)[:, None] * t[None, :], B / t[:, None], C * t[None, :]
+    found = solve_gkyp(Ab, Bb, Cb, D, (float(band[0]), float(band[1])))
     if found is None:
         return None
     Pf, Qf, margin = found
+    t_exact = [mpq(Fraction(float(x))) for x in t]
     scale = max(1.0, float(np.max(np.abs(np.concatenate([Pf.ravel(), Qf.ravel()])))))
     for bits in (16, 24, 36, 48, 60):
         step = max(bits - int(np.ceil(np.log2(scale))), 8)
-        P, Q = _hermitian_rational(Pf, step), _hermitian_rational(Qf, step)
+        P = _unbalance(_hermitian_rational(Pf, step), t_exact)
+        Q = _unbalance(_hermitian_rational(Qf, step), t_exact)
         if check_gkyp(em, P, Q, band).ok:
             return P, Q, margin, f"{bits}-bit"
     return None
+
+
+def _poles_in_band(A: np.ndarray, band: tuple[Fraction, Fraction]) -> list[float]:
+    """Frequencies w in the band with jw (numerically) an eigenvalue of A."""
+    if A.shape[0] == 0:
+        return []
+    eig = np.linalg.eigvals(A)
+    axis = eig[np.abs(eig.real) <= 1e-9 * np.maximum(1.0, np.abs(eig))]
+    return sorted({round(float(abs(x.imag)), 12) for x in axis
+                   if float(band[0]) <= abs(x.imag) <= float(band[1])})
 
 
 def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
@@ -184,10 +211,15 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
     except (np.linalg.LinAlgError, ValueError):
         low, nu_min = None, None
     if low is not None and low.value < 0:
-        w = band_witness(em, low.omega, band)
-        if w is not None:
-            return done(NOT_PASSIVE, f"not passive on {where}: {w.summary}", witness=w,
-                        nu_min=nu_min)
+        # the minimiser first; then band points, in case it sits next to a pole (where nu
+        # tends to -infinity and its rational neighbours hit the pole itself)
+        lo, hi = float(band[0]), float(band[1])
+        tries = [low.omega, hi, lo, (lo + hi) / 2, *np.geomspace(max(lo, hi * 1e-3), hi, 7)]
+        for omega in tries:
+            w = band_witness(em, omega, band)
+            if w is not None:
+                return done(NOT_PASSIVE, f"not passive on {where}: {w.summary}", witness=w,
+                            nu_min=nu_min)
     found = band_certificate(em, A, B, C, D, band)
     if found is not None:
         P, Q, num_margin, label = found
@@ -196,8 +228,13 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                                 "rounding": label,
                                 **{k: v for k, v in model.meta.items()
                                    if isinstance(v, str | int | float | bool)}})
+        poles = _poles_in_band(model.A, band)
+        caveat = "" if not poles else (
+            "; H has imaginary-axis poles at ω ≈ " + ", ".join(f"{p:.6g}" for p in poles)
+            + " in the band, where H(jω) is undefined: the statement covers the other "
+            "frequencies")
         return done(PASSIVE, f"passive on {where}: generalized KYP certificate checked "
-                    f"exactly ({label} rounding)", certificate=cert, nu_min=nu_min)
+                    f"exactly ({label} rounding){caveat}", certificate=cert, nu_min=nu_min)
     smallest = "" if nu_min is None else f"; smallest ν found {nu_min[1]:.3g} at ω = " \
         f"{nu_min[0]:.4g}"
     return done(INCONCLUSIVE, f"on {where}: no exactly checked band certificate (the "
