@@ -35,7 +35,7 @@ SECOND = ss([[0, 1], [-1, -1]], [[0], [1]], [[1, 0]], [[0]], "1/(s^2+s+1)")
 @pytest.mark.parametrize("model, value", [(FIRST, 0), (LEAD, 1)])
 def test_ifp_known_answers_are_exact(model, value):
     index = ifp_index(model)
-    assert index.exact and index.lower == value and index.upper_at == "infinity"
+    assert index.exact and index.lower == value and index.upper_at == "ω → ∞"
     shifted = exact_model(model.A, model.B, model.C, model.D - value * np.eye(1))
     assert check_kyp(shifted, index.certificate).ok
 
@@ -82,6 +82,8 @@ def test_shipped_models():
     ifp25 = ifp_index(m25)
     assert ifp25.lower < 0 and ifp25.upper < 0 and ifp25.lower <= ifp25.upper
     assert ifp25.upper - ifp25.lower < Fraction(1, 10**4)
+    ofp25 = ofp_index(m25)  # the loop u = rho y goes unstable before the frequency bound holds
+    assert ofp25.lower is None and ofp25.upper == -10**6 and "Re s > 0" in ofp25.upper_at
     ifp30, ofp30 = ifp_index(m30), ofp_index(m30)
     assert ifp30.exact and ifp30.lower == 0  # strictly proper diagonal, skew feedthrough
     assert ofp30.exact and ofp30.lower == 0  # skew D: Re z^H D z = 0 < |D z|^2 at infinity

@@ -61,7 +61,7 @@ class IndexBounds:
     estimate_at: float | None  # frequency of the estimate's minimiser (inf: w -> infinity)
     lower: Fraction | None = None
     upper: Fraction | None = None
-    upper_at: str | None = None  # rational w* of the upper witness, or "infinity"
+    upper_at: str | None = None  # what witnesses the upper bound (a rational w*, ...)
     certificate: ex.RationalMatrix | None = None  # P proving the lower bound
     notes: tuple[str, ...] = field(default_factory=tuple)
 
@@ -78,8 +78,7 @@ class IndexBounds:
                      else "" if self.estimate_at is None else f"ω ≈ {self.estimate_at:.4g}")
             est = f"≈ {self.estimate:.6g} (numerical{', at ' + where if where else ''})"
         lo = "none certified" if self.lower is None else f"{self.lower} (exact KYP certificate)"
-        up = "none" if self.upper is None else f"{self.upper} (exact witness at ω = " \
-            f"{self.upper_at})"
+        up = "none" if self.upper is None else f"{self.upper} (exact witness: {self.upper_at})"
         head = f"{name} = {self.lower} exactly" if self.exact else f"{name} {est}"
         notes = "".join(f"; {note}" for note in self.notes)
         return f"{head}; lower bound {lo}; upper bound {up}{notes}"
@@ -197,7 +196,7 @@ def ifp_index(model: LTIModel) -> IndexBounds:
         for w in _frequencies(omega):
             bound = _ifp_rayleigh(model, em, w)
             if bound is not None and (upper is None or bound < upper):
-                upper, upper_at = bound, "infinity" if w is None else str(w)
+                upper, upper_at = bound, "ω → ∞" if w is None else f"ω = {w}"
     upper = None if upper is None else round_up(upper)
     return IndexBounds("IFP", estimate, found.omega if estimate is not None else None,
                        lower, upper, upper_at, P, tuple(notes))
@@ -327,6 +326,32 @@ def _ofp_rayleigh(model: LTIModel, em: ExactModel, w: Fraction | None) -> Fracti
     return None if M is None else Fraction(_quadratic(M, v) / (2 * gain))
 
 
+#: Loop gains tried for an instability witness, most negative first.
+LOOP_GAINS = (-10**6, -10**4, -10**3, -10**2, -10, -1)
+
+
+def unstable_loop(em: ExactModel, upper: Fraction | None) -> tuple[Fraction, str] | None:
+    """The most negative rho0 in LOOP_GAINS (below ``upper``) whose loop u = rho0 y has an
+    exact right-half-plane pole, with its description; None if there is none.
+
+    OFP(rho) with a storage P > 0 makes the loop u = rho y Lyapunov stable (dV/dt <= 0
+    when u~ = 0), and OFP(rho) implies OFP(rho') for rho' < rho; so an unstable loop at
+    rho0 refutes OFP(rho) for every rho >= rho0: rho_OFP < rho0. (Small models only: the
+    pole is isolated exactly on the loop's transfer matrix.)
+    """
+    from verify.passivity.witness import pole_witness
+
+    for rho0 in LOOP_GAINS:
+        if upper is not None and rho0 >= upper:
+            break
+        loop = loop_transform(em, Fraction(rho0))
+        found = None if loop is None else pole_witness(loop)
+        if found is not None and found.kind == "unstable-pole":
+            return Fraction(rho0), f"the loop u = {rho0}·y has a pole in Re s > 0 (exact " \
+                f"root isolation), so OFP(ρ) fails for every ρ >= {rho0}"
+    return None
+
+
 def ofp_index(model: LTIModel) -> IndexBounds:
     """rho_OFP: SDP estimate, certified lower bound, witnessed upper bound."""
     A, B, C, D = model.A, model.B, model.C, model.D
@@ -349,15 +374,19 @@ def ofp_index(model: LTIModel) -> IndexBounds:
         else:
             notes.append("no certificate for OFP(ρ) below the estimate")
     else:
-        notes.append("the SDP found no feasible ρ >= -1e6: with a storage P > 0, OFP(ρ) needs "
-                     "the loop u = ρ y to be stable, which may fail for every such ρ")
+        notes.append("the SDP found no feasible ρ >= -1e6 (with a storage P > 0, OFP(ρ) "
+                     "needs the loop u = ρ y to be stable)")
     omega = _ofp_witness_frequency(model)
     upper, upper_at = None, None
     for w in [None, *_frequencies(omega)]:
         bound = _ofp_rayleigh(model, em, w)
         if bound is not None and (upper is None or bound < upper):
-            upper, upper_at = bound, "infinity" if w is None else str(w)
+            upper, upper_at = bound, "ω → ∞" if w is None else f"ω = {w}"
     upper = None if upper is None else round_up(upper)
+    if lower is None:
+        unstable = unstable_loop(em, upper)
+        if unstable is not None:
+            upper, upper_at = unstable
     if estimate is not None and upper is not None and estimate > float(upper) + 1e-6 * max(
             1.0, abs(estimate)):
         notes.append(f"the SDP value {estimate:.6g} exceeds the exact upper bound: discarded "
