@@ -113,8 +113,8 @@ def band_witness(em: ExactModel, omega: float,
     return None
 
 
-def solve_gkyp(A, B, C, D, band: tuple[float, float]) -> tuple[np.ndarray, np.ndarray,
-                                                                   float] | None:
+def solve_gkyp(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray,
+               band: tuple[float, float]) -> tuple[np.ndarray, np.ndarray, float] | None:
     """Max-margin Hermitian (P, Q) of the generalized KYP LMI (cvxpy + Clarabel); untrusted."""
     n, m = A.shape[0], D.shape[0]
     w1, w2 = band
@@ -153,7 +153,8 @@ def _unbalance(X: ComplexMatrix, t: list[mpq]) -> ComplexMatrix:
                  for part in X)  # type: ignore[return-value]
 
 
-def band_certificate(em: ExactModel, A, B, C, D, band: tuple[Fraction, Fraction]
+def band_certificate(em: ExactModel, A: np.ndarray, B: np.ndarray, C: np.ndarray,
+                     D: np.ndarray, band: tuple[Fraction, Fraction]
                      ) -> tuple[ComplexMatrix, ComplexMatrix, float | None, str] | None:
     """Search, round and check exactly; (P, Q, margin, rounding) or None.
 

@@ -101,7 +101,8 @@ def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tu
     return [w for w, v in found if v < 0], found[0]
 
 
-def hamiltonian_candidates(A, B, C, D) -> tuple[list[float], tuple | None]:
+def hamiltonian_candidates(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray
+                           ) -> tuple[list[float], tuple[float, float] | None]:
     """The minimiser of nu by level crossings, if nu is negative there (floating point)."""
     try:
         with np.errstate(all="ignore"):

@@ -174,7 +174,8 @@ def nu_minimum(A: Array, B: Array, C: Array, D: Array,
     return NuMinimum(best_w, best, min(lower, best), iterations)
 
 
-def _polish(A, B, C, D, w0: float, v0: float, lo: float, hi: float) -> tuple[float, float]:
+def _polish(A: Array, B: Array, C: Array, D: Array, w0: float, v0: float, lo: float,
+            hi: float) -> tuple[float, float]:
     """Local refinement of a finite minimiser inside the band (keeps the better point)."""
     if math.isinf(w0):
         return w0, v0

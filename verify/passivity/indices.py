@@ -245,7 +245,7 @@ def loop_transform(em: ExactModel, rho: Fraction) -> ExactModel | None:
     return ExactModel(A, ex.matmul(em.B, E2), ex.matmul(E, em.C), ex.matmul(E, em.D))
 
 
-def ofp_estimate(A, B, C, D) -> float | None:
+def ofp_estimate(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray) -> float | None:
     """max rho with P >= 0 and M(P) + 2 rho [C D]^T [C D] <= 0 (cvxpy + Clarabel); untrusted."""
     n = A.shape[0]
     rho = cp.Variable()
