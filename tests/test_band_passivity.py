@@ -180,3 +180,18 @@ def test_a_pole_inside_the_band_is_named_in_the_verdict():
                               np.array([[1.0, 0.0]]), np.array([[0.0]]), name="1/s^2")
     d = decide_band(double, (F(0), F(1)))
     assert d.verdict == NOT_PASSIVE and F(0) < Fraction(d.witness.data["omega"]) <= F(1)
+
+
+def test_gkyp_matrix_with_q_zero_is_the_kyp_matrix(ks25):
+    """Sign conventions: with Q = 0 the generalized KYP matrix is the ordinary one."""
+    from verify.passivity import exact as ex
+    from verify.passivity.certificate import exact_model, kyp_matrix
+    from verify.passivity.gkyp import gkyp_matrix
+
+    em = exact_model(ks25.A, ks25.B, ks25.C, ks25.D)
+    rng = np.random.default_rng(3)
+    X = rng.integers(-5, 6, size=(em.n, em.n)).astype(float)
+    P = ex.to_rational(X + X.T)
+    zero = ex.zeros(em.n, em.n)
+    Lr, Li = gkyp_matrix(em, (P, zero), (zero, zero), (F(1, 3), F(7, 2)))
+    assert Lr == kyp_matrix(em, P) and all(x == 0 for row in Li for x in row)
