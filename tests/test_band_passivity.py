@@ -195,3 +195,33 @@ def test_gkyp_matrix_with_q_zero_is_the_kyp_matrix(ks25):
     zero = ex.zeros(em.n, em.n)
     Lr, Li = gkyp_matrix(em, (P, zero), (zero, zero), (F(1, 3), F(7, 2)))
     assert Lr == kyp_matrix(em, P) and all(x == 0 for row in Li for x in row)
+
+
+def test_gkyp_quadratic_form_identity(ks25):
+    """z^H L(P, Q) z = psi(w) x^H Q x - u^H (H + H^H) u for z = ((jw - A)^-1 B u, u), any
+    Hermitian P, Q, with psi(w) = -(w - w1)(w - w2): the identity behind the certificate."""
+    from verify.passivity import exact as ex
+    from verify.passivity.certificate import exact_model
+    from verify.passivity.gkyp import gkyp_matrix
+
+    em = exact_model(ks25.A, ks25.B, ks25.C, ks25.D)
+    n, m = em.n, em.m
+    rng = np.random.default_rng(5)
+
+    def hermitian():
+        X = rng.normal(size=(n, n)) + 1j * rng.normal(size=(n, n))
+        X = X + X.conj().T
+        return (ex.to_rational(X.real), ex.to_rational(X.imag)), X
+
+    (P, _), (Q, Qf) = hermitian(), hermitian()
+    band = (F(1, 2), F(3))
+    Lr, Li = gkyp_matrix(em, P, Q, band)
+    L = np.array(Lr, dtype=float) + 1j * np.array(Li, dtype=float)
+    for w in (0.1, 0.5, 1.7, 3.0, 4.2):
+        u = rng.normal(size=m) + 1j * rng.normal(size=m)
+        x = np.linalg.solve(1j * w * np.eye(n) - ks25.A, ks25.B @ u)
+        z = np.concatenate([x, u])
+        H = ks25.frequency_response(np.array([w]))[0]
+        psi = -(w - 0.5) * (w - 3.0)
+        rhs = psi * (x.conj() @ Qf @ x) - u.conj() @ (H + H.conj().T) @ u
+        assert z.conj() @ L @ z == pytest.approx(rhs, rel=1e-9, abs=1e-9)
