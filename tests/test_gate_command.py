@@ -54,12 +54,21 @@ def test_tampered_certificate_is_rejected(tmp_path, capsys):
     "args, message",
     [
         (["--margin", "abc"], "not a finite number"),
-        (["--band", "1:2"], "not available"),
+        (["--band", "2:1"], "need W1 < W2"),
+        (["--band", "1:1"], "need W1 < W2"),
+        (["--band=-1:2"], "must be >= 0"),
+        (["--band", "-1:2"], "must be >= 0"),
+        (["--band", "nan:2"], "not a finite number"),
+        (["--band", "0:inf"], "not a finite number"),
+        (["--band", "a:b"], "not a finite number"),
+        (["--band", "1"], "expected W1:W2"),
+        (["--band", "0:1e400"], "above 1e12"),
     ],
 )
 def test_bad_options_exit_2(args, message, capsys):
     assert main(["gate", str(MODELS / "example_state_space.toml"), *args]) == 2
-    assert message in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1
 
 
 def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):
@@ -71,3 +80,13 @@ def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):
     broken = tmp_path / "c.json"
     broken.write_text("{not json")
     assert main(["certificates", "check", str(broken)]) == 2
+
+
+def test_gate_indices_are_printed_and_written(tmp_path, capsys):
+    out_json = tmp_path / "g.json"
+    assert main(["gate", str(MODELS / "reconstructed_ks3p0.toml"), "--indices",
+                 "--certificates", str(tmp_path), "--json", str(out_json)]) == 0
+    out = capsys.readouterr().out
+    assert "ν_IFP = 0 exactly" in out and "ρ_OFP = 0 exactly" in out
+    (data,) = json.loads(out_json.read_text())
+    assert data["indices"]["IFP"]["lower"] == "0" and data["indices"]["OFP"]["exact"]

@@ -91,7 +91,12 @@ def _build_parser() -> argparse.ArgumentParser:
     p_gate.add_argument("--margin", default="0", metavar="NU",
                         help="require nu(w) >= NU for all w (exact rational, default 0)")
     p_gate.add_argument("--band", metavar="W1:W2",
-                        help="passivity over a finite band only (not available yet)")
+                        help="passivity on the band W1 <= w <= W2 rad/s only (generalized "
+                        "KYP certificate or exact witness inside the band)")
+    p_gate.add_argument("--indices", action="store_true",
+                        help="also report the passivity indices nu_IFP and rho_OFP: numerical "
+                        "estimates with exact rational lower (certificate) and upper (witness) "
+                        "bounds")
     p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
                         metavar="DIR", help="where certificates are written")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
@@ -200,19 +205,32 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
-    from verify.passivity.gate import parse_margin, run_gate, write_json, write_junit
+    from verify.passivity.band import parse_band
+    from verify.passivity.gate import (
+        add_indices,
+        parse_margin,
+        run_band_gate,
+        run_gate,
+        write_json,
+        write_junit,
+    )
     from verify.passivity.model_file import load_model
 
-    if args.band:
-        raise VerifyInputError("--band: finite-band analysis is not available yet")
     margin = parse_margin(args.margin)
+    band = parse_band(args.band) if args.band is not None else None
     models = [load_model(path) for path in args.models]  # validate all before any work
-    results = run_gate(models, margin, args.certificates)
+    if band is None:
+        results = run_gate(models, margin, args.certificates)
+    else:
+        results = run_band_gate(models, band, margin, args.certificates)
+    if args.indices:
+        add_indices(results)
     for r in results:
         print(r.line(), flush=True)
     passed = sum(r.passed for r in results)
-    print(f"{passed} of {len(results)} model(s) passive" + (f" with margin {margin}"
-                                                          if margin else ""))
+    where = "" if band is None else f" on [{band[0]}, {band[1]}] rad/s"
+    print(f"{passed} of {len(results)} model(s) passive{where}"
+          + (f" with margin {margin}" if margin else ""))
     if args.json:
         write_json(results, args.json)
     if args.junit:
@@ -221,7 +239,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.certificate import check_certificate_file
+    from verify.passivity.stored import check_stored_certificate
 
     files: list[Path] = []
     for p in args.paths:
@@ -234,7 +252,7 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
     checks = []
     for f in files:
         try:
-            checks.append((f, check_certificate_file(f)))
+            checks.append((f, check_stored_certificate(f)))
         except ValueError as exc:
             raise VerifyInputError(str(exc)) from None
     for f, c in checks:
@@ -301,9 +319,20 @@ def _cmd_network(args: argparse.Namespace) -> int:
     return status
 
 
+def _attach_band_value(argv: Sequence[str]) -> list[str]:
+    """``--band -1:2`` as ``--band=-1:2``: argparse would take the negative band for an
+    option and print usage; joined, the band check reports it in one line."""
+    out = list(argv)
+    for i, token in enumerate(out[:-1]):
+        if token == "--band" and out[i + 1].startswith("-") and ":" in out[i + 1]:
+            out[i : i + 2] = [f"--band={out[i + 1]}"]
+            break
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = _build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_attach_band_value(sys.argv[1:] if argv is None else argv))
     if args.command is None:
         parser.print_help()
         return 2

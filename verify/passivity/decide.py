@@ -3,9 +3,12 @@
 Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
 certificate is sought and checked exactly (passive); failing that, witnesses are sought:
 an exact RHP pole or a bad pole at 0 (small models), and frequencies where the smallest
-eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. Anything
-else is inconclusive with the reason. A margin nu0 asks for nu(w) >= nu0 everywhere,
-decided as passivity of H - nu0 I (exactly: nu0 is rational).
+eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. The first
+candidate frequency is the minimiser of nu located by Hamiltonian level crossings
+(:mod:`verify.passivity.hamiltonian`), which no grid spacing can step over; a log sweep
+with local refinement follows as a fallback. Anything else is inconclusive with the
+reason. A margin nu0 asks for nu(w) >= nu0 everywhere, decided as passivity of H - nu0 I
+(exactly: nu0 is rational).
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
 from verify.passivity.certificate import Certificate, ExactModel, exact_model
+from verify.passivity.hamiltonian import nu_minimum, nu_values
 from verify.passivity.kyp import find_certificate
 from verify.passivity.witness import (
     Witness,
@@ -65,19 +69,7 @@ class Decision:
 
 def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
     """nu(w) = lambda_min(H(jw) + H(jw)^H)/2 at each frequency (floating point)."""
-    n, _m = model_A.shape[0], D.shape[0]
-    out = np.empty(len(omega))
-    for k, w in enumerate(omega):
-        if n:
-            try:
-                H = C @ np.linalg.solve(1j * w * np.eye(n) - model_A, B) + D
-            except np.linalg.LinAlgError:
-                out[k] = np.nan
-                continue
-        else:
-            H = D.astype(complex)
-        out[k] = np.linalg.eigvalsh(H + H.conj().T)[0] / 2
-    return out
+    return nu_values(model_A, B, C, D, np.asarray(omega, dtype=float))
 
 
 def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tuple]:
@@ -109,6 +101,19 @@ def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tu
     return [w for w, v in found if v < 0], found[0]
 
 
+def hamiltonian_candidates(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray
+                           ) -> tuple[list[float], tuple[float, float] | None]:
+    """The minimiser of nu by level crossings, if nu is negative there (floating point)."""
+    try:
+        with np.errstate(all="ignore"):
+            found = nu_minimum(A, B, C, D)
+    except (np.linalg.LinAlgError, ValueError):
+        return [], None
+    if not np.isfinite(found.value) or np.isinf(found.omega):
+        return [], None
+    return ([found.omega] if found.value < 0 else []), (found.omega, found.value)
+
+
 def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     """Verdict for passivity of H (or of H - margin I when a margin is asked for)."""
     start = time.perf_counter()
@@ -138,7 +143,10 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     w = pole_witness(em)
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
-    candidates, best = candidate_frequencies(A, B, C, D)
+    candidates, best = hamiltonian_candidates(A, B, C, D)
+    swept, swept_best = candidate_frequencies(A, B, C, D)
+    candidates += [w for w in swept if w not in candidates]
+    best = best if best is not None and best[1] <= swept_best[1] else swept_best
     for omega in candidates:
         w = frequency_witness(em, omega)
         if w is not None:

@@ -2,7 +2,9 @@
 
 Every model file is validated before any is analysed (bad input fails fast and whole).
 A passive verdict writes its exactly checked KYP certificate under the certificates
-directory; a JSON summary and a JUnit XML file (one test case per model) are optional.
+directory (with ``--band W1:W2``, a generalized KYP certificate for that band, see
+:mod:`verify.passivity.band`); a JSON summary and a JUnit XML file (one test case per
+model) are optional.
 """
 
 from __future__ import annotations
@@ -37,6 +39,7 @@ def _slug(name: str) -> str:
 class GateResult:
     decision: Decision
     certificate_path: Path | None
+    indices: tuple | None = None  # (IFP, OFP) IndexBounds when asked for
 
     @property
     def passed(self) -> bool:
@@ -46,9 +49,11 @@ class GateResult:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
-        if self.passed:
-            return f"{head}; certificate {self.certificate_path}"
-        return f"{head}; {d.reason}"
+        text = f"{head}; certificate {self.certificate_path}" if self.passed \
+            else f"{head}; {d.reason}"
+        for index in self.indices or ():
+            text += f"\n  {index.summary()}"
+        return text
 
 
 def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResult]:
@@ -64,10 +69,39 @@ def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResul
     return results
 
 
+def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
+                  certificates_dir: Path) -> list[GateResult]:
+    """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
+    from verify.passivity.band import decide_band
+    from verify.passivity.gkyp import write_band_certificate
+
+    results = []
+    for model in models:
+        d = decide_band(model, band, margin)
+        path = None
+        if d.certificate is not None:
+            tag = d.certificate.model.fingerprint()[:12]
+            label = f"band-{float(band[0]):.6g}-{float(band[1]):.6g}"
+            path = certificates_dir / f"{_slug(model.name)}-{label}-{tag}.json"
+            write_band_certificate(d.certificate, path)
+        results.append(GateResult(d, path))
+    return results
+
+
+def add_indices(results: list[GateResult]) -> None:
+    """Attach the passivity indices nu_IFP and rho_OFP (estimates and exact bounds)."""
+    from verify.passivity.indices import indices
+
+    for r in results:
+        r.indices = indices(r.decision.model)
+
+
 def write_json(results: list[GateResult], path: Path) -> None:
     data = [
         {**r.decision.to_json(), "passed": r.passed,
-         "certificate": None if r.certificate_path is None else str(r.certificate_path)}
+         "certificate": None if r.certificate_path is None else str(r.certificate_path),
+         **({} if r.indices is None else {
+             "indices": {i.kind: i.to_json() for i in r.indices}})}
         for r in results
     ]
     write_atomic(path, json.dumps(data, indent=2) + "\n")

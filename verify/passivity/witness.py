@@ -86,46 +86,61 @@ def _solve(M: ex.RationalMatrix, rhs: ex.RationalMatrix) -> ex.RationalMatrix | 
     return [[a[i][n + j] / a[i][i] for j in range(k)] for i in range(n)]
 
 
-def hermitian_part_at(model: ExactModel, omega: Fraction) -> ex.RationalMatrix | None:
-    """Real 2m x 2m form [[Re, -Im], [Im, Re]] of H(jw) + H(jw)^H, exactly; None at a pole."""
+def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
+                                                             ex.RationalMatrix] | None:
+    """(Re H(jw), Im H(jw)) exactly, for rational w; None when jw is a pole."""
     n, m = model.n, model.m
     w = mpq(omega)
-    if n:
-        A, B, C = model.A, model.B, model.C
-        negA = ex.scale(-1, A)
-        wI = [[w if i == j else mpq(0) for j in range(n)] for i in range(n)]
-        big = ex.block([[negA, ex.scale(-1, wI)], [wI, negA]])
-        rhs = ex.block([[B], [ex.zeros(n, m)]])
-        X = _solve(big, rhs)
-        if X is None:
-            return None
-        Hr = ex.add(ex.matmul(C, X[:n]), model.D)
-        Hi = ex.matmul(C, X[n:])
-    else:
-        Hr, Hi = model.D, ex.zeros(m, m)
+    if not n:
+        return model.D, ex.zeros(m, m)
+    A, B, C = model.A, model.B, model.C
+    negA = ex.scale(-1, A)
+    wI = [[w if i == j else mpq(0) for j in range(n)] for i in range(n)]
+    big = ex.block([[negA, ex.scale(-1, wI)], [wI, negA]])
+    rhs = ex.block([[B], [ex.zeros(n, m)]])
+    X = _solve(big, rhs)
+    if X is None:
+        return None
+    return ex.add(ex.matmul(C, X[:n]), model.D), ex.matmul(C, X[n:])
+
+
+def hermitian_part_at(model: ExactModel, omega: Fraction) -> ex.RationalMatrix | None:
+    """Real 2m x 2m form [[Re, -Im], [Im, Re]] of H(jw) + H(jw)^H, exactly; None at a pole."""
+    response = response_at(model, omega)
+    if response is None:
+        return None
+    Hr, Hi = response
     Pr = ex.add(Hr, ex.transpose(Hr))
     Pi = ex.add(Hi, ex.transpose(Hi), -1)
     return ex.block([[Pr, ex.scale(-1, Pi)], [Pi, Pr]])
+
+
+def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
+    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at the rational w itself."""
+    M = hermitian_part_at(model, w)
+    if M is None:
+        return None
+    found = _negative_direction(M)
+    if found is None:
+        return None
+    v, value = found
+    m = model.m
+    return Witness(
+        "frequency",
+        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
+        f"{float(value):.3g} < 0 for an exact rational vector v = a + jb",
+        {"omega": str(w), "a": [str(x) for x in v[:m]],
+         "b": [str(x) for x in v[m:]], "value": str(value)},
+    )
 
 
 def frequency_witness(model: ExactModel, omega: float) -> Witness | None:
     """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at a rational w near omega."""
     for limit in (10, 1000, 10**6, 10**12):
         w = Fraction(omega).limit_denominator(limit) if omega else Fraction(0)
-        M = hermitian_part_at(model, w)
-        if M is None:
-            continue
-        found = _negative_direction(M)
+        found = frequency_witness_at(model, w)
         if found is not None:
-            v, value = found
-            m = model.m
-            return Witness(
-                "frequency",
-                f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
-                f"{float(value):.3g} < 0 for an exact rational vector v = a + jb",
-                {"omega": str(w), "a": [str(x) for x in v[:m]],
-                 "b": [str(x) for x in v[m:]], "value": str(value)},
-            )
+            return found
     return None
 
 

@@ -76,13 +76,21 @@ def _sections(run: RunResult):
     return groupby(run.results, key=lambda r: r.claim.section)
 
 
+def _figure_href(e) -> str | None:
+    """Link of a figure relative to the report directory (figures live in reports/figures)."""
+    if e.kind is EvidenceKind.FIGURE:
+        return e.data.get("href") or e.path
+    return None
+
+
 def _evidence_line(e) -> str:
     status = "pass" if e.passed else "FAIL"
+    href = _figure_href(e)
+    if href:
+        return (f"- [{e.kind.value}, {status}] {e.summary} (`{href}`)\n\n"
+                f"    ![{_md_escape(e.summary)[:80]}]({href})\n")
     path = f" (`{e.path}`)" if e.path else ""
-    line = f"- [{e.kind.value}, {status}] {e.summary}{path}"
-    if e.kind is EvidenceKind.FIGURE and e.path and e.path.endswith(".png"):
-        line += f"\n\n    ![{_md_escape(e.summary)[:80]}]({e.path})\n"
-    return line
+    return f"- [{e.kind.value}, {status}] {e.summary}{path}"
 
 
 def _step_rows(results) -> list[dict[str, str]]:
@@ -261,10 +269,12 @@ def render_html(run: RunResult, generated: datetime | None = None) -> str:
             ev = "".join(
                 f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
                 f"{'pass' if e.passed else 'FAIL'}] {esc(e.summary)}"
-                + (f"<br><img src='{esc(e.path)}' alt='{esc(e.summary[:80])}' "
-                   "style='max-width:100%'>"
-                   if e.kind is EvidenceKind.FIGURE and e.path and e.path.endswith(".png")
-                   else "")
+                + (
+                    f"<br><img src='{esc(_figure_href(e))}' alt='{esc(e.summary)}' "
+                    "style='max-width:100%'>"
+                    if _figure_href(e)
+                    else ""
+                )
                 + (
                     f"<details><summary>data</summary><pre>"
                     f"{esc(json.dumps(e.to_json()['data'], indent=1))}</pre></details>"
