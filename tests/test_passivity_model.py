@@ -327,7 +327,7 @@ def test_missing_file(tmp_path):
 
 
 def test_realisation_error_is_checked(monkeypatch):
-    import verify.passivity.model as model_module
+    import verify.passivity.realization as model_module
 
     # A reduction that throws away real dynamics must be caught by the frequency check.
     monkeypatch.setattr(model_module, "MINIMALITY_TOLERANCES", (10.0,))

@@ -33,7 +33,8 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
-from verify.passivity.model import LTIModel, _state_space_model, _transfer_function_model
+from verify.passivity.model import LTIModel, _state_space_model
+from verify.passivity.realization import transfer_function_model
 from verify.toml_input import read_toml
 
 TABLES = {"state_space": ("A", "B", "C", "D"), "transfer_function": ("num", "den")}
@@ -109,7 +110,7 @@ def parse_model(data: dict[str, Any], source: str) -> LTIModel:
             table["A"], table["B"], table["C"], table["D"], ctx,
             name=name, source=source, meta=meta,
         )  # fmt: skip
-    return _transfer_function_model(
+    return transfer_function_model(
         table["num"], table["den"], ctx, name=name, source=source, meta=meta
     )
 
