@@ -7,7 +7,8 @@ symmetric P with
 
 the KYP (positive-real) lemma; x^T P x / 2 is then a storage function of the human
 (Theorem 1's S_h). :func:`check_kyp` decides both conditions in exact rational
-arithmetic (:mod:`verify.passivity.exact`): no solver, no floating point. The model
+arithmetic (:mod:`verify.passivity.psd`): no solver; floating point only proposes the
+factor of a dominance certificate, which is then checked exactly. The model
 data travel inside the certificate as exact rationals, so a certificate is checked
 against the model it names, and editing either makes the check fail unless the edited
 pair is itself valid.
@@ -22,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from verify.passivity import exact as ex
+from verify.passivity.psd import psd_exact
 
 SCHEMA = "verify-kyp-certificate/1"
 
@@ -88,14 +90,16 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
     if n and not ex.is_symmetric(P):
         return KypCheck(False, "P is not symmetric")
     if n:
-        pd = ex.pd_ldl(P)
+        pd = psd_exact(P, strict=True)
         if not pd.ok:
             return KypCheck(False, f"P is not positive definite ({pd.reason})")
     negm = ex.scale(-1, kyp_matrix(model, P))
-    nsd = ex.psd_ldl(negm)
+    nsd = psd_exact(negm)
     if not nsd.ok:
         return KypCheck(False, f"the KYP matrix is not negative semidefinite ({nsd.reason})")
-    return KypCheck(True, "P > 0 and the KYP matrix is <= 0, by exact LDL^T")
+    p_part = f"P: {pd.reason}; " if n else ""
+    return KypCheck(True, f"P > 0 and the KYP matrix is <= 0, exactly ({p_part}"
+                    f"-M(P): {nsd.reason})")
 
 
 @dataclass(frozen=True)
