@@ -2,10 +2,12 @@
 
 Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
 certificate is sought and checked exactly (passive); failing that, witnesses are sought:
-an exact RHP pole or a bad pole at 0 (small models), and frequencies where the smallest
-eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. Anything
-else is inconclusive with the reason. A margin nu0 asks for nu(w) >= nu0 everywhere,
-decided as passivity of H - nu0 I (exactly: nu0 is rational).
+a real point of the right half-plane where the Hermitian part of H is negative (cheap
+for any n, see :func:`verify.passivity.witness.real_axis_witness`), an exact RHP pole or
+a bad pole at 0 (small models), and frequencies where the smallest eigenvalue nu(w) of
+(H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. Anything else is inconclusive
+with the reason. A margin nu0 asks for nu(w) >= nu0 everywhere, decided as passivity
+of H - nu0 I (exactly: nu0 is rational).
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from verify.passivity.witness import (
     frequency_witness,
     infinity_witness,
     pole_witness,
+    real_axis_witness,
 )
 
 if TYPE_CHECKING:
@@ -135,9 +138,10 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
                                if isinstance(v, str | int | float | bool)}})
         return done(PASSIVE, f"KYP certificate checked exactly: {search.reason}",
                     certificate=cert)
-    w = pole_witness(em)
-    if w is not None:
-        return done(NOT_PASSIVE, w.summary, witness=w)
+    for finder in (real_axis_witness, pole_witness):  # the cheap one first
+        w = finder(em)
+        if w is not None:
+            return done(NOT_PASSIVE, w.summary, witness=w)
     candidates, best = candidate_frequencies(A, B, C, D)
     for omega in candidates:
         w = frequency_witness(em, omega)

@@ -5,12 +5,22 @@
 - at a frequency: a rational w* and a rational complex vector v = a + jb with
   v^H (H(jw*) + H(jw*)^H) v < 0, H(jw*) computed exactly over Q(j) by solving
   (jw*I - A) X = B as a real 2n x 2n rational system;
+- at a real point s* > 0 of the right half-plane: a rational v in ker(D + D^T) with
+  v^T (H(s*) + H(s*)^T) v < 0, where H(s*) v is not solved exactly but bounded: a rounded
+  solution x of (s* I - A) x = B v leaves an exact residual r, and Gershgorin's theorem
+  on the symmetric part of s* I - A gives mu > 0 with |(s* I - A)^-1| <= 1/mu, so
+  |v^T C (s* I - A)^-1 B v - v^T C x| <= |C^T v| |r| / mu (O(n^2) exact work, for any n).
+  It catches N^T C B N with a negative eigenvalue (N spans ker(D + D^T)): H(s) ~ D + C B/s
+  at large s;
 - a pole in the open right half-plane, or a pole of H at s = 0 that is not simple with a
   positive semidefinite residue: from the exact transfer matrix (sympy, small models),
   with the pole isolated by exact complex root isolation.
 
-A positive-real H is analytic in Re s > 0, has H(jw) + H(jw)^H >= 0 where defined, and
-only simple imaginary-axis poles with PSD residues, so each witness refutes passivity.
+A positive-real H is analytic in Re s > 0, has H(s) + H(s)^H >= 0 there and
+H(jw) + H(jw)^H >= 0 where defined, and only simple imaginary-axis poles with PSD
+residues, so each witness refutes passivity. (For the right half-plane point directly:
+a KYP certificate P gives u^H (H(s) + H(s)^H) u >= 2 Re(s) x^H P x >= 0 with
+x = (sI - A)^-1 B u.)
 """
 
 from __future__ import annotations
@@ -24,6 +34,7 @@ from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel
+from verify.passivity.reduce import kernel_basis
 
 
 @dataclass
@@ -125,6 +136,72 @@ def frequency_witness(model: ExactModel, omega: float) -> Witness | None:
                 f"{float(value):.3g} < 0 for an exact rational vector v = a + jb",
                 {"omega": str(w), "a": [str(x) for x in v[:m]],
                  "b": [str(x) for x in v[m:]], "value": str(value)},
+            )
+    return None
+
+
+def _gershgorin_floor(M: ex.RationalMatrix) -> mpq:
+    """A lower bound of the eigenvalues of the symmetric part of M (exact)."""
+    n = len(M)
+    out = None
+    for i in range(n):
+        radius = sum((abs(M[i][j] + M[j][i]) / 2 for j in range(n) if j != i), mpq(0))
+        low = M[i][i] - radius
+        out = low if out is None or low < out else out
+    return out
+
+
+def _norm2(v: list[mpq]) -> mpq:
+    return sum((x * x for x in v), mpq(0))
+
+
+def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
+    """A real s* > 0 where v^T (H(s*) + H(s*)^T) v < 0, bounded exactly (see module doc)."""
+    n, m = model.n, model.m
+    if n == 0:
+        return None
+    N = kernel_basis(ex.add(model.D, ex.transpose(model.D)))
+    if not N or not N[0]:
+        return None
+    CB = ex.matmul(model.C, model.B)
+    G0 = ex.matmul(ex.matmul(ex.transpose(N), CB), N)
+    found = _negative_direction(ex.scale(mpq(1, 2), ex.add(G0, ex.transpose(G0))))
+    if found is None:
+        return None
+    z, g = found  # z^T G0 z = g < 0
+    v = [sum((N[i][a] * z[a] for a in range(len(z))), mpq(0)) for i in range(m)]
+    Bv = [sum((model.B[i][j] * v[j] for j in range(m)), mpq(0)) for i in range(n)]
+    Ctv = [sum((model.C[j][i] * v[j] for j in range(m)), mpq(0)) for i in range(n)]
+    floor = _gershgorin_floor(ex.scale(-1, model.A))  # sym(s I - A) >= (s + floor) I
+    Af = np.array([[float(x) for x in row] for row in model.A])
+    second = abs(float(np.array([float(x) for x in Ctv]) @ Af @ np.array([float(x) for x in Bv])))
+    sigma = max(1.0, -float(floor)) + 4 * second / abs(float(g))
+    for _ in range(tries):
+        s = mpq(Fraction(sigma).limit_denominator(1))
+        if s < 1:
+            s = mpq(1)
+        mu = s + floor
+        sigma *= 2
+        if mu <= 0:
+            continue
+        x_f = np.linalg.solve(float(s) * np.eye(n) - Af, np.array([float(x) for x in Bv]))
+        top = float(np.max(np.abs(x_f)))
+        if not np.isfinite(top) or top == 0.0:
+            continue
+        (x,) = ex.rationalize([x_f], 60 - int(np.ceil(np.log2(top))))
+        Ax = [sum((model.A[i][j] * x[j] for j in range(n)), mpq(0)) for i in range(n)]
+        r = [Bv[i] - s * x[i] + Ax[i] for i in range(n)]
+        main = 2 * sum((Ctv[i] * x[i] for i in range(n)), mpq(0))
+        # |2 v^T C (sI - A)^-1 r| <= 2 |C^T v| |r| / mu, compared in squares
+        if main < 0 and main * main * mu * mu > 4 * _norm2(Ctv) * _norm2(r):
+            return Witness(
+                "rhp-point",
+                f"at the real point s* = {s} of the right half-plane, vᵀ(H(s*) + H(s*)ᵀ)v "
+                f"≈ {float(main):.3g} < 0 for a rational v in ker(D + Dᵀ) (exact bound on "
+                f"the error of a rounded solve; Nᵀ C B N has vᵀ C B v = {float(g):.3g} < 0); "
+                "a passive H has H(s) + H(s)ᴴ ≥ 0 for Re s > 0",
+                {"s": str(s), "v": [str(q) for q in v], "value_bound": str(main),
+                 "mu": str(mu), "residual_norm2": str(_norm2(r))},
             )
     return None
 
