@@ -72,6 +72,26 @@ def from_sympy(matrix) -> RationalMatrix:
     return [[mpq(int(x.p), int(x.q)) for x in row] for row in matrix.tolist()]
 
 
+def kernel_basis(S: RationalMatrix) -> RationalMatrix:
+    """Exact rational basis of ker S as columns (m x k); k may be 0."""
+    import sympy as sp
+
+    vecs = to_sympy(S).nullspace()
+    if not vecs:
+        return [[] for _ in range(len(S))]
+    return from_sympy(sp.Matrix.hstack(*vecs))
+
+
+def range_basis(S: RationalMatrix) -> RationalMatrix:
+    """Exact basis of range S as columns; for symmetric S it spans (ker S)^perp."""
+    import sympy as sp
+
+    cols = to_sympy(S).columnspace()
+    if not cols:
+        return [[] for _ in range(len(S))]
+    return from_sympy(sp.Matrix.hstack(*cols))
+
+
 def zeros(r: int, c: int) -> RationalMatrix:
     return [[mpq(0)] * c for _ in range(r)]
 

@@ -29,7 +29,7 @@ from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel, check_kyp
-from verify.passivity.reduce import NoCertificate, Reduction, kernel_basis, reduce_kyp
+from verify.passivity.reduce import NoCertificate, Reduction, reduce_kyp
 from verify.passivity.riccati import lmi_margin, margin_candidates
 
 
@@ -197,7 +197,7 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
     """Search, round, project and check; returns an exactly checked P or the reason."""
     n, m = model.n, model.m
     S = ex.add(model.D, ex.transpose(model.D))
-    N_exact = kernel_basis(S)
+    N_exact = ex.kernel_basis(S)
     k = len(N_exact[0]) if m else 0
     if n == 0:
         ok = check_kyp(model, [])

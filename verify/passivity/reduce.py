@@ -32,8 +32,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg as sla
-import sympy as sp
-from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel
@@ -43,10 +41,16 @@ from verify.passivity.psd import psd_exact
 @dataclass(frozen=True)
 class Reduction:
     """P = P0 + V Y V^T meets the equality constraints for every symmetric Y; (Aa, Ba, Ca,
-    Sa) is the regular KYP problem in Y (floating point)."""
+    Sa) is the regular KYP problem in Y (floating point).
+
+    V is stored by its structure: its rows ``pivots`` hold X (k x (n - k)), its rows
+    ``free`` the identity, so V Y V^T has blocks Y, X Y and X Y X^T (cheap, exact).
+    """
 
     P0: ex.RationalMatrix
-    V: ex.RationalMatrix
+    pivots: list[int]
+    free: list[int]
+    X: ex.RationalMatrix
     Aa: np.ndarray
     Ba: np.ndarray
     Ca: np.ndarray
@@ -54,9 +58,21 @@ class Reduction:
 
     def assemble(self, Y: ex.RationalMatrix) -> ex.RationalMatrix:
         """P0 + V Y V^T, exactly (Y symmetric gives P symmetric)."""
+        P = [row[:] for row in self.P0]
         if not Y:
-            return [row[:] for row in self.P0]
-        return ex.add(self.P0, ex.matmul(ex.matmul(self.V, Y), ex.transpose(self.V)))
+            return P
+        XY = ex.matmul(self.X, Y) if self.pivots else []
+        XYXt = ex.matmul(XY, ex.transpose(self.X)) if self.pivots else []
+        for a, i in enumerate(self.free):
+            for b, j in enumerate(self.free):
+                P[i][j] += Y[a][b]
+        for a, i in enumerate(self.pivots):
+            for b, j in enumerate(self.free):
+                P[i][j] += XY[a][b]
+                P[j][i] += XY[a][b]
+            for b, j in enumerate(self.pivots):
+                P[i][j] += XYXt[a][b]
+        return P
 
 
 @dataclass(frozen=True)
@@ -64,22 +80,6 @@ class NoCertificate:
     """The equality constraints admit no P > 0 (an exact argument, given as ``reason``)."""
 
     reason: str
-
-
-def kernel_basis(S: ex.RationalMatrix) -> ex.RationalMatrix:
-    """Exact rational basis of ker S as columns (m x k); k may be 0."""
-    vecs = ex.to_sympy(S).nullspace()
-    if not vecs:
-        return [[] for _ in range(len(S))]
-    return ex.from_sympy(sp.Matrix.hstack(*vecs))
-
-
-def _columns(S: ex.RationalMatrix) -> ex.RationalMatrix:
-    """Exact basis of range S, which is (ker S)^perp for symmetric S, as columns."""
-    cols = ex.to_sympy(S).columnspace()
-    if not cols:
-        return [[] for _ in range(len(S))]
-    return ex.from_sympy(sp.Matrix.hstack(*cols))
 
 
 def _inverse(M: ex.RationalMatrix) -> ex.RationalMatrix:
@@ -91,24 +91,30 @@ def _floats(M: ex.RationalMatrix, rows: int, cols: int) -> np.ndarray:
 
 
 def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
-    """Exact V (n x (n-k)) with V^T B' = 0: rows I of a well-conditioned k x k block B1
-    of B' get -(B2 B1^-1)^T, the other rows the identity. None if no such block is found."""
+    """Exact V with V^T B' = 0, as (pivots, free, X): rows ``pivots`` of a well-conditioned
+    k x k block B1 of B' hold X = -(B2 B1^-1)^T, the other rows the identity. None if no
+    such block is found."""
     Bf = _floats(Bp, n, k)
     _q, _r, piv = sla.qr(Bf.T, pivoting=True)
-    rows = sorted(int(i) for i in piv[:k])
-    others = [i for i in range(n) if i not in set(rows)]
-    B1 = [Bp[i] for i in rows]
+    pivots = sorted(int(i) for i in piv[:k])
+    free = [i for i in range(n) if i not in set(pivots)]
+    B1 = [Bp[i] for i in pivots]
     if ex.to_sympy(B1).det() == 0:
         return None
-    if n == k:
-        return [[] for _ in range(n)]  # B' is square and invertible: Y is empty
-    B2 = [Bp[i] for i in others]
+    if not free:
+        return pivots, free, [[] for _ in range(k)]  # B' square and invertible: no Y
+    B2 = [Bp[i] for i in free]
     X = ex.scale(-1, ex.transpose(ex.matmul(B2, _inverse(B1))))  # k x (n-k)
-    V = ex.zeros(n, n - k)
-    for a, i in enumerate(rows):
-        V[i] = X[a][:]
-    for b, i in enumerate(others):
-        V[i][b] = mpq(1)
+    return pivots, free, X
+
+
+def _v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) -> np.ndarray:
+    """V in floating point (for the coordinate change only)."""
+    V = np.zeros((n, len(free)))
+    for a, i in enumerate(pivots):
+        V[i] = [float(x) for x in X[a]]
+    for b, i in enumerate(free):
+        V[i, b] = 1.0
     return V
 
 
@@ -117,13 +123,12 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
     reduction does not apply (the caller then searches without it)."""
     n, m = model.n, model.m
     S = ex.add(model.D, ex.transpose(model.D))
-    N = kernel_basis(S)
+    N = ex.kernel_basis(S)
     k = len(N[0]) if m else 0
     Sf = _floats(S, m, m)
     Af, Bf, Cf = _floats(model.A, n, n), _floats(model.B, n, m), _floats(model.C, m, n)
     if k == 0:
-        return Reduction(ex.zeros(n, n), [[mpq(int(i == j)) for j in range(n)]
-                                          for i in range(n)], Af, Bf, Cf, Sf)
+        return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf, Cf, Sf)
     Bp = ex.matmul(model.B, N)
     Cp = ex.matmul(ex.transpose(N), model.C)
     G0 = ex.matmul(Cp, Bp)
@@ -134,18 +139,19 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
                              "P B N = Cᵀ N (it would equal (B N)ᵀ P (B N))")
     if not psd_exact(G0, strict=True).ok:
         return "Nᵀ C B N is singular"
-    V = _null_basis_of_transpose(Bp, n, k)
-    if V is None:
+    basis = _null_basis_of_transpose(Bp, n, k)
+    if basis is None:
         return "no well-conditioned k x k block of B N"
+    pivots, free, X = basis
     K = _inverse(G0)
     P0 = ex.matmul(ex.matmul(ex.transpose(Cp), K), Cp)
     # the auxiliary system, in floating point (it only steers the search)
-    T = np.vstack([_floats(Cp, k, n), _floats(ex.transpose(V), n - k, n)])
+    T = np.vstack([_floats(Cp, k, n), _v_matrix(n, pivots, free, X).T])
     try:
         Ti = np.linalg.inv(T)
     except np.linalg.LinAlgError:
         return "the coordinate change [C'; Vᵀ] is numerically singular"
-    R = _columns(S)
+    R = ex.range_basis(S)
     Rf = _floats(R, m, m - k) if m > k else np.zeros((m, 0))
     Kf = _floats(K, k, k)
     At, Btr, Ctr = T @ Af @ Ti, T @ Bf @ Rf, Rf.T @ Cf @ Ti
@@ -161,4 +167,4 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
         return "the auxiliary problem is singular (Sa is not positive definite)"
     Ba = np.hstack([A21, B2r])
     Ca = np.vstack([-Kf @ A12, C2r])
-    return Reduction(P0, V, A22, Ba, Ca, Sa)
+    return Reduction(P0, pivots, free, X, A22, Ba, Ca, Sa)

@@ -34,7 +34,6 @@ from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel
-from verify.passivity.reduce import kernel_basis
 
 
 @dataclass
@@ -160,7 +159,7 @@ def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
     n, m = model.n, model.m
     if n == 0:
         return None
-    N = kernel_basis(ex.add(model.D, ex.transpose(model.D)))
+    N = ex.kernel_basis(ex.add(model.D, ex.transpose(model.D)))
     if not N or not N[0]:
         return None
     CB = ex.matmul(model.C, model.B)
