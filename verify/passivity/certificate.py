@@ -121,7 +121,7 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
     if not nsd.ok:
         return KypCheck(False, f"the KYP matrix is not negative semidefinite ({nsd.reason})")
     p_part = f"P: {pd.reason}; " if n else ""
-    return KypCheck(True, f"P > 0 and the KYP matrix is <= 0, exactly ({p_part}"
+    return KypCheck(True, f"P > 0 and the KYP matrix is <= 0 in exact arithmetic ({p_part}"
                     f"-M(P): {nsd.reason})")
 
 

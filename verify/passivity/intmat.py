@@ -62,8 +62,9 @@ def matmul(a: ScaledInt, b: ScaledInt) -> ScaledInt:
 
 def to_float(s: ScaledInt) -> np.ndarray:
     """Nearest floats (each entry correctly rounded through ``mpq``; used only to search)."""
-    out = np.empty(s.shape)
-    for i in range(s.shape[0]):
-        for j in range(s.shape[1]):
-            out[i, j] = float(mpq(s.Z[i, j], s.d))
-    return out
+    d = int(s.d)
+    try:  # Python's int / int is correctly rounded
+        return np.array([[int(z) / d for z in row] for row in s.Z], dtype=float).reshape(s.shape)
+    except OverflowError:  # a quotient beyond the float range
+        return np.array([[float(mpq(z, s.d)) for z in row] for row in s.Z],
+                        dtype=float).reshape(s.shape)

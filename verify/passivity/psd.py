@@ -89,10 +89,9 @@ def psd_exact(m: ex.RationalMatrix, *, strict: bool = False) -> ex.LdlResult:
         return ex.LdlResult(True, "the matrix is zero")
     evidence = _dominance_certificate(reduced, strict) if len(reduced) > 2 else None
     if evidence is True:
-        return ex.LdlResult(True, "M - L Lᵀ is diagonally dominant for a rounded Cholesky "
-                            "factor L (checked exactly)")
+        return ex.LdlResult(True, "M - L Lᵀ diagonally dominant, L a rounded Cholesky factor")
     if evidence is False:
-        return ex.LdlResult(False, "a rational vector v has vᵀ M v < 0 (checked exactly)")
+        return ex.LdlResult(False, "a rational vector v has vᵀ M v < 0")
     result = ex.psd_ldl(reduced, strict=strict)
     if result.ok:
         return ex.LdlResult(True, f"{result.reason} (exact LDLᵀ)", None, result.min_pivot)
