@@ -3,11 +3,11 @@
 Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
 certificate is sought and checked exactly (passive); failing that, witnesses are sought:
 a real point of the right half-plane where the Hermitian part of H is negative (cheap
-for any n, see :func:`verify.passivity.witness.real_axis_witness`), an exact RHP pole or
-a bad pole at 0 (small models), and frequencies where the smallest eigenvalue nu(w) of
-(H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. Anything else is inconclusive
-with the reason. A margin nu0 asks for nu(w) >= nu0 everywhere, decided as passivity
-of H - nu0 I (exactly: nu0 is rational).
+for any n, see :func:`verify.passivity.witness.real_axis_witness`), frequencies where the
+smallest eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, and an exact RHP pole or a
+bad pole at 0 (small models; symbolic, so last), each confirmed exactly. Anything else
+is inconclusive with the reason. A margin nu0 asks for nu(w) >= nu0 everywhere, decided
+as passivity of H - nu0 I (exactly: nu0 is rational).
 """
 
 from __future__ import annotations
@@ -138,14 +138,17 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
                                if isinstance(v, str | int | float | bool)}})
         return done(PASSIVE, f"KYP certificate checked exactly: {search.reason}",
                     certificate=cert)
-    for finder in (real_axis_witness, pole_witness):  # the cheap one first
-        w = finder(em)
-        if w is not None:
-            return done(NOT_PASSIVE, w.summary, witness=w)
+    w = real_axis_witness(em)  # O(n^2) exact work
+    if w is not None:
+        return done(NOT_PASSIVE, w.summary, witness=w)
     candidates, best = candidate_frequencies(A, B, C, D)
     for omega in candidates:
         w = frequency_witness(em, omega)
         if w is not None:
             return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
+    # last: the symbolic transfer matrix can take minutes even at n = 8
+    w = pole_witness(em)
+    if w is not None:
+        return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
     return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search.reason}; "
                 f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g})", nu_min=best)
