@@ -208,30 +208,71 @@ def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
 EXACT_POLE_LIMIT = 12  # states; the exact transfer matrix is formed with sympy
 
 
-def _transfer_entries(model: ExactModel):
+def _transfer_matrix(model: ExactModel):
+    """The exact strictly proper part C (sI - A)^-1 B, each entry cancelled.
+
+    Faddeev-LeVerrier: with det(sI - A) = s^n + c_1 s^(n-1) + ... + c_n (exact, sympy's
+    domain charpoly), adj(sI - A) = sum_k s^(n-1-k) B_k, B_0 = I, B_k = A B_(k-1) + c_k I.
+    Only rational matrix products and polynomials over QQ: no symbolic matrix algebra,
+    which took minutes at n = 8.
+    """
+    from sympy.polys.matrices import DomainMatrix
+
     s = sp.Symbol("s")
-    n = model.n
-    A = ex.to_sympy(model.A, n, n)
-    B = ex.to_sympy(model.B, n, model.m)
-    C = ex.to_sympy(model.C, model.m, n)
-    resolvent_num = (s * sp.eye(n) - A).adjugate()
-    det = (s * sp.eye(n) - A).det()
-    H = C * resolvent_num * B
-    return s, H, det
+    n, m = model.n, model.m
+    A_dm = DomainMatrix.from_Matrix(ex.to_sympy(model.A, n, n)).convert_to(sp.QQ)
+    coeffs = [ex.mpq(int(c.numerator), int(c.denominator)) for c in A_dm.charpoly()]
+    den = sp.Poly([sp.Rational(int(c.numerator), int(c.denominator)) for c in coeffs], s)
+    # numerator terms C B_k B, k = 0 .. n-1 (exact rationals)
+    Bk = [[ex.mpq(int(i == j)) for j in range(n)] for i in range(n)]
+    terms = []
+    for k in range(n):
+        if k:
+            Bk = ex.matmul(model.A, Bk)
+            for i in range(n):
+                Bk[i][i] += coeffs[k]
+        terms.append(ex.matmul(ex.matmul(model.C, Bk), model.B))
+    entries = []
+    for i in range(m):
+        row = []
+        for j in range(m):
+            num = sp.Poly([sp.Rational(int(t[i][j].numerator), int(t[i][j].denominator))
+                           for t in terms], s)
+            if num.is_zero:
+                row.append(sp.Integer(0))
+                continue
+            p, q = num.cancel(den, include=True)
+            row.append(p.as_expr() / q.as_expr())
+        entries.append(row)
+    return s, sp.Matrix(entries)
+
+
+def _may_have_rhp_root(poly) -> bool:
+    """False only when floating-point roots are all clearly in the left half-plane.
+
+    Exact root isolation costs seconds per polynomial; skipping it can only miss a
+    witness, never make one (the witness itself is isolated exactly).
+    """
+    roots = np.roots([float(c) for c in poly.all_coeffs()])
+    if not np.all(np.isfinite(roots)):
+        return True
+    scale = max(1.0, float(np.max(np.abs(roots)))) if roots.size else 1.0
+    return bool(roots.size == 0 or np.max(roots.real) > -1e-6 * scale)
 
 
 def pole_witness(model: ExactModel) -> Witness | None:
     """An exact RHP pole, or a non-simple / non-PSD-residue pole at 0 (small models)."""
     if model.n == 0 or model.n > EXACT_POLE_LIMIT:
         return None
-    s, H, det = _transfer_entries(model)
-    Hs = (H / det).applyfunc(sp.cancel)
+    s, Hs = _transfer_matrix(model)
     m = model.m
+    seen: set = set()
     for i in range(m):
         for j in range(m):
             poly = sp.Poly(sp.fraction(Hs[i, j])[1], s)
-            if poly.degree() < 1:
+            if poly.degree() < 1 or poly in seen or not _may_have_rhp_root(poly):
                 continue
+            seen.add(poly)
             real, cplx = poly.intervals(all=True, eps=sp.Rational(1, 10**6))
             for (lo, hi), _ in real:
                 if lo > 0:
