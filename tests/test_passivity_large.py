@@ -114,3 +114,19 @@ def test_dominance_certificate_and_its_fallbacks():
     v = [ex.mpq(i % 3) for i in range(n)]
     rank_one = [[a * b for b in v] for a in v]
     assert psd_exact(rank_one).ok and not psd_exact(rank_one, strict=True).ok
+
+
+def test_transfer_matrix_by_faddeev_leverrier_matches_sympy():
+    """The pole witness's exact C (sI - A)^-1 B equals the symbolic inverse."""
+    import sympy as sp
+
+    from verify.passivity.witness import _transfer_matrix
+
+    rng = np.random.default_rng(3)
+    n, m = 4, 2
+    A, B, C = (rng.standard_normal(shape).round(2) for shape in ((n, n), (n, m), (m, n)))
+    em = exact_model(A, B, C, np.zeros((m, m)))
+    s, H = _transfer_matrix(em)
+    As, Bs, Cs = (ex.to_sympy(x) for x in (em.A, em.B, em.C))
+    ref = Cs * (s * sp.eye(n) - As).inv() * Bs
+    assert all(sp.cancel(H[i, j] - ref[i, j]) == 0 for i in range(m) for j in range(m))
