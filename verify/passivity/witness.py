@@ -38,7 +38,7 @@ from verify.passivity.certificate import ExactModel
 
 @dataclass
 class Witness:
-    kind: str  # "infinity", "frequency", "unstable-pole", "pole-at-zero"
+    kind: str  # "infinity", "rhp-point", "frequency", "unstable-pole", "pole-at-zero"
     summary: str
     data: dict = field(default_factory=dict)
 
