@@ -7,7 +7,8 @@ symmetric P with
 
 the KYP (positive-real) lemma; x^T P x / 2 is then a storage function of the human
 (Theorem 1's S_h). :func:`check_kyp` decides both conditions in exact rational
-arithmetic (:mod:`verify.passivity.exact`): no solver, no floating point. The model
+arithmetic (:mod:`verify.passivity.psd`): no solver; floating point only proposes the
+factor of a dominance certificate, which is then checked exactly. The model
 data travel inside the certificate as exact rationals, so a certificate is checked
 against the model it names, and editing either makes the check fail unless the edited
 pair is itself valid.
@@ -21,7 +22,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from gmpy2 import mpq
+
 from verify.passivity import exact as ex
+from verify.passivity.psd import psd_exact
 
 SCHEMA = "verify-kyp-certificate/1"
 
@@ -74,6 +78,27 @@ def kyp_matrix(model: ExactModel, P: ex.RationalMatrix) -> ex.RationalMatrix:
     return ex.block([[top_left, off], [ex.transpose(off), ex.scale(-1, S)]])
 
 
+def _split_inputs(model: ExactModel, M: ex.RationalMatrix) -> ex.RationalMatrix:
+    """E^T M E with E = diag(I, [N R]), N and R exact bases of ker S and range S.
+
+    A congruence by an invertible E keeps (semi)definiteness, and it makes the rows of
+    ker S exactly zero when P B N = C^T N holds, so the PSD test can drop them instead
+    of deciding a singular matrix (the dominance certificate needs a margin).
+    """
+    S = ex.add(model.D, ex.transpose(model.D))
+    N = ex.kernel_basis(S)
+    n, m = model.n, model.m
+    if not m or not N[0] or not any(x for row in S for x in row):
+        return M  # S = 0 or S > 0: nothing to split
+    E_in = [n_row + r_row for n_row, r_row in zip(N, ex.range_basis(S), strict=True)]
+    E = ex.block([[_identity(n), ex.zeros(n, m)], [ex.zeros(m, n), E_in]])
+    return ex.matmul(ex.matmul(ex.transpose(E), M), E)
+
+
+def _identity(n: int) -> ex.RationalMatrix:
+    return [[mpq(int(i == j)) for j in range(n)] for i in range(n)]
+
+
 @dataclass(frozen=True)
 class KypCheck:
     ok: bool
@@ -88,14 +113,16 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
     if n and not ex.is_symmetric(P):
         return KypCheck(False, "P is not symmetric")
     if n:
-        pd = ex.pd_ldl(P)
+        pd = psd_exact(P, strict=True)
         if not pd.ok:
             return KypCheck(False, f"P is not positive definite ({pd.reason})")
-    negm = ex.scale(-1, kyp_matrix(model, P))
-    nsd = ex.psd_ldl(negm)
+    negm = ex.scale(-1, _split_inputs(model, kyp_matrix(model, P)))
+    nsd = psd_exact(negm)
     if not nsd.ok:
         return KypCheck(False, f"the KYP matrix is not negative semidefinite ({nsd.reason})")
-    return KypCheck(True, "P > 0 and the KYP matrix is <= 0, by exact LDL^T")
+    p_part = f"P: {pd.reason}; " if n else ""
+    return KypCheck(True, f"P > 0 and the KYP matrix is <= 0 in exact arithmetic ({p_part}"
+                    f"-M(P): {nsd.reason})")
 
 
 @dataclass(frozen=True)

@@ -2,13 +2,15 @@
 
 Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
 certificate is sought and checked exactly (passive); failing that, witnesses are sought:
-an exact RHP pole or a bad pole at 0 (small models), and frequencies where the smallest
-eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, each confirmed exactly. The first
-candidate frequency is the minimiser of nu located by Hamiltonian level crossings
-(:mod:`verify.passivity.hamiltonian`), which no grid spacing can step over; a log sweep
-with local refinement follows as a fallback. Anything else is inconclusive with the
-reason. A margin nu0 asks for nu(w) >= nu0 everywhere, decided as passivity of H - nu0 I
-(exactly: nu0 is rational).
+a real point of the right half-plane where the Hermitian part of H is negative (cheap
+for any n, see :func:`verify.passivity.witness.real_axis_witness`); frequencies where the
+smallest eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, the first candidate being
+the minimiser of nu located by Hamiltonian level crossings
+(:mod:`verify.passivity.hamiltonian`), which no grid spacing can step over, then a log
+sweep with local refinement; and an exact RHP pole or a bad pole at 0 (symbolic, so
+last); each confirmed exactly. Anything else is inconclusive with the reason. A margin
+nu0 asks for nu(w) >= nu0 everywhere, decided as passivity of H - nu0 I (exactly: nu0 is
+rational).
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from verify.passivity.witness import (
     frequency_witness,
     infinity_witness,
     pole_witness,
+    real_axis_witness,
 )
 
 if TYPE_CHECKING:
@@ -140,7 +143,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
                                if isinstance(v, str | int | float | bool)}})
         return done(PASSIVE, f"KYP certificate checked exactly: {search.reason}",
                     certificate=cert)
-    w = pole_witness(em)
+    w = real_axis_witness(em)  # O(n^2) exact work
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
     candidates, best = hamiltonian_candidates(A, B, C, D)
@@ -151,5 +154,9 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         w = frequency_witness(em, omega)
         if w is not None:
             return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
+    # last: the symbolic transfer matrix can take minutes even at n = 8
+    w = pole_witness(em)
+    if w is not None:
+        return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
     return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search.reason}; "
                 f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g})", nu_min=best)

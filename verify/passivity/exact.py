@@ -19,6 +19,8 @@ from fractions import Fraction
 import numpy as np
 from gmpy2 import mpq
 
+from verify.passivity import intmat
+
 RationalMatrix = list[list[mpq]]
 
 
@@ -70,6 +72,26 @@ def from_sympy(matrix) -> RationalMatrix:
     return [[mpq(int(x.p), int(x.q)) for x in row] for row in matrix.tolist()]
 
 
+def kernel_basis(S: RationalMatrix) -> RationalMatrix:
+    """Exact rational basis of ker S as columns (m x k); k may be 0."""
+    import sympy as sp
+
+    vecs = to_sympy(S).nullspace()
+    if not vecs:
+        return [[] for _ in range(len(S))]
+    return from_sympy(sp.Matrix.hstack(*vecs))
+
+
+def range_basis(S: RationalMatrix) -> RationalMatrix:
+    """Exact basis of range S as columns; for symmetric S it spans (ker S)^perp."""
+    import sympy as sp
+
+    cols = to_sympy(S).columnspace()
+    if not cols:
+        return [[] for _ in range(len(S))]
+    return from_sympy(sp.Matrix.hstack(*cols))
+
+
 def zeros(r: int, c: int) -> RationalMatrix:
     return [[mpq(0)] * c for _ in range(r)]
 
@@ -84,13 +106,14 @@ def transpose(m: RationalMatrix) -> RationalMatrix:
 
 
 def matmul(a: RationalMatrix, b: RationalMatrix) -> RationalMatrix:
-    _ra, ca = shape(a)
-    rb, _cb = shape(b)
+    ra, ca = shape(a)
+    rb, cb = shape(b)
     if ca != rb:
         raise ValueError("shape mismatch in matmul")
-    bt = transpose(b)
-    return [[sum((x * y for x, y in zip(row, col, strict=True)), mpq(0)) for col in bt]
-            for row in a]
+    if 0 in (ra, ca, cb):
+        return zeros(ra, cb)
+    # integer products over a common denominator: exact, and far faster than mpq sums
+    return intmat.to_rational(intmat.matmul(intmat.from_rational(a), intmat.from_rational(b)))
 
 
 def add(a: RationalMatrix, b: RationalMatrix, sign: int = 1) -> RationalMatrix:

@@ -5,12 +5,22 @@
 - at a frequency: a rational w* and a rational complex vector v = a + jb with
   v^H (H(jw*) + H(jw*)^H) v < 0, H(jw*) computed exactly over Q(j) by solving
   (jw*I - A) X = B as a real 2n x 2n rational system;
+- at a real point s* > 0 of the right half-plane: a rational v in ker(D + D^T) with
+  v^T (H(s*) + H(s*)^T) v < 0, where H(s*) v is not solved exactly but bounded: a rounded
+  solution x of (s* I - A) x = B v leaves an exact residual r, and Gershgorin's theorem
+  on the symmetric part of s* I - A gives mu > 0 with |(s* I - A)^-1| <= 1/mu, so
+  |v^T C (s* I - A)^-1 B v - v^T C x| <= |C^T v| |r| / mu (O(n^2) exact work, for any n).
+  It catches N^T C B N with a negative eigenvalue (N spans ker(D + D^T)): H(s) ~ D + C B/s
+  at large s;
 - a pole in the open right half-plane, or a pole of H at s = 0 that is not simple with a
   positive semidefinite residue: from the exact transfer matrix (sympy, small models),
   with the pole isolated by exact complex root isolation.
 
-A positive-real H is analytic in Re s > 0, has H(jw) + H(jw)^H >= 0 where defined, and
-only simple imaginary-axis poles with PSD residues, so each witness refutes passivity.
+A positive-real H is analytic in Re s > 0, has H(s) + H(s)^H >= 0 there and
+H(jw) + H(jw)^H >= 0 where defined, and only simple imaginary-axis poles with PSD
+residues, so each witness refutes passivity. (For the right half-plane point directly:
+a KYP certificate P gives u^H (H(s) + H(s)^H) u >= 2 Re(s) x^H P x >= 0 with
+x = (sI - A)^-1 B u.)
 """
 
 from __future__ import annotations
@@ -28,7 +38,7 @@ from verify.passivity.certificate import ExactModel
 
 @dataclass
 class Witness:
-    kind: str  # "infinity", "frequency", "unstable-pole", "pole-at-zero"
+    kind: str  # "infinity", "rhp-point", "frequency", "unstable-pole", "pole-at-zero"
     summary: str
     data: dict = field(default_factory=dict)
 
@@ -144,33 +154,140 @@ def frequency_witness(model: ExactModel, omega: float) -> Witness | None:
     return None
 
 
+def _gershgorin_floor(M: ex.RationalMatrix) -> mpq:
+    """A lower bound of the eigenvalues of the symmetric part of M (exact)."""
+    n = len(M)
+    out = None
+    for i in range(n):
+        radius = sum((abs(M[i][j] + M[j][i]) / 2 for j in range(n) if j != i), mpq(0))
+        low = M[i][i] - radius
+        out = low if out is None or low < out else out
+    return out
+
+
+def _norm2(v: list[mpq]) -> mpq:
+    return sum((x * x for x in v), mpq(0))
+
+
+def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
+    """A real s* > 0 where v^T (H(s*) + H(s*)^T) v < 0, bounded exactly (see module doc)."""
+    n, m = model.n, model.m
+    if n == 0:
+        return None
+    N = ex.kernel_basis(ex.add(model.D, ex.transpose(model.D)))
+    if not N or not N[0]:
+        return None
+    CB = ex.matmul(model.C, model.B)
+    G0 = ex.matmul(ex.matmul(ex.transpose(N), CB), N)
+    found = _negative_direction(ex.scale(mpq(1, 2), ex.add(G0, ex.transpose(G0))))
+    if found is None:
+        return None
+    z, g = found  # z^T G0 z = g < 0
+    v = [sum((N[i][a] * z[a] for a in range(len(z))), mpq(0)) for i in range(m)]
+    Bv = [sum((model.B[i][j] * v[j] for j in range(m)), mpq(0)) for i in range(n)]
+    Ctv = [sum((model.C[j][i] * v[j] for j in range(m)), mpq(0)) for i in range(n)]
+    floor = _gershgorin_floor(ex.scale(-1, model.A))  # sym(s I - A) >= (s + floor) I
+    Af = np.array([[float(x) for x in row] for row in model.A])
+    second = abs(float(np.array([float(x) for x in Ctv]) @ Af @ np.array([float(x) for x in Bv])))
+    sigma = max(1.0, -float(floor)) + 4 * second / abs(float(g))
+    for _ in range(tries):
+        s = mpq(Fraction(sigma).limit_denominator(1))
+        if s < 1:
+            s = mpq(1)
+        mu = s + floor
+        sigma *= 2
+        if mu <= 0:
+            continue
+        x_f = np.linalg.solve(float(s) * np.eye(n) - Af, np.array([float(x) for x in Bv]))
+        top = float(np.max(np.abs(x_f)))
+        if not np.isfinite(top) or top == 0.0:
+            continue
+        (x,) = ex.rationalize([x_f], 60 - int(np.ceil(np.log2(top))))
+        Ax = [sum((model.A[i][j] * x[j] for j in range(n)), mpq(0)) for i in range(n)]
+        r = [Bv[i] - s * x[i] + Ax[i] for i in range(n)]
+        main = 2 * sum((Ctv[i] * x[i] for i in range(n)), mpq(0))
+        # |2 v^T C (sI - A)^-1 r| <= 2 |C^T v| |r| / mu, compared in squares
+        if main < 0 and main * main * mu * mu > 4 * _norm2(Ctv) * _norm2(r):
+            return Witness(
+                "rhp-point",
+                f"at the real point s* = {s} of the right half-plane, vᵀ(H(s*) + H(s*)ᵀ)v "
+                f"≈ {float(main):.3g} < 0 for a rational v in ker(D + Dᵀ) (exact bound on "
+                f"the error of a rounded solve; Nᵀ C B N has vᵀ C B v = {float(g):.3g} < 0); "
+                "a passive H has H(s) + H(s)ᴴ ≥ 0 for Re s > 0",
+                {"s": str(s), "v": [str(q) for q in v], "value_bound": str(main),
+                 "mu": str(mu), "residual_norm2": str(_norm2(r))},
+            )
+    return None
+
+
 EXACT_POLE_LIMIT = 12  # states; the exact transfer matrix is formed with sympy
 
 
-def _transfer_entries(model: ExactModel):
+def _transfer_matrix(model: ExactModel):
+    """The exact strictly proper part C (sI - A)^-1 B, each entry cancelled.
+
+    Faddeev-LeVerrier: with det(sI - A) = s^n + c_1 s^(n-1) + ... + c_n (exact, sympy's
+    domain charpoly), adj(sI - A) = sum_k s^(n-1-k) B_k, B_0 = I, B_k = A B_(k-1) + c_k I.
+    Only rational matrix products and polynomials over QQ: no symbolic matrix algebra,
+    which took minutes at n = 8.
+    """
+    from sympy.polys.matrices import DomainMatrix
+
     s = sp.Symbol("s")
-    n = model.n
-    A = ex.to_sympy(model.A, n, n)
-    B = ex.to_sympy(model.B, n, model.m)
-    C = ex.to_sympy(model.C, model.m, n)
-    resolvent_num = (s * sp.eye(n) - A).adjugate()
-    det = (s * sp.eye(n) - A).det()
-    H = C * resolvent_num * B
-    return s, H, det
+    n, m = model.n, model.m
+    A_dm = DomainMatrix.from_Matrix(ex.to_sympy(model.A, n, n)).convert_to(sp.QQ)
+    coeffs = [ex.mpq(int(c.numerator), int(c.denominator)) for c in A_dm.charpoly()]
+    den = sp.Poly([sp.Rational(int(c.numerator), int(c.denominator)) for c in coeffs], s)
+    # numerator terms C B_k B, k = 0 .. n-1 (exact rationals)
+    Bk = [[ex.mpq(int(i == j)) for j in range(n)] for i in range(n)]
+    terms = []
+    for k in range(n):
+        if k:
+            Bk = ex.matmul(model.A, Bk)
+            for i in range(n):
+                Bk[i][i] += coeffs[k]
+        terms.append(ex.matmul(ex.matmul(model.C, Bk), model.B))
+    entries = []
+    for i in range(m):
+        row = []
+        for j in range(m):
+            num = sp.Poly([sp.Rational(int(t[i][j].numerator), int(t[i][j].denominator))
+                           for t in terms], s)
+            if num.is_zero:
+                row.append(sp.Integer(0))
+                continue
+            p, q = num.cancel(den, include=True)
+            row.append(p.as_expr() / q.as_expr())
+        entries.append(row)
+    return s, sp.Matrix(entries)
+
+
+def _may_have_rhp_root(poly) -> bool:
+    """False only when floating-point roots are all clearly in the left half-plane.
+
+    Exact root isolation costs seconds per polynomial; skipping it can only miss a
+    witness, never make one (the witness itself is isolated exactly).
+    """
+    roots = np.roots([float(c) for c in poly.all_coeffs()])
+    if not np.all(np.isfinite(roots)):
+        return True
+    scale = max(1.0, float(np.max(np.abs(roots)))) if roots.size else 1.0
+    return bool(roots.size == 0 or np.max(roots.real) > -1e-6 * scale)
 
 
 def pole_witness(model: ExactModel) -> Witness | None:
     """An exact RHP pole, or a non-simple / non-PSD-residue pole at 0 (small models)."""
     if model.n == 0 or model.n > EXACT_POLE_LIMIT:
         return None
-    s, H, det = _transfer_entries(model)
-    Hs = (H / det).applyfunc(sp.cancel)
+    s, Hs = _transfer_matrix(model)
     m = model.m
+    seen: set = set()
     for i in range(m):
         for j in range(m):
             poly = sp.Poly(sp.fraction(Hs[i, j])[1], s)
-            if poly.degree() < 1:
+            if poly.degree() < 1 or poly in seen or not _may_have_rhp_root(poly):
                 continue
+            seen.add(poly)
             real, cplx = poly.intervals(all=True, eps=sp.Rational(1, 10**6))
             for (lo, hi), _ in real:
                 if lo > 0:

@@ -1,0 +1,170 @@
+"""The KYP equality constraints solved exactly once, leaving a regular KYP problem.
+
+Let S = D + D^T, N an exact basis of ker S (k columns) and R an exact basis of range S.
+The KYP matrix has a zero diagonal block on ker S, so every certificate satisfies the
+equality P B' = C'^T with B' = B N and C' = N^T C (for a strictly proper model, N = I
+and this is P B = C^T). When G0 = C' B' is symmetric positive definite, the symmetric
+solutions of the equality are exactly
+
+    P = P0 + V Y V^T,   P0 = C'^T G0^-1 C',   V^T B' = 0,   Y = Y^T free,
+
+because in the coordinates z = T x with T = [C'; V^T] every solution is block diagonal,
+diag(G0^-1, Y). P0 and V are exact rationals, so *any* rounded Y gives a P that meets
+the equality exactly: no projection, and no loss of margin to one.
+
+In those coordinates, with the rows of ker S deleted (they are zero), the KYP LMI reads
+as the KYP LMI of an auxiliary system of order n - k in the unknown Y:
+
+    [[Aa^T Y + Y Aa, Y Ba - Ca^T], [Ba^T Y - Ca, -Sa]] <= 0,
+
+    Aa = A22,  Ba = [A21, B2r],  Ca = [-G0^-1 A12; C2r],
+    Sa = [[F, -(G0^-1 B1r - C1r^T)], [., Sr]],  F = -(A11^T G0^-1 + G0^-1 A11),
+
+(A = T A T^-1 in blocks k, n - k; Br = T B R, Cr = R^T C T^-1, Sr = R^T S R). When Sa is
+positive definite that problem is regular and Riccati equations solve it
+(:mod:`verify.passivity.riccati`). The auxiliary system is floating point: it only
+steers the search; the certificate P is assembled exactly and checked exactly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.linalg as sla
+
+from verify.passivity import exact as ex
+from verify.passivity.certificate import ExactModel
+from verify.passivity.psd import psd_exact
+
+
+@dataclass(frozen=True)
+class Reduction:
+    """P = P0 + V Y V^T meets the equality constraints for every symmetric Y; (Aa, Ba, Ca,
+    Sa) is the regular KYP problem in Y (floating point).
+
+    V is stored by its structure: its rows ``pivots`` hold X (k x (n - k)), its rows
+    ``free`` the identity, so V Y V^T has blocks Y, X Y and X Y X^T (cheap, exact).
+    """
+
+    P0: ex.RationalMatrix
+    pivots: list[int]
+    free: list[int]
+    X: ex.RationalMatrix
+    Aa: np.ndarray
+    Ba: np.ndarray
+    Ca: np.ndarray
+    Sa: np.ndarray
+
+    def assemble(self, Y: ex.RationalMatrix) -> ex.RationalMatrix:
+        """P0 + V Y V^T, exactly (Y symmetric gives P symmetric)."""
+        P = [row[:] for row in self.P0]
+        if not Y:
+            return P
+        XY = ex.matmul(self.X, Y) if self.pivots else []
+        XYXt = ex.matmul(XY, ex.transpose(self.X)) if self.pivots else []
+        for a, i in enumerate(self.free):
+            for b, j in enumerate(self.free):
+                P[i][j] += Y[a][b]
+        for a, i in enumerate(self.pivots):
+            for b, j in enumerate(self.free):
+                P[i][j] += XY[a][b]
+                P[j][i] += XY[a][b]
+            for b, j in enumerate(self.pivots):
+                P[i][j] += XYXt[a][b]
+        return P
+
+
+@dataclass(frozen=True)
+class NoCertificate:
+    """The equality constraints admit no P > 0 (an exact argument, given as ``reason``)."""
+
+    reason: str
+
+
+def _inverse(M: ex.RationalMatrix) -> ex.RationalMatrix:
+    return ex.from_sympy(ex.to_sympy(M).inv())
+
+
+def _floats(M: ex.RationalMatrix, rows: int, cols: int) -> np.ndarray:
+    return np.array([[float(x) for x in row] for row in M]).reshape(rows, cols)
+
+
+def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
+    """Exact V with V^T B' = 0, as (pivots, free, X): rows ``pivots`` of a well-conditioned
+    k x k block B1 of B' hold X = -(B2 B1^-1)^T, the other rows the identity. None if no
+    such block is found."""
+    Bf = _floats(Bp, n, k)
+    _q, _r, piv = sla.qr(Bf.T, pivoting=True)
+    pivots = sorted(int(i) for i in piv[:k])
+    free = [i for i in range(n) if i not in set(pivots)]
+    B1 = [Bp[i] for i in pivots]
+    if ex.to_sympy(B1).det() == 0:
+        return None
+    if not free:
+        return pivots, free, [[] for _ in range(k)]  # B' square and invertible: no Y
+    B2 = [Bp[i] for i in free]
+    X = ex.scale(-1, ex.transpose(ex.matmul(B2, _inverse(B1))))  # k x (n-k)
+    return pivots, free, X
+
+
+def _v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) -> np.ndarray:
+    """V in floating point (for the coordinate change only)."""
+    V = np.zeros((n, len(free)))
+    for a, i in enumerate(pivots):
+        V[i] = [float(x) for x in X[a]]
+    for b, i in enumerate(free):
+        V[i, b] = 1.0
+    return V
+
+
+def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
+    """The exact parametrisation and the auxiliary problem; a string says why the
+    reduction does not apply (the caller then searches without it)."""
+    n, m = model.n, model.m
+    S = ex.add(model.D, ex.transpose(model.D))
+    N = ex.kernel_basis(S)
+    k = len(N[0]) if m else 0
+    Sf = _floats(S, m, m)
+    Af, Bf, Cf = _floats(model.A, n, n), _floats(model.B, n, m), _floats(model.C, m, n)
+    if k == 0:
+        return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf, Cf, Sf)
+    Bp = ex.matmul(model.B, N)
+    Cp = ex.matmul(ex.transpose(N), model.C)
+    G0 = ex.matmul(Cp, Bp)
+    if not ex.is_symmetric(G0):
+        return NoCertificate("Nᵀ C B N is not symmetric, so P B N = Cᵀ N has no symmetric P")
+    if not psd_exact(G0).ok:
+        return NoCertificate("Nᵀ C B N is not positive semidefinite, so no P > 0 has "
+                             "P B N = Cᵀ N (it would equal (B N)ᵀ P (B N))")
+    if not psd_exact(G0, strict=True).ok:
+        return "Nᵀ C B N is singular"
+    basis = _null_basis_of_transpose(Bp, n, k)
+    if basis is None:
+        return "no well-conditioned k x k block of B N"
+    pivots, free, X = basis
+    K = _inverse(G0)
+    P0 = ex.matmul(ex.matmul(ex.transpose(Cp), K), Cp)
+    # the auxiliary system, in floating point (it only steers the search)
+    T = np.vstack([_floats(Cp, k, n), _v_matrix(n, pivots, free, X).T])
+    try:
+        Ti = np.linalg.inv(T)
+    except np.linalg.LinAlgError:
+        return "the coordinate change [C'; Vᵀ] is numerically singular"
+    R = ex.range_basis(S)
+    Rf = _floats(R, m, m - k) if m > k else np.zeros((m, 0))
+    Kf = _floats(K, k, k)
+    At, Btr, Ctr = T @ Af @ Ti, T @ Bf @ Rf, Rf.T @ Cf @ Ti
+    Sr = Rf.T @ Sf @ Rf
+    A11, A12, A21, A22 = At[:k, :k], At[:k, k:], At[k:, :k], At[k:, k:]
+    B1r, B2r, C1r, C2r = Btr[:k], Btr[k:], Ctr[:, :k], Ctr[:, k:]
+    F = -(A11.T @ Kf + Kf @ A11)
+    cross = -(Kf @ B1r - C1r.T)
+    Sa = np.block([[F, cross], [cross.T, Sr]])
+    Sa = (Sa + Sa.T) / 2
+    w = np.linalg.eigvalsh(Sa)
+    if w[0] <= 1e-12 * max(1.0, abs(w[-1])):
+        return "the auxiliary problem is singular (Sa is not positive definite)"
+    Ba = np.hstack([A21, B2r])
+    Ca = np.vstack([-Kf @ A12, C2r])
+    return Reduction(P0, pivots, free, X, A22, Ba, Ca, Sa)

@@ -1,0 +1,72 @@
+"""Interior points of a regular KYP LMI from Riccati equations with a margin, O(n^3).
+
+For S > 0 the KYP LMI [[A^T P + P A, P B - C^T], [B^T P - C, -S]] <= 0 is, by a Schur
+complement, the Riccati inequality
+
+    Ric(P) = A^T P + P A + (P B - C^T) S^-1 (B^T P - C) <= 0.
+
+A solution of the *equation* Ric(P) = 0 sits on the boundary of the LMI (its Schur
+complement has rank m only), and so does the midpoint of two of them; rounding such a
+point breaks the LMI. Solving Ric(P) = -W with W = w I > 0 instead gives a point with
+margin w in every direction. Ric is convex, so the midpoint of the stabilising and the
+anti-stabilising solutions of Ric(P) = -W has Ric <= -W as well, plus extra margin
+where the two differ. The margin w is tried from large to small: too large a w has no
+solution (the Hamiltonian gets imaginary-axis eigenvalues). Candidates are screened in
+floating point here and decided exactly by the caller.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+import scipy.linalg as sla
+
+
+def riccati_pair(A, B, C, S, W) -> tuple[np.ndarray, np.ndarray] | None:
+    """The two extreme solutions of Ric(P) = -W, or None when scipy finds none.
+
+    scipy solves A^T X + X A - (X B + s) R^-1 (B^T X + s^T) + Q = 0. With X = -P and
+    s = C^T this is Ric(P) = Q (stabilising solution: the smaller P); with -A for A,
+    X = P and s = -C^T it is Ric(P) = Q again (the larger P).
+    """
+    try:
+        with np.errstate(all="ignore"):
+            low = -sla.solve_continuous_are(A, B, -W, S, s=C.T)
+            high = sla.solve_continuous_are(-A, B, -W, S, s=-C.T)
+    except (np.linalg.LinAlgError, ValueError):
+        return None
+    if not (np.all(np.isfinite(low)) and np.all(np.isfinite(high))):
+        return None
+    return (low + low.T) / 2, (high + high.T) / 2
+
+
+def lmi_margin(A, B, C, S, P) -> float:
+    """-lambda_max of the KYP matrix and lambda_min of P, the smaller (floating point)."""
+    M = np.block([[A.T @ P + P @ A, P @ B - C.T], [B.T @ P - C, -S]])
+    top = float(np.linalg.eigvalsh((M + M.T) / 2)[-1])
+    low = float(np.linalg.eigvalsh(P)[0]) if P.size else np.inf
+    return min(-top, low)
+
+
+def margin_candidates(A, B, C, S, steps: int = 9) -> Iterator[tuple[np.ndarray, float]]:
+    """Strictly feasible P for the regular KYP LMI, largest margin first, with the margin
+    w used; nothing is yielded when the LMI has no strictly feasible point found so."""
+    n = A.shape[0]
+    if n == 0:
+        yield np.zeros((0, 0)), 0.0
+        return
+    Sinv = np.linalg.inv(S)
+    rho = float(np.linalg.norm(C.T @ Sinv @ C, 2))
+    if not np.isfinite(rho) or rho == 0.0:
+        rho = max(float(np.linalg.norm(A, 2)), 1.0)
+    for j in range(steps):
+        w = rho * 10.0 ** (-j)
+        pair = riccati_pair(A, B, C, S, w * np.eye(n))
+        if pair is None:
+            continue
+        low, high = pair
+        for P in ((low + high) / 2, low, high):
+            if lmi_margin(A, B, C, S, P) > 0:
+                yield P, w
+                break
