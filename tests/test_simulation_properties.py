@@ -66,6 +66,19 @@ def test_lasalle_dbar_converges_to_reference(scenario):
     _conclude(props.lasalle_convergence(pair))
 
 
+def test_lasalle_when_dbar_starts_at_the_reference():
+    """Found by the deep profile: dbar(0) = d_r with the leader away; dbar leaves and returns."""
+    from verify import so3
+    from verify.sim.humans import StaticGainHuman
+    from verify.sim.scenario import Scenario
+
+    scenario = Scenario(np.eye(3)[None], 1.0, StaticGainHuman(0.5 * np.eye(2)),
+                        Reference.constant(np.eye(3)),
+                        R_l0=so3.exp(np.full(3, 1 / np.sqrt(3))))
+    result = props.lasalle_convergence(props.RunPair.of(scenario, 40.0, 1.0 / 20.0))
+    assert result.holds is True, result.line()
+
+
 def test_a_broken_projector_is_caught(monkeypatch):
     """Mutation: without A(d) the autonomous input moves dbar, and the check fails."""
     import verify.sim.scenario as scenario_module

@@ -32,7 +32,7 @@ _PROPERTIES = {
     "stealthiness": ("stealthiness (dbar unchanged by the autonomous input)", 3.0),
     "lemma1": ("Lemma 1 invariance (tr(R-bar_r) >= 1)", 3.0),
     "lyapunov": ("Theorem 1: V non-increasing, V' below eq. (9)", 3.0),
-    "lasalle": ("LaSalle: |dbar - d_r| falls to a tenth of its start in 30 s", 30.0),
+    "lasalle": ("LaSalle: |dbar - d_r| falls to a tenth of its peak in 30 s", 30.0),
 }
 
 

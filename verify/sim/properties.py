@@ -14,7 +14,8 @@ verdict; a check whose assumptions fail says so (``holds`` is None) instead of p
 * Lemma 1: tr(R-bar_r) >= 1 while lambda_min(R_rl + R_rl^T) > 0 (checked on that prefix);
 * Theorem 1: V' below eq. (9) everywhere; V non-increasing (per segment of constant R_r)
   while the premises of V' <= 0 hold;
-* LaSalle (Theorem 1): |dbar - d_r| shrinks to ``lasalle_fraction`` of its start.
+* LaSalle (Theorem 1), a finite-horizon proxy: |dbar - d_r| at the end is at most a
+  fraction of its largest value along the run.
 """
 
 from __future__ import annotations
@@ -179,12 +180,16 @@ def lyapunov_decrease(pair: RunPair, use_storage: bool = True) -> PropertyResult
 
 
 def lasalle_convergence(pair: RunPair, fraction: float = 0.1) -> PropertyResult:
-    """|dbar(T) - d_r| <= fraction * |dbar(0) - d_r| (constant reference, Theorem 1)."""
+    """|dbar(T) - d_r| <= fraction * max_t |dbar(t) - d_r| (constant reference, Theorem 1).
+
+    Relative to the peak, not the start: a run may start at dbar = d_r with the leader
+    elsewhere, so that dbar first moves away (found by the deep hypothesis profile).
+    """
     c, f = pair.coarse, pair.fine
     d_r = c.R_r[:, :, 2]
     err_c = np.linalg.norm(c.dbar - d_r, axis=1)
     err_f = np.linalg.norm(f.dbar - f.R_r[:, :, 2], axis=1)
-    target = fraction * err_c[0]
+    target = fraction * float(np.max(err_c))
     violation = float(err_c[-1] - target)
     tol = pair.tolerance(err_c, err_f)
     Ec = energy(c, True)
@@ -194,9 +199,10 @@ def lasalle_convergence(pair: RunPair, fraction: float = 0.1) -> PropertyResult:
         "human has a storage function (KYP certificate)": Ec.uses_storage,
         "dbar defined (|sum d_i|/n > 1e-3)": _coherent(c),
     }
-    return _result(f"LaSalle convergence (finite-horizon proxy: to {fraction:g} of the start "
+    return _result(f"LaSalle convergence (finite-horizon proxy: to {fraction:g} of its peak "
                    f"by T)", violation, tol, ok,
-                   f"|dbar - d_r| from {err_c[0]:.3g} to {err_c[-1]:.3g} in {c.t[-1]:.3g} s")
+                   f"|dbar - d_r| from {err_c[0]:.3g} (peak {np.max(err_c):.3g}) to "
+                   f"{err_c[-1]:.3g} in {c.t[-1]:.3g} s")
 
 
 def _result(name: str, violation: float, tol: float, ok: dict[str, bool], detail: str = ""
