@@ -124,3 +124,25 @@ def test_passive_human_storage_rate_is_below_the_supply(human):
         x, e = rng.standard_normal(human.state_size), rng.standard_normal(3)
         supply = e @ human.command(x, e, np.eye(3), None)
         assert human.storage_rate(x, e) <= supply + 1e-9 * (1 + x @ x + e @ e)
+
+
+def test_directions_cancelling_mid_run_is_flagged_as_an_assumption_failure():
+    """Two bodies spread apart symmetrically: the input is stealthy (dbar stays e3) but
+    sum d_i shrinks through 0 (claim sec2.dbar-stays-defined); then dbar flips."""
+    from verify.sim import properties as props
+    from verify.sim.inputs import Autonomous
+
+    class SpreadApart(Autonomous):
+        name = "spread apart"
+
+        def __call__(self, t, R):
+            return np.array([[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]])
+
+    R0 = so3.exp(np.array([[1.4, 0.0, 0.0], [-1.4, 0.0, 0.0]]))
+    scenario = Scenario(R0, 1.0, StaticGainHuman(), Reference.constant(np.eye(3)),
+                        autonomous=SpreadApart())
+    run = simulate(scenario, 0.4)
+    assert run.coherence.min() < 1e-2
+    assert run.dbar[-1] @ so3.E3 < 0 < run.R_bar[-1][:, 2] @ so3.E3  # dbar flipped, R-bar not
+    result = props.quasi_average_axis(props.RunPair.of(scenario, 0.4))
+    assert result.holds is None and not all(result.assumptions.values())

@@ -181,6 +181,10 @@ def _summary(traj, E, wall: float) -> None:
     print(f"  V (S_h = {label}): {V[0]:.6g} -> {V[-1]:.6g}; largest rise {rise:.3g}"
           + ("" if traj.scenario.reference.is_constant else " (the reference switches: V "
              "jumps at switches)"))
+    weakest = traj.weakest_coherence
+    print(f"  dbar along the run: min |sum d_i|/n = {weakest:.3g}"
+          + (" (below 1e-3: dbar and A(d) are ill-conditioned, see sec2.dbar-stays-defined)"
+             if weakest < 1e-3 else ""))
     err = np.linalg.norm(traj.dbar - traj.R_r[:, :, 2], axis=1)
     print(f"  |dbar - d_r|: {err[0]:.4g} -> {err[-1]:.4g}")
     drift = max(float(np.max(orthogonality_error(traj.R_bar))),

@@ -81,7 +81,7 @@ class RunPair:
 
 
 def _coherent(traj: Trajectory) -> bool:
-    return bool(np.min(traj.coherence) > COHERENCE_MIN)
+    return bool(traj.weakest_coherence > COHERENCE_MIN)
 
 
 def stealthiness(scenario: Scenario, seconds: float, h: float = 1.0 / LOOP_RATE

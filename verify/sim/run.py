@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from verify.errors import VerifyInputError
+from verify.errors import DbarUndefinedError, VerifyInputError
 from verify.sim.lie_group import cf4_mixed_step
 from verify.sim.scenario import LOOP_RATE, ClosedLoop, Scenario
 from verify.so3 import Array
@@ -37,6 +37,23 @@ class Trajectory:
     direction_times: Array  # (T_d,)
     d: Array | None  # (T_d, n, 3), the bodies' directions d_i
     final_bodies: Array  # (n, 3, 3)
+
+    @property
+    def weakest_coherence(self) -> float:
+        """Smallest |sum d_i|/n along the run, between samples too.
+
+        s = sum d_i moves continuously, so between two samples it is estimated on the
+        chord from s_k to s_(k+1); a crossing of 0 between samples (where dbar flips
+        sign) then shows as a value near 0 instead of passing unseen.
+        """
+        s = self.dbar * self.coherence[:, None]
+        a, b = s[:-1], s[1:]
+        d = b - a
+        dd = np.einsum("ij,ij->i", d, d)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            tau = np.where(dd > 0, np.clip(-np.einsum("ij,ij->i", a, d) / dd, 0.0, 1.0), 0.0)
+        chord = np.linalg.norm(a + tau[:, None] * d, axis=1)
+        return float(min(np.min(self.coherence), np.min(chord, initial=np.inf)))
 
     @property
     def human_state(self) -> Array:
@@ -90,7 +107,13 @@ def simulate(
     for k in range(steps):
         held = loop.hold(k * dt, Y)
         record(k, Y, x, held.R_r)
-        Y, x = cf4_mixed_step(loop.field(held), k * dt, Y, x, dt)
+        try:
+            Y, x = cf4_mixed_step(loop.field(held), k * dt, Y, x, dt)
+        except DbarUndefinedError as exc:
+            raise DbarUndefinedError(
+                f"at t = {k * dt:.4g} s the bodies' directions cancel, so dbar and A(d) are "
+                f"undefined (claim sec2.dbar-stays-defined: the autonomous input must keep "
+                f"|sum d_i| away from 0): {exc}") from None
         if progress is not None:
             progress(k + 1, steps)
     record(steps, Y, x, loop.hold(steps * dt, Y).R_r)
