@@ -68,12 +68,12 @@ def test_vr_operator_saturates_and_holds_its_command():
     assert np.cross(R_l @ so3.E3, R_r @ so3.E3) @ w > 0
     small = op.hold(0.0, so3.exp(np.array([0.1, 0.0, 0.0])), R_r)
     assert np.linalg.norm(small) == pytest.approx(0.8 * 0.1, rel=1e-9)  # k_omega * angle
-    assert np.allclose(op.command(np.zeros(0), np.zeros(3), R_l, w), R_l.T @ w)
+    assert np.allclose(op.command(0.0, np.zeros(0), np.zeros(3), R_l, w), R_l.T @ w)
 
 
 def test_two_port_human_leaves_the_third_command_at_zero():
     human = StaticGainHuman(np.array([[1.0, 0.5], [-0.5, 2.0]]))
-    out = human.command(np.zeros(0), np.array([1.0, 1.0, 5.0]), np.eye(3), None)
+    out = human.command(0.0, np.zeros(0), np.array([1.0, 1.0, 5.0]), np.eye(3), None)
     assert out[2] == 0.0 and np.allclose(out[:2], [1.5, 1.5])
     assert StaticGainHuman(-np.eye(2)).storage(np.zeros(0)) is None  # not passive
 
@@ -122,7 +122,7 @@ def test_passive_human_storage_rate_is_below_the_supply(human):
     rng = np.random.default_rng(0)
     for _ in range(20):
         x, e = rng.standard_normal(human.state_size), rng.standard_normal(3)
-        supply = e @ human.command(x, e, np.eye(3), None)
+        supply = e @ human.command(0.0, x, e, np.eye(3), None)
         assert human.storage_rate(x, e) <= supply + 1e-9 * (1 + x @ x + e @ e)
 
 
@@ -146,3 +146,18 @@ def test_directions_cancelling_mid_run_is_flagged_as_an_assumption_failure():
     assert run.dbar[-1] @ so3.E3 < 0 < run.R_bar[-1][:, 2] @ so3.E3  # dbar flipped, R-bar not
     result = props.quasi_average_axis(props.RunPair.of(scenario, 0.4))
     assert result.holds is None and not all(result.assumptions.values())
+
+
+def test_open_loop_signal_human_keeps_rbar_axis_on_dbar():
+    """Section 3: R-bar e3 = dbar for any human command, here a given signal."""
+    from verify.sim.humans import SignalHuman
+    from verify.sim.inputs import SignalInput, smooth_random_signal
+
+    rng = np.random.default_rng(9)
+    R0 = so3.exp(0.4 * rng.standard_normal((5, 3)))
+    scenario = Scenario(R0, 2.5, SignalHuman(smooth_random_signal(rng, (3,))),
+                        Reference.constant(np.eye(3)), R_l0=so3.random_rotations(1, rng)[0],
+                        autonomous=SignalInput(smooth_random_signal(rng, (5, 3), amplitude=0.2)))
+    run = simulate(scenario, 2.0)
+    assert np.abs(run.R_bar[:, :, 2] - run.dbar).max() < 1e-8
+    assert np.abs(run.R_l[-1] - run.R_l[0]).max() > 1e-2  # the signal did move the leader

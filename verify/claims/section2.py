@@ -22,8 +22,10 @@ from verify.claims.model import (
 )
 from verify.claims.registry import REGISTRY
 from verify.sampling import network_suite, random_network
-from verify.sim.closed_loop import OpenLoopHumanSystem, smooth_random_signal
-from verify.sim.lie_group import integrate
+from verify.sim.humans import SignalHuman
+from verify.sim.inputs import Reference, SignalInput, smooth_random_signal
+from verify.sim.run import simulate
+from verify.sim.scenario import Scenario
 from verify.symbolic import algebra as alg
 from verify.symbolic.rational_network import RationalNetwork, sample_networks
 from verify.system import laws
@@ -630,6 +632,12 @@ def check_dbar_stays_defined(ctx: CheckContext) -> Outcome:
     )
 
 
+def _open_loop(R0, k_s: float, human_signal, autonomous_signal, R_l0) -> Scenario:
+    """Bodies, R-bar and leader driven by a given human command and autonomous signal."""
+    return Scenario(R0, k_s, SignalHuman(human_signal), Reference.constant(np.eye(3)),
+                    R_l0=R_l0, autonomous=SignalInput(autonomous_signal))
+
+
 def _closed_loop_shrinkage(ctx: CheckContext) -> Evidence:
     """Illustration: random smooth autonomous inputs shrink |sum d_i| in closed loop."""
     rng = ctx.rng("sec2.dbar-stays-defined")
@@ -637,19 +645,13 @@ def _closed_loop_shrinkage(ctx: CheckContext) -> Evidence:
     for _ in range(2 if ctx.quick else 4):
         n = int(rng.integers(2, 10))
         R0 = random_network(rng, n)
-        system = OpenLoopHumanSystem(
-            n, 2.5, smooth_random_signal(rng, (3,)), smooth_random_signal(rng, (n, 3))
-        )
-        Y0 = np.concatenate([R0, laws.quasi_average_initial(R0)[None], np.eye(3)[None]])
-        sums: list[float] = []
-
-        def observe(t, Y, n=n, sums=sums):
-            sums.append(float(np.linalg.norm(st.direction_sum(Y[:n]))))
-
+        scenario = _open_loop(R0, 2.5, smooth_random_signal(rng, (3,)),
+                              smooth_random_signal(rng, (n, 3)), np.eye(3))
         try:
-            integrate(system.spatial_velocities, Y0, 2.0, 1 / 120, observe=observe)
+            run = simulate(scenario, 2.0, 1 / 120)
+            sums = list(run.coherence * n)
         except st.DbarUndefinedError:
-            sums.append(0.0)
+            sums = [float(np.linalg.norm(st.direction_sum(R0))), 0.0]
         ratios.append({"n": n, "initial": sums[0], "minimum": min(sums)})
     smallest = min(r["minimum"] / r["initial"] for r in ratios)
     return _numeric(
@@ -695,24 +697,15 @@ def check_rbar_e3(ctx: CheckContext) -> Outcome:
         R0 = random_network(rng, n)
         # moderate autonomous inputs: large ones can drive sum d_i through zero, where the
         # claim's premise fails (that is claim sec2.dbar-stays-defined, not this one)
-        system = OpenLoopHumanSystem(
-            n,
-            float(rng.uniform(0.5, 4.0)),
-            smooth_random_signal(rng, (3,)),
-            smooth_random_signal(rng, (n, 3), amplitude=0.2),
-        )
-        Y0 = np.concatenate(
-            [R0, laws.quasi_average_initial(R0)[None], so3.random_rotations(1, rng)]
-        )
+        scenario = _open_loop(R0, float(rng.uniform(0.5, 4.0)), smooth_random_signal(rng, (3,)),
+                              smooth_random_signal(rng, (n, 3), amplitude=0.2),
+                              so3.random_rotations(1, rng)[0])
         gaps = []
         min_sum = []
         for h in (1 / 60, 1 / 120):
-
-            def observe(t, Y, n=n, min_sum=min_sum):
-                min_sum.append(float(np.linalg.norm(st.direction_sum(Y[:n]))))
-
-            Y = integrate(system.spatial_velocities, Y0, 1.0, h, observe=observe)
-            gaps.append(float(np.linalg.norm(Y[n] @ so3.E3 - st.dbar(Y[:n]))))
+            run = simulate(scenario, 1.0, h)
+            min_sum.append(float(np.min(run.coherence)) * n)
+            gaps.append(float(np.linalg.norm(run.R_bar[-1] @ so3.E3 - st.dbar(run.final_bodies))))
         runs.append(
             {"n": n, "gap_h_1_60": gaps[0], "gap_h_1_120": gaps[1], "min_abs_sum": min(min_sum)}
         )

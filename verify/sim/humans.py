@@ -8,6 +8,7 @@ identification of Section 4 ("Human Modeling"); three-port models see all of e.
 * :class:`LTIHuman`: x' = A x + B e, omega_h^b = C x + D e, from a passivity-module model,
   with the storage x^T P x / 2 of its KYP certificate when one is given;
 * :class:`StaticGainHuman`: omega_h^b = K e (passive iff K + K^T >= 0), no state;
+* :class:`SignalHuman`: a given spatial command omega_h^s(t) (open loop, no feedback);
 * :class:`VROperator`: the VR interface of Section 4, omega_h^s = k_omega log(R_t R_0^T)^vee
   saturated at 1 rad/s and held over each 1/120 s loop period, driven by a simple
   operator policy (below).
@@ -15,6 +16,7 @@ identification of Section 4 ("Human Modeling"); three-port models see all of e.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -59,8 +61,9 @@ class Human:
     def hold(self, t: float, R_l: Array, R_r: Array) -> Array | None:
         return None
 
-    def command(self, x: Array, e: Array, R_l: Array, held: Array | None) -> Array:
-        """omega_h^b (3,) from the state x, the error e = sk(R_l^T R_r)^vee and R_l."""
+    def command(self, t: float, x: Array, e: Array, R_l: Array, held: Array | None
+                ) -> Array:
+        """omega_h^b (3,) at time t from the state x, the error e = sk(R_l^T R_r)^vee, R_l."""
         raise NotImplementedError
 
     def state_rate(self, x: Array, e: Array) -> Array:
@@ -112,7 +115,8 @@ class LTIHuman(Human):
     def initial_state(self) -> Array:
         return np.zeros(self.state_size) if self.x0 is None else np.array(self.x0, float)
 
-    def command(self, x: Array, e: Array, R_l: Array, held: Array | None) -> Array:
+    def command(self, t: float, x: Array, e: Array, R_l: Array, held: Array | None
+                ) -> Array:
         k = self.ports
         return _pad(self.C @ x + self.D @ e[:k])
 
@@ -142,7 +146,8 @@ class StaticGainHuman(Human):
         self.K = K
         self.ports = _ports(K.shape[0], "the static gain")
 
-    def command(self, x: Array, e: Array, R_l: Array, held: Array | None) -> Array:
+    def command(self, t: float, x: Array, e: Array, R_l: Array, held: Array | None
+                ) -> Array:
         return _pad(self.K @ e[: self.ports])
 
     def storage(self, x: Array) -> float | None:
@@ -187,5 +192,22 @@ class VROperator(Human):
             omega_s *= self.saturation / norm
         return omega_s
 
-    def command(self, x: Array, e: Array, R_l: Array, held: Array | None) -> Array:
+    def command(self, t: float, x: Array, e: Array, R_l: Array, held: Array | None
+                ) -> Array:
         return transpose(R_l) @ held
+
+
+@dataclass
+class SignalHuman(Human):
+    """An open-loop operator: omega_h^s(t) is a given signal (shape (3,)), whatever e is.
+
+    Used where a claim must hold for every human command (Section 2's stealthiness,
+    Section 3's R-bar e3 = dbar), not only for feedback laws.
+    """
+
+    signal: Callable[[float], Array] = field(default=lambda t: np.zeros(3))
+    name: str = "given command signal"
+
+    def command(self, t: float, x: Array, e: Array, R_l: Array, held: Array | None
+                ) -> Array:
+        return transpose(R_l) @ self.signal(t)

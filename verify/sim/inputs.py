@@ -10,7 +10,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -63,20 +63,39 @@ class Autonomous:
         return None
 
 
-class SmoothRandom(Autonomous):
+def smooth_random_signal(rng: np.random.Generator, shape: tuple[int, ...], terms: int = 3,
+                         amplitude: float = 1.0) -> Callable[[float], Array]:
+    """A seeded smooth signal: a sum of sinusoids with random amplitudes and frequencies."""
+    amp = amplitude * rng.standard_normal((terms, *shape))
+    freq = rng.uniform(0.2, 2.0, size=(terms, *shape))
+    phase = rng.uniform(0.0, 2 * np.pi, size=(terms, *shape))
+
+    def signal(t: float) -> Array:
+        return np.sum(amp * np.sin(freq * t + phase), axis=0)
+
+    return signal
+
+
+class SignalInput(Autonomous):
+    """Omega~_a(t) from a given signal of shape (n, 3), independent of the attitudes."""
+
+    name = "signal"
+
+    def __init__(self, signal: Callable[[float], Array]) -> None:
+        self.signal = signal
+
+    def __call__(self, t: float, R: Array) -> Array:
+        return self.signal(t)
+
+
+class SmoothRandom(SignalInput):
     """A seeded sum of sinusoids per body and axis."""
 
     name = "random"
 
     def __init__(self, n: int, seed: int, amplitude: float = 0.3, terms: int = 3) -> None:
-        rng = np.random.default_rng(seed)
-        shape = (terms, n, 3)
-        self.amp = amplitude * rng.standard_normal(shape)
-        self.freq = rng.uniform(0.2, 2.0, shape)
-        self.phase = rng.uniform(0.0, 2 * np.pi, shape)
-
-    def __call__(self, t: float, R: Array) -> Array:
-        return np.sum(self.amp * np.sin(self.freq * t + self.phase), axis=0)
+        super().__init__(smooth_random_signal(np.random.default_rng(seed), (n, 3), terms,
+                                              amplitude))
 
 
 @dataclass(frozen=True)

@@ -87,13 +87,13 @@ class ClosedLoop:
         R_r = self.s.reference.at(t)
         return Held(R_r, self.s.human.hold(t, Y[self.n + 1], R_r))
 
-    def signals(self, Y: Array, x: Array, held: Held) -> tuple[Array, Array, Array]:
+    def signals(self, t: float, Y: Array, x: Array, held: Held) -> tuple[Array, Array, Array]:
         """(omega~_h^s, e, omega_h^b) at a state."""
         n = self.n
         R_bar, R_l = Y[n], Y[n + 1]
         omega_tilde = interface_velocity(R_bar, R_l, self.s.k_s)  # eq. (6a)
         e = vee(R_l.T @ held.R_r)
-        omega_b = self.s.human.command(x[: self.m], e, R_l, held.human)
+        omega_b = self.s.human.command(t, x[: self.m], e, R_l, held.human)
         return omega_tilde, e, omega_b
 
     def leader_velocity(self, R_l: Array, R_bar: Array, omega_b: Array) -> Array:
@@ -104,7 +104,7 @@ class ClosedLoop:
         n, human, autonomous = self.n, self.s.human, self.s.autonomous
 
         def f(t: float, Y: Array, x: Array) -> tuple[Array, Array]:
-            omega_tilde, e, omega_b = self.signals(Y, x, held)
+            omega_tilde, e, omega_b = self.signals(t, Y, x, held)
             R, R_bar, R_l = Y[:n], Y[n], Y[n + 1]
             F = np.empty((n + 2, 3))
             F[:n] = omega_tilde
