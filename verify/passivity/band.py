@@ -31,7 +31,7 @@ from gmpy2 import mpq
 from verify.errors import VerifyInputError
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel, exact_model
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
+from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decision_json
 from verify.passivity.gkyp import BandCertificate, ComplexMatrix, check_gkyp
 from verify.passivity.hamiltonian import nu_minimum
 from verify.passivity.witness import Witness, frequency_witness_at
@@ -77,22 +77,8 @@ class BandDecision:
     seconds: float = 0.0
 
     def to_json(self) -> dict:
-        return {
-            "name": self.model.name,
-            "source": self.model.source,
-            "band": [str(self.band[0]), str(self.band[1])],
-            "verdict": self.verdict,
-            "reason": self.reason,
-            "margin": str(self.margin),
-            "states": self.model.n,
-            "ports": self.model.m,
-            "witness": None if self.witness is None else {
-                "kind": self.witness.kind, "summary": self.witness.summary,
-                **self.witness.data},
-            "nu_min": None if self.nu_min is None else {
-                "omega": self.nu_min[0], "nu": self.nu_min[1]},
-            "seconds": round(self.seconds, 4),
-        }
+        out = decision_json(self)
+        return {**out, "band": [str(self.band[0]), str(self.band[1])]}
 
 
 def _shifted(em: ExactModel, margin: Fraction) -> ExactModel:

@@ -53,22 +53,25 @@ class Decision:
     seconds: float = 0.0
 
     def to_json(self) -> dict:
-        return {
-            "name": self.model.name,
-            "source": self.model.source,
-            "verdict": self.verdict,
-            "reason": self.reason,
-            "margin": str(self.margin),
-            "states": self.model.n,
-            "ports": self.model.m,
-            "witness": None if self.witness is None else {
-                "kind": self.witness.kind, "summary": self.witness.summary,
-                **self.witness.data},
-            "nu_min": None if self.nu_min is None else {
-                "omega": self.nu_min[0], "nu": self.nu_min[1]},
-            "seconds": round(self.seconds, 4),
-        }
+        return decision_json(self)
 
+
+
+def decision_json(d) -> dict:
+    """JSON fields shared by a verdict over all frequencies and over a band (gate output)."""
+    return {
+        "name": d.model.name,
+        "source": d.model.source,
+        "verdict": d.verdict,
+        "reason": d.reason,
+        "margin": str(d.margin),
+        "states": d.model.n,
+        "ports": d.model.m,
+        "witness": None if d.witness is None else {
+            "kind": d.witness.kind, "summary": d.witness.summary, **d.witness.data},
+        "nu_min": None if d.nu_min is None else {"omega": d.nu_min[0], "nu": d.nu_min[1]},
+        "seconds": round(d.seconds, 4),
+    }
 
 def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
     """nu(w) = lambda_min(H(jw) + H(jw)^H)/2 at each frequency (floating point)."""
