@@ -79,6 +79,9 @@ BAD = {
     "non-square model": (lambda p: ["--model", str(_bad_model(p))], "square"),
     "undefined dbar": (lambda p: ["--network", str(_cancelling_network(p))], "dbar"),
     "model missing": (lambda p: ["--human", "model"], "--model"),
+    "too many steps": (lambda p: ["--seconds", "1e9"], "steps asked"),
+    "too many bodies": (lambda p: ["--n", "100000000"], "bodies fit"),
+    "nan seconds": (lambda p: ["--seconds", "nan"], "--seconds"),
 }
 
 

@@ -24,6 +24,8 @@ from verify.sim.scenario import Scenario
 from verify.so3 import exp, orthogonality_error
 
 SWITCH_PERIOD = 15.0  # s, the reference changes in the paper's experiment (Section 4)
+MAX_STEPS = 2_000_000  # samples kept in memory: about 0.5 GB of trajectory
+MAX_BODIES = 1_000_000  # bodies: the CF4 stages hold a few copies of n 3x3 matrices
 
 
 @dataclass
@@ -145,9 +147,14 @@ def run_simulate(s: SimulateSettings) -> int:
         raise VerifyInputError(f"unknown format {s.fmt!r}; choose npz or csv")
     seconds = _finite_positive(s.seconds, "--seconds")
     step = _finite_positive(s.step, "--step")
+    steps = int(np.ceil(seconds / step - 1e-9))
+    if steps > MAX_STEPS:
+        raise VerifyInputError(f"{steps} steps asked (--seconds / --step); at most {MAX_STEPS} "
+                               "are stored in memory: shorten the run or enlarge the step")
+    if s.network is None and s.n > MAX_BODIES:
+        raise VerifyInputError(f"--n {s.n}: at most {MAX_BODIES} bodies fit in memory here")
     human, human_line = build_human(s)
     scenario = build_scenario(s, human)
-    steps = int(np.ceil(seconds / step - 1e-9))
     print(f"verify simulate: n = {scenario.n}, k_s = {scenario.k_s:g}, {seconds:g} s in "
           f"{steps} steps of {seconds / steps:.4g} s, autonomous input {s.autonomous}, "
           f"reference {s.reference}")
