@@ -90,11 +90,11 @@ def _matrix(shape: tuple[int, int], bound: float = 1.0):
 def passive_lti_models(draw, max_states: int = 3, ports: int = 2):
     """Passive LTI models (port-Hamiltonian with a strictly passive feedthrough).
 
-    x' = (J - R) Q x + G u, y = G^T Q x + (S + N) u with J, N skew, R, Q > 0 and S > 0,
-    so x^T Q x / 2 is a storage and D + D^T = 2 S > 0 keeps the KYP LMI strictly feasible
-    after floating-point rounding of the entries.
+    The free matrices are drawn and assembled by :func:`verify.sim.sampling.port_hamiltonian`
+    (x^T Q x / 2 is a storage; D + D^T > 0 keeps the KYP LMI strictly feasible after
+    floating-point rounding of the entries).
     """
-    from verify.passivity.model import from_state_space
+    from verify.sim.sampling import port_hamiltonian
 
     n = draw(st.integers(1, max_states))
     J = draw(_matrix((n, n)))
@@ -102,11 +102,7 @@ def passive_lti_models(draw, max_states: int = 3, ports: int = 2):
     M = draw(_matrix((n, n)))
     G = draw(_matrix((n, ports), 2.0))
     N = draw(_matrix((ports, ports)))
-    s = draw(_gains)
-    Q = M @ M.T + 0.5 * np.eye(n)
-    A = (J - J.T - (L @ L.T + 0.3 * np.eye(n))) @ Q
-    D = s * np.eye(ports) + 0.5 * (N - N.T)
-    return from_state_space(A, G, G.T @ Q, D, name="random port-Hamiltonian")
+    return port_hamiltonian(J, L, M, G, N, draw(_gains))
 
 
 @st.composite
@@ -147,16 +143,11 @@ def passive_humans(draw, max_states: int = 3):
         k = draw(_gains)
         skew = draw(st.floats(-1.0, 1.0))
         return StaticGainHuman(np.array([[k, skew], [-skew, k]]))
-    model = draw(passive_lti_models(max_states))
-    return LTIHuman.from_model(model, P=_certificate_matrix(model))
+    from verify.passivity.decide import PASSIVE
 
-
-def _certificate_matrix(model) -> np.ndarray:
-    from verify.passivity.decide import PASSIVE, decide
-
-    decision = decide(model)
+    human, decision = LTIHuman.gated(draw(passive_lti_models(max_states)))
     assume(decision.verdict == PASSIVE)
-    return np.array([[float(v) for v in row] for row in decision.certificate.P])
+    return human
 
 
 # --------------------------------------------------------------------------- scenarios

@@ -19,7 +19,8 @@ from verify.sim.energy import energy
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
 from verify.sim.outputs import write_outputs
-from verify.sim.run import simulate
+from verify.sim.properties import largest_rise
+from verify.sim.run import simulate, step_count
 from verify.sim.scenario import Scenario
 from verify.so3 import exp, orthogonality_error
 
@@ -66,20 +67,19 @@ def build_human(s: SimulateSettings) -> tuple[Human, str]:
     if s.human == "model":
         if s.model is None:
             raise VerifyInputError("--human model needs --model FILE")
-        from verify.passivity.decide import PASSIVE, decide
+        from verify.passivity.decide import PASSIVE
         from verify.passivity.model_file import load_model
 
         model = load_model(s.model)
         if model.m not in (2, 3):
             raise VerifyInputError(f"{s.model}: the human model needs 2 or 3 ports (inputs = "
                                    f"outputs), got {model.m}")
-        decision = decide(model)
+        human, decision = LTIHuman.gated(model)
         if decision.verdict == PASSIVE:
-            P = np.array([[float(v) for v in row] for row in decision.certificate.P])
-            return (LTIHuman.from_model(model, P=P),
-                    f"{model.name}: passive (KYP certificate checked exactly); S_h = x^T P x/2")
-        return (LTIHuman.from_model(model),
-                f"{model.name}: {decision.verdict} ({decision.reason}); S_h = running supply")
+            return human, (f"{model.name}: passive (KYP certificate checked exactly); "
+                           "S_h = x^T P x/2")
+        return human, (f"{model.name}: {decision.verdict} ({decision.reason}); "
+                       "S_h = running supply")
     raise VerifyInputError(f"unknown human {s.human!r}; choose vr, static or model")
 
 
@@ -147,7 +147,7 @@ def run_simulate(s: SimulateSettings) -> int:
         raise VerifyInputError(f"unknown format {s.fmt!r}; choose npz or csv")
     seconds = _finite_positive(s.seconds, "--seconds")
     step = _finite_positive(s.step, "--step")
-    steps = int(np.ceil(seconds / step - 1e-9))
+    steps = step_count(seconds, step)
     if steps > MAX_STEPS:
         raise VerifyInputError(f"{steps} steps asked (--seconds / --step); at most {MAX_STEPS} "
                                "are stored in memory: shorten the run or enlarge the step")
@@ -183,7 +183,7 @@ def _summary(traj, E, wall: float) -> None:
     print(f"  Lemma 1: min tr(R-bar_r) = {np.min(E.h) + 1:.6g} (>= 1 required while item 2 "
           "holds)")
     V = E.V
-    rise = float(np.max(V[1:] - np.minimum.accumulate(V)[:-1], initial=0.0))
+    rise = max(0.0, largest_rise(V))
     label = "human storage (x^T P x/2; 0 if static)" if E.uses_storage else "running supply"
     print(f"  V (S_h = {label}): {V[0]:.6g} -> {V[-1]:.6g}; largest rise {rise:.3g}"
           + ("" if traj.scenario.reference.is_constant else " (the reference switches: V "

@@ -147,25 +147,19 @@ def lemma1_counterexample(seconds: float = 2.0, budget: int = 150) -> Found | No
     strategy = st.tuples(_vector(1.6), _vector(3.1), st.sampled_from([1.0, 2.0, 3.0]))
     h = 1.0 / 60.0
 
-    def h_min(p) -> tuple[float, float]:
-        s = _lemma1_scenario(p)
-        E = energy(simulate(s, seconds, h), False)
-        return float(E.h[0]), float(np.min(E.h))
-
     def fails(p) -> bool:
         s = _lemma1_scenario(p)
         Y0, _ = s.initial_state()
-        h0 = np.trace(Y0[1]) - 1.0
-        if h0 < 0:
+        if np.trace(Y0[1]) < 1.0:  # Lemma 1's own premise: tr(R-bar_r(0)) >= 1
             return False
-        return h_min(p)[1] < -1e-3
+        return float(np.min(energy(simulate(s, seconds, h), False).h)) < -1e-3
 
     found, calls = _search(strategy, fails, budget, 60)
     if found is None:
         return None
     scenario = _lemma1_scenario(found)
     pair = RunPair.of(scenario, seconds, h)
-    Ec, Ef = energy(pair.coarse, False), energy(pair.fine, False)
+    Ec, Ef = pair.energies(False)
     measure = float(-np.min(Ec.h))
     error = float(pair.error(Ec.h, Ef.h).max())
     return Found(scenario, pair.coarse, measure, error, calls, {
@@ -221,7 +215,7 @@ def passivity_counterexample(human: Human, seconds: float = 30.0, budget: int = 
     e_c, e_f = errors(pair.coarse), errors(pair.fine)
     measure = excess(e_c)
     error = float(pair.error(e_c, e_f).max())
-    E = energy(pair.coarse, False)
+    E, _ = pair.energies(False)
     return Found(scenario, pair.coarse, measure, error, calls, {
         "body rotation vector": found[0], "R_l(0) rotation vector": found[1], "k_s": found[2],
         "R_r": "I", "human": human.name, "|dbar - d_r| at 0": float(e_c[0]),

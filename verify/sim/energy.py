@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from verify.sim.run import Trajectory
-from verify.sim.scenario import ClosedLoop, Held
+from verify.sim.scenario import ClosedLoop
 from verify.so3 import Array, hat, transpose
 
 
@@ -74,8 +74,7 @@ def energy(traj: Trajectory, prefer_storage: bool = True) -> Energy:
     Y[:n] = np.eye(3)  # the bodies do not enter V
     for k in range(T):
         Y[n], Y[n + 1] = traj.R_bar[k], traj.R_l[k]
-        held = loop.hold(traj.t[k], Y)
-        held = Held(traj.R_r[k], held.human)
+        held = loop.hold(traj.t[k], Y)  # the reference and command the run held at t_k
         omega_tilde, e, omega_b = loop.signals(traj.t[k], Y, traj.x[k], held)
         Rbar_dot = hat(omega_tilde) @ traj.R_bar[k]  # eq. (4)
         omega_l = loop.leader_velocity(traj.R_l[k], traj.R_bar[k], omega_b)  # eq. (6b)

@@ -18,11 +18,15 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from verify.errors import VerifyInputError
 from verify.so3 import E3, Array, exp, log, transpose
+
+if TYPE_CHECKING:
+    from verify.passivity.decide import Decision
 
 _EMPTY = np.zeros(0)
 
@@ -112,6 +116,18 @@ class LTIHuman(Human):
         """From a :class:`verify.passivity.model.LTIModel` (and its certificate's P)."""
         return cls(model.A, model.B, model.C, model.D, P=P, name=model.name, x0=x0)
 
+    @classmethod
+    def gated(cls, model) -> tuple[LTIHuman, Decision]:
+        """The model with the passivity gate's verdict; a passive model gets the storage
+        x^T P x / 2 from its exactly checked KYP certificate, any other none."""
+        from verify.passivity.decide import PASSIVE, decide
+
+        decision = decide(model)
+        if decision.verdict != PASSIVE:
+            return cls.from_model(model), decision
+        P = np.array([[float(v) for v in row] for row in decision.certificate.P])
+        return cls.from_model(model, P=P), decision
+
     def initial_state(self) -> Array:
         return np.zeros(self.state_size) if self.x0 is None else np.array(self.x0, float)
 
@@ -145,6 +161,7 @@ class StaticGainHuman(Human):
             raise VerifyInputError("the static gain has non-finite entries")
         self.K = K
         self.ports = _ports(K.shape[0], "the static gain")
+        self.passive = bool(np.linalg.eigvalsh(K + K.T)[0] >= 0)
 
     def command(self, t: float, x: Array, e: Array, R_l: Array, held: Array | None
                 ) -> Array:
@@ -152,8 +169,7 @@ class StaticGainHuman(Human):
 
     def storage(self, x: Array) -> float | None:
         """0 (a memoryless passive map stores nothing); None when K + K^T is not PSD."""
-        passive = np.linalg.eigvalsh(self.K + self.K.T)[0] >= 0
-        return 0.0 if passive else None
+        return 0.0 if self.passive else None
 
     def storage_rate(self, x: Array, e: Array) -> float:
         return 0.0

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from verify.sim.energy import energy
+from verify.sim.energy import Energy, energy
 from verify.sim.inputs import Autonomous
 from verify.sim.run import Trajectory, simulate
 from verify.sim.scenario import LOOP_RATE, Scenario
@@ -61,6 +61,14 @@ class RunPair:
 
     coarse: Trajectory
     fine: Trajectory
+    _energies: dict[bool, tuple[Energy, Energy]] = field(default_factory=dict, repr=False)
+
+    def energies(self, use_storage: bool) -> tuple[Energy, Energy]:
+        """The Lyapunov terms of both runs, computed once per choice of S_h."""
+        if use_storage not in self._energies:
+            self._energies[use_storage] = (energy(self.coarse, use_storage),
+                                           energy(self.fine, use_storage))
+        return self._energies[use_storage]
 
     @classmethod
     def of(cls, scenario: Scenario, seconds: float, h: float = 1.0 / LOOP_RATE) -> RunPair:
@@ -114,6 +122,13 @@ def _segments(traj: Trajectory) -> list[slice]:
     return [slice(a, b) for a, b in itertools.pairwise(bounds)]
 
 
+def largest_rise(v: Array) -> float:
+    """max over k of v_k - min_{j<k} v_j: how far a series climbs above an earlier value."""
+    if v.shape[0] < 2:
+        return 0.0
+    return float(np.max(v[1:] - np.minimum.accumulate(v)[:-1]))
+
+
 def _while(condition: Array, seg: slice) -> slice:
     """The longest prefix of ``seg`` on which ``condition`` holds at every sample."""
     bad = np.flatnonzero(~condition[seg])
@@ -131,7 +146,7 @@ def lemma1_invariance(pair: RunPair) -> PropertyResult:
     The samples after the first loss of sym(R_rl) > 0 in a segment are not checked: the
     lemma says nothing about them.
     """
-    Ec, Ef = energy(pair.coarse, False), energy(pair.fine, False)
+    Ec, Ef = pair.energies(False)
     segs = _segments(pair.coarse)
     kept = [_while(Ec.lmin_rl > 0, s) for s in segs]
     starts = all(Ec.h[s.start] >= 0 for s in segs)
@@ -153,17 +168,13 @@ def lyapunov_decrease(pair: RunPair, use_storage: bool = True) -> PropertyResult
     With ``use_storage`` and a human carrying a KYP storage x^T P x / 2, S_h is that
     storage (passivity is then used); otherwise S_h is the running supply integral.
     """
-    Ec, Ef = energy(pair.coarse, use_storage), energy(pair.fine, use_storage)
+    Ec, Ef = pair.energies(use_storage)
     V_c, V_f = Ec.V, Ef.V
     segs = _segments(pair.coarse)
     tol_rise = pair.tolerance(V_c, V_f)
     premise = (Ec.lmin_rl > 0) & (Ec.h >= -pair.tolerance(Ec.h, Ef.h))
     kept = [_while(premise, s) for s in segs]
-    rise = 0.0
-    for k in kept:
-        v = V_c[k]
-        if v.shape[0] > 1:
-            rise = max(rise, float(np.max(v[1:] - np.minimum.accumulate(v)[:-1])))
+    rise = max([0.0, *(largest_rise(V_c[k]) for k in kept)])
     # V' and its bound come from the vector field at the same state: only rounding apart
     scale = np.abs(Ec.V_dot) + np.abs(Ec.V_dot_bound) + pair.coarse.scenario.k_s
     slack = float(np.max((Ec.V_dot - Ec.V_dot_bound) / scale))
@@ -192,7 +203,7 @@ def lasalle_convergence(pair: RunPair, fraction: float = 0.1) -> PropertyResult:
     target = fraction * float(np.max(err_c))
     violation = float(err_c[-1] - target)
     tol = pair.tolerance(err_c, err_f)
-    Ec = energy(c, True)
+    Ec, _ = pair.energies(True)
     ok = {
         "R_r constant": c.scenario.reference.is_constant,
         "sym(R_rl) > 0 along the trajectory": bool(np.min(Ec.lmin_rl) > 0),

@@ -64,6 +64,11 @@ class Trajectory:
         return self.x[:, -1]
 
 
+def step_count(seconds: float, h: float) -> int:
+    """Number of equal steps of at most ``h`` covering [0, seconds]."""
+    return max(1, int(np.ceil(seconds / h - 1e-9)))
+
+
 def simulate(
     scenario: Scenario,
     seconds: float,
@@ -82,7 +87,7 @@ def simulate(
         raise VerifyInputError(f"the simulated time must be positive, got {seconds}")
     if not (np.isfinite(h) and h > 0):
         raise VerifyInputError(f"the step must be positive, got {h}")
-    steps = max(1, int(np.ceil(seconds / h - 1e-9)))
+    steps = step_count(seconds, h)
     dt = seconds / steps
     loop = ClosedLoop(scenario)
     n = scenario.n
