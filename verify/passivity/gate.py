@@ -1,4 +1,4 @@
-"""`verify gate`: the passivity check a lab runs in CI on new human models (issue 4, item 7).
+"""`verify gate`: the passivity check a lab runs in CI on new human models (Section 4).
 
 Every model file is validated before any is analysed (bad input fails fast and whole).
 A passive verdict writes its exactly checked KYP certificate under the certificates
@@ -10,14 +10,15 @@ model) are optional.
 from __future__ import annotations
 
 import json
-import re
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from verify.errors import VerifyInputError
-from verify.passivity.certificate import write_certificate
+from verify.passivity import certificate_files as cf
+from verify.passivity.binding import Claim, exact_of, shifted, unverified_meta
+from verify.passivity.canonical import coarse_band, coarse_kyp
 from verify.passivity.decide import PASSIVE, Decision, decide
 from verify.report.atomic import write_atomic
 
@@ -29,10 +30,6 @@ def parse_margin(text: str) -> Fraction:
     except (ValueError, ZeroDivisionError):
         raise VerifyInputError(f"--margin {text!r} is not a finite number") from None
     return value
-
-
-def _slug(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "-", name).strip("-") or "model"
 
 
 @dataclass
@@ -62,9 +59,10 @@ def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResul
         d = decide(model, margin)
         path = None
         if d.certificate is not None:
-            tag = d.certificate.model.fingerprint()[:12]
-            path = certificates_dir / f"{_slug(model.name)}-{tag}.json"
-            write_certificate(d.certificate, path)
+            H, claim = exact_of(model), Claim(Fraction(margin))
+            P = coarse_kyp(shifted(H, claim.margin), d.certificate.P)
+            path = cf.store_certificate(cf.kyp_json(model.name, model.source, H, claim, P,
+                                                 unverified_meta(model)), certificates_dir)
         results.append(GateResult(d, path))
     return results
 
@@ -73,17 +71,17 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
                   certificates_dir: Path) -> list[GateResult]:
     """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
     from verify.passivity.band import decide_band
-    from verify.passivity.gkyp import write_band_certificate
 
     results = []
     for model in models:
         d = decide_band(model, band, margin)
         path = None
         if d.certificate is not None:
-            tag = d.certificate.model.fingerprint()[:12]
-            label = f"band-{float(band[0]):.6g}-{float(band[1]):.6g}"
-            path = certificates_dir / f"{_slug(model.name)}-{label}-{tag}.json"
-            write_band_certificate(d.certificate, path)
+            H, claim = exact_of(model), Claim(Fraction(margin), band)
+            P, Q = coarse_band(shifted(H, claim.margin), d.certificate.P, d.certificate.Q,
+                               band)
+            path = cf.store_certificate(cf.band_json(model.name, model.source, H, claim, P, Q,
+                                                  unverified_meta(model)), certificates_dir)
         results.append(GateResult(d, path))
     return results
 
