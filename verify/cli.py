@@ -152,9 +152,10 @@ def _cmd_all(args: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
     from verify.claims.registry import run_claims
-    from verify.report import write_report
+    from verify.report import RunInfo, write_report
     from verify.report.render import VERDICT_MARK
 
+    info = RunInfo.from_environment()  # a bad SOURCE_DATE_EPOCH fails before any work
     claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
@@ -168,7 +169,7 @@ def _cmd_all(args: argparse.Namespace) -> int:
 
     print(f"verify all: {len(claims)} claims (seed {args.seed})")
     run = run_claims(claims, context, progress=progress)
-    paths = write_report(run, args.out)
+    paths = write_report(run, args.out, info)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))
