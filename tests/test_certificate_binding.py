@@ -287,9 +287,10 @@ def test_one_bad_file_does_not_hide_the_others(made, cert, capsys):
     shutil.copy(made["band"], path.parent / made["band"].name)
     capsys.readouterr()
     assert main(["certificates", "check", str(path.parent)]) == 1
-    out = capsys.readouterr().out
-    assert out.count("INVALID") == 1 and out.count("\nok") + out.startswith("ok") == 1
-    assert "1 of 2 certificate(s) valid" in out
+    lines = capsys.readouterr().out.splitlines()
+    assert sum(line.startswith(f"INVALID {path}: statement") for line in lines) == 1
+    assert sum(line.startswith("ok ") for line in lines) == 1
+    assert lines[-1].startswith("1 of 2 certificate(s) valid")
 
 
 def test_schema_registry_is_one_line_per_kind():
@@ -315,13 +316,16 @@ def test_certificate_bytes_depend_only_on_model_and_claim(tmp_path, made):
     assert all((p.stat().st_mode & 0o777) == 0o666 & ~mask for p in (tmp_path / "a").iterdir())
 
 
-def test_a_valid_existing_certificate_is_kept_and_a_broken_one_replaced(tmp_path, monkeypatch):
+def test_a_valid_existing_certificate_is_kept_and_a_broken_one_replaced(tmp_path, monkeypatch,
+                                                                        capsys):
     monkeypatch.chdir(ROOT)
     shipped = ROOT / "certificates" / "reconstructed-k_s-3.0-dfa80a2f58eb.json"
     kept = tmp_path / shipped.name
     shutil.copy(shipped, kept)
+    capsys.readouterr()
     gate("verify/data/models/reconstructed_ks3p0.toml", "--certificates", tmp_path)
     assert kept.read_bytes() == shipped.read_bytes()  # schema 1, valid, same claim: kept
+    assert "(kept: already a valid certificate" in capsys.readouterr().out
     data = json.loads(shipped.read_text())
     data["P"][0][0] = "1"
     write(kept, data)
@@ -329,3 +333,12 @@ def test_a_valid_existing_certificate_is_kept_and_a_broken_one_replaced(tmp_path
     fresh = json.loads(kept.read_text())
     assert fresh["schema"] == "verify-kyp-certificate/2"
     assert check_stored_certificate(kept).ok
+
+
+def test_source_not_found_here_is_said_not_hidden(cert, capsys):
+    """A source that cannot be found binds nothing; the ok line says so."""
+    path, data = cert()
+    data["source"] = "elsewhere/model.toml"
+    c = check_stored_certificate(write(path, data))
+    assert c.ok and "source elsewhere/model.toml not found here" in c.reason
+    assert "the claim is about the stored model only" in c.reason

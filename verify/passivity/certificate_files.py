@@ -104,13 +104,14 @@ def dumps(data: dict[str, Any]) -> str:
     return json.dumps(data, indent=1) + "\n"
 
 
-def store_certificate(data: dict[str, Any], directory: Path) -> Path:
+def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool]:
     """Write a certificate under the name its content asks for, unless that file already
     holds a valid certificate of the same model and claim (then it is kept byte for byte).
 
     Keeping a valid file makes ``certificates/`` a function of the models and claims: a
     rerun, or a run on another machine whose floating-point search proposes a slightly
-    different P, leaves a committed certificate untouched.
+    different P, leaves a committed certificate untouched. Returns the path and whether
+    the existing file was kept.
     """
     from verify.passivity.stored import check_stored_certificate
     from verify.report.atomic import write_atomic
@@ -123,11 +124,11 @@ def store_certificate(data: dict[str, Any], directory: Path) -> Path:
             parse = PARSERS.get(old_data.get("schema"))  # type: ignore[arg-type]
             if (parse is not None and parse(old_data).same_claim(fresh)
                     and check_stored_certificate(path).ok):
-                return path
+                return path, True
         except CertificateFormatError:
             pass  # not a certificate of ours: replaced below
     write_atomic(path, dumps(data))
-    return path
+    return path, False
 
 
 # ------------------------------------------------------------------------------ parsing

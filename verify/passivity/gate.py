@@ -17,7 +17,7 @@ from xml.sax.saxutils import escape, quoteattr
 
 from verify.errors import VerifyInputError
 from verify.passivity import certificate_files as cf
-from verify.passivity.binding import Claim, exact_of, shifted, unverified_meta
+from verify.passivity.binding import Claim, shifted, unverified_meta
 from verify.passivity.canonical import coarse_band, coarse_kyp
 from verify.passivity.decide import PASSIVE, Decision, decide
 from verify.report.atomic import write_atomic
@@ -37,6 +37,7 @@ class GateResult:
     decision: Decision
     certificate_path: Path | None
     indices: tuple | None = None  # (IFP, OFP) IndexBounds when asked for
+    kept: bool = False  # the certificate file already held a valid one of the same claim
 
     @property
     def passed(self) -> bool:
@@ -46,7 +47,9 @@ class GateResult:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
-        text = f"{head}; certificate {self.certificate_path}" if self.passed \
+        kept = " (kept: already a valid certificate of this model and claim)" \
+            if self.kept else ""
+        text = f"{head}; certificate {self.certificate_path}{kept}" if self.passed \
             else f"{head}; {d.reason}"
         for index in self.indices or ():
             text += f"\n  {index.summary()}"
@@ -57,13 +60,14 @@ def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResul
     results = []
     for model in models:
         d = decide(model, margin)
-        path = None
+        path, kept = None, False
         if d.certificate is not None:
-            H, claim = exact_of(model), Claim(Fraction(margin))
-            P = coarse_kyp(shifted(H, claim.margin), d.certificate.P)
-            path = cf.store_certificate(cf.kyp_json(model.name, model.source, H, claim, P,
-                                                 unverified_meta(model)), certificates_dir)
-        results.append(GateResult(d, path))
+            claim = Claim(Fraction(margin))
+            H = shifted(d.certificate.model, -claim.margin)  # the model as given
+            P = coarse_kyp(d.certificate.model, d.certificate.P)
+            path, kept = cf.store_certificate(cf.kyp_json(
+                model.name, model.source, H, claim, P, unverified_meta(model)), certificates_dir)
+        results.append(GateResult(d, path, kept=path is not None and kept))
     return results
 
 
@@ -75,14 +79,15 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
     results = []
     for model in models:
         d = decide_band(model, band, margin)
-        path = None
+        path, kept = None, False
         if d.certificate is not None:
-            H, claim = exact_of(model), Claim(Fraction(margin), band)
-            P, Q = coarse_band(shifted(H, claim.margin), d.certificate.P, d.certificate.Q,
-                               band)
-            path = cf.store_certificate(cf.band_json(model.name, model.source, H, claim, P, Q,
-                                                  unverified_meta(model)), certificates_dir)
-        results.append(GateResult(d, path))
+            claim = Claim(Fraction(margin), band)
+            H = shifted(d.certificate.model, -claim.margin)  # the model as given
+            P, Q = coarse_band(d.certificate.model, d.certificate.P, d.certificate.Q, band)
+            path, kept = cf.store_certificate(cf.band_json(
+                model.name, model.source, H, claim, P, Q, unverified_meta(model)),
+                certificates_dir)
+        results.append(GateResult(d, path, kept=path is not None and kept))
     return results
 
 
