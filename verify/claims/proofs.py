@@ -29,7 +29,7 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
         Evidence(
             EvidenceKind.DERIVATION,
             f"{result.name}: {result.start} {result.relation} {result.end} — {verdict} "
-            f"({len(result.steps)} step(s), {result.seconds:.2f} s)",
+            f"({len(result.steps)} step(s))",
             result.to_json(),
             passed=verdict == expected,
         )
