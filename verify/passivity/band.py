@@ -30,10 +30,18 @@ from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
 from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, exact_model
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decision_json
+from verify.passivity.certificate import ExactModel
+from verify.passivity.decide import (
+    INCONCLUSIVE,
+    NOT_PASSIVE,
+    PASSIVE,
+    decision_json,
+    float_views,
+    realisation_note,
+)
 from verify.passivity.gkyp import BandCertificate, ComplexMatrix, check_gkyp
 from verify.passivity.hamiltonian import nu_minimum
+from verify.passivity.realization import minimal_part
 from verify.passivity.witness import Witness, frequency_witness_at
 
 if TYPE_CHECKING:
@@ -183,12 +191,13 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                 margin: Fraction = Fraction(0)) -> BandDecision:
     """Verdict for H(jw) + H(jw)^H >= 2 margin I on w1 <= w <= w2 (paper, Section 4)."""
     start = time.perf_counter()
-    A, B, C, D = model.A, model.B, model.C, model.D - float(margin) * np.eye(model.m)
-    em = _shifted(exact_model(model.A, model.B, model.C, model.D), margin)
+    part = minimal_part(model.exact)  # the exact model, never re-derived from floats
+    em = _shifted(part.model, margin)
+    A, B, C, D = float_views(em)
     where = f"[{band[0]}, {band[1]}] rad/s"
 
     def done(verdict, reason, **kw) -> BandDecision:
-        return BandDecision(model, band, verdict, reason, margin=margin,
+        return BandDecision(model, band, verdict, reason + realisation_note(part), margin=margin,
                             seconds=time.perf_counter() - start, **kw)
 
     try:

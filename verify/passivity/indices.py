@@ -43,9 +43,11 @@ from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
 from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, exact_model, kyp_matrix
+from verify.passivity.certificate import ExactModel, kyp_matrix
+from verify.passivity.decide import float_views
 from verify.passivity.hamiltonian import nu_minimum
 from verify.passivity.kyp import find_certificate
+from verify.passivity.realization import minimal_part
 from verify.passivity.witness import hermitian_part_at, response_at
 
 if TYPE_CHECKING:
@@ -174,8 +176,8 @@ def _shift(em: ExactModel, nu: Fraction) -> ExactModel:
 
 def ifp_index(model: LTIModel) -> IndexBounds:
     """nu_IFP: Hamiltonian estimate, certified lower bound, witnessed upper bound."""
-    A, B, C, D = model.A, model.B, model.C, model.D
-    em = exact_model(A, B, C, D)
+    em = minimal_part(model.exact).model  # the exact model, never re-derived from floats
+    A, B, C, D = float_views(em)
     notes = []
     with np.errstate(all="ignore"):
         found = nu_minimum(A, B, C, D)
@@ -354,8 +356,8 @@ def unstable_loop(em: ExactModel, upper: Fraction | None) -> tuple[Fraction, str
 
 def ofp_index(model: LTIModel) -> IndexBounds:
     """rho_OFP: SDP estimate, certified lower bound, witnessed upper bound."""
-    A, B, C, D = model.A, model.B, model.C, model.D
-    em = exact_model(A, B, C, D)
+    em = minimal_part(model.exact).model  # the exact model, never re-derived from floats
+    A, B, C, D = float_views(em)
     notes = []
     estimate = ofp_estimate(A, B, C, D)
     lower, P = None, None

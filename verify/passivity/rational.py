@@ -34,7 +34,7 @@ Rational = type(mpq(0))
 #: thousands of digits (the same bound as Python's default limit on integer digits).
 MAX_DECIMAL_EXPONENT = 4300
 
-_DECIMAL = re.compile(r"[+-]?(\d+)(\.\d+)?([eE][+-]?\d+)?")
+_DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
 
 def _short(value: Any) -> str:
@@ -57,7 +57,7 @@ def decimal_literal(text: str) -> Fraction | float:
     match = _DECIMAL.fullmatch(plain)
     if match is None:  # tomllib has checked the syntax; this is a guard
         raise ValueError(f"not a decimal number: {text!r}")
-    if match.group(3) and abs(int(match.group(3)[1:])) > MAX_DECIMAL_EXPONENT:
+    if match.group(2) and abs(int(match.group(2)[1:])) > MAX_DECIMAL_EXPONENT:
         raise ValueError(
             f"decimal {text} has an exponent beyond +-{MAX_DECIMAL_EXPONENT}"
         )

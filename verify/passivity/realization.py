@@ -39,6 +39,7 @@ isolation (FLINT/Arb), refined until no ball meets the axis.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from itertools import pairwise
 from typing import Any
 
 import flint
@@ -417,7 +418,7 @@ def _real_root_count(g: fmpq_poly) -> int:
 
     def changes(signs: list[int]) -> int:
         signs = [x for x in signs if x]
-        return sum(a != b for a, b in zip(signs, signs[1:], strict=False))
+        return sum(a != b for a, b in pairwise(signs))
 
     lead = [1 if p.leading_coefficient() > 0 else -1 for p in chain]
     at_minus = [x if p.degree() % 2 == 0 else -x for x, p in zip(lead, chain, strict=True)]
