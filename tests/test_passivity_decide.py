@@ -13,7 +13,7 @@ import pytest
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import check_kyp
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide, nu
+from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide, nu
 from verify.passivity.model import from_state_space
 
 

@@ -76,7 +76,7 @@ def infinity_witness(model: ExactModel) -> Witness | None:
     v, value = found
     return Witness(
         "infinity",
-        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {float(value):.3g} < 0 at v = "
+        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {gmpy2.mpfr(value):.3g} < 0 at v = "
         f"{[str(x) for x in v]}, so H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞",
         {"v": [str(x) for x in v], "value": str(value)},
     )
@@ -142,7 +142,7 @@ def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
     return Witness(
         "frequency",
         f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
-        f"{float(value):.3g} < 0 for an exact rational vector v = a + jb",
+        f"{gmpy2.mpfr(value):.3g} < 0 for an exact rational vector v = a + jb",
         {"omega": str(w), "a": [str(x) for x in v[:m]],
          "b": [str(x) for x in v[m:]], "value": str(value)},
     )
