@@ -247,19 +247,48 @@ def _columns(M: fmpq_mat, cols: list[int]) -> fmpq_mat:
 
 def _observable_quotient(A: fmpq_mat, B: fmpq_mat, C: fmpq_mat
                          ) -> tuple[fmpq_mat, fmpq_mat, fmpq_mat]:
-    """Step 3: (A', B', C') on R^n / (unobservable subspace), exactly."""
+    """Step 3: (A', B', C') on R^n / (unobservable subspace), exactly.
+
+    The row space S of the observability matrix grows as S_(k+1) = S_k + F_k A, where
+    F_k are the rows that entered S_k (reduced against the basis): only those are
+    multiplied by A. An observable (A, C), the common case, is recognised modulo a prime
+    first (:func:`_observable_mod_p`) and returned unchanged.
+    """
     n = A.nrows()
-    if n == 0:
+    if n == 0 or _observable_mod_p(A, C):
         return A, B, C
     W, pivots = _rref_rows(C)
-    while True:
-        if len(pivots) == n:
-            return A, B, C  # observable already
-        W2, piv2 = _rref_rows(_stack(W, W * A))
+    frontier = W
+    while len(pivots) < n:
+        W2, piv2 = _rref_rows(_stack(W, frontier * A))
         if len(piv2) == len(pivots):
             break
+        new = [r for r, c in enumerate(piv2) if c not in set(pivots)]
+        frontier = fmpq_mat(len(new), n, [W2[r, c] for r in new for c in range(n)])
         W, pivots = W2, piv2
+    if len(pivots) == n:
+        return A, B, C
     return _columns(W * A, pivots), W * B, _columns(C, pivots)
+
+
+def _fmpq_mod_p(M: fmpq_mat) -> nmod_mat | None:
+    """M reduced modulo the prime, or None when the prime divides a denominator."""
+    entries = []
+    for i in range(M.nrows()):
+        for j in range(M.ncols()):
+            x = M[i, j]
+            d = int(x.q) % _PRIME
+            if d == 0:
+                return None
+            entries.append(int(x.p) * pow(d, -1, _PRIME) % _PRIME)
+    return nmod_mat(M.nrows(), M.ncols(), entries, _PRIME)
+
+
+def _observable_mod_p(A: fmpq_mat, C: fmpq_mat) -> bool:
+    """True proves (A, C) observable; False decides nothing."""
+    Ap, Cp = _fmpq_mod_p(A), _fmpq_mod_p(C)
+    return Ap is not None and Cp is not None and _krylov_full_rank_mod_p(
+        Ap.transpose(), Cp.transpose())
 
 
 def _controllable_part(A: fmpq_mat, B: fmpq_mat, C: fmpq_mat
@@ -343,15 +372,26 @@ def _mod_p(M: ex.RationalMatrix, rows: int, cols: int) -> nmod_mat | None:
 
 
 def _krylov_full_rank_mod_p(A: nmod_mat, B: nmod_mat) -> bool:
-    """rank [B, AB, ..., A^(n-1) B] = n modulo p (which proves it over Q)."""
+    """rank [B, AB, ..., A^(n-1) B] = n modulo p (which proves it over Q).
+
+    The first ceil(n/m) blocks can already have rank n (the generic case); more blocks
+    are added, doubling, only when they do not.
+    """
     n, m = A.nrows(), B.ncols()
-    blocks, X = [], B
-    for _ in range(n):
-        blocks.append(X)
-        X = A * X
-    K = nmod_mat(n, n * m, [blocks[k][i, c] for i in range(n) for k in range(n)
-                            for c in range(m)], _PRIME)
-    return K.rank() == n
+    if m == 0:
+        return n == 0
+    blocks = [B.tolist()]
+    X, wanted = B, -(-n // m)
+    while True:
+        while len(blocks) < wanted:
+            X = A * X
+            blocks.append(X.tolist())
+        rows = [int(x) for i in range(n) for block in blocks for x in block[i]]
+        if nmod_mat(n, len(blocks) * m, rows, _PRIME).rank() == n:
+            return True
+        if len(blocks) >= n:
+            return False
+        wanted = min(n, 2 * wanted)
 
 
 def _minimal_mod_p(model: ExactModel) -> bool:
