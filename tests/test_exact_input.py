@@ -391,6 +391,18 @@ def test_float_views_of_extreme_entries_never_crash(tmp_path):
     assert huge.exact.A == [[mpq(-(10**400))]]
 
 
+def test_band_and_indices_on_data_beyond_the_float_range():
+    from verify.passivity.band import decide_band
+    from verify.passivity.indices import indices
+
+    model = from_state_space([[-(10**400)]], [[1]], [[1]], [[0]])  # 1/(s + 1e400): passive
+    assert decide_band(model, (Q(0), Q(1))).verdict in (PASSIVE, INCONCLUSIVE)
+    ifp, _ = indices(model)
+    assert ifp.upper is None or ifp.upper >= 0  # an exact bound, never below the truth 0
+    unstable = from_state_space([[10**400]], [[1]], [[1]], [[0]])
+    assert decide_band(unstable, (Q(0), Q(1))).verdict in (NOT_PASSIVE, INCONCLUSIVE)
+
+
 def test_margin_beyond_the_float_range(tmp_path, capsys):
     margin = parse_margin("1e400")
     assert margin == 10**400

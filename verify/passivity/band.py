@@ -37,6 +37,7 @@ from verify.passivity.decide import (
     PASSIVE,
     decision_json,
     float_views,
+    propose,
     realisation_note,
 )
 from verify.passivity.gkyp import BandCertificate, ComplexMatrix, check_gkyp
@@ -200,23 +201,19 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
         return BandDecision(model, band, verdict, reason + realisation_note(part), margin=margin,
                             seconds=time.perf_counter() - start, **kw)
 
-    try:
-        with np.errstate(all="ignore"):
-            low = nu_minimum(A, B, C, D, band=(float(band[0]), float(band[1])))
-        nu_min = (low.omega, low.value) if math.isfinite(low.value) else None
-    except (np.linalg.LinAlgError, ValueError):
-        low, nu_min = None, None
+    low = propose(lambda: nu_minimum(A, B, C, D, band=(float(band[0]), float(band[1]))))
+    nu_min = (low.omega, low.value) if low is not None and math.isfinite(low.value) else None
     if low is not None and low.value < 0:
         # the minimiser first; then band points, in case it sits next to a pole (where nu
         # tends to -infinity and its rational neighbours hit the pole itself)
         lo, hi = float(band[0]), float(band[1])
         tries = [low.omega, hi, lo, (lo + hi) / 2, *np.geomspace(max(lo, hi * 1e-3), hi, 7)]
         for omega in tries:
-            w = band_witness(em, omega, band)
+            w = propose(band_witness, em, omega, band)
             if w is not None:
                 return done(NOT_PASSIVE, f"not passive on {where}: {w.summary}", witness=w,
                             nu_min=nu_min)
-    found = band_certificate(em, A, B, C, D, band)
+    found = propose(band_certificate, em, A, B, C, D, band)
     if found is not None:
         P, Q, num_margin, label = found
         cert = BandCertificate(model.name, model.source, em, band, P, Q,
@@ -224,7 +221,7 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                                 "rounding": label,
                                 **{k: v for k, v in model.meta.items()
                                    if isinstance(v, str | int | float | bool)}})
-        poles = _poles_in_band(model.A, band)
+        poles = propose(_poles_in_band, A, band, default=[])
         caveat = "" if not poles else (
             "; H has imaginary-axis poles at ω ≈ " + ", ".join(f"{p:.6g}" for p in poles)
             + " in the band, where H(jω) is undefined: the statement covers the other "
