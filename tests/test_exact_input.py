@@ -495,5 +495,17 @@ def test_exact_model_is_the_source_of_truth():
     assert float(renamed.A[0, 0]) == -(2.0**60)  # the view rounds; the truth does not
 
 
+def test_simulated_human_of_a_non_minimal_model_uses_the_certified_state():
+    from verify.sim.humans import LTIHuman
+
+    A = [[-1, 0, 0], [0, 3, 0], [0, 0, -2]]  # the mode at 3 is unobservable
+    model = from_state_space(A, [[1, 0], [1, 0], [0, 1]], [[1, 0, 0], [0, 0, 1]],
+                             [[0, 0], [0, 0]])
+    human, decision = LTIHuman.gated(model)
+    assert decision.verdict == PASSIVE and human.state_size == 2
+    assert human.storage(np.ones(2)) == pytest.approx(
+        0.5 * float(sum(sum(row) for row in decision.certificate.P)))
+
+
 if __name__ == "__main__":  # pragma: no cover
     sys.exit(pytest.main([__file__, "-q"]))
