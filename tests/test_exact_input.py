@@ -158,6 +158,10 @@ def test_conversion_helper_is_exact_and_refuses_non_numbers():
     for bad in (True, "1", None, 1j, math.nan, math.inf):
         with pytest.raises(VerifyInputError):
             rational(bad, "x")
+    third = np.longdouble(1) / 3  # wider than a double: still its exact binary value
+    assert rational(third, "x") == mpq(*third.as_integer_ratio()) != mpq(float(third))
+    model = from_state_space(np.array([[-third]]), [[1]], [[1]], [[0]])
+    assert model.exact.A == [[-mpq(*third.as_integer_ratio())]]
     assert to_float(mpq(10**400)) == math.inf and to_float(mpq(-(10**400))) == -math.inf
     assert to_float(mpq(1, 10**400)) == 0.0 and to_float(mpq(1, 3)) == 1 / 3
 

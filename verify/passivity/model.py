@@ -95,7 +95,9 @@ def _exact_nested(value: Any, where: str) -> tuple[Any, tuple[int, ...]]:
             if len(bad):
                 index = "".join(f"[{k}]" for k in bad[0])
                 raise VerifyInputError(f"{where}{index}: NaN or Inf is not allowed")
-            return _map(value.tolist(), mpq), shape  # ints and doubles convert exactly
+            if value.dtype.itemsize <= 8:  # to Python int / float, exactly
+                return _map(value.tolist(), mpq), shape
+            return _map(value.tolist(), lambda x: rational(x, where)), shape
         nested, inner = _exact_nested(value.tolist(), where)
         return nested, shape if value.size else inner
     if isinstance(value, list | tuple):

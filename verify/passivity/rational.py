@@ -80,10 +80,10 @@ def rational(value: Any, where: str) -> Rational:
     if isinstance(value, Fraction):
         return mpq(value.numerator, value.denominator)
     if isinstance(value, float | np.floating):
-        x = float(value)  # every NumPy float converts exactly (longdouble excepted)
-        if not math.isfinite(x):
+        if not np.isfinite(value):
             raise VerifyInputError(f"{where}: NaN or Inf is not allowed")
-        return mpq(x)
+        p, q = value.as_integer_ratio()  # exact for every width, longdouble included
+        return mpq(p, q)
     raise VerifyInputError(
         f"{where}: expected a real number, got {type(value).__name__} {_short(value)}"
     )
