@@ -456,15 +456,19 @@ def test_hidden_modes_are_counted_and_located_exactly():
 @pytest.mark.parametrize("A, B, C, D, truth, fragments", [
     # 1/(s+1) plus an unobservable unstable mode: positive real, no storage on that state
     ([[-1, 0], [0, 3]], [[1], [1]], [[1, 0]], [[0]], PASSIVE, ["1 in Re s > 0", "not on the "
-                                                                "given one"]),
+                                                                "given state"]),
     # 1/(s+1) plus an uncontrollable mode at 0 (on the axis)
     ([[-1, 0], [0, 0]], [[1], [0]], [[1, 1]], [[0]], PASSIVE, ["on the imaginary axis"]),
     # -1/(s+1) (not passive) plus a hidden stable mode
     ([[-1, 0], [0, -5]], [[1], [0]], [[-1, 1]], [[0]], NOT_PASSIVE, ["1 in Re s < 0"]),
 ])
-def test_non_minimal_state_space_says_what_is_decided(A, B, C, D, truth, fragments, tmp_path):
+def test_non_minimal_state_space_says_what_is_decided(A, B, C, D, truth, fragments, tmp_path,
+                                                      capsys):
     model = load_model(write_ss(tmp_path, A, B, C, D))
     d = decide(model)
+    assert d.note and d.note in d.reason
+    main(["gate", model.source, "--certificates", str(tmp_path / "certs")])
+    assert "not minimal" in capsys.readouterr().out  # on the PASS line too
     assert d.verdict == truth
     assert "not minimal" in d.reason and "positive realness of the transfer function" in d.reason
     for fragment in fragments:

@@ -84,6 +84,7 @@ class BandDecision:
     nu_min: tuple[float, float] | None = None
     margin: Fraction = Fraction(0)
     seconds: float = 0.0
+    note: str = ""  # what a verdict on a non-minimal realisation is about (in the reason)
 
     def to_json(self) -> dict:
         out = decision_json(self)
@@ -198,8 +199,9 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
     where = f"[{band[0]}, {band[1]}] rad/s"
 
     def done(verdict, reason, **kw) -> BandDecision:
-        return BandDecision(model, band, verdict, reason + realisation_note(part), margin=margin,
-                            seconds=time.perf_counter() - start, **kw)
+        note = realisation_note(part)
+        return BandDecision(model, band, verdict, reason + note, margin=margin,
+                            seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
     low = propose(lambda: nu_minimum(A, B, C, D, band=(float(band[0]), float(band[1]))))
     nu_min = (low.omega, low.value) if low is not None and math.isfinite(low.value) else None

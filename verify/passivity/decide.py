@@ -59,6 +59,7 @@ class Decision:
     nu_min: tuple[float, float] | None = None  # (omega, nu) of the smallest nu found
     margin: Fraction = Fraction(0)
     seconds: float = 0.0
+    note: str = ""  # what a verdict on a non-minimal realisation is about (in the reason)
 
     def to_json(self) -> dict:
         return decision_json(self)
@@ -167,12 +168,12 @@ def realisation_note(part: MinimalPart) -> str:
     """
     if not part.hidden:
         return ""
-    text = (f"; {part.summary()}: decided is positive realness of the transfer function "
-            f"H(s), on its exact minimal realisation ({part.model.n} states), and a "
-            "certificate's storage is on that minimal state")
+    text = (f"; {part.summary()}; decided: positive realness of the transfer function "
+            f"H(s), on its exact minimal realisation ({part.model.n} state(s)), where a "
+            "certificate's storage lives")
     if part.hidden_rhp:
-        text += (", not on the given one: with a hidden mode in Re s > 0 no P > 0 on the "
-                 "given state satisfies the KYP inequality")
+        text += ("; not on the given state: with a hidden mode in Re s > 0, no P > 0 on it "
+                 "satisfies the KYP inequality")
     elif part.hidden_axis:
         text += "; a hidden mode lies on the imaginary axis"
     return text
@@ -192,7 +193,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
 
     def done(verdict, reason, **kw) -> Decision:
         return Decision(model, verdict, reason + note, margin=margin,
-                        seconds=time.perf_counter() - start, **kw)
+                        seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
     w = infinity_witness(em)
     if w is not None:

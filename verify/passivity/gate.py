@@ -63,6 +63,8 @@ class GateResult:
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
         text = f"{head}; certificate {self.certificate_path}" if self.passed \
             else f"{head}; {d.reason}"
+        if self.passed and d.note:  # a non-minimal realisation: say what was decided
+            text += f"; {d.note}"
         for index in self.indices or ():
             text += f"\n  {index.summary()}"
         return text

@@ -441,9 +441,9 @@ class MinimalPart:
         stable = self.hidden - self.hidden_rhp - self.hidden_axis
         if stable:
             where.append(f"{stable} in Re s < 0")
-        return (f"the given realisation is not minimal: {self.uncontrollable} "
-                f"uncontrollable and {self.unobservable} unobservable mode(s) ("
-                + ", ".join(where) + "), exactly")
+        return (f"the given realisation is not minimal (exactly: {self.uncontrollable} "
+                f"uncontrollable, {self.unobservable} unobservable mode(s); "
+                + ", ".join(where) + ")")
 
 
 def _real_root_count(g: fmpq_poly) -> int:
