@@ -493,6 +493,73 @@ def test_minimality_fast_path_and_exact_fallback():
     assert is_minimal(twin.exact)
 
 
+def _hidden_pair_model(visible: int, seed: int) -> LTIModel:
+    """T blockdiag(A_v, A_h) T^-1 with an undriven hidden block A_h (eigenvalues
+    1 +- j sqrt(6)) and dense rational data: the hidden modes are not visible in A."""
+    import random
+
+    rnd = random.Random(seed)
+    n = visible + 2
+    blocks = sp.zeros(n, n)
+    for i in range(visible):
+        for j in range(visible):
+            blocks[i, j] = sp.Rational(rnd.randint(-9, 9), rnd.randint(1, 5)) - 20 * (i == j)
+    blocks[visible:, visible:] = sp.Matrix([[1, -3], [2, 1]])
+    blocks[0, visible] = 1  # the visible part sees the hidden block, not the other way
+    T = sp.Matrix(n, n, lambda i, j: rnd.randint(-3, 3) + 5 * (i == j))
+    Bb = sp.Matrix(n, 2, lambda i, j: rnd.randint(-3, 3) if i < visible else 0)
+    Cb = sp.Matrix(2, n, lambda i, j: rnd.randint(-3, 3))
+    Ti = T.inv()
+
+    def rows(M):
+        return [[Q(int(x.p), int(x.q)) for x in row] for row in M.tolist()]
+
+    return from_state_space(rows(T * blocks * Ti), rows(T * Bb), rows(Cb * Ti),
+                            [[0, 0], [0, 0]])
+
+
+@pytest.mark.parametrize("visible, seed", [(4, 1), (8, 2)])
+def test_multimodular_row_space_equals_exact_elimination(visible, seed):
+    from verify.passivity.realization import (
+        _fm,
+        _invariant_row_space,
+        _invariant_row_space_exact,
+    )
+
+    model = _hidden_pair_model(visible, seed)
+    part = minimal_part(model.exact)
+    assert (part.uncontrollable, part.unobservable, part.hidden_rhp) == (2, 0, 2)
+    assert part.hidden_poly == ("1", "-2", "7")  # s^2 - 2 s + 7
+    n = model.n
+    At, Bt = _fm(model.exact.A, n, n).transpose(), _fm(model.exact.B, n, 2).transpose()
+    assert _invariant_row_space(At, Bt) == _invariant_row_space_exact(At, Bt)
+    d = decide(model)
+    assert "not minimal" in d.reason and "2 in Re s > 0" in d.reason
+
+
+def test_non_minimal_dense_float_model_is_reduced_exactly():
+    # 30 dense float states, the last one undriven and unseen by the others
+    rng = np.random.default_rng(0)
+    n = 30
+    A = rng.standard_normal((n, n)) - 12 * np.eye(n)
+    A[-1, :-1] = 0.0
+    B = rng.standard_normal((n, 2))
+    B[-1] = 0.0
+    model = from_state_space(A, B, rng.standard_normal((2, n)), np.eye(2))
+    part = minimal_part(model.exact)
+    assert (part.uncontrollable, part.unobservable) == (1, 0)
+    assert part.hidden_poly == ("1", str(-mpq(A[-1, -1])))
+    assert is_minimal(part.model)
+
+
+def test_zero_input_or_output_matrices():
+    for B, C, counts in (([[0], [0]], [[1, 1]], (2, 0)), ([[1], [1]], [[0, 0]], (0, 2))):
+        model = from_state_space([[-1, 0], [0, -2]], B, C, [[1]])
+        part = minimal_part(model.exact)
+        assert (part.uncontrollable, part.unobservable) == counts and part.model.n == 0
+        assert decide(model).verdict == PASSIVE
+
+
 def test_exact_model_is_the_source_of_truth():
     """The exact data win over float arrays passed beside them (replace keeps exact)."""
     import dataclasses

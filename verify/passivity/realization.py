@@ -13,8 +13,9 @@ Transfer matrix -> (A, B, C, D) (:func:`transfer_function_model`)
    the coefficients of r_ij d_j / den_ij, since (sI - A_j)^-1 e_k = (1, s, ..., s^(k-1))^T
    / d_j(s). The block-diagonal stack is controllable, as every column block is.
 3. The unobservable subspace is removed exactly: W, the reduced row echelon basis of the
-   row space of the observability matrix (rows of C, then multiplied by A until the span
-   is A-invariant), maps x to x' = W x with A' = (W A)[:, pivots], B' = W B and
+   row space of the observability matrix (the smallest A-invariant row space holding
+   the rows of C; skipped when a rank modulo a prime proves observability), maps x to
+   x' = W x with A' = (W A)[:, pivots], B' = W B and
    C' = C[:, pivots] (W has the identity at its pivot columns). A quotient of a
    controllable system is controllable, so (A', B', C', D) is minimal (Kalman, 1963).
 4. Check (:func:`check_realization`): D is the same, and the Markov parameters C A^k B
@@ -30,7 +31,10 @@ Controllable and observable subspaces are computed exactly (the controllable par
 the dual of step 3). The common case, a minimal realisation, is settled first by ranks
 modulo a large prime: a reduction mod p is a ring homomorphism on rationals whose
 denominators p does not divide, so full rank of the Krylov matrices mod p proves full
-rank over Q. The hidden modes are the roots of chi_A / chi_A', and their location
+rank over Q. Otherwise the invariant subspace is computed modulo several primes, lifted
+by Chinese remaindering and rational reconstruction, and verified exactly
+(:func:`_invariant_row_space`); exact elimination over Q, whose rationals swell on dense
+data, is only the fallback. The hidden modes are the roots of chi_A / chi_A', and their location
 (open left half-plane, imaginary axis, open right half-plane) is decided exactly: axis
 roots as the real roots of gcd(Re h(jw), Im h(jw)), the others by rigorous complex root
 isolation (FLINT/Arb), refined until no ball meets the axis.
@@ -43,6 +47,7 @@ from itertools import pairwise
 from typing import Any
 
 import flint
+import gmpy2
 from flint import fmpq, fmpq_mat, fmpq_poly, nmod_mat
 from gmpy2 import mpq
 
@@ -249,14 +254,142 @@ def _observable_quotient(A: fmpq_mat, B: fmpq_mat, C: fmpq_mat
                          ) -> tuple[fmpq_mat, fmpq_mat, fmpq_mat]:
     """Step 3: (A', B', C') on R^n / (unobservable subspace), exactly.
 
-    The row space S of the observability matrix grows as S_(k+1) = S_k + F_k A, where
-    F_k are the rows that entered S_k (reduced against the basis): only those are
-    multiplied by A. An observable (A, C), the common case, is recognised modulo a prime
-    first (:func:`_observable_mod_p`) and returned unchanged.
+    An observable (A, C), the common case, is recognised modulo a prime first
+    (:func:`_observable_mod_p`) and returned unchanged. Otherwise the row space of the
+    observability matrix is found by :func:`_invariant_row_space`.
     """
     n = A.nrows()
     if n == 0 or _observable_mod_p(A, C):
         return A, B, C
+    W, pivots = _invariant_row_space(A, C)
+    if len(pivots) == n:
+        return A, B, C
+    return _columns(W * A, pivots), W * B, _columns(C, pivots)
+
+
+#: Most primes used by the multimodular row space before exact elimination takes over.
+_MAX_PRIMES = 256
+
+
+def _invariant_row_space(A: fmpq_mat, C: fmpq_mat) -> tuple[fmpq_mat, list[int]]:
+    """The RREF basis W of S = span of the rows of C, CA, CA^2, ... and its pivots, exactly.
+
+    Multimodular: S is computed modulo primes p (cheap, word-size arithmetic), the RREF
+    entries are lifted by Chinese remaindering and rational reconstruction, and the
+    candidate W is *verified exactly*: C = C[:, piv] W and W A = (W A)[:, piv] W show
+    that span W contains C and is A-invariant, so it contains S; and its dimension is a
+    rank modulo p of the observability matrix, which is at most dim S. Hence span W = S.
+    Floating point plays no part; a failed reconstruction only asks for more primes.
+    Data whose answer would need more than ``_MAX_PRIMES`` primes fall back to exact
+    elimination (:func:`_invariant_row_space_exact`).
+    """
+    n = A.nrows()
+    p, rank, pivots = 2**61 + 2**40, -1, None  # primes just above 2^61, not _PRIME
+    residues: list[tuple[int, list[list[int]]]] = []
+    next_try = 1
+    for _ in range(4 * _MAX_PRIMES):
+        p = int(gmpy2.next_prime(p))
+        Ap, Cp = _fmpq_mod(A, p), _fmpq_mod(C, p)
+        if Ap is None or Cp is None:
+            continue
+        Wp, piv = _invariant_row_space_mod(Ap, Cp, p)
+        if len(piv) > rank:
+            rank, pivots, residues, next_try = len(piv), piv, [], 1
+        if len(piv) < rank or piv != pivots:
+            continue  # an unlucky prime: rank or pivots differ from the best seen
+        residues.append((p, [[int(Wp[i, c]) for c in range(n)] for i in range(rank)]))
+        if len(residues) >= next_try:
+            next_try *= 2
+            W = _reconstruct(residues, rank, n)
+            if W is not None and _spans_invariant_row_space(W, pivots, A, C):
+                return W, pivots
+        if len(residues) > _MAX_PRIMES:
+            break
+    return _invariant_row_space_exact(A, C)
+
+
+def _fmpq_mod(M: fmpq_mat, p: int) -> nmod_mat | None:
+    """M modulo p, or None when p divides a denominator."""
+    entries = []
+    for i in range(M.nrows()):
+        for j in range(M.ncols()):
+            x = M[i, j]
+            d = int(x.q) % p
+            if d == 0:
+                return None
+            entries.append(int(x.p) * pow(d, -1, p) % p)
+    return nmod_mat(M.nrows(), M.ncols(), entries, p)
+
+
+def _invariant_row_space_mod(A: nmod_mat, C: nmod_mat, p: int) -> tuple[nmod_mat, list[int]]:
+    """RREF of span(C, CA, CA^2, ...) over Z/p: add W A until the rank stops growing."""
+    n = A.nrows()
+    W, rank = C.rref()
+    while True:
+        top = [[int(W[i, c]) for c in range(n)] for i in range(rank)]
+        WA = nmod_mat(rank, n, [x for row in top for x in row], p) * A if rank else None
+        rows = top + ([[int(WA[i, c]) for c in range(n)] for i in range(rank)] if rank else [])
+        if not rows:
+            return nmod_mat(0, n, [], p), []
+        W2, rank2 = nmod_mat(len(rows), n, [x for row in rows for x in row], p).rref()
+        if rank2 == rank:
+            break
+        W, rank = W2, rank2
+    pivots = [next(c for c in range(n) if int(W[i, c]) != 0) for i in range(rank)]
+    return W, pivots
+
+
+def _rational_reconstruction(a: int, m: int) -> fmpq | None:
+    """x/y with x = a y (mod m), |x|, y <= sqrt(m/2) (Wang's algorithm), or None."""
+    bound = int(gmpy2.isqrt(m // 2))
+    r0, r1, t0, t1 = m, a % m, 0, 1
+    while r1 > bound:
+        q = r0 // r1
+        r0, r1, t0, t1 = r1, r0 - q * r1, t1, t0 - q * t1
+    if t1 == 0 or abs(t1) > bound or gmpy2.gcd(r1, t1) != 1:
+        return None
+    return fmpq(r1, t1) if t1 > 0 else fmpq(-r1, -t1)
+
+
+def _reconstruct(residues: list[tuple[int, list[list[int]]]], rows: int, cols: int
+                 ) -> fmpq_mat | None:
+    """Chinese remaindering of the RREF residues, then rational reconstruction."""
+    modulus, values = 1, [[0] * cols for _ in range(rows)]
+    for p, table in residues:
+        inverse = pow(modulus, -1, p)
+        for i in range(rows):
+            for c in range(cols):
+                v = values[i][c]
+                values[i][c] = v + modulus * ((table[i][c] - v) * inverse % p)
+        modulus *= p
+    entries = []
+    for i in range(rows):
+        for c in range(cols):
+            x = _rational_reconstruction(values[i][c], modulus)
+            if x is None:
+                return None
+            entries.append(x)
+    return fmpq_mat(rows, cols, entries)
+
+
+def _spans_invariant_row_space(W: fmpq_mat, pivots: list[int], A: fmpq_mat,
+                               C: fmpq_mat) -> bool:
+    """Exactly: rows of C lie in span W, and span W is A-invariant."""
+    if _columns(W, pivots) != fmpq_mat(len(pivots), len(pivots),
+                                       [int(i == j) for i in range(len(pivots))
+                                        for j in range(len(pivots))]):
+        return False
+    WA = W * A
+    return C == _columns(C, pivots) * W and WA == _columns(WA, pivots) * W
+
+
+def _invariant_row_space_exact(A: fmpq_mat, C: fmpq_mat) -> tuple[fmpq_mat, list[int]]:
+    """The same row space by exact elimination over Q (slow for large dense data).
+
+    S_(k+1) = S_k + F_k A, where F_k are the rows that entered S_k: only those are
+    multiplied by A.
+    """
+    n = A.nrows()
     W, pivots = _rref_rows(C)
     frontier = W
     while len(pivots) < n:
@@ -266,22 +399,12 @@ def _observable_quotient(A: fmpq_mat, B: fmpq_mat, C: fmpq_mat
         new = [r for r, c in enumerate(piv2) if c not in set(pivots)]
         frontier = fmpq_mat(len(new), n, [W2[r, c] for r in new for c in range(n)])
         W, pivots = W2, piv2
-    if len(pivots) == n:
-        return A, B, C
-    return _columns(W * A, pivots), W * B, _columns(C, pivots)
+    return W, pivots
 
 
 def _fmpq_mod_p(M: fmpq_mat) -> nmod_mat | None:
     """M reduced modulo the prime, or None when the prime divides a denominator."""
-    entries = []
-    for i in range(M.nrows()):
-        for j in range(M.ncols()):
-            x = M[i, j]
-            d = int(x.q) % _PRIME
-            if d == 0:
-                return None
-            entries.append(int(x.p) * pow(d, -1, _PRIME) % _PRIME)
-    return nmod_mat(M.nrows(), M.ncols(), entries, _PRIME)
+    return _fmpq_mod(M, _PRIME)
 
 
 def _observable_mod_p(A: fmpq_mat, C: fmpq_mat) -> bool:
