@@ -283,6 +283,13 @@ REALISATIONS = {
     "shared poles, rank-2 residue": ([[[1], [1]], [[1], [2]]], [[[1, 1]] * 2] * 2, 2),
     "1/(1e-300 s + 1)": ([[[1]]], [[[Q(1, 10**300), 1]]], 1),
     "non-monic, unnormalised": ([[[6, 3]]], [[[4, 6, 2]]], 1),  # 3(2s+1)/(2(2s+1)(s+1))
+    # big integers and long decimals: equal as floats, different as written
+    "big-integer cancellation (s + 2^60 + 1)/(s + 2^60 + 1)": (
+        [[[1, 2**60 + 1]]], [[[1, 2**60 + 1]]], 0),
+    "big-integer near cancellation (s + 2^60 + 1)/(s + 2^60)": (
+        [[[1, 2**60 + 1]]], [[[1, 2**60]]], 1),
+    "decimal near cancellation (s + 0.1)/(s + 0.1000000000000000001)": (
+        [[[1, Q(1, 10)]]], [[[1, Q(10**18 + 1, 10**19)]]], 1),
     "zero element": ([[[0], [1]], [[1], [0]]], [[[1, 5], [1, 1]], [[1, 1], [3]]], 2),
 }
 
