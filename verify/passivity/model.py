@@ -335,8 +335,9 @@ def from_python(obj: Any, *, name: str | None = None) -> LTIModel:
     which python-control calls an unspecified timebase), scipy.signal ``lti`` objects
     (``StateSpace``, ``TransferFunction``, ``ZerosPolesGain``), and an :class:`LTIModel`
     (returned as is, or renamed). Transfer functions go through
-    :func:`from_transfer_function` (minimal realisation); state-space data are kept as
-    given. Discrete-time objects and anything else raise :class:`VerifyInputError`.
+    :func:`from_transfer_function` (exact minimal realisation); state-space data are kept
+    as given. Every float denotes its exact binary value (0.1 is 3602879701896397/2^55).
+    Discrete-time objects and anything else raise :class:`VerifyInputError`.
     """
     if isinstance(obj, LTIModel):
         return obj if name is None else dataclasses.replace(obj, name=name)
