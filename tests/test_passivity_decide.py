@@ -13,7 +13,7 @@ import pytest
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import check_kyp
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide, nu
+from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide, nu
 from verify.passivity.model import from_state_space
 
 
@@ -111,10 +111,13 @@ def test_exact_ldl_decides_semidefinite_matrices():
     assert ex.psd_ldl(q([[0, 0], [0, 0]])).ok
 
 
-def test_a_hidden_unstable_mode_gives_inconclusive_not_a_wrong_verdict():
-    """1/(s+1) with an extra uncontrollable, unobservable unstable state: H is passive, but
-    no P > 0 solves the KYP LMI for this non-minimal realisation and no witness exists."""
+def test_a_hidden_unstable_mode_is_named_and_the_transfer_function_decided():
+    """1/(s+1) with an extra uncontrollable, unobservable unstable state: H is positive
+    real, which is decided on the exact minimal part; no P > 0 exists on the given state,
+    and the verdict says so."""
     model = ss([[-1, 0], [0, 1]], [[1], [0]], [[1, 0]], [[0]])
     d = decide(model)
-    assert d.verdict == INCONCLUSIVE
-    assert d.certificate is None and d.witness is None
+    assert d.verdict == PASSIVE
+    assert d.certificate is not None and d.certificate.model.n == 1
+    assert "not minimal" in d.reason and "1 in Re s > 0" in d.reason
+    assert "positive realness of the transfer function" in d.reason

@@ -30,10 +30,19 @@ from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
 from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, exact_model
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decision_json
+from verify.passivity.certificate import ExactModel
+from verify.passivity.decide import (
+    INCONCLUSIVE,
+    NOT_PASSIVE,
+    PASSIVE,
+    decision_json,
+    float_views,
+    propose,
+    realisation_note,
+)
 from verify.passivity.gkyp import BandCertificate, ComplexMatrix, check_gkyp
 from verify.passivity.hamiltonian import nu_minimum
+from verify.passivity.realization import minimal_part
 from verify.passivity.witness import Witness, frequency_witness_at
 
 if TYPE_CHECKING:
@@ -75,6 +84,7 @@ class BandDecision:
     nu_min: tuple[float, float] | None = None
     margin: Fraction = Fraction(0)
     seconds: float = 0.0
+    note: str = ""  # what a verdict on a non-minimal realisation is about (in the reason)
 
     def to_json(self) -> dict:
         out = decision_json(self)
@@ -183,31 +193,29 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                 margin: Fraction = Fraction(0)) -> BandDecision:
     """Verdict for H(jw) + H(jw)^H >= 2 margin I on w1 <= w <= w2 (paper, Section 4)."""
     start = time.perf_counter()
-    A, B, C, D = model.A, model.B, model.C, model.D - float(margin) * np.eye(model.m)
-    em = _shifted(exact_model(model.A, model.B, model.C, model.D), margin)
+    part = minimal_part(model.exact)  # the exact model, never re-derived from floats
+    em = _shifted(part.model, margin)
+    A, B, C, D = float_views(em)
     where = f"[{band[0]}, {band[1]}] rad/s"
 
     def done(verdict, reason, **kw) -> BandDecision:
-        return BandDecision(model, band, verdict, reason, margin=margin,
-                            seconds=time.perf_counter() - start, **kw)
+        note = realisation_note(part)
+        return BandDecision(model, band, verdict, reason + note, margin=margin,
+                            seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
-    try:
-        with np.errstate(all="ignore"):
-            low = nu_minimum(A, B, C, D, band=(float(band[0]), float(band[1])))
-        nu_min = (low.omega, low.value) if math.isfinite(low.value) else None
-    except (np.linalg.LinAlgError, ValueError):
-        low, nu_min = None, None
+    low = propose(lambda: nu_minimum(A, B, C, D, band=(float(band[0]), float(band[1]))))
+    nu_min = (low.omega, low.value) if low is not None and math.isfinite(low.value) else None
     if low is not None and low.value < 0:
         # the minimiser first; then band points, in case it sits next to a pole (where nu
         # tends to -infinity and its rational neighbours hit the pole itself)
         lo, hi = float(band[0]), float(band[1])
         tries = [low.omega, hi, lo, (lo + hi) / 2, *np.geomspace(max(lo, hi * 1e-3), hi, 7)]
         for omega in tries:
-            w = band_witness(em, omega, band)
+            w = propose(band_witness, em, omega, band)
             if w is not None:
                 return done(NOT_PASSIVE, f"not passive on {where}: {w.summary}", witness=w,
                             nu_min=nu_min)
-    found = band_certificate(em, A, B, C, D, band)
+    found = propose(band_certificate, em, A, B, C, D, band)
     if found is not None:
         P, Q, num_margin, label = found
         cert = BandCertificate(model.name, model.source, em, band, P, Q,
@@ -215,7 +223,7 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                                 "rounding": label,
                                 **{k: v for k, v in model.meta.items()
                                    if isinstance(v, str | int | float | bool)}})
-        poles = _poles_in_band(model.A, band)
+        poles = propose(_poles_in_band, A, band, default=[])
         caveat = "" if not poles else (
             "; H has imaginary-axis poles at ω ≈ " + ", ".join(f"{p:.6g}" for p in poles)
             + " in the band, where H(jω) is undefined: the statement covers the other "

@@ -1,4 +1,10 @@
-"""The passivity verdict of a model: passive / not passive / inconclusive (issue 4, item 2).
+"""The passivity verdict of a model: passive / not passive / inconclusive.
+
+Everything is decided on the model's exact data (``LTIModel.exact``), reduced to its
+exact minimal part (:func:`verify.passivity.realization.minimal_part`); a non-minimal
+realisation is named in the reason, with what the verdict is then about. Floating-point
+views only propose, and a proposal that fails numerically (overflow, subnormals, data
+beyond the float range) yields nothing rather than an error.
 
 Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
 certificate is sought and checked exactly (passive); failing that, witnesses are sought:
@@ -24,9 +30,11 @@ import numpy as np
 from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
-from verify.passivity.certificate import Certificate, ExactModel, exact_model
+from verify.passivity.certificate import Certificate, ExactModel
 from verify.passivity.hamiltonian import nu_minimum, nu_values
 from verify.passivity.kyp import find_certificate
+from verify.passivity.rational import float_view
+from verify.passivity.realization import MinimalPart, minimal_part
 from verify.passivity.witness import (
     Witness,
     frequency_witness,
@@ -51,6 +59,7 @@ class Decision:
     nu_min: tuple[float, float] | None = None  # (omega, nu) of the smallest nu found
     margin: Fraction = Fraction(0)
     seconds: float = 0.0
+    note: str = ""  # what a verdict on a non-minimal realisation is about (in the reason)
 
     def to_json(self) -> dict:
         return decision_json(self)
@@ -120,46 +129,104 @@ def hamiltonian_candidates(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.nd
     return ([found.omega] if found.value < 0 else []), (found.omega, found.value)
 
 
+#: What a floating-point proposal may raise on extreme data (entries near the float
+#: range, subnormals, overflow to inf); the proposal then yields nothing.
+FLOAT_FAILURES = (ArithmeticError, ValueError, np.linalg.LinAlgError)
+
+
+def propose(fn, *args, default=None):
+    """fn(*args) from the untrusted float route, or ``default`` if it fails numerically."""
+    try:
+        with np.errstate(all="ignore"):
+            return fn(*args)
+    except FLOAT_FAILURES:
+        return default
+
+
+def shifted(em: ExactModel, margin: Fraction) -> ExactModel:
+    """H - margin I, exactly."""
+    if not margin:
+        return em
+    shift = mpq(margin)
+    return ExactModel(em.A, em.B, em.C, [[x - shift if i == j else x for j, x in enumerate(row)]
+                                         for i, row in enumerate(em.D)])
+
+
+def float_views(em: ExactModel) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Float (A, B, C, D) of an exact model: nearest floats, +-inf beyond the range."""
+    n, m = em.n, em.m
+    return (float_view(em.A, n, n), float_view(em.B, n, m), float_view(em.C, m, n),
+            float_view(em.D, m, m))
+
+
+def realisation_note(part: MinimalPart) -> str:
+    """What a verdict on a non-minimal realisation is about (empty when it is minimal).
+
+    Passivity of the transfer function (positive realness) depends only on the minimal
+    part; a KYP storage x^T P x / 2 with P > 0 on the given state needs A^T P + P A <= 0,
+    hence no hidden mode in Re s > 0, so it is not what a certificate then proves.
+    """
+    if not part.hidden:
+        return ""
+    text = (f"; {part.summary()}; decided: positive realness of the transfer function "
+            f"H(s), on its exact minimal realisation ({part.model.n} state(s)), where a "
+            "certificate's storage lives")
+    if part.hidden_rhp:
+        text += ("; not on the given state: with a hidden mode in Re s > 0, no P > 0 on it "
+                 "satisfies the KYP inequality")
+    elif part.hidden_axis:
+        text += "; a hidden mode lies on the imaginary axis"
+    return text
+
+
 def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
-    """Verdict for passivity of H (or of H - margin I when a margin is asked for)."""
+    """Verdict for passivity of H (or of H - margin I when a margin is asked for).
+
+    The exact model is ``model.exact`` reduced to its exact minimal part (the transfer
+    function's realisation); floats are views of it and only propose.
+    """
     start = time.perf_counter()
-    A, B, C, D = model.A, model.B, model.C, model.D
-    em = exact_model(A, B, C, D)
-    if margin:  # H - margin I, exactly
-        shift = mpq(margin)
-        em = ExactModel(em.A, em.B, em.C, [[x - shift if i == j else x for j, x in enumerate(row)]
-                                           for i, row in enumerate(em.D)])
-        D = D - float(margin) * np.eye(model.m)
+    part = minimal_part(model.exact)
+    note = realisation_note(part)
+    em = shifted(part.model, margin)
+    A, B, C, D = float_views(em)
 
     def done(verdict, reason, **kw) -> Decision:
-        return Decision(model, verdict, reason, margin=margin,
-                        seconds=time.perf_counter() - start, **kw)
+        return Decision(model, verdict, reason + note, margin=margin,
+                        seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
     w = infinity_witness(em)
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
-    search = find_certificate(em, A, B, C, D)
-    if search.P is not None:
+    search = propose(find_certificate, em, A, B, C, D)
+    if search is not None and search.P is not None:
         cert = Certificate(model.name, model.source, em, search.P,
                            {"margin": str(margin), "numerical_margin": search.margin,
                             **{k: v for k, v in model.meta.items()
                                if isinstance(v, str | int | float | bool)}})
         return done(PASSIVE, f"KYP certificate checked exactly: {search.reason}",
                     certificate=cert)
-    w = real_axis_witness(em)  # O(n^2) exact work
+    search_reason = "the floating-point search failed on this data" if search is None \
+        else search.reason
+    w = propose(real_axis_witness, em)  # O(n^2) exact work
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
-    candidates, best = hamiltonian_candidates(A, B, C, D)
-    swept, swept_best = candidate_frequencies(A, B, C, D)
+    candidates, best = propose(hamiltonian_candidates, A, B, C, D, default=([], None))
+    swept, swept_best = propose(candidate_frequencies, A, B, C, D, default=([], None))
     candidates += [w for w in swept if w not in candidates]
-    best = best if best is not None and best[1] <= swept_best[1] else swept_best
+    if best is None or (swept_best is not None and swept_best[1] < best[1]):
+        best = swept_best
+    if best is not None and not (np.isfinite(best[0]) and np.isfinite(best[1])):
+        best = None
     for omega in candidates:
-        w = frequency_witness(em, omega)
+        w = propose(frequency_witness, em, omega)
         if w is not None:
             return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
     # last: the symbolic transfer matrix can take minutes even at n = 8
-    w = pole_witness(em)
+    w = propose(pole_witness, em)
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
-    return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search.reason}; "
-                f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g})", nu_min=best)
+    smallest = "no ν estimate" if best is None else \
+        f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g}"
+    return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search_reason}; "
+                f"{smallest})", nu_min=best)

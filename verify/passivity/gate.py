@@ -24,11 +24,23 @@ from verify.report.atomic import write_atomic
 
 
 def parse_margin(text: str) -> Fraction:
-    """A margin nu0 as an exact rational ("1e-8", "0.01", "1/100"); one-line error otherwise."""
+    """A margin nu0 as an exact rational ("1e-8", "0.01", "1/100"); one-line error otherwise.
+
+    A decimal denotes the decimal it spells, as in model files."""
+    from verify.passivity.rational import decimal_literal
+
+    body = text.strip()
     try:
-        value = Fraction(text.strip())
+        if "/" in body:
+            value = Fraction(body)
+        else:
+            parsed = decimal_literal(body)
+            if not isinstance(parsed, Fraction):
+                raise ValueError
+            value = parsed
     except (ValueError, ZeroDivisionError):
-        raise VerifyInputError(f"--margin {text!r} is not a finite number") from None
+        raise VerifyInputError(f"--margin {text!r} is not a finite number (or its exponent "
+                               "is beyond +-4300)") from None
     return value
 
 
@@ -51,6 +63,8 @@ class GateResult:
             if self.kept else ""
         text = f"{head}; certificate {self.certificate_path}{kept}" if self.passed \
             else f"{head}; {d.reason}"
+        if self.passed and d.note:  # a non-minimal realisation: say what was decided
+            text += f"; {d.note}"
         for index in self.indices or ():
             text += f"\n  {index.summary()}"
         return text

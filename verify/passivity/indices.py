@@ -43,9 +43,11 @@ from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
 from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, exact_model, kyp_matrix
+from verify.passivity.certificate import ExactModel, kyp_matrix
+from verify.passivity.decide import float_views, propose
 from verify.passivity.hamiltonian import nu_minimum
 from verify.passivity.kyp import find_certificate
+from verify.passivity.realization import minimal_part
 from verify.passivity.witness import hermitian_part_at, response_at
 
 if TYPE_CHECKING:
@@ -174,27 +176,28 @@ def _shift(em: ExactModel, nu: Fraction) -> ExactModel:
 
 def ifp_index(model: LTIModel) -> IndexBounds:
     """nu_IFP: Hamiltonian estimate, certified lower bound, witnessed upper bound."""
-    A, B, C, D = model.A, model.B, model.C, model.D
-    em = exact_model(A, B, C, D)
+    em = minimal_part(model.exact).model  # the exact model, never re-derived from floats
+    A, B, C, D = float_views(em)
     notes = []
-    with np.errstate(all="ignore"):
-        found = nu_minimum(A, B, C, D)
-    estimate = found.value if math.isfinite(found.value) else None
+    found = propose(nu_minimum, A, B, C, D)  # floats only propose; failure proposes nothing
+    estimate = found.value if found is not None and math.isfinite(found.value) else None
     lower, P = None, None
     if estimate is not None:
         for nu in _lower_candidates(estimate):
-            search = find_certificate(_shift(em, nu), A, B, C, D - float(nu) * np.eye(model.m))
-            if search.P is not None:
+            search = propose(find_certificate, _shift(em, nu), A, B, C,
+                             D - float(nu) * np.eye(model.m))
+            if search is not None and search.P is not None:
                 lower, P = nu, search.P
                 break
         else:
             notes.append("no KYP certificate for H - ν I below the estimate (unstable or "
                          "non-minimal realisation?)")
     upper, upper_at = None, None
-    points = [math.inf] + ([found.omega] if math.isfinite(found.omega) else [])
+    points = [math.inf] + ([found.omega] if estimate is not None and math.isfinite(
+        found.omega) else [])
     for omega in points:
         for w in _frequencies(omega):
-            bound = _ifp_rayleigh(model, em, w)
+            bound = propose(_ifp_rayleigh, model, em, w)
             if bound is not None and (upper is None or bound < upper):
                 upper, upper_at = bound, "ω → ∞" if w is None else f"ω = {w}"
     upper = None if upper is None else round_up(upper)
@@ -354,21 +357,18 @@ def unstable_loop(em: ExactModel, upper: Fraction | None) -> tuple[Fraction, str
 
 def ofp_index(model: LTIModel) -> IndexBounds:
     """rho_OFP: SDP estimate, certified lower bound, witnessed upper bound."""
-    A, B, C, D = model.A, model.B, model.C, model.D
-    em = exact_model(A, B, C, D)
+    em = minimal_part(model.exact).model  # the exact model, never re-derived from floats
+    A, B, C, D = float_views(em)
     notes = []
-    estimate = ofp_estimate(A, B, C, D)
+    estimate = propose(ofp_estimate, A, B, C, D)
     lower, P = None, None
     if estimate is not None:
         for rho in _lower_candidates(estimate):
             loop = loop_transform(em, rho)
             if loop is None:
                 continue
-            fl = [np.array([[float(x) for x in row] for row in X], dtype=float).reshape(r, c)
-                  for X, r, c in ((loop.A, loop.n, loop.n), (loop.B, loop.n, loop.m),
-                                  (loop.C, loop.m, loop.n), (loop.D, loop.m, loop.m))]
-            search = find_certificate(loop, *fl)
-            if search.P is not None and check_ofp(em, search.P, rho):
+            search = propose(find_certificate, loop, *float_views(loop))
+            if search is not None and search.P is not None and check_ofp(em, search.P, rho):
                 lower, P = rho, search.P
                 break
         else:
@@ -376,15 +376,15 @@ def ofp_index(model: LTIModel) -> IndexBounds:
     else:
         notes.append("the SDP found no feasible ρ >= -1e6 (with a storage P > 0, OFP(ρ) "
                      "needs the loop u = ρ y to be stable)")
-    omega = _ofp_witness_frequency(model)
+    omega = propose(_ofp_witness_frequency, model, default=math.inf)
     upper, upper_at = None, None
     for w in [None, *_frequencies(omega)]:
-        bound = _ofp_rayleigh(model, em, w)
+        bound = propose(_ofp_rayleigh, model, em, w)
         if bound is not None and (upper is None or bound < upper):
             upper, upper_at = bound, "ω → ∞" if w is None else f"ω = {w}"
     upper = None if upper is None else round_up(upper)
     if lower is None:
-        unstable = unstable_loop(em, upper)
+        unstable = propose(unstable_loop, em, upper)
         if unstable is not None:
             upper, upper_at = unstable
     if estimate is not None and upper is not None and estimate > float(upper) + 1e-6 * max(

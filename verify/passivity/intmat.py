@@ -66,5 +66,7 @@ def to_float(s: ScaledInt) -> np.ndarray:
     try:  # Python's int / int is correctly rounded
         return np.array([[int(z) / d for z in row] for row in s.Z], dtype=float).reshape(s.shape)
     except OverflowError:  # a quotient beyond the float range
-        return np.array([[float(mpq(z, s.d)) for z in row] for row in s.Z],
+        from verify.passivity.rational import to_float  # saturates to +-inf
+
+        return np.array([[to_float(mpq(z, s.d)) for z in row] for row in s.Z],
                         dtype=float).reshape(s.shape)

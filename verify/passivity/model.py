@@ -1,4 +1,4 @@
-"""Human models H(s) as validated continuous-time LTI systems (issue 4, item 1).
+"""Human models H(s) as validated continuous-time LTI systems.
 
 Section 4 of the paper closes the loop through an identified human model H(s), a square
 m x m transfer matrix (m inputs, m outputs). The passivity gate works on a state-space
@@ -7,10 +7,14 @@ from
 
 * :func:`from_state_space`: (A, B, C, D) as given, after validation (n = 0 is allowed);
 * :func:`from_transfer_function`: an m x m grid of numerator/denominator coefficient
-  lists (descending powers of s), realised and reduced to a *minimal* realisation, whose
-  frequency response is then checked against the polynomials themselves;
+  lists (descending powers of s), realised exactly over Q as a *minimal* realisation
+  whose transfer matrix is checked to equal the given one exactly;
 * :func:`from_python`: python-control ``StateSpace`` / ``TransferFunction`` and
   scipy.signal ``lti`` objects (continuous time only).
+
+Every number denotes an exact rational (:mod:`verify.passivity.rational`: integers
+exactly, binary floats as the dyadic rationals they store, decimals of a model file as the
+decimal they spell); the model keeps it in ``LTIModel.exact`` and derives float views.
 
 Every problem with the input is a :class:`~verify.errors.VerifyInputError` whose message
 is one line naming the problem.
@@ -27,9 +31,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from gmpy2 import mpq
 from numpy.typing import ArrayLike, NDArray
 
 from verify.errors import VerifyInputError
+from verify.passivity import exact as ex
+from verify.passivity.certificate import ExactModel
+from verify.passivity.rational import float_view, rational, to_float
 
 Array = NDArray[np.float64]
 
@@ -43,21 +51,12 @@ def _short(value: Any) -> str:
 
 
 def _scalar(value: Any, where: str) -> float:
-    """A real, finite number as float; bool, text, None and complex values are refused."""
-    if isinstance(value, complex | np.complexfloating) and value.imag == 0:
-        value = value.real
-    if isinstance(value, bool | np.bool_) or not isinstance(
-        value, int | float | np.integer | np.floating
-    ):
-        raise VerifyInputError(
-            f"{where}: expected a real number, got {type(value).__name__} {_short(value)}"
-        )
-    try:
-        x = float(value)
-    except OverflowError:
-        raise VerifyInputError(f"{where}: number too large for a float") from None
+    """A real, finite number as float (frequencies, flags); the exact route uses
+    :func:`verify.passivity.rational.rational`."""
+    q = rational(value, where)
+    x = to_float(q)
     if not math.isfinite(x):
-        raise VerifyInputError(f"{where}: NaN or Inf is not allowed")
+        raise VerifyInputError(f"{where}: number too large for a float")
     return x
 
 
@@ -71,74 +70,96 @@ def _finite(value: NDArray, where: str) -> Array:
     return arr
 
 
-def _nested(value: Any, where: str) -> Any:
-    """Nested lists / tuples / arrays of real numbers as nested lists of float."""
-    if isinstance(value, np.ndarray):
-        if value.dtype.kind in "iuf":
-            return _finite(value, where).tolist()
-        value = value.tolist()  # bool, complex, object, text: checked entry by entry
-    if isinstance(value, list | tuple):
-        return [_nested(v, f"{where}[{i}]") for i, v in enumerate(value)]
-    return _scalar(value, where)
-
-
 def _matrix(value: Any, where: str) -> Array:
-    """A real finite array of any rank from nested sequences (ragged nesting refused)."""
+    """A real finite float array of any rank from nested sequences (frequency grids)."""
     if isinstance(value, np.ndarray) and value.dtype.kind in "iuf":
         return _finite(value, where)
-    nested = _nested(value, where)
-    try:
-        return np.array(nested, dtype=float)
-    except ValueError:
-        raise VerifyInputError(f"{where}: ragged nesting (rows of different lengths)") from None
+    nested, shape = _exact_nested(value, where)
+    return np.array(_map(nested, lambda q: _scalar(q, where)), dtype=float).reshape(shape)
 
 
-def _check_state_space(
-    A: ArrayLike, B: ArrayLike, C: ArrayLike, D: ArrayLike, ctx: str
-) -> tuple[Array, Array, Array, Array]:
-    """Validated float64 copies of (A, B, C, D) with consistent shapes and H square."""
-    Am, Bm, Cm, Dm = (_matrix(x, f"{ctx}: {k}") for k, x in zip("ABCD", (A, B, C, D), strict=True))
-    if Dm.ndim != 2 or Dm.size == 0:
-        raise VerifyInputError(
-            f"{ctx}: D: expected an m x m matrix with m >= 1, got shape {Dm.shape}"
-        )
-    p, q = Dm.shape
+def _map(nested: Any, f) -> Any:
+    return [_map(v, f) for v in nested] if isinstance(nested, list) else f(nested)
+
+
+def _exact_nested(value: Any, where: str) -> tuple[Any, tuple[int, ...]]:
+    """Nested lists of exact rationals and their shape (ragged nesting refused).
+
+    Every number is converted by :func:`verify.passivity.rational.rational`: integers
+    exactly, binary floats as the dyadic rationals they store, Fractions as they are.
+    """
+    if isinstance(value, np.ndarray):
+        shape = value.shape
+        if value.dtype.kind in "iuf":
+            bad = np.argwhere(~np.isfinite(value)) if value.dtype.kind == "f" else ()
+            if len(bad):
+                index = "".join(f"[{k}]" for k in bad[0])
+                raise VerifyInputError(f"{where}{index}: NaN or Inf is not allowed")
+            if value.dtype.itemsize <= 8:  # to Python int / float, exactly
+                return _map(value.tolist(), mpq), shape
+            return _map(value.tolist(), lambda x: rational(x, where)), shape
+        nested, inner = _exact_nested(value.tolist(), where)
+        return nested, shape if value.size else inner
+    if isinstance(value, list | tuple):
+        parts = [_exact_nested(v, f"{where}[{i}]") for i, v in enumerate(value)]
+        shapes = {s for _, s in parts}
+        if len(shapes) > 1:
+            raise VerifyInputError(f"{where}: ragged nesting (rows of different lengths)")
+        inner = shapes.pop() if shapes else ()
+        return [x for x, _ in parts], (len(parts), *inner)
+    return rational(value, where), ()
+
+
+def _rows(nested: Any, shape: tuple[int, ...]) -> ex.RationalMatrix:
+    """A 2-D rational matrix (list of rows) of the given 2-D shape."""
+    if shape[0] == 0:
+        return []
+    if shape[1] == 0:
+        return [[] for _ in range(shape[0])]
+    return [list(row) for row in nested]
+
+
+def _check_state_space(A: Any, B: Any, C: Any, D: Any, ctx: str) -> ExactModel:
+    """Validated exact (A, B, C, D) with consistent shapes and H square."""
+    (A, sa), (B, sb), (C, sc), (D, sd) = (
+        _exact_nested(x, f"{ctx}: {k}") for k, x in zip("ABCD", (A, B, C, D), strict=True)
+    )
+    if len(sd) != 2 or 0 in sd:
+        raise VerifyInputError(f"{ctx}: D: expected an m x m matrix with m >= 1, got shape {sd}")
+    p, q = sd
     if p != q:
         raise VerifyInputError(
             f"{ctx}: H must be square (m inputs = m outputs), but D is {p} x {q}"
         )
     m = p
-    if Am.ndim == 1 and Am.size == 0:
-        Am = Am.reshape(0, 0)
-    if Am.ndim != 2 or Am.shape[0] != Am.shape[1]:
-        raise VerifyInputError(f"{ctx}: A: expected a square n x n matrix, got shape {Am.shape}")
-    n = Am.shape[0]
-    if n == 0 and Bm.ndim == 1 and Bm.size == 0:
-        Bm = Bm.reshape(0, m)
-    if n == 0 and Cm.ndim == 1 and Cm.size == 0:
-        Cm = Cm.reshape(m, 0)
-    if Bm.ndim == 2 and Cm.ndim == 2 and Bm.shape[0] == Cm.shape[1] == n:
-        if Bm.shape[1] != Cm.shape[0]:
-            raise VerifyInputError(
-                f"{ctx}: H must be square (m inputs = m outputs), but B has {Bm.shape[1]} "
-                f"column(s) and C has {Cm.shape[0]} row(s)"
-            )
-    if Bm.shape != (n, m):
+    if sa == (0,):
+        sa = (0, 0)
+    if len(sa) != 2 or sa[0] != sa[1]:
+        raise VerifyInputError(f"{ctx}: A: expected a square n x n matrix, got shape {sa}")
+    n = sa[0]
+    if n == 0 and sb == (0,):
+        sb = (0, m)
+    if n == 0 and sc == (0,):
+        sc = (m, 0)
+    if len(sb) == 2 and len(sc) == 2 and sb[0] == sc[1] == n and sb[1] != sc[0]:
         raise VerifyInputError(
-            f"{ctx}: B: expected shape ({n}, {m}) for {n} state(s) and {m} input(s), got {Bm.shape}"
+            f"{ctx}: H must be square (m inputs = m outputs), but B has {sb[1]} "
+            f"column(s) and C has {sc[0]} row(s)"
         )
-    if Cm.shape != (m, n):
+    if sb != (n, m):
         raise VerifyInputError(
-            f"{ctx}: C: expected shape ({m}, {n}) for {m} output(s) and {n} state(s), "
-            f"got {Cm.shape}"
+            f"{ctx}: B: expected shape ({n}, {m}) for {n} state(s) and {m} input(s), got {sb}"
         )
-    return Am, Bm, Cm, Dm
+    if sc != (m, n):
+        raise VerifyInputError(
+            f"{ctx}: C: expected shape ({m}, {n}) for {m} output(s) and {n} state(s), got {sc}"
+        )
+    return ExactModel(_rows(A, sa), _rows(B, sb), _rows(C, sc), _rows(D, sd))
 
 
 def _frozen(x: Array) -> Array:
-    y = np.array(x, dtype=np.float64, copy=True)
-    y.setflags(write=False)
-    return y
+    x.setflags(write=False)
+    return x
 
 
 # --------------------------------------------------------------------------- the model
@@ -148,21 +169,28 @@ def _frozen(x: Array) -> Array:
 class LTIModel:
     """A validated continuous-time square LTI model H(s) = C (sI - A)^-1 B + D.
 
-    The matrices are read-only float64 copies. ``source`` is the file the model came from,
-    or ``"python"``; ``meta`` holds the optional descriptive fields of a model file
-    (``k_s``, ``units``, ``description``, ``reconstructed``). ``realization_error`` is set
-    for models realised from a transfer function (see the module docstring), else None.
+    ``exact`` holds the model's exact rational (A, B, C, D): the source of truth, and the
+    only data the exact decision reads. ``A``, ``B``, ``C``, ``D`` are read-only float64
+    *views* of it (rounded to nearest; +-inf where an entry is beyond the float range),
+    used only to propose (certificate candidates, witness frequencies) and to simulate.
+    Given without ``exact``, the matrices are converted exactly
+    (:mod:`verify.passivity.rational`); given with it, they are ignored and re-derived.
+
+    ``source`` is the file the model came from, or ``"python"``; ``meta`` holds the
+    optional descriptive fields of a model file (``k_s``, ``units``, ``description``,
+    ``reconstructed``); ``realization`` says how the state-space data were obtained.
     Equality is identity (the fields hold arrays).
     """
 
     name: str
-    A: Array
-    B: Array
-    C: Array
-    D: Array
+    A: Any = None
+    B: Any = None
+    C: Any = None
+    D: Any = None
     source: str = "python"
     meta: dict = field(default_factory=dict)
-    realization_error: float | None = None
+    exact: ExactModel | None = None
+    realization: str = "state space as given"
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str):
@@ -171,29 +199,40 @@ class LTIModel:
             raise VerifyInputError(f"model {self.name!r}: source must be a string")
         if not isinstance(self.meta, dict):
             raise VerifyInputError(f"model {self.name!r}: meta must be a dict")
-        A, B, C, D = _check_state_space(self.A, self.B, self.C, self.D, f"model {self.name!r}")
-        for key, value in zip("ABCD", (A, B, C, D), strict=True):
-            object.__setattr__(self, key, _frozen(value))
+        em = self.exact
+        if em is None:
+            em = _check_state_space(self.A, self.B, self.C, self.D, f"model {self.name!r}")
+        elif not isinstance(em, ExactModel):
+            raise VerifyInputError(f"model {self.name!r}: exact must be an ExactModel")
+        else:  # re-validate the exact data's shapes (no trust in a hand-built ExactModel)
+            em = _check_state_space(em.A, em.B, em.C, em.D, f"model {self.name!r}")
+        n, m = em.n, em.m
+        object.__setattr__(self, "exact", em)
+        for key, X, r, c in (("A", em.A, n, n), ("B", em.B, n, m), ("C", em.C, m, n),
+                             ("D", em.D, m, m)):
+            object.__setattr__(self, key, _frozen(float_view(X, r, c)))
         object.__setattr__(self, "meta", dict(self.meta))
-        if self.realization_error is not None:
-            err = _scalar(self.realization_error, f"model {self.name!r}: realization_error")
-            object.__setattr__(self, "realization_error", err)
 
     @property
     def n(self) -> int:
         """Number of states (0 for a static gain)."""
-        return int(self.A.shape[0])
+        return self.exact.n
 
     @property
     def m(self) -> int:
         """Number of inputs, equal to the number of outputs."""
-        return int(self.D.shape[0])
+        return self.exact.m
+
+    @property
+    def float_view_finite(self) -> bool:
+        """Whether every entry of the float view is finite (the float route can run)."""
+        return all(bool(np.all(np.isfinite(X))) for X in (self.A, self.B, self.C, self.D))
 
     def frequency_response(self, omega: ArrayLike) -> NDArray[np.complex128]:
         """H(j w) = C (j w I - A)^-1 B + D at each real w, shape (len(omega), m, m).
 
-        A frequency where j w is an eigenvalue of A (a pole on the imaginary axis) has no
-        value and raises :class:`VerifyInputError`.
+        Floating point, from the float view. A frequency where j w is an eigenvalue of A
+        (a pole on the imaginary axis) has no value and raises :class:`VerifyInputError`.
         """
         w = _matrix(omega, f"model {self.name!r}: omega")
         if w.ndim == 0:
@@ -248,8 +287,8 @@ def from_state_space(
 def _state_space_model(
     A: Any, B: Any, C: Any, D: Any, ctx: str, *, name: str, source: str, meta: dict | None
 ) -> LTIModel:
-    A, B, C, D = _check_state_space(A, B, C, D, ctx)
-    return LTIModel(name, A, B, C, D, source=source, meta=dict(meta or {}))
+    em = _check_state_space(A, B, C, D, ctx)
+    return LTIModel(name, source=source, meta=dict(meta or {}), exact=em)
 
 
 # --------------------------------------------------------------------------- transfer functions
@@ -267,8 +306,9 @@ def from_transfer_function(
 
     ``num[i][j]`` and ``den[i][j]`` are coefficient lists of element (i, j) in descending
     powers of s (leading zeros are ignored). Each element must be proper and have a
-    non-zero denominator. A constant transfer matrix gives n = 0. The realisation error
-    (module docstring) is stored in ``realization_error``; above 1e-8 the input is refused.
+    non-zero denominator. A constant transfer matrix gives n = 0. The realisation is exact
+    (:mod:`verify.passivity.realization`): no floating point between the numbers given
+    and the rational (A, B, C, D).
     """
     ctx = f"model {name!r}" if source == "python" else source
     from verify.passivity.realization import transfer_function_model
@@ -295,8 +335,9 @@ def from_python(obj: Any, *, name: str | None = None) -> LTIModel:
     which python-control calls an unspecified timebase), scipy.signal ``lti`` objects
     (``StateSpace``, ``TransferFunction``, ``ZerosPolesGain``), and an :class:`LTIModel`
     (returned as is, or renamed). Transfer functions go through
-    :func:`from_transfer_function` (minimal realisation); state-space data are kept as
-    given. Discrete-time objects and anything else raise :class:`VerifyInputError`.
+    :func:`from_transfer_function` (exact minimal realisation); state-space data are kept
+    as given. Every float denotes its exact binary value (0.1 is 3602879701896397/2^55).
+    Discrete-time objects and anything else raise :class:`VerifyInputError`.
     """
     if isinstance(obj, LTIModel):
         return obj if name is None else dataclasses.replace(obj, name=name)

@@ -1,4 +1,4 @@
-"""Model files: a human model H(s) as TOML, numbers only (issue 4, item 1).
+"""Model files: a human model H(s) as TOML, numbers only.
 
 ```toml
 name = "optional label"            # default: the file name without suffix
@@ -19,16 +19,20 @@ num = [[[1.2, 0.8], [0.05]], [[-0.05], [1.2, 0.8]]]
 den = [[[1.0, 2.0, 1.5], [1.0]], [[1.0], [1.0, 2.0, 1.5]]]
 ```
 
-Values are read with ``tomllib`` and checked to be real finite numbers (TOML's ``nan`` and
-``inf`` are refused); nothing is evaluated. Unknown keys, at the top level or inside a
-table, are refused by name. A transfer function is realised minimally and checked by
-:func:`verify.passivity.model.from_transfer_function`. Every problem is a one-line
+Every number denotes its exact value: an integer is that integer (any size), a decimal
+is the exact decimal it spells (``0.1`` is 1/10, ``2.5e-3`` is 1/400; underscores as
+TOML allows; the exponent at most 4300 in size), never a rounded binary float
+(:mod:`verify.passivity.rational`). TOML's ``nan`` and ``inf`` are refused; nothing is
+evaluated. Unknown keys, at the top level or inside a table, are refused by name. A
+transfer function is realised exactly over Q and minimally
+(:mod:`verify.passivity.realization`). Every problem is a one-line
 :class:`~verify.errors.VerifyInputError` starting with the file path.
 """
 
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -71,11 +75,14 @@ def _meta(data: dict[str, Any], source: str) -> dict[str, Any]:
             meta[key] = data[key]
     if "k_s" in data:
         k = data["k_s"]
-        if isinstance(k, bool) or not isinstance(k, int | float):
+        if isinstance(k, bool) or not isinstance(k, int | float | Fraction):
             raise VerifyInputError(f"{source}: 'k_s' must be a number, got {type(k).__name__}")
-        if not math.isfinite(k) or k <= 0:
-            raise VerifyInputError(f"{source}: 'k_s' must be a finite number > 0, got {k!r}")
-        meta["k_s"] = float(k)
+        if (isinstance(k, float) and not math.isfinite(k)) or k <= 0:
+            raise VerifyInputError(f"{source}: 'k_s' must be a finite number > 0, got {k}")
+        try:
+            meta["k_s"] = float(k)  # descriptive only (no verdict depends on it)
+        except OverflowError:
+            raise VerifyInputError(f"{source}: 'k_s' is beyond the float range") from None
     if "reconstructed" in data:
         if not isinstance(data["reconstructed"], bool):
             raise VerifyInputError(
@@ -118,4 +125,4 @@ def parse_model(data: dict[str, Any], source: str) -> LTIModel:
 def load_model(path: str | Path) -> LTIModel:
     """Read and validate a model file; every problem is a one-line VerifyInputError."""
     path = Path(path)
-    return parse_model(read_toml(path), str(path))
+    return parse_model(read_toml(path, exact=True), str(path))

@@ -28,12 +28,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import gmpy2
 import numpy as np
 import sympy as sp
 from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel
+from verify.passivity.rational import to_float
 
 
 @dataclass
@@ -49,7 +51,9 @@ def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
 
 def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     """A rational v with v^T M v < 0 (exact), from the float eigenvector; None if none found."""
-    F = np.array([[float(x) for x in row] for row in M])
+    big = max((abs(x) for row in M for x in row), default=mpq(0))
+    unit = mpq(2) ** -int(gmpy2.floor(gmpy2.log2(big))) if big else mpq(1)  # exact scaling
+    F = np.array([[to_float(x * unit) for x in row] for row in M])
     w, V = np.linalg.eigh((F + F.T) / 2)
     if w[0] >= 0:
         # the float eigenvalue may miss a tiny negative one; LDL decides below
@@ -72,7 +76,7 @@ def infinity_witness(model: ExactModel) -> Witness | None:
     v, value = found
     return Witness(
         "infinity",
-        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {float(value):.3g} < 0 at v = "
+        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {gmpy2.mpfr(value):.3g} < 0 at v = "
         f"{[str(x) for x in v]}, so H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞",
         {"v": [str(x) for x in v], "value": str(value)},
     )
@@ -138,7 +142,7 @@ def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
     return Witness(
         "frequency",
         f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
-        f"{float(value):.3g} < 0 for an exact rational vector v = a + jb",
+        f"{gmpy2.mpfr(value):.3g} < 0 for an exact rational vector v = a + jb",
         {"omega": str(w), "a": [str(x) for x in v[:m]],
          "b": [str(x) for x in v[m:]], "value": str(value)},
     )

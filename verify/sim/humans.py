@@ -125,7 +125,13 @@ class LTIHuman(Human):
         decision = decide(model)
         if decision.verdict != PASSIVE:
             return cls.from_model(model), decision
-        P = np.array([[float(v) for v in row] for row in decision.certificate.P])
+        cert = decision.certificate
+        if cert.model.n != model.n:  # not minimal: the storage is on the minimal part
+            from verify.passivity.model import LTIModel
+
+            model = LTIModel(model.name, source=model.source, meta=model.meta,
+                             exact=cert.model, realization="exact minimal part")
+        P = np.array([[float(v) for v in row] for row in cert.P]).reshape(model.n, model.n)
         return cls.from_model(model, P=P), decision
 
     def initial_state(self) -> Array:
