@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.passivity.certificate import ExactModel, exact_model
+from verify.passivity.certificate import ExactModel
 from verify.passivity.strict_json import (
     CertificateFormatError,
     fields,
@@ -108,7 +108,9 @@ def exact_of(model: LTIModel) -> ExactModel:
     The one conversion from a loaded model to the data a certificate is about: the gate
     certifies this, and a certificate's ``source`` file must yield exactly this again.
     """
-    return exact_model(model.A, model.B, model.C, model.D)
+    from verify.passivity.realization import minimal_part
+
+    return minimal_part(model.exact).model
 
 
 def shifted(model: ExactModel, margin: Fraction) -> ExactModel:
