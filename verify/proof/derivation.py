@@ -27,6 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from verify.proof.calculus import ddt
+from verify.proof.dynamics import check_dynamics
 from verify.proof.expr import (
     MATRIX,
     SCALAR,
@@ -50,6 +51,11 @@ class Condition:
     lhs: Expr
     rhs: Expr
 
+    def __post_init__(self) -> None:
+        for side in (self.lhs, self.rhs):
+            if not isinstance(side, Expr) or side.shape != SCALAR:
+                raise ProofSyntaxError(f"condition '{self.label}' must equate two scalars")
+
     @property
     def difference(self) -> Expr:
         return self.lhs - self.rhs
@@ -65,6 +71,8 @@ class Assumption:
     cite: str = ""
 
     def __post_init__(self) -> None:
+        if not isinstance(self.expr, Expr):
+            raise ProofSyntaxError(f"assumption '{self.label}' needs an expression")
         if self.kind in ("pd", "psd") and self.expr.shape != MATRIX:
             raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a matrix")
         if self.kind in ("pos", "nonneg") and self.expr.shape != SCALAR:
@@ -79,6 +87,7 @@ class Context:
     def __init__(self, name: str):
         self.name = name
         self._dynamics: dict[int, Expr | None] = {}
+        self._declared: set[int] = set()
         self.variables: list[Variable] = []
 
     # -- variables ----------------------------------------------------------------------
@@ -112,16 +121,34 @@ class Context:
 
     # -- dynamics -----------------------------------------------------------------------
     def dynamics(self, variable: Expr, derivative: Expr) -> None:
-        """Declare d/dt of a variable (for ``ddt``)."""
-        v = _variable(variable)
-        derivative = as_expr(derivative)
-        if derivative.shape != variable.shape:
-            raise ProofSyntaxError(f"derivative of {v.name} has the wrong shape")
-        self._dynamics[v.uid] = derivative
+        """Declare d/dt of a variable (for ``ddt``), once.
+
+        The derivative is checked exactly to be tangent: R·W with W skew for a rotation,
+        orthogonal to u for a unit vector, symmetric for a symmetric matrix; an angle
+        takes a scalar rate ω (then d/dt cos θ = -ω sin θ).
+        """
+        v = self._own(variable)
+        check_dynamics(v, as_expr(derivative))
+        self._dynamics[v.uid] = as_expr(derivative)
+        self._declared.add(v.uid)
 
     def constant(self, *variables: Expr) -> None:
+        """Declare variables constant in time (once each)."""
         for variable in variables:
-            self._dynamics[_variable(variable).uid] = None
+            v = self._own(variable)
+            self._dynamics[v.uid] = None
+            self._declared.add(v.uid)
+
+    def _own(self, variable: Expr) -> Variable:
+        v = _variable(variable)
+        if all(v is not w for w in self.variables):
+            raise ProofSyntaxError(f"{v.name} is not a variable of context {self.name!r}")
+        if v.uid in self._declared:
+            raise ProofSyntaxError(
+                f"the dynamics of {v.name} are already declared; each variable's dynamics "
+                "(or constancy) is declared once"
+            )
+        return v
 
     def ddt(self, e: Expr) -> Expr:
         """Time derivative of ``e`` along the declared dynamics (product rule)."""

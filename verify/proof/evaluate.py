@@ -14,6 +14,7 @@ parametrisations of :class:`~verify.proof.expr.Variable`) and what lambda_min is
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
+import math
 from fractions import Fraction
 from typing import Any
 
@@ -22,6 +23,18 @@ import numpy as np
 from verify.proof.expr import Expr, ProofSyntaxError, Variable
 
 Value = Any
+
+
+def to_float(value: Fraction | int) -> float:
+    """A rational as the nearest float; beyond the float range +-inf (never OverflowError).
+
+    Only the untrusted numerical side converts to float; an infinite or NaN value there
+    simply yields no candidate counterexample.
+    """
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
 
 
 def evaluate(e: Expr, algebra: Algebra, env: Mapping[int, Value]) -> Value:
@@ -53,6 +66,9 @@ def _apply(node: Expr, alg: Algebra, env, ev: Callable[[Expr], Value]) -> Value:
     if op == "zero":
         z = alg.const(Fraction(0))
         return {(): z, (3,): [z] * 3, (3, 3): [[z] * 3 for _ in range(3)]}[node.shape]
+    if op == "chart_gap":
+        zero, one = alg.const(Fraction(0)), alg.const(Fraction(1))
+        return (-one, zero) if node.data == "angle" else [zero, zero, one]
     if op == "lambda_min":
         return alg.lambda_min(node, ev(node.args[0]))
     a = [ev(x) for x in node.args]
@@ -178,7 +194,7 @@ class NumpyAlgebra(Algebra):
         self.size = size
 
     def const(self, value: Fraction) -> Value:
-        return np.full(self.size, float(value))
+        return np.full(self.size, to_float(value))
 
     def lambda_min(self, node: Expr, matrix: Value) -> Value:
         stacked = np.stack([np.stack(row, axis=-1) for row in matrix], axis=-2)
