@@ -301,6 +301,8 @@ def _validate(d: Derivation) -> None:
     builders allow, and every tree must be well formed."""
     if not isinstance(d, Derivation):
         raise ProofSyntaxError(f"check() takes a Derivation, got {type(d).__name__}")
+    if not all(isinstance(x, str) for x in (d.name, d.statement, d.cite)):
+        raise ProofSyntaxError("a derivation's name, statement and cite are strings")
     if not isinstance(d.start, Expr):
         raise ProofSyntaxError(f"{d.name}: the start is not an expression")
     if not all(isinstance(c, Condition) for c in d.where) or not all(
@@ -373,7 +375,7 @@ def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
     _validate(d)
     steps = [check_step(d, i, cfg) for i in range(len(d.steps))]
     problems = [_problem(d, step) for step in d.steps]
-    conditions, assumptions = _union(problems)
+    conditions, _ = _union(problems)
     joint = ""
     if steps and all(s.verdict == VERIFIED for s in steps):
         try:

@@ -19,8 +19,7 @@ import numpy as np
 import sympy as sp
 from sympy import QQ
 
-from verify.proof.evaluate import Algebra
-from verify.proof.evaluate import to_float
+from verify.proof.evaluate import Algebra, to_float
 from verify.proof.falsify import REJECTED, Point, _gen_index, _solve_parameter
 from verify.proof.problem import StepProblem, flatten, principal_minors
 

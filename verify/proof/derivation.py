@@ -52,6 +52,8 @@ class Condition:
     rhs: Expr
 
     def __post_init__(self) -> None:
+        if not isinstance(self.label, str):
+            raise ProofSyntaxError("a condition's label is a string")
         for side in (self.lhs, self.rhs):
             if not isinstance(side, Expr) or side.shape != SCALAR:
                 raise ProofSyntaxError(f"condition '{self.label}' must equate two scalars")
@@ -71,6 +73,8 @@ class Assumption:
     cite: str = ""
 
     def __post_init__(self) -> None:
+        if not isinstance(self.label, str) or not isinstance(self.cite, str):
+            raise ProofSyntaxError("an assumption's label and cite are strings")
         if not isinstance(self.expr, Expr):
             raise ProofSyntaxError(f"assumption '{self.label}' needs an expression")
         if self.kind in ("pd", "psd") and self.expr.shape != MATRIX:

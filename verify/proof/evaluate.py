@@ -13,8 +13,8 @@ parametrisations of :class:`~verify.proof.expr.Variable`) and what lambda_min is
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
 import math
+from collections.abc import Callable, Mapping
 from fractions import Fraction
 from typing import Any
 
