@@ -25,7 +25,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass, field
 
-from verify.proof.confirm import confirm
+from verify.proof.confirm import confirm, exact_witness
 from verify.proof.derivation import RELATIONS, Assumption, Condition, Derivation, Step
 from verify.proof.expr import SCALAR, Expr, ProofSyntaxError, structural_key, validate_tree
 from verify.proof.falsify import SearchReport, SearchSettings, random_search, search
@@ -228,7 +228,7 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
     elif report.feasible == 0:
         verdict = INCONCLUSIVE
         exact_text += ("; but no sampled point satisfies the side conditions and "
-                       "assumptions (they may be unsatisfiable)")
+                       "assumptions exactly (they may be unsatisfiable)")
     elif report.undecided:
         verdict = INCONCLUSIVE
         exact_text += "; but a numerical violation was seen (not decided exactly)"
@@ -261,7 +261,13 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
 
 
 def _decide(step: Step, problem: StepProblem, settings: SearchSettings):
-    """Exact check in every chart, vacuity, and the searches (in every chart if needed)."""
+    """Exact check in every chart, vacuity, the searches, and an exact witness.
+
+    Returns (exact ok, text, search report, counterexample, why vacuous). The premises
+    count as satisfiable only if a sampled point, rounded to rationals with the
+    conditions solved exactly, meets every declaration exactly (:func:`exact_witness`);
+    otherwise ``report.feasible`` is set to 0.
+    """
     pieces: list[StepProblem] = []
     if problem.conditions:
         found = _pieces(problem)
@@ -278,21 +284,36 @@ def _decide(step: Step, problem: StepProblem, settings: SearchSettings):
                        else "; " + gap_text)
     vacuous = _vacuity(problem, pieces)
     report, counterexample = search(problem, settings, confirm)
-    searched = {id(problem)}
+    runs = [(problem, report)]
     for piece in failing:  # a counterexample may sit only where a chart does not reach
         if counterexample is not None:
             break
         more, counterexample = search(piece, settings, confirm)
-        report.merge(more)
-        searched.add(id(piece))
-    if ok and not vacuous and report.feasible == 0:
+        runs.append((piece, more))
+    if ok and not vacuous and counterexample is None:
+        witnessed = _witnessed(runs)
         for piece in pieces:  # the conditions may hold only at a chart's missing point
-            if id(piece) not in searched and not piece.conditions_empty:
+            if witnessed or counterexample is not None:
+                break
+            if all(piece is not p for p, _ in runs) and not piece.conditions_empty:
                 more, counterexample = search(piece, settings, confirm)
-                report.merge(more)
-                if report.feasible or counterexample is not None:
-                    break
+                runs.append((piece, more))
+                witnessed = _witnessed(runs[-1:])
+        if not witnessed:
+            for _, r in runs:
+                r.feasible = 0
+    for _, more in runs[1:]:
+        report.merge(more)
     return ok, exact_text, report, counterexample, vacuous
+
+
+def _witnessed(runs: list) -> bool:
+    """Some sampled point of some run meets every declaration exactly."""
+    return any(exact_witness(piece, point)
+               for piece, r in runs for point in r.feasible_points[:WITNESS_TRIES])
+
+
+WITNESS_TRIES = 4
 
 
 def _validate(d: Derivation) -> None:
@@ -330,8 +351,8 @@ def _validate(d: Derivation) -> None:
         previous = step.rhs
     if {"<=", ">="} <= relations:
         raise ProofSyntaxError(f"{d.name}: a chain cannot mix <= and >=")
-    for c in d.where:
-        validate_tree(c.lhs, c.rhs)
+    for step in d.steps:  # conditions, assumptions, terms and premises too
+        validate_tree(*_problem(d, step).all_exprs)
 
 
 def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> str:
@@ -353,10 +374,10 @@ def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> s
             continue
         report = SearchReport()
         random_search(piece, cfg, report)
-        if report.feasible:
+        if _witnessed([(piece, report)]):
             return ""
     return ("no sampled point satisfies the steps' conditions and assumptions together "
-            "(they may be jointly unsatisfiable)")
+            "exactly (they may be jointly unsatisfiable)")
 
 
 def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:

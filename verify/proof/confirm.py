@@ -119,6 +119,8 @@ def exact_point(problem: StepProblem, point: Point, limit: int = 10**6) -> Exact
     for poly in problem.condition_polynomials:
         choice = _solve_parameter(problem, poly, solved)
         if choice is None:
+            if solved and _solve_parameter(problem, poly) is not None:
+                continue  # fixed by earlier conditions; declarations_hold decides
             return None
         gen = choice[0]
         solved.add(gen)
@@ -252,6 +254,19 @@ def _confirm_at(problem: StepProblem, point: Point, limit: int) -> Counterexampl
             return Counterexample(_describe(problem, xp), sign, entry,
                                   [a.describe() for a in xp.algebraic.values()])
     return REJECTED if decided else None
+
+
+def exact_witness(problem: StepProblem, point: Point) -> bool:
+    """A point near ``point`` (rationals, conditions solved exactly) meets every
+    declaration, condition and assumption exactly: the premises are not vacuous."""
+    for limit in (8, 100, 10**4, 10**6):
+        xp = exact_point(problem, point, limit)
+        if xp is None:
+            continue
+        atoms = _lambda_min_roots(problem, xp)
+        if atoms is not None and declarations_hold(problem, xp, atoms):
+            return True
+    return False
 
 
 def positive_gen(problem: StepProblem, gen) -> bool:

@@ -47,7 +47,8 @@ class SearchReport:
     ipopt_runs: int = 0
     worst_violation: float = -math.inf
     candidates: list[Point] = field(default_factory=list)
-    feasible: int = 0  # sampled points meeting every condition and assumption
+    feasible: int = 0  # sampled points meeting every condition and assumption (floats)
+    feasible_points: list[Point] = field(default_factory=list)  # a few of them
     rejected: int = 0  # numerical violations that exact arithmetic showed to be rounding
     undecided: int = 0  # numerical violations exact arithmetic could not decide
 
@@ -58,6 +59,7 @@ class SearchReport:
         self.worst_violation = max(self.worst_violation, other.worst_violation)
         self.candidates += other.candidates
         self.feasible += other.feasible
+        self.feasible_points += other.feasible_points
         self.rejected += other.rejected
         self.undecided += other.undecided
 
@@ -160,6 +162,8 @@ def apply_conditions(problem: StepProblem, params: dict, rng) -> np.ndarray:
     for poly in problem.condition_polynomials:
         choice = _solve_parameter(problem, poly, solved)
         if choice is None:
+            if solved and _solve_parameter(problem, poly) is not None:
+                continue  # fixed by earlier conditions; the joint check below decides
             return np.zeros(n, dtype=bool)
         gen, uid, i = choice
         solved.add(gen)
@@ -239,6 +243,7 @@ def random_search(problem: StepProblem, cfg: SearchSettings, report: SearchRepor
     ok = apply_conditions(problem, params, rng) & assumptions_hold(problem, params)
     report.random_points += int(ok.sum())
     report.feasible += int(ok.sum())
+    report.feasible_points += [_point(params, int(k)) for k in np.flatnonzero(ok)[:3]]
     if not ok.any():
         return
     viol = np.where(ok, relative_violation(problem, params), -np.inf)
@@ -283,6 +288,8 @@ def hypothesis_search(problem: StepProblem, cfg: SearchSettings, report: SearchR
                 if not assumptions_hold(problem, params)[0]:
                     return False
                 feasible[0] += 1
+                if len(report.feasible_points) < 6:
+                    report.feasible_points.append(_point(params, 0))
                 return bool(relative_violation(problem, params)[0] > 0)
         except (ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError):
             return False
