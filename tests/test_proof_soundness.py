@@ -489,6 +489,7 @@ d = Derivation("cyclic", tr(R), ctx).equals(tr(R.T), by_algebra())
         ("import sys\nsys.exit(0)\n", "exited"),
         ("import os\nos._exit(0)\n", "exited"),
         ("raise SystemExit\n", "exited"),
+        ("import posix\nposix._exit(0)\n", "exited"),
         ("ctx.dynamics(R, R * hat(w))\nctx.constant(R)\n", "already declared"),
         ("from verify.proof import Nonneg\nNonneg(tr(R), 'trust me')\n", "kernel"),
         ("d.start = tr(R) + 1\n", "does not start"),
@@ -498,7 +499,14 @@ d = Derivation("cyclic", tr(R), ctx).equals(tr(R.T), by_algebra())
             "    def describe(self):\n"
             "        raise SystemExit(0)\n"
             "d = Derivation('evil', tr(R), ctx).equals(tr(R.T), Evil())\n",
-            "exited",
+            "justification of verify.proof",
+        ),
+        (
+            "class Note:\n"
+            "    def __format__(self, spec):\n"
+            "        raise SystemExit(0)\n"
+            "d = Derivation('evil', tr(R), ctx).equals(tr(R.T), by_algebra(Note()))\n",
+            "exited while checking",
         ),
     ],
 )
@@ -539,3 +547,38 @@ def test_positive_declared_gain_used_with_a_true_bound_still_verifies():
     k, x = ctx.scalar("k", positive=True), ctx.scalar("x")
     d = Derivation("k x² ≥ 0", k * x * x, ctx).ge(0, by_bound(positive(k) * square(x)))
     assert _verdict(d) == "verified"
+
+
+def test_lambda_min_shift_and_scalar_matrices():
+    ctx = Context("spectral")
+    A, x = ctx.symmetric("A"), ctx.scalar("x")
+    for lhs, rhs in [
+        (lambda_min(A + 3 * I3), lambda_min(A) + 3),
+        (lambda_min(x * I3), x),
+        (lambda_min(Fraction(1, 2) * A - I3), Fraction(1, 2) * lambda_min(A) - 1),
+    ]:
+        assert _verdict(Derivation("shift", lhs, ctx).equals(rhs, by_algebra())) == "verified"
+    wrong = Derivation("shift", lambda_min(A + 3 * I3), ctx).equals(lambda_min(A) + 2,
+                                                                      by_algebra())
+    assert _verdict(wrong) != "verified"
+
+
+def test_a_gain_used_as_a_constant_cannot_get_dynamics_later():
+    ctx = Context("dyn")
+    k, R, w = ctx.scalar("k"), ctx.rotation("R"), ctx.vector("ω")
+    ctx.dynamics(R, R * hat(w))
+    ctx.ddt(k * tr(R))
+    with pytest.raises(ProofSyntaxError, match="already declared"):
+        ctx.dynamics(k, tr(R))
+
+
+def test_subclassed_derivations_and_steps_are_refused():
+    ctx = Context("bypass")
+    x = ctx.scalar("x")
+
+    class Sneaky(Derivation):
+        pass
+
+    d = Sneaky("s", x, ctx).equals(x, by_algebra())
+    with pytest.raises(ProofSyntaxError, match="takes a Derivation"):
+        check(d, SMALL)

@@ -316,27 +316,47 @@ def _witnessed(runs: list) -> bool:
 WITNESS_TRIES = 4
 
 
+def _snapshot(d: Derivation) -> Derivation:
+    """A private copy of the chain, so that what is validated is what is checked."""
+    if type(d) is not Derivation:
+        raise ProofSyntaxError(f"check() takes a Derivation, got {type(d).__name__}")
+    try:
+        steps = [Step(s.relation, s.lhs, s.rhs, s.because, tuple(s.where), s.note)
+                 if type(s) is Step else s for s in d.steps]
+        copy = Derivation(d.name, d.start, d.context, tuple(d.where), tuple(d.assumes),
+                          d.statement, d.cite)
+    except ProofSyntaxError:
+        raise
+    except Exception as exc:
+        raise ProofSyntaxError(f"malformed derivation: {type(exc).__name__}: {exc}") from None
+    copy.steps = steps
+    return copy
+
+
 def _validate(d: Derivation) -> None:
     """Refuse a derivation not built through the API: each step must start where the
     previous one ended (the first at ``start``), relations and shapes must be those the
     builders allow, and every tree must be well formed."""
-    if not isinstance(d, Derivation):
+    if type(d) is not Derivation:  # a subclass could answer differently on each read
         raise ProofSyntaxError(f"check() takes a Derivation, got {type(d).__name__}")
     if not all(isinstance(x, str) for x in (d.name, d.statement, d.cite)):
         raise ProofSyntaxError("a derivation's name, statement and cite are strings")
     if not isinstance(d.start, Expr):
         raise ProofSyntaxError(f"{d.name}: the start is not an expression")
-    if not all(isinstance(c, Condition) for c in d.where) or not all(
-        isinstance(a, Assumption) for a in d.assumes
+    if not all(type(c) is Condition for c in d.where) or not all(
+        type(a) is Assumption for a in d.assumes
     ):
         raise ProofSyntaxError(f"{d.name}: where= takes conditions, assumes= assumptions")
     previous, relations = d.start, set()
     for i, step in enumerate(d.steps, 1):
-        if not isinstance(step, Step) or step.relation not in RELATIONS:
+        if type(step) is not Step or step.relation not in RELATIONS:
             raise ProofSyntaxError(f"{d.name}: step {i} is not a step (use equals/le/ge)")
-        if not isinstance(step.because, Justification):
-            raise ProofSyntaxError(f"{d.name}: step {i} needs a justification")
-        if not all(isinstance(c, Condition) for c in step.where):
+        if not isinstance(step.because, Justification) or not type(
+            step.because
+        ).__module__.startswith("verify."):
+            raise ProofSyntaxError(f"{d.name}: step {i} needs a justification of "
+                                   "verify.proof (by_algebra, by_bound, by_citation)")
+        if not all(type(c) is Condition for c in step.where):
             raise ProofSyntaxError(f"{d.name}: step {i}: where= takes conditions")
         validate_tree(step.lhs, step.rhs)
         if step.lhs is not previous and structural_key(step.lhs) != structural_key(previous):
@@ -393,6 +413,7 @@ def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
     """Check every step of ``d``, then that its conditions and assumptions can hold together."""
     cfg = cfg or SearchSettings()
     start = time.perf_counter()
+    d = _snapshot(d)
     _validate(d)
     steps = [check_step(d, i, cfg) for i in range(len(d.steps))]
     problems = [_problem(d, step) for step in d.steps]

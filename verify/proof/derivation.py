@@ -36,6 +36,7 @@ from verify.proof.expr import (
     Variable,
     as_expr,
     var,
+    variables_of,
     zero,
 )
 from verify.proof.justify import Justification
@@ -149,14 +150,21 @@ class Context:
             raise ProofSyntaxError(f"{v.name} is not a variable of context {self.name!r}")
         if v.uid in self._declared:
             raise ProofSyntaxError(
-                f"the dynamics of {v.name} are already declared; each variable's dynamics "
-                "(or constancy) is declared once"
+                f"the dynamics of {v.name} are already declared (or used by ddt); each "
+                "variable's dynamics (or constancy) is declared once, before ddt uses it"
             )
         return v
 
     def ddt(self, e: Expr) -> Expr:
-        """Time derivative of ``e`` along the declared dynamics (product rule)."""
-        return ddt(e, self._dynamics)
+        """Time derivative of ``e`` along the declared dynamics (product rule).
+
+        Every variable of ``e`` counts as declared from then on (a gain used as a
+        constant cannot be given dynamics later), so all derivatives of a context
+        use the same dynamics.
+        """
+        out = ddt(e, self._dynamics)
+        self._declared.update(v.uid for v in variables_of(e))
+        return out
 
     # -- side conditions and assumptions ---------------------------------------------------
     def condition(self, label: str, lhs: Expr, rhs: Expr | int = 0) -> Condition:

@@ -198,5 +198,10 @@ class NumpyAlgebra(Algebra):
 
     def lambda_min(self, node: Expr, matrix: Value) -> Value:
         stacked = np.stack([np.stack(row, axis=-1) for row in matrix], axis=-2)
-        return np.linalg.eigvalsh(0.5 * (stacked + np.swapaxes(stacked, -1, -2)))[..., 0]
+        sym = 0.5 * (stacked + np.swapaxes(stacked, -1, -2))
+        finite = np.all(np.isfinite(sym), axis=(-1, -2))
+        out = np.full(sym.shape[:-2], np.nan)
+        if finite.any():  # inf/NaN entries (huge constants) give NaN, not LinAlgError
+            out[finite] = np.linalg.eigvalsh(sym[finite])[..., 0]
+        return out
 

@@ -446,10 +446,10 @@ def validate_tree(*exprs: Any) -> None:
     mis-evaluation.
     """
     for e in exprs:
-        if not isinstance(e, Expr):
+        if type(e) is not Expr:
             raise ProofSyntaxError(f"expected an expression, got {type(e).__name__}")
     for e in nodes(*exprs):
-        if not all(isinstance(a, Expr) for a in e.args) or not _well_formed(e):
+        if not all(type(a) is Expr for a in e.args) or not _well_formed(e):
             raise ProofSyntaxError(f"malformed expression node {e.op!r} (build expressions "
                                    "with operators and the functions of verify.proof)")
 
@@ -458,7 +458,7 @@ def _well_formed(e: Expr) -> bool:
     op, args, shape = e.op, e.args, e.shape
     shapes = [a.shape for a in args]
     if op == "var":
-        return not args and isinstance(e.data, Variable) and shape == e.data.shape
+        return not args and type(e.data) is Variable and shape == e.data.shape
     if op == "const":
         return not args and shape == SCALAR and type(e.data) is Fraction
     if op in ("identity", "zero"):

@@ -77,7 +77,7 @@ def _issue(*args, **kwargs) -> Nonneg:
 
 def issued(term: object) -> bool:
     """``term`` came from a kernel constructor and has not been altered since."""
-    return isinstance(term, Nonneg) and _ISSUED.get(term) == _fingerprint(term)
+    return type(term) is Nonneg and _ISSUED.get(term) == _fingerprint(term)
 
 
 def _require_issued(*terms: object) -> None:

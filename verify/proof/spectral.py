@@ -4,14 +4,16 @@ The exact algebra cannot hold lambda_min(M) as a rational function; it holds an 
 generator per atom. Two atoms whose arguments have the same spectrum up to a positive
 factor c (lambda_min(M) and lambda_min(sym M); lambda_min(2A) and lambda_min(A);
 lambda_min(Q A Q^T) and lambda_min(A) for a rotation Q) are the same number up to that
-factor, and are given one generator here, so that identities between them are decided.
+factor (and a shift s: lambda_min(A + s I) = lambda_min(A) + s), and are given one
+generator here, so that identities between them are decided.
 
-The test is exact: the characteristic polynomials of the symmetric parts agree after
-scaling, i.e. tr X = c tr Y, e2(X) = c^2 e2(Y), det X = c^3 det Y as rational functions
-of the parameters (e2 the sum of the principal 2x2 minors). Equal characteristic
-polynomials give equal eigenvalues with multiplicity, so lambda_min(X) = c lambda_min(Y)
-for c > 0 (Horn and Johnson, *Matrix Analysis*, 2nd ed., Sec. 1.2). A float probe only
-proposes which pairs to compare and the factor c; it never decides.
+The test is exact: sym X - s I and c sym Y have the same characteristic polynomial,
+i.e. tr, e2 (the sum of the principal 2x2 minors) and det agree, as rational functions
+of the parameters. Equal characteristic polynomials give equal eigenvalues with
+multiplicity, so lambda_min(X) = c lambda_min(Y) + s for c > 0 (Horn and Johnson,
+*Matrix Analysis*, 2nd ed., Sec. 1.2). The identities hold on the charts' dense image,
+hence everywhere by continuity. A float probe only proposes which pairs to compare and
+(c, s); it never decides. sym M = a I exactly gives lambda_min(M) = a.
 
 A constant argument (no parameter, no other atom) with a rational smallest eigenvalue
 becomes that constant, so that e.g. lambda_min(I) = 5 is seen to be false.
@@ -111,25 +113,40 @@ def _constant_lambda_min(entries: list[KnownFraction]) -> Fraction | None:
     return Fraction(int(smallest.p), int(smallest.q))
 
 
-def _scale_of(x: np.ndarray | None, y: np.ndarray | None) -> Fraction | None:
-    """A positive factor c with spectrum(x) = c spectrum(y) at the probe, if one fits."""
+def _affine_fit(x: np.ndarray | None, y: np.ndarray | None):
+    """(c, s), c > 0, with spectrum(x) = c spectrum(y) + s at the probe, if one fits."""
     if x is None or y is None:
         return None
-    nx, ny = float(np.linalg.norm(x)), float(np.linalg.norm(y))
-    if ny == 0.0:
-        return Fraction(1) if nx == 0.0 else None
+    dx, dy = x - x.mean(), y - y.mean()
+    nx, ny = float(np.linalg.norm(dx)), float(np.linalg.norm(dy))
+    if ny == 0.0 or nx == 0.0:
+        return None  # a multiple of I: handled exactly by _scalar_multiple
     c = nx / ny
-    if c <= 0 or not np.isfinite(c):
+    shift = float(x.mean() - c * y.mean())
+    if not (np.isfinite(c) and np.isfinite(shift)):
         return None
-    if np.max(np.abs(x - c * y)) > PROBE_TOLERANCE * (1 + nx):
+    if np.max(np.abs(x - c * y - shift)) > PROBE_TOLERANCE * (1 + np.abs(x).max()):
         return None
-    return Fraction(c).limit_denominator(10**6)
+    return Fraction(c).limit_denominator(10**6), Fraction(shift).limit_denominator(10**6)
 
 
-def _same_up_to(x: list[KnownFraction], y: list[KnownFraction], c: Fraction) -> bool:
-    """Exact: charpoly(sym X)(lam) = c^3 charpoly(sym Y)(lam / c)."""
-    cx, cy = charpoly_coefficients(x), charpoly_coefficients(y)
+def _shifted(e: list[KnownFraction], s: Fraction) -> list[KnownFraction]:
+    return [e[0] - s, e[1] - s, e[2] - s, *e[3:]]
+
+
+def _same_up_to(x: list[KnownFraction], y: list[KnownFraction], c: Fraction,
+                s: Fraction) -> bool:
+    """Exact: sym X - s I and c sym Y have one characteristic polynomial."""
+    cx, cy = charpoly_coefficients(_shifted(x, s)), charpoly_coefficients(y)
     return all((a - b * c**k).is_zero() for k, (a, b) in enumerate(zip(cx, cy, strict=True), 1))
+
+
+def _scalar_multiple(e: list[KnownFraction]) -> KnownFraction | None:
+    """a when sym M = a I exactly (then lambda_min(M) = a)."""
+    a11, a22, a33, *off = e
+    if all(x.is_zero() for x in off) and (a11 - a22).is_zero() and (a11 - a33).is_zero():
+        return a11
+    return None
 
 
 def canonical(atoms: list[Atom], matrix, generator: KnownFraction) -> Atom:
@@ -138,11 +155,14 @@ def canonical(atoms: list[Atom], matrix, generator: KnownFraction) -> Atom:
     const = _constant_lambda_min(entries)
     if const is not None:
         return Atom(constant(const, generator.den), entries, None)
+    diagonal = _scalar_multiple(entries)
+    if diagonal is not None:
+        return Atom(diagonal, entries, None)
     probe = _spectrum(entries)
     for known in atoms:
-        c = _scale_of(probe, known.probe)
-        if c is not None and _same_up_to(entries, known.entries, c):
-            return Atom(known.value * c, entries, probe)
+        fit = _affine_fit(probe, known.probe)
+        if fit is not None and fit[0] > 0 and _same_up_to(entries, known.entries, *fit):
+            return Atom(known.value * fit[0] + fit[1], entries, probe)
     atom = Atom(generator, entries, probe)
     atoms.append(atom)
     return atom

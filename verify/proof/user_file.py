@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import runpy
+import sys
 import traceback
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -23,18 +24,21 @@ from verify.proof.expr import ProofSyntaxError
 @contextmanager
 def contained(path: Path, stage: str) -> Iterator[None]:
     """Run the user's code (loading, or checking objects it made) as a malformed-file
-    risk: an exit (``sys.exit``, ``exit()``, ``os._exit``, ``raise SystemExit``) or an
+    risk: an exit (``sys.exit``, ``exit()``, ``os._exit``, ``posix._exit``,
+    ``raise SystemExit``) or an
     exception raised from the file's own code becomes one VerifyInputError line.
 
     The file is Python with the verifier's privileges (see ``verify/proof/TRUSTED.md``):
     this catches a file that stops the run, not one that rewrites the verifier.
     """
-    saved = os._exit
+    modules = [os] + [m for m in (sys.modules.get("posix"), sys.modules.get("nt")) if m]
+    saved = [(m, m._exit) for m in modules]
 
     def refuse_exit(code: int = 0) -> None:
         raise SystemExit(code)
 
-    os._exit = refuse_exit
+    for m in modules:
+        m._exit = refuse_exit
     try:
         yield
     except VerifyInputError:
@@ -54,7 +58,8 @@ def contained(path: Path, stage: str) -> Iterator[None]:
         where = f"{path}:{frames[-1].lineno}" if frames else str(path)
         raise VerifyInputError(f"{where}: {type(exc).__name__}: {exc}") from None
     finally:
-        os._exit = saved
+        for m, f in saved:
+            m._exit = f
 
 
 def load_derivations(path: Path) -> list[Derivation]:
