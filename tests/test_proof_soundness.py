@@ -582,3 +582,26 @@ def test_subclassed_derivations_and_steps_are_refused():
     d = Sneaky("s", x, ctx).equals(x, by_algebra())
     with pytest.raises(ProofSyntaxError, match="takes a Derivation"):
         check(d, SMALL)
+
+
+def test_deep_and_too_deep_expressions_are_decided_or_refused():
+    ctx = Context("crash")
+    x = ctx.scalar("x")
+    e = x
+    for _ in range(900):
+        e = e + x
+    assert _verdict(Derivation("deep", e, ctx).equals(901 * x, by_algebra())) == "verified"
+    for _ in range(200):
+        e = e + x
+    with pytest.raises(ProofSyntaxError, match="nested more than"):
+        check(Derivation("too deep", e, ctx).equals(1101 * x, by_algebra()), SMALL)
+
+
+def test_huge_constants_inside_lambda_min():
+    ctx = Context("crash")
+    A = ctx.symmetric("A")
+    big = 10**400
+    d = Derivation("big", lambda_min(big * A), ctx).equals(big * lambda_min(A), by_algebra())
+    assert check(d, SMALL).verdict in ("verified", "inconclusive")
+    wrong = Derivation("big", lambda_min(big * A), ctx).equals(lambda_min(A), by_algebra())
+    assert check(wrong, SMALL).verdict != "verified"

@@ -22,12 +22,20 @@ conclusion states that union. ``verify/proof/TRUSTED.md`` lists what this rests 
 
 from __future__ import annotations
 
+import sys
 import time
 from dataclasses import dataclass, field
 
 from verify.proof.confirm import confirm, exact_witness
 from verify.proof.derivation import RELATIONS, Assumption, Condition, Derivation, Step
-from verify.proof.expr import SCALAR, Expr, ProofSyntaxError, structural_key, validate_tree
+from verify.proof.expr import (
+    MAX_DEPTH,
+    SCALAR,
+    Expr,
+    ProofSyntaxError,
+    structural_key,
+    validate_tree,
+)
 from verify.proof.falsify import SearchReport, SearchSettings, random_search, search
 from verify.proof.justify import KERNEL, ByAlgebra, ByBound, ByCitation, Justification, issued
 from verify.proof.problem import StepProblem
@@ -411,6 +419,15 @@ def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
 
 def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
     """Check every step of ``d``, then that its conditions and assumptions can hold together."""
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, 10 * MAX_DEPTH))  # trees are walked recursively
+    try:
+        return _check(d, cfg)
+    finally:
+        sys.setrecursionlimit(limit)
+
+
+def _check(d: Derivation, cfg: SearchSettings | None) -> DerivationResult:
     cfg = cfg or SearchSettings()
     start = time.perf_counter()
     d = _snapshot(d)

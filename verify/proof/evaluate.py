@@ -42,14 +42,20 @@ def evaluate(e: Expr, algebra: Algebra, env: Mapping[int, Value]) -> Value:
     cache: dict[int, Value] = {}
 
     def ev(node: Expr) -> Value:
-        key = id(node)
-        if key in cache:
-            return cache[key]
-        out = _apply(node, algebra, env, ev)
-        cache[key] = out
-        return out
+        return cache[id(node)]
 
-    return ev(e)
+    # children before parents, without recursion (a deep tree must not exhaust the stack)
+    stack: list[tuple[Expr, bool]] = [(e, False)]
+    while stack:
+        node, expanded = stack.pop()
+        if id(node) in cache:
+            continue
+        if expanded or not node.args:
+            cache[id(node)] = _apply(node, algebra, env, ev)
+        else:
+            stack.append((node, True))
+            stack.extend((a, False) for a in node.args if id(a) not in cache)
+    return cache[id(e)]
 
 
 def _apply(node: Expr, alg: Algebra, env, ev: Callable[[Expr], Value]) -> Value:

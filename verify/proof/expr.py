@@ -448,10 +448,18 @@ def validate_tree(*exprs: Any) -> None:
     for e in exprs:
         if type(e) is not Expr:
             raise ProofSyntaxError(f"expected an expression, got {type(e).__name__}")
-    for e in nodes(*exprs):
+    depth: dict[int, int] = {}
+    for e in reversed(list(nodes(*exprs))):  # children before parents
         if not all(type(a) is Expr for a in e.args) or not _well_formed(e):
             raise ProofSyntaxError(f"malformed expression node {e.op!r} (build expressions "
                                    "with operators and the functions of verify.proof)")
+        depth[id(e)] = 1 + max((depth.get(id(a), 0) for a in e.args), default=0)
+        if depth[id(e)] > MAX_DEPTH:
+            raise ProofSyntaxError(f"an expression is nested more than {MAX_DEPTH} levels "
+                                   "deep; split it into named parts or balance long sums")
+
+
+MAX_DEPTH = 1000
 
 
 def _well_formed(e: Expr) -> bool:

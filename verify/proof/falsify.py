@@ -291,7 +291,7 @@ def hypothesis_search(problem: StepProblem, cfg: SearchSettings, report: SearchR
                 if len(report.feasible_points) < 6:
                     report.feasible_points.append(_point(params, 0))
                 return bool(relative_violation(problem, params)[0] > 0)
-        except (ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError):
+        except (ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError, RecursionError):
             return False
 
     try:
