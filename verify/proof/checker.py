@@ -205,9 +205,8 @@ def _covered(step: Step, pieces: list[StepProblem]) -> tuple[bool, str, list[Ste
     if not failing:
         return True, "", []
     piece, text = failing[0]
-    where = ", ".join(f"{n} = {w}" if not w.startswith("θ") else w
-                      for n, w in piece.pinned_names.items())
-    return False, f"not shown where a chart misses ({where}): {text}", [p for p, _ in failing]
+    where = ", ".join(f"{n} = {w}" for n, w in piece.pinned_names.items())
+    return False, f"but at a point the charts miss ({where}): {text}", [p for p, _ in failing]
 
 
 def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
@@ -288,8 +287,9 @@ def _decide(step: Step, problem: StepProblem, settings: SearchSettings):
     failing: list[StepProblem] = list(pieces)
     if ok and pieces:
         ok, gap_text, failing = _covered(step, pieces)
-        exact_text += ("; also exactly at the points the charts miss" if ok
-                       else "; " + gap_text)
+        exact_text = ("in the charts: " + exact_text
+                      + ("; also exactly at the points the charts miss" if ok
+                         else "; " + gap_text))
     vacuous = _vacuity(problem, pieces)
     report, counterexample = search(problem, settings, confirm)
     runs = [(problem, report)]
@@ -316,9 +316,16 @@ def _decide(step: Step, problem: StepProblem, settings: SearchSettings):
 
 
 def _witnessed(runs: list) -> bool:
-    """Some sampled point of some run meets every declaration exactly."""
-    return any(exact_witness(piece, point)
-               for piece, r in runs for point in r.feasible_points[:WITNESS_TRIES])
+    """Some sampled point of some run meets every declaration exactly.
+
+    With no condition and no assumption the only declarations are positive scalars,
+    which any sampled point meets (its rounding to rationals stays positive).
+    """
+    return any(
+        (r.feasible > 0 and not piece.conditions and not piece.assumptions)
+        or any(exact_witness(piece, point) for point in r.feasible_points[:WITNESS_TRIES])
+        for piece, r in runs
+    )
 
 
 WITNESS_TRIES = 4

@@ -353,7 +353,7 @@ def _describe(problem: StepProblem, xp: ExactPoint) -> dict:
         }
     for name, where in problem.pinned_names.items():  # at the point its chart misses
         out[name] = {"kind": "chart gap", "parameters": [where], "approx_parameters": [],
-                     "value": [3.141593] if where == "θ = π" else [0.0, 0.0, 1.0]}
+                     "value": [3.141593] if where == "π" else [0.0, 0.0, 1.0]}
     return out
 
 

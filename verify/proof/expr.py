@@ -29,7 +29,7 @@ _ids = itertools.count()
 KINDS = ("rotation", "unit_vector", "angle", "vector", "matrix", "symmetric", "scalar")
 
 #: The one point each chart misses (kinds whose chart reaches every value are absent).
-CHART_GAPS = {"angle": "θ = π", "unit_vector": "(0, 0, 1)"}
+CHART_GAPS = {"angle": "π", "unit_vector": "(0, 0, 1)"}
 
 
 class ProofSyntaxError(TypeError):
