@@ -470,6 +470,7 @@ def test_float_rounding_does_not_downgrade_an_exact_proof():
     step = result.steps[0]
     assert step.verdict == "verified", step.exact
     assert step.falsification["violations_undecided"] == 0
+    assert step.falsification["violations_rejected_exactly"] > 0
     off = Derivation("off", (x + big) - big, ctx).equals(x + Fraction(1, 10**9), by_algebra())
     assert _verdict(off) == "refuted"
 
@@ -605,3 +606,31 @@ def test_huge_constants_inside_lambda_min():
     assert check(d, SMALL).verdict in ("verified", "inconclusive")
     wrong = Derivation("big", lambda_min(big * A), ctx).equals(lambda_min(A), by_algebra())
     assert check(wrong, SMALL).verdict != "verified"
+
+
+def test_only_an_exact_counterexample_or_an_undecided_violation_overrides_an_exact_proof(
+    monkeypatch,
+):
+    """With the exact check forced to pass on a false step, the exact counterexample
+    makes it an internal disagreement, and a violation exact arithmetic cannot decide
+    keeps it inconclusive; neither is ever 'verified'."""
+    from verify.proof import checker
+
+    monkeypatch.setattr(checker, "_exact_check", lambda step, problem: (True, "forced"))
+    ctx = Context("override")
+    R = ctx.rotation("R")
+    d = Derivation("false", tr(R), ctx).equals(tr(R * R), by_algebra())
+    step = check(d, SMALL).steps[0]
+    assert step.verdict == "inconclusive" and "INTERNAL DISAGREEMENT" in step.exact
+    monkeypatch.setattr(checker, "search", lambda problem, cfg, confirm: _undecided(
+        problem, cfg))
+    step = check(d, SMALL).steps[0]
+    assert step.verdict == "inconclusive" and "not decided exactly" in step.exact
+
+
+def _undecided(problem, cfg):
+    from verify.proof.falsify import SearchReport
+
+    report = SearchReport(feasible=1, undecided=1)
+    report.candidates.append({})
+    return report, None
