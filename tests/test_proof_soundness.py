@@ -634,3 +634,43 @@ def _undecided(problem, cfg):
     report = SearchReport(feasible=1, undecided=1)
     report.candidates.append({})
     return report, None
+
+
+def test_the_pinned_unit_vector_is_the_north_pole_exactly():
+    ctx = Context("gap")
+    u, th = ctx.unit_vector("u"), ctx.angle("θ")
+    on = ctx.condition("cos θ = 0", cos(th), 0)
+    d = Derivation("u", u, ctx, where=(on,)).equals(u, by_algebra())
+    pinned = _problem(d, d.steps[0]).pinned([u.data, th.data])
+    assert [x.num for x in pinned.exact(u)] == [0, 0, 1]
+    assert [x.num for x in pinned.exact(cos(th))] == [-1]
+    assert pinned.conditions_empty  # cos π = 0 is false: that piece has no points
+
+
+def test_conditions_unsatisfiable_in_every_chart_are_decided_exactly():
+    ctx = Context("vacuous")
+    th = ctx.angle("θ")
+    a = ctx.condition("cos θ = -1", cos(th), -1)
+    b = ctx.condition("sin θ = 1", sin(th), 1)
+    d = Derivation("anything", cos(th), ctx, where=(a, b)).equals(5, by_algebra())
+    result = check(d, SMALL)
+    assert result.verdict == "inconclusive"
+    assert "every chart" in result.steps[0].exact
+
+
+def test_a_positive_gain_conditioned_negative_is_vacuous():
+    ctx = Context("vacuous")
+    k = ctx.scalar("k", positive=True)
+    c = ctx.condition("k = -1", k, -1)
+    d = Derivation("k", k * k, ctx, where=(c,)).equals(1, by_algebra())
+    result = check(d, SMALL)
+    assert result.verdict == "inconclusive" and "no sampled point" in result.steps[0].exact
+
+
+def test_a_condition_true_only_approximately_is_not_a_witness():
+    """x² + 10⁻²⁰ = 0 has no real root, though floats find |x² + 10⁻²⁰| tiny at x = 0."""
+    ctx = Context("vacuous")
+    x = ctx.scalar("x")
+    c = ctx.condition("x² + 10⁻²⁰ = 0", x * x + Fraction(1, 10**20), 0)
+    d = Derivation("1 = -10²⁰ x²", 1, ctx, where=(c,)).equals(-(10**20) * x * x, by_algebra())
+    assert check(d, SMALL).verdict == "inconclusive"
