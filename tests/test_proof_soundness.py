@@ -674,3 +674,16 @@ def test_a_condition_true_only_approximately_is_not_a_witness():
     c = ctx.condition("x² + 10⁻²⁰ = 0", x * x + Fraction(1, 10**20), 0)
     d = Derivation("1 = -10²⁰ x²", 1, ctx, where=(c,)).equals(-(10**20) * x * x, by_algebra())
     assert check(d, SMALL).verdict == "inconclusive"
+
+
+def test_a_duck_typed_assumption_is_refused():
+    class Fake:
+        kind, label, cite = "pos", "trust me", ""
+
+        def __init__(self, expr):
+            self.expr = expr
+
+    ctx = Context("bypass")
+    x = ctx.scalar("x")
+    with pytest.raises(ProofSyntaxError, match="ctx.assume"):
+        assumed(Fake(-x * x - 1))

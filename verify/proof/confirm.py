@@ -344,7 +344,8 @@ def _describe(problem: StepProblem, xp: ExactPoint) -> dict:
         value = alg.bind(v, approx)
         if isinstance(value, tuple):  # angle: report theta
             value = 2 * float(np.arctan(approx[0]))
-        out[v.name] = {
+        name = v.name if v.name not in out else f"{v.name}#{v.uid}"  # same name twice
+        out[name] = {
             "kind": v.kind,
             "parameters": exact,
             "approx_parameters": approx,

@@ -171,9 +171,18 @@ def positive(k: Expr) -> Nonneg:
 
 def assumed(assumption: Assumption) -> Nonneg:
     """A scalar assumption (kind pos or nonneg) used as a non-negative term."""
+    _require_assumption(assumption)
     if assumption.kind not in ("pos", "nonneg"):
         raise ProofSyntaxError("assumed() takes a scalar assumption (pos or nonneg)")
     return _issue(assumption.expr, f"assumed: {assumption.label}", assumptions=(assumption,))
+
+
+def _require_assumption(a: object) -> None:
+    from verify.proof.derivation import Assumption
+
+    if type(a) is not Assumption:
+        raise ProofSyntaxError(f"expected an assumption made by ctx.assume(), got "
+                               f"{type(a).__name__}")
 
 
 def _psd_by_gram(label: str, b: Expr, gram: Expr, scale: Nonneg | int | Fraction):
@@ -230,6 +239,7 @@ def trace_psd_product(
     premises = [ExactPremise(f"{a} is symmetric", a - a.T)]
     assumptions: tuple = ()
     if a_psd is not None:
+        _require_assumption(a_psd)
         if a_psd.kind not in ("pd", "psd"):
             raise ProofSyntaxError("a_psd must be a pd or psd assumption")
         premises.append(ExactPremise(f"{a} = sym of the assumed matrix", a - sym(a_psd.expr)))
