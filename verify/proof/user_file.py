@@ -49,7 +49,10 @@ def contained(path: Path, stage: str) -> Iterator[None]:
             "file only defines derivations"
         ) from None
     except ProofSyntaxError as exc:
-        raise VerifyInputError(f"{path}: {stage}: {exc}") from None
+        frames = [f for f in traceback.extract_tb(exc.__traceback__)
+                  if Path(f.filename).resolve() == path.resolve()]
+        where = f"{path}:{frames[-1].lineno}" if frames else f"{path}: {stage}"
+        raise VerifyInputError(f"{where}: {exc}") from None
     except Exception as exc:
         frames = [f for f in traceback.extract_tb(exc.__traceback__)
                   if Path(f.filename).resolve() == path.resolve()]
