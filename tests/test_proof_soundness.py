@@ -32,6 +32,7 @@ from verify.proof import (
     by_citation,
     check,
     cos,
+    dot,
     hat,
     lambda_min,
     positive,
@@ -128,7 +129,18 @@ def test_a_true_step_whose_condition_holds_only_at_pi_is_verified():
     assert "points the charts miss" in result.steps[0].exact
 
 
-def test_conditioned_steps_with_unit_vectors_are_covered_at_the_pole():
+def test_a_unit_vector_in_a_condition_is_checked_at_the_pole():
+    ctx = Context("gap")
+    u, v = ctx.unit_vector("u"), ctx.vector("v")
+    on = ctx.condition("<u, v> = 1", dot(u, v), 1)
+    d = Derivation("uv", dot(v, u) * dot(u, v), ctx, where=(on,)).equals(1, by_algebra())
+    assert [w.name for w in _problem(d, d.steps[0]).gap_variables] == ["u"]
+    result = check(d, SMALL)
+    assert result.verdict == "verified"
+    assert "points the charts miss" in result.steps[0].exact
+
+
+def test_a_unit_vector_absent_from_the_conditions_is_covered_by_continuity():
     ctx = Context("gap")
     xi, th = ctx.unit_vector("ξ"), ctx.angle("θ")
     on = ctx.condition("cos θ = 0", cos(th), 0)
@@ -137,7 +149,7 @@ def test_conditioned_steps_with_unit_vectors_are_covered_at_the_pole():
         I3 + 2 * (hat(xi) * hat(xi)), by_algebra()
     )
     problem = _problem(d, d.steps[0])
-    assert {v.name for v in problem.gap_variables} == {"ξ", "θ"}
+    assert {v.name for v in problem.gap_variables} == {"θ"}  # ξ is free on cos θ = 0
     result = check(d, SMALL)
     assert result.verdict == "verified"
     assert "points the charts miss" in result.steps[0].exact
@@ -639,7 +651,7 @@ def _undecided(problem, cfg):
 def test_the_pinned_unit_vector_is_the_north_pole_exactly():
     ctx = Context("gap")
     u, th = ctx.unit_vector("u"), ctx.angle("θ")
-    on = ctx.condition("cos θ = 0", cos(th), 0)
+    on = ctx.condition("cos θ = <u, u> - 1", cos(th), dot(u, u) - 1)
     d = Derivation("u", u, ctx, where=(on,)).equals(u, by_algebra())
     pinned = _problem(d, d.steps[0]).pinned([u.data, th.data])
     assert [x.num for x in pinned.exact(u)] == [0, 0, 1]

@@ -79,8 +79,11 @@ class StepProblem:
 
     @cached_property
     def gap_variables(self) -> list[Variable]:
-        """Variables whose chart misses a point (angles, unit vectors)."""
-        return [v for v in self.variables if v.kind in CHART_GAPS]
+        """Variables of the side conditions whose chart misses a point (angles, unit
+        vectors). One absent from the conditions ranges freely over its whole space on
+        the condition set, so continuity covers its missing point."""
+        in_conditions = {v.uid for v in variables_of(*(c.difference for c in self.conditions))}
+        return [v for v in self.variables if v.kind in CHART_GAPS and v.uid in in_conditions]
 
     @cached_property
     def slack_expr(self) -> Expr:
