@@ -697,5 +697,5 @@ def test_a_duck_typed_assumption_is_refused():
 
     ctx = Context("bypass")
     x = ctx.scalar("x")
-    with pytest.raises(ProofSyntaxError, match="ctx.assume"):
+    with pytest.raises(ProofSyntaxError, match=r"ctx\.assume"):
         assumed(Fake(-x * x - 1))
