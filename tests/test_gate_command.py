@@ -71,7 +71,7 @@ def test_bad_options_exit_2(args, message, capsys):
     assert message in err and len(err.strip().splitlines()) == 1
 
 
-def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):
+def test_bad_model_file_exits_2_and_malformed_certificate_is_refused(tmp_path, capsys):
     bad = tmp_path / "bad.toml"
     bad.write_text("[state_space]\nA = [[nan]]\nB = [[1.0]]\nC = [[1.0]]\nD = [[0.0]]\n")
     assert main(["gate", str(bad)]) == 2
@@ -79,7 +79,8 @@ def test_bad_model_file_and_malformed_certificate_exit_2(tmp_path, capsys):
     assert len(err.strip().splitlines()) == 1
     broken = tmp_path / "c.json"
     broken.write_text("{not json")
-    assert main(["certificates", "check", str(broken)]) == 2
+    assert main(["certificates", "check", str(broken)]) == 1  # a refusal, in one line
+    assert f"INVALID {broken}: malformed: not valid JSON" in capsys.readouterr().out
 
 
 def test_gate_indices_are_printed_and_written(tmp_path, capsys):

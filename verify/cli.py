@@ -104,7 +104,13 @@ def _build_parser() -> argparse.ArgumentParser:
 
     p_cert = sub.add_parser("certificates", help="certificates/ tools")
     cert_sub = p_cert.add_subparsers(dest="cert_command", metavar="ACTION", required=True)
-    p_cc = cert_sub.add_parser("check", help="re-verify stored certificates with no solver")
+    p_cc = cert_sub.add_parser(
+        "check", help="re-verify stored certificates with no solver",
+        description="Check each certificate file (each DIR's *.json): strict JSON (no "
+        "duplicate keys, no unknown fields), its fingerprint and file name, the statement "
+        "derived from what it proves, its source model file when found, and the exact "
+        "inequalities. Exit 0 if all are valid, 1 if one is refused or none is found, 2 if "
+        "a path does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
                       default=[Path("certificates")])
 
@@ -146,9 +152,10 @@ def _cmd_all(args: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
     from verify.claims.registry import run_claims
-    from verify.report import write_report
+    from verify.report import RunInfo, write_report
     from verify.report.render import VERDICT_MARK
 
+    info = RunInfo.from_environment()  # a bad SOURCE_DATE_EPOCH fails before any work
     claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
@@ -162,7 +169,7 @@ def _cmd_all(args: argparse.Namespace) -> int:
 
     print(f"verify all: {len(claims)} claims (seed {args.seed})")
     run = run_claims(claims, context, progress=progress)
-    paths = write_report(run, args.out)
+    paths = write_report(run, args.out, info)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))
@@ -242,26 +249,20 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.stored import check_stored_certificate
+    from verify.passivity.stored import certificate_files, check_stored_certificate
 
-    files: list[Path] = []
-    for p in args.paths:
-        if p.is_dir():
-            files += sorted(p.glob("*.json"))
-        elif p.is_file():
-            files.append(p)
-        else:
-            raise VerifyInputError(f"{p}: no such file or directory")
-    checks = []
+    files = certificate_files(args.paths)
+    if not files:
+        where = ", ".join(str(p) for p in args.paths)
+        print(f"verify: no certificate found in {where} (no *.json file)", file=sys.stderr)
+        return 1
+    bad = 0
     for f in files:
-        try:
-            checks.append((f, check_stored_certificate(f)))
-        except ValueError as exc:
-            raise VerifyInputError(str(exc)) from None
-    for f, c in checks:
-        print(f"{'ok     ' if c.ok else 'INVALID'} {f}: {c.reason}")
-    bad = sum(not c.ok for _, c in checks)
-    print(f"{len(checks) - bad} of {len(checks)} certificate(s) valid (exact re-check, no solver)")
+        c = check_stored_certificate(f)
+        bad += not c.ok
+        print(f"{'ok     ' if c.ok else 'INVALID'} {f}: {c.reason}", flush=True)
+    print(f"{len(files) - bad} of {len(files)} certificate(s) valid (bound to their claims, "
+          "exact re-check, no solver)")
     return 0 if bad == 0 else 1
 
 

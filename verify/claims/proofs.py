@@ -29,7 +29,7 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
         Evidence(
             EvidenceKind.DERIVATION,
             f"{result.name}: {result.conclusion} — {verdict} "
-            f"({len(result.steps)} step(s), {result.seconds:.2f} s)"
+            f"({len(result.steps)} step(s))"
             + (f"; vacuous: {result.vacuous}" if result.vacuous else ""),
             result.to_json(),
             passed=verdict == expected,

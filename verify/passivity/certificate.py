@@ -8,10 +8,9 @@ symmetric P with
 the KYP (positive-real) lemma; x^T P x / 2 is then a storage function of the human
 (Theorem 1's S_h). :func:`check_kyp` decides both conditions in exact rational
 arithmetic (:mod:`verify.passivity.psd`): no solver; floating point only proposes the
-factor of a dominance certificate, which is then checked exactly. The model
-data travel inside the certificate as exact rationals, so a certificate is checked
-against the model it names, and editing either makes the check fail unless the edited
-pair is itself valid.
+factor of a dominance certificate, which is then checked exactly. The JSON form of a
+certificate, bound to its claim and source file, is in
+:mod:`verify.passivity.certificate_files`.
 """
 
 from __future__ import annotations
@@ -19,15 +18,12 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.psd import psd_exact
-
-SCHEMA = "verify-kyp-certificate/1"
 
 
 @dataclass(frozen=True)
@@ -127,64 +123,11 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
 
 @dataclass(frozen=True)
 class Certificate:
+    """A checked KYP matrix P for ``model`` (the file form is in
+    :mod:`verify.passivity.certificate_files`)."""
+
     name: str
     source: str
     model: ExactModel
     P: ex.RationalMatrix
     meta: dict
-
-    def to_json(self) -> dict[str, Any]:
-        return {
-            "schema": SCHEMA,
-            "name": self.name,
-            "source": self.source,
-            "fingerprint": self.model.fingerprint(),
-            "statement": "P = P^T > 0 and [[A'P + PA, PB - C'], [B'P - C, -(D + D')]] <= 0",
-            "model": self.model.to_json(),
-            "P": ex.to_strings(self.P),
-            "meta": self.meta,
-        }
-
-
-def write_certificate(cert: Certificate, path: Path) -> None:
-    from verify.report.atomic import write_atomic
-
-    write_atomic(path, json.dumps(cert.to_json(), indent=1) + "\n")
-
-
-def read_certificate(path: Path) -> Certificate:
-    """Parse a certificate file; raises ValueError with one line on malformed content."""
-    return _load(path)[0]
-
-
-def _load(path: Path) -> tuple[Certificate, dict]:
-    """The certificate and the raw JSON it was read from (one read, one parse)."""
-    try:
-        data = json.loads(Path(path).read_text())
-    except (OSError, json.JSONDecodeError) as exc:
-        raise ValueError(f"{path}: not a readable JSON certificate ({exc})") from None
-    if not isinstance(data, dict) or data.get("schema") != SCHEMA:
-        raise ValueError(f"{path}: schema is not {SCHEMA}")
-    try:
-        m = data["model"]
-        model = ExactModel(*(ex.from_strings(m[k]) for k in ("A", "B", "C", "D")))
-        P = ex.from_strings(data["P"])
-    except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
-        raise ValueError(f"{path}: malformed certificate ({exc})") from None
-    n, m = model.n, model.m
-    shapes = [(model.A, n, n), (model.B, n, m), (model.D, m, m)]
-    if any(len(x) != r or any(len(row) != c for row in x) for x, r, c in shapes) or len(
-        model.C
-    ) != m or any(len(row) != n for row in model.C) or m == 0:
-        raise ValueError(f"{path}: model matrices have inconsistent shapes")
-    cert = Certificate(str(data.get("name", "")), str(data.get("source", "")), model, P,
-                       data.get("meta", {}))
-    return cert, data
-
-
-def check_certificate_file(path: Path) -> KypCheck:
-    """Re-verify a stored certificate with no solver (``verify certificates check``)."""
-    cert, data = _load(path)
-    if data.get("fingerprint") != cert.model.fingerprint():
-        return KypCheck(False, "fingerprint does not match the model data")
-    return check_kyp(cert.model, cert.P)

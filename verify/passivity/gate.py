@@ -1,4 +1,4 @@
-"""`verify gate`: the passivity check a lab runs in CI on new human models (issue 4, item 7).
+"""`verify gate`: the passivity check a lab runs in CI on new human models (Section 4).
 
 Every model file is validated before any is analysed (bad input fails fast and whole).
 A passive verdict writes its exactly checked KYP certificate under the certificates
@@ -10,14 +10,15 @@ model) are optional.
 from __future__ import annotations
 
 import json
-import re
 from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from verify.errors import VerifyInputError
-from verify.passivity.certificate import write_certificate
+from verify.passivity import certificate_files as cf
+from verify.passivity.binding import Claim, shifted, unverified_meta
+from verify.passivity.canonical import coarse_band, coarse_kyp
 from verify.passivity.decide import PASSIVE, Decision, decide
 from verify.report.atomic import write_atomic
 
@@ -31,15 +32,12 @@ def parse_margin(text: str) -> Fraction:
     return value
 
 
-def _slug(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "-", name).strip("-") or "model"
-
-
 @dataclass
 class GateResult:
     decision: Decision
     certificate_path: Path | None
     indices: tuple | None = None  # (IFP, OFP) IndexBounds when asked for
+    kept: bool = False  # the certificate file already held a valid one of the same claim
 
     @property
     def passed(self) -> bool:
@@ -49,7 +47,9 @@ class GateResult:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
-        text = f"{head}; certificate {self.certificate_path}" if self.passed \
+        kept = " (kept: already a valid certificate of this model and claim)" \
+            if self.kept else ""
+        text = f"{head}; certificate {self.certificate_path}{kept}" if self.passed \
             else f"{head}; {d.reason}"
         for index in self.indices or ():
             text += f"\n  {index.summary()}"
@@ -60,12 +60,14 @@ def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResul
     results = []
     for model in models:
         d = decide(model, margin)
-        path = None
+        path, kept = None, False
         if d.certificate is not None:
-            tag = d.certificate.model.fingerprint()[:12]
-            path = certificates_dir / f"{_slug(model.name)}-{tag}.json"
-            write_certificate(d.certificate, path)
-        results.append(GateResult(d, path))
+            claim = Claim(Fraction(margin))
+            H = shifted(d.certificate.model, -claim.margin)  # the model as given
+            P = coarse_kyp(d.certificate.model, d.certificate.P)
+            path, kept = cf.store_certificate(cf.kyp_json(
+                model.name, model.source, H, claim, P, unverified_meta(model)), certificates_dir)
+        results.append(GateResult(d, path, kept=path is not None and kept))
     return results
 
 
@@ -73,18 +75,19 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
                   certificates_dir: Path) -> list[GateResult]:
     """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
     from verify.passivity.band import decide_band
-    from verify.passivity.gkyp import write_band_certificate
 
     results = []
     for model in models:
         d = decide_band(model, band, margin)
-        path = None
+        path, kept = None, False
         if d.certificate is not None:
-            tag = d.certificate.model.fingerprint()[:12]
-            label = f"band-{float(band[0]):.6g}-{float(band[1]):.6g}"
-            path = certificates_dir / f"{_slug(model.name)}-{label}-{tag}.json"
-            write_band_certificate(d.certificate, path)
-        results.append(GateResult(d, path))
+            claim = Claim(Fraction(margin), band)
+            H = shifted(d.certificate.model, -claim.margin)  # the model as given
+            P, Q = coarse_band(d.certificate.model, d.certificate.P, d.certificate.Q, band)
+            path, kept = cf.store_certificate(cf.band_json(
+                model.name, model.source, H, claim, P, Q, unverified_meta(model)),
+                certificates_dir)
+        results.append(GateResult(d, path, kept=path is not None and kept))
     return results
 
 

@@ -25,18 +25,13 @@ is PSD), by exact LDL^T; no solver, no floating point.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from fractions import Fraction
-from pathlib import Path
-from typing import Any
 
 from gmpy2 import mpq
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import ExactModel, KypCheck
-
-SCHEMA = "verify-gkyp-certificate/1"
 
 #: A complex rational matrix as (real part, imaginary part).
 ComplexMatrix = tuple[ex.RationalMatrix, ex.RationalMatrix]
@@ -114,61 +109,6 @@ class BandCertificate:
     Q: ComplexMatrix
     meta: dict
 
-    def to_json(self) -> dict[str, Any]:
-        return {
-            "schema": SCHEMA,
-            "name": self.name,
-            "source": self.source,
-            "fingerprint": self.model.fingerprint(),
-            "band": [str(self.band[0]), str(self.band[1])],
-            "statement": "Q = Q^H >= 0 and N^H (Phi (x) P + Psi (x) Q) N + Theta <= 0 with "
-            "N = [[A, B], [I, 0]], Phi = [[0, 1], [1, 0]], Psi = [[-1, j wc], [-j wc, "
-            "-w1 w2]], wc = (w1 + w2)/2, Theta = -[[0, C'], [C, D + D']]; hence "
-            "H(jw) + H(jw)^H >= 0 for w1 <= w <= w2 (Iwasaki-Hara generalized KYP)",
-            "model": self.model.to_json(),
-            "P": {"re": ex.to_strings(self.P[0]), "im": ex.to_strings(self.P[1])},
-            "Q": {"re": ex.to_strings(self.Q[0]), "im": ex.to_strings(self.Q[1])},
-            "meta": self.meta,
-        }
 
-
-def write_band_certificate(cert: BandCertificate, path: Path) -> None:
-    from verify.report.atomic import write_atomic
-
-    write_atomic(path, json.dumps(cert.to_json(), indent=1) + "\n")
-
-
-def _complex(data: Any) -> ComplexMatrix:
-    return ex.from_strings(data["re"]), ex.from_strings(data["im"])
-
-
-def load_band_certificate(data: dict, path: Path) -> BandCertificate:
-    """Parse the JSON of a band certificate; ValueError (one line) when malformed."""
-    try:
-        m = data["model"]
-        model = ExactModel(*(ex.from_strings(m[k]) for k in ("A", "B", "C", "D")))
-        band = (Fraction(data["band"][0]), Fraction(data["band"][1]))
-        P, Q = _complex(data["P"]), _complex(data["Q"])
-    except (KeyError, TypeError, ValueError, ZeroDivisionError, IndexError) as exc:
-        raise ValueError(f"{path}: malformed band certificate ({exc})") from None
-    n, mm = model.n, model.m
-    shapes = [(model.A, n, n), (model.B, n, mm), (model.D, mm, mm), (model.C, mm, n)]
-    if mm == 0 or any(len(x) != r or any(len(row) != c for row in x) for x, r, c in shapes):
-        raise ValueError(f"{path}: model matrices have inconsistent shapes")
-    return BandCertificate(str(data.get("name", "")), str(data.get("source", "")), model,
-                           band, P, Q, data.get("meta", {}))
-
-
-def check_band_certificate_data(data: dict, path: Path) -> KypCheck:
-    """Re-verify a stored band certificate with no solver (``verify certificates check``)."""
-    cert = load_band_certificate(data, path)
-    if data.get("fingerprint") != cert.model.fingerprint():
-        return KypCheck(False, "fingerprint does not match the model data")
-    result = check_gkyp(cert.model, cert.P, cert.Q, cert.band)
-    if not result.ok:
-        return result
-    return KypCheck(True, f"passive on [{cert.band[0]}, {cert.band[1]}] rad/s: {result.reason}")
-
-
-__all__ = ["SCHEMA", "BandCertificate", "check_band_certificate_data", "check_gkyp",
-           "embed", "gkyp_matrix", "load_band_certificate", "write_band_certificate"]
+__all__ = ["BandCertificate", "ComplexMatrix", "check_gkyp", "embed", "gkyp_matrix",
+           "is_hermitian"]

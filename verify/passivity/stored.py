@@ -1,32 +1,60 @@
-"""Re-checking any stored certificate by its schema (``verify certificates check``).
+"""Re-checking stored certificates by their schema (``verify certificates check``).
 
-Two schemas live under ``certificates/``: KYP certificates of passivity on the whole
-frequency axis (:mod:`verify.passivity.certificate`, paper Section 4's nu(w) >= 0 for all
-w) and generalized-KYP certificates of passivity on a band (:mod:`verify.passivity.gkyp`).
-Each is re-checked in exact rational arithmetic, with no solver.
+:data:`SCHEMAS` maps a schema name to its checker; a new kind of certificate plugs in
+with one line, ``SCHEMAS["verify-xyz-certificate/1"] = check_xyz``. A checker takes the
+strictly parsed JSON object and the file's path and returns a
+:class:`~verify.passivity.certificate.KypCheck`; it raises
+:class:`~verify.passivity.strict_json.CertificateFormatError` for malformed content.
+Every checker re-derives what the certificate claims and decides it in exact arithmetic,
+with no solver (DESIGN.md: a certificate is bound to its claim).
 """
 
 from __future__ import annotations
 
-import json
+from collections.abc import Callable, Iterable
 from pathlib import Path
+from typing import Any
 
-from verify.passivity import certificate, gkyp
+from verify.errors import VerifyInputError
+from verify.passivity import certificate_files as cf
 from verify.passivity.certificate import KypCheck
+from verify.passivity.strict_json import CertificateFormatError, read_strict
+
+Checker = Callable[[dict[str, Any], Path], KypCheck]
+
+SCHEMAS: dict[str, Checker] = {
+    cf.KYP_V1: cf.check_kyp_file,
+    cf.KYP_V2: cf.check_kyp_file,
+    cf.BAND_V1: cf.check_band_file,
+    cf.BAND_V2: cf.check_band_file,
+}
 
 
 def check_stored_certificate(path: Path) -> KypCheck:
-    """The exact re-check of one certificate file; ValueError (one line) when malformed."""
+    """The binding and exact re-check of one file; malformed content is a refusal."""
     try:
-        data = json.loads(Path(path).read_text())
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise ValueError(f"{path}: not a readable JSON certificate ({exc})") from None
-    schema = data.get("schema") if isinstance(data, dict) else None
-    if schema == gkyp.SCHEMA:
-        return gkyp.check_band_certificate_data(data, Path(path))
-    if schema == certificate.SCHEMA:
-        return certificate.check_certificate_file(Path(path))
-    raise ValueError(f"{path}: schema is neither {certificate.SCHEMA} nor {gkyp.SCHEMA}")
+        data = read_strict(path)
+        schema = data.get("schema")
+        checker = SCHEMAS.get(schema) if isinstance(schema, str) else None
+        if checker is None:
+            return KypCheck(False, f"unknown schema {schema!r}; known: "
+                            f"{', '.join(sorted(SCHEMAS))}")
+        return checker(data, Path(path))
+    except CertificateFormatError as exc:
+        return KypCheck(False, f"malformed: {exc}")
 
 
-__all__ = ["check_stored_certificate"]
+def certificate_files(paths: Iterable[Path]) -> list[Path]:
+    """The files to check: each FILE as given, each DIR's ``*.json`` in name order."""
+    files: list[Path] = []
+    for p in paths:
+        if p.is_dir():
+            files += sorted(p.glob("*.json"))
+        elif p.is_file():
+            files.append(p)
+        else:
+            raise VerifyInputError(f"{p}: no such file or directory")
+    return files
+
+
+__all__ = ["SCHEMAS", "Checker", "certificate_files", "check_stored_certificate"]

@@ -2,27 +2,27 @@
 
 from __future__ import annotations
 
-from datetime import UTC, datetime
 from pathlib import Path
 
 from verify.claims.registry import RunResult
 from verify.report.atomic import write_all_atomic, write_atomic
 from verify.report.render import render_html, render_json, render_markdown
+from verify.report.run_info import RunInfo
 
 REPORT_FILES = ("report.md", "report.html", "report.json")
 
 
-def write_report(run: RunResult, out_dir: Path) -> list[Path]:
+def write_report(run: RunResult, out_dir: Path, info: RunInfo | None = None) -> list[Path]:
     """Render every format in memory first, then write each file atomically."""
-    when = datetime.now(UTC)
+    info = info or RunInfo.from_environment()
     out_dir = Path(out_dir)
     rendered = {
-        out_dir / "report.md": render_markdown(run, when),
-        out_dir / "report.html": render_html(run, when),
-        out_dir / "report.json": render_json(run, when),
+        out_dir / "report.md": render_markdown(run, info),
+        out_dir / "report.html": render_html(run, info),
+        out_dir / "report.json": render_json(run, info),
     }
     write_all_atomic(rendered)
     return list(rendered)
 
 
-__all__ = ["REPORT_FILES", "write_atomic", "write_report"]
+__all__ = ["REPORT_FILES", "RunInfo", "write_atomic", "write_report"]

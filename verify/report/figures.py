@@ -7,12 +7,13 @@ minimum marked on the nu curve is the one located by Hamiltonian level crossings
 (:mod:`verify.passivity.hamiltonian`), not the lowest grid point.
 
 Matplotlib runs with the Agg backend; each PNG is rendered in memory and written with a
-temporary file and a rename (:func:`verify.report.atomic.write_atomic`).
+temporary file and a rename (:func:`verify.report.atomic.write_atomic`), without the
+version and date stamps that would make two runs differ
+(:func:`verify.report.figure_bytes.figure_bytes`).
 """
 
 from __future__ import annotations
 
-import io
 import math
 from collections.abc import Sequence
 from pathlib import Path
@@ -22,6 +23,7 @@ import numpy as np
 
 from verify.passivity.hamiltonian import NuMinimum, nu_values
 from verify.report.atomic import write_atomic
+from verify.report.figure_bytes import figure_bytes
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel
@@ -37,10 +39,7 @@ def _pyplot():
 
 
 def _save(fig, path: Path) -> Path:
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=110, metadata={"Software": None})
-    _pyplot().close(fig)
-    write_atomic(path, buffer.getvalue())
+    write_atomic(path, figure_bytes(fig, "png", dpi=110))
     return path
 
 

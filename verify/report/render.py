@@ -3,6 +3,12 @@
 The three renderings come from the same data: the claim registry's results. The text
 says, per claim, what the paper writes, what was checked, the verdict, the finding in
 plain words, the repair where one is needed, and the evidence.
+
+Reproducible text: everything but the final "Run" block is a function of the code, the
+inputs and the seed. The generation time and the timings of the checks (including the
+per-step times the proof checker records) appear only in that block, and not at all
+when ``SOURCE_DATE_EPOCH`` is set (:mod:`verify.report.run_info`), so committed reports
+diff cleanly.
 """
 
 from __future__ import annotations
@@ -10,7 +16,6 @@ from __future__ import annotations
 import html
 import json
 import platform
-from datetime import UTC, datetime
 from importlib import metadata
 from itertools import groupby
 from typing import Any
@@ -18,8 +23,9 @@ from typing import Any
 from verify import __version__
 from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.registry import RunResult
+from verify.report.run_info import RunInfo
 
-REPORT_SCHEMA = "verify-report/1"
+REPORT_SCHEMA = "verify-report/2"
 
 VERDICT_MARK = {
     Verdict.VERIFIED: "verified",
@@ -50,22 +56,61 @@ def _versions() -> dict[str, str]:
     return out
 
 
-def report_data(run: RunResult, generated: datetime | None = None) -> dict[str, Any]:
-    """The JSON document of a run (schema ``verify-report/1``)."""
-    when = generated or datetime.now(UTC)
+def _timeless(value: Any) -> Any:
+    """A derivation's JSON without the wall-clock ``seconds`` of it and of its steps."""
+    if isinstance(value, dict):
+        return {k: _timeless(v) for k, v in value.items() if k != "seconds"}
+    if isinstance(value, list):
+        return [_timeless(v) for v in value]
+    return value
+
+
+def _claim_json(r: ClaimResult) -> dict[str, Any]:
+    data = r.to_json()
+    data.pop("seconds", None)
+    data["evidence"] = [
+        {**e, "data": _timeless(e["data"])} if e["kind"] == EvidenceKind.DERIVATION.value
+        else e for e in data["evidence"]]
+    return data
+
+
+def run_block(run: RunResult, info: RunInfo) -> dict[str, Any]:
+    """The only part of a report that changes between runs: date and timings."""
+    if info.reproducible:
+        return {"generated": info.stamp, "source": "SOURCE_DATE_EPOCH",
+                "timings": "omitted (SOURCE_DATE_EPOCH is set)"}
+    return {"generated": info.stamp, "source": "clock", "seconds": round(run.seconds, 3),
+            "timings": {r.claim.id: round(r.seconds, 4) for r in run.results}}
+
+
+def report_data(run: RunResult, info: RunInfo | None = None) -> dict[str, Any]:
+    """The JSON document of a run (schema ``verify-report/2``; ``run`` holds the date and
+    timings, everything before it is reproducible)."""
+    info = info or RunInfo.from_environment()
     return {
         "schema": REPORT_SCHEMA,
-        "generated": when.isoformat(timespec="seconds"),
         "seed": run.seed,
-        "seconds": round(run.seconds, 3),
         "environment": _versions(),
         "counts": run.counts(),
-        "claims": [r.to_json() for r in run.results],
+        "claims": [_claim_json(r) for r in run.results],
+        "run": run_block(run, info),
     }
 
 
-def render_json(run: RunResult, generated: datetime | None = None) -> str:
-    return json.dumps(report_data(run, generated), indent=2, sort_keys=False) + "\n"
+def render_json(run: RunResult, info: RunInfo | None = None) -> str:
+    return json.dumps(report_data(run, info), indent=2, sort_keys=False) + "\n"
+
+
+def _run_lines(run: RunResult, info: RunInfo) -> list[str]:
+    """The Markdown "Run" block."""
+    if info.reproducible:
+        return [f"Generated {info.stamp} (SOURCE_DATE_EPOCH). Timings omitted, so that the "
+                "report is identical between runs."]
+    lines = [f"Generated {info.stamp} in {run.seconds:.1f} s. This block is the only part "
+             "of the report that changes between runs (set SOURCE_DATE_EPOCH to omit it).",
+             "", "| claim | seconds |", "|---|---|"]
+    lines += [f"| `{r.claim.id}` | {r.seconds:.2f} |" for r in run.results]
+    return lines
 
 
 def _md_escape(text: str) -> str:
@@ -81,6 +126,11 @@ def _figure_href(e) -> str | None:
     if e.kind is EvidenceKind.FIGURE:
         return e.data.get("href") or e.path
     return None
+
+
+def _evidence_data(e) -> Any:
+    data = e.to_json()["data"]
+    return _timeless(data) if e.kind is EvidenceKind.DERIVATION else data
 
 
 def _evidence_line(e) -> str:
@@ -142,9 +192,8 @@ def _section_steps_markdown(results) -> list[str]:
     rows = _step_rows(results)
     if not rows:
         return []
-    seconds = sum(r.seconds for r in results)
     out = [
-        f"Every step of this proof ({len(rows)} steps, checked in {seconds:.1f} s; each "
+        f"Every step of this proof ({len(rows)} steps; each "
         "derivation starts from its first expression, and each row relates the previous "
         "expression to the one shown):",
         "",
@@ -160,24 +209,25 @@ def _section_steps_markdown(results) -> list[str]:
     return out
 
 
-def render_markdown(run: RunResult, generated: datetime | None = None) -> str:
-    data = report_data(run, generated)
+def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
+    info = info or RunInfo.from_environment()
+    data = report_data(run, info)
     lines = [
         "# Verification report",
         "",
         "Machine checks of *Passivity-based Semi-autonomous Rotational Motion Navigation for "
-        "Rigid-body Networks* (the paper in `shared/paper/paper.tex`). Generated "
-        f"{data['generated']} by `verify all` (seed {run.seed}, {run.seconds:.1f} s).",
+        "Rigid-body Networks* (the paper in `shared/paper/paper.tex`), by `verify all` "
+        f"(seed {run.seed}). Date and timings are in the last section, Run.",
         "",
         "## Summary",
         "",
-        "| claim | paper | verdict | seconds |",
-        "|---|---|---|---|",
+        "| claim | paper | verdict |",
+        "|---|---|---|",
     ]
     for r in run.results:
         lines.append(
             f"| [`{r.claim.id}`](#{r.claim.id.replace('.', '')}) | {_md_escape(r.claim.paper_ref)}"
-            f" | **{VERDICT_MARK[r.outcome.verdict]}** | {r.seconds:.2f} |"
+            f" | **{VERDICT_MARK[r.outcome.verdict]}** |"
         )
     counts = ", ".join(f"{v} {k}" for k, v in data["counts"].items() if v)
     lines += ["", f"Totals: {counts}.", "", "Verdicts mean:", ""]
@@ -190,6 +240,8 @@ def render_markdown(run: RunResult, generated: datetime | None = None) -> str:
             lines += _claim_markdown(r)
     lines += ["", "## Environment", ""]
     lines += [f"- {k}: {v}" for k, v in data["environment"].items()]
+    lines += ["", "## Run", ""]
+    lines += _run_lines(run, info)
     return "\n".join(lines) + "\n"
 
 
@@ -224,13 +276,28 @@ text-align:left;vertical-align:top}th{background:#f3f3f3}
 """
 
 
-def render_html(run: RunResult, generated: datetime | None = None) -> str:
+def _run_html(run: RunResult, info: RunInfo) -> str:
+    """The HTML "Run" block (date and timings)."""
     esc = html.escape
-    data = report_data(run, generated)
+    if info.reproducible:
+        return (f"<h2>Run</h2><p>Generated {esc(info.stamp)} (SOURCE_DATE_EPOCH). Timings "
+                "omitted, so that the report is identical between runs.</p>")
+    rows = "".join(f"<tr><td><code>{esc(r.claim.id)}</code></td><td>{r.seconds:.2f}</td></tr>"
+                   for r in run.results)
+    return (f"<h2>Run</h2><p>Generated {esc(info.stamp)} in {run.seconds:.1f} s. This block "
+            "is the only part of the report that changes between runs (set "
+            "SOURCE_DATE_EPOCH to omit it).</p>"
+            f"<table><tr><th>claim</th><th>seconds</th></tr>{rows}</table>")
+
+
+def render_html(run: RunResult, info: RunInfo | None = None) -> str:
+    esc = html.escape
+    info = info or RunInfo.from_environment()
+    data = report_data(run, info)
     rows = "".join(
         f"<tr><td><a href='#{esc(r.claim.id)}'><code>{esc(r.claim.id)}</code></a></td>"
         f"<td>{esc(r.claim.paper_ref)}</td><td class='{r.outcome.verdict.value}'>"
-        f"{esc(VERDICT_MARK[r.outcome.verdict])}</td><td>{r.seconds:.2f}</td></tr>"
+        f"{esc(VERDICT_MARK[r.outcome.verdict])}</td></tr>"
         for r in run.results
     )
     parts = [
@@ -238,10 +305,10 @@ def render_html(run: RunResult, generated: datetime | None = None) -> str:
         "<title>Verification report</title>",
         f"<style>{_CSS}</style></head><body>",
         "<h1>Verification report</h1>",
-        f"<p>Generated {esc(data['generated'])} by <code>verify all</code> "
-        f"(seed {run.seed}, {run.seconds:.1f} s).</p>",
+        f"<p>By <code>verify all</code> (seed {run.seed}). Date and timings are in the last "
+        "section, Run.</p>",
         "<h2>Summary</h2><table><tr><th>claim</th><th>paper</th><th>verdict</th>"
-        f"<th>seconds</th></tr>{rows}</table>",
+        f"</tr>{rows}</table>",
         "<ul>"
         + "".join(
             f"<li><span class='{v.value}'>{esc(VERDICT_MARK[v])}</span>: {esc(m)}</li>"
@@ -277,7 +344,7 @@ def render_html(run: RunResult, generated: datetime | None = None) -> str:
                 )
                 + (
                     f"<details><summary>data</summary><pre>"
-                    f"{esc(json.dumps(e.to_json()['data'], indent=1))}</pre></details>"
+                    f"{esc(json.dumps(_evidence_data(e), indent=1))}</pre></details>"
                     if e.data
                     else ""
                 )
@@ -299,5 +366,6 @@ def render_html(run: RunResult, generated: datetime | None = None) -> str:
                 f"<dt>Evidence</dt><dd><ul>{ev}</ul></dd></dl></div>"
             )
     env = "".join(f"<li>{esc(k)}: {esc(v)}</li>" for k, v in data["environment"].items())
-    parts.append(f"<h2>Environment</h2><ul>{env}</ul></body></html>")
+    parts.append(f"<h2>Environment</h2><ul>{env}</ul>")
+    parts.append(_run_html(run, info) + "</body></html>")
     return "\n".join(parts) + "\n"

@@ -69,12 +69,9 @@ def trajectory_csv(traj: Trajectory, E: Energy) -> str:
 
 
 def _png(fig) -> bytes:
-    import matplotlib.pyplot as plt
+    from verify.report.figure_bytes import figure_bytes
 
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=110, bbox_inches="tight")
-    plt.close(fig)
-    return buffer.getvalue()
+    return figure_bytes(fig, "png", dpi=110, bbox_inches="tight")
 
 
 def plots(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:

@@ -1,0 +1,236 @@
+"""What a stored certificate claims, derived from what it proves, and its tie to a model file.
+
+A passivity certificate (paper, Section 4: the human model H is passive, so Theorem 1's
+storage S_h exists) proves one thing: the exact inequalities on P (and Q) for the model
+stored in it. Everything else a certificate file says is either derived from that proof
+and compared when the file is checked, or labelled unverified:
+
+* the claim (:class:`Claim`): passivity of H - nu0 I over all frequencies, or
+  H(jw) + H(jw)^H >= 2 nu0 I on a band [w1, w2]; the ``statement`` text is a function of
+  the claim alone (:func:`statement`), so "strictly passive with margin 5" cannot sit
+  beside a proof of margin 0;
+* the file name: the model's name, the claim and the model's fingerprint
+  (:func:`file_name`);
+* the ``source`` model file, when it can be found: it must denote exactly the stored
+  model (:func:`exact_of` is the one place that turns a loaded model into exact data) and
+  carry the stored ``name`` (:func:`bind_source`);
+* descriptive fields copied from the model file (description, units, k_s, reconstructed)
+  travel under ``unverified``, are no part of the claim, and are compared with the file.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from fractions import Fraction
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from gmpy2 import mpq
+
+from verify.errors import VerifyInputError
+from verify.passivity.certificate import ExactModel, exact_model
+from verify.passivity.strict_json import (
+    CertificateFormatError,
+    fields,
+    rational,
+    rational_matrix,
+)
+
+if TYPE_CHECKING:
+    from verify.passivity.model import LTIModel
+
+#: Fields of a model file that a certificate may repeat, unverified.
+UNVERIFIED_KEYS = ("description", "units", "k_s", "reconstructed")
+
+#: Statements of the first schema versions (no margin field; margin 0 only).
+LEGACY_KYP_STATEMENT = "P = P^T > 0 and [[A'P + PA, PB - C'], [B'P - C, -(D + D')]] <= 0"
+LEGACY_BAND_STATEMENT = (
+    "Q = Q^H >= 0 and N^H (Phi (x) P + Psi (x) Q) N + Theta <= 0 with N = [[A, B], [I, 0]], "
+    "Phi = [[0, 1], [1, 0]], Psi = [[-1, j wc], [-j wc, -w1 w2]], wc = (w1 + w2)/2, "
+    "Theta = -[[0, C'], [C, D + D']]; hence H(jw) + H(jw)^H >= 0 for w1 <= w <= w2 "
+    "(Iwasaki-Hara generalized KYP)")
+
+
+@dataclass(frozen=True)
+class Claim:
+    """What a certificate proves about the stored model H.
+
+    ``band is None``: H - margin I is passive (KYP lemma), i.e. nu(w) >= margin at every
+    w where H(jw) is defined. Otherwise H(jw) + H(jw)^H >= 2 margin I for w1 <= w <= w2.
+    """
+
+    margin: Fraction = Fraction(0)
+    band: tuple[Fraction, Fraction] | None = None
+
+
+def _shift_text(margin: Fraction) -> str:
+    return "D + D'" if margin == 0 else f"D + D' - 2 nu0 I, nu0 = {margin}"
+
+
+def statement(claim: Claim) -> str:
+    """The statement a certificate of this claim carries (one function for every schema)."""
+    m = claim.margin
+    if claim.band is None:
+        what = "H is passive" if m == 0 else f"H - nu0 I is passive with nu0 = {m}"
+        return (f"{what}, where H(s) = C (sI - A)^-1 B + D is the stored model: "
+                f"P = P^T > 0 and [[A'P + PA, PB - C'], [B'P - C, -({_shift_text(m)})]] "
+                "<= 0 (KYP lemma), so x'Px/2 is a storage function and nu(w) >= "
+                f"{m} wherever H(jw) is defined")
+    w1, w2 = claim.band
+    bound = "0" if m == 0 else f"2 nu0 I, nu0 = {m},"
+    return (f"H(jw) + H(jw)^H >= {bound} for {w1} <= w <= {w2} rad/s wherever H(jw) is "
+            "defined, where H(s) = C (sI - A)^-1 B + D is the stored model: Q = Q^H >= 0 and "
+            "N^H (Phi (x) P + Psi (x) Q) N + Theta <= 0 with N = [[A, B], [I, 0]], "
+            "Phi = [[0, 1], [1, 0]], Psi = [[-1, j wc], [-j wc, -w1 w2]], wc = (w1 + w2)/2, "
+            f"Theta = -[[0, C'], [C, {_shift_text(m)}]] (Iwasaki-Hara generalized KYP)")
+
+
+def slug(name: str) -> str:
+    """A file-name-safe form of a model name."""
+    return re.sub(r"[^A-Za-z0-9_.-]+", "-", name).strip("-") or "model"
+
+
+def file_name(name: str, claim: Claim, fingerprint: str) -> str:
+    """``<name>[-margin-<nu0>][-band-<w1>-<w2>]-<first 12 hex of the fingerprint>.json``."""
+    parts = [slug(name)]
+    if claim.margin != 0:
+        text = f"{float(claim.margin):.6g}"
+        parts.append("margin-" + (f"minus{text[1:]}" if text.startswith("-") else text))
+    if claim.band is not None:
+        parts.append(f"band-{float(claim.band[0]):.6g}-{float(claim.band[1]):.6g}")
+    return "-".join([*parts, fingerprint[:12]]) + ".json"
+
+
+def exact_of(model: LTIModel) -> ExactModel:
+    """The exact rational (A, B, C, D) a loaded model denotes.
+
+    The one conversion from a loaded model to the data a certificate is about: the gate
+    certifies this, and a certificate's ``source`` file must yield exactly this again.
+    """
+    return exact_model(model.A, model.B, model.C, model.D)
+
+
+def shifted(model: ExactModel, margin: Fraction) -> ExactModel:
+    """H - margin I, exactly (only D changes)."""
+    if margin == 0:
+        return model
+    nu = mpq(margin)
+    D = [[x - nu if i == j else x for j, x in enumerate(row)] for i, row in enumerate(model.D)]
+    return ExactModel(model.A, model.B, model.C, D)
+
+
+def model_to_json(model: ExactModel) -> dict[str, Any]:
+    return model.to_json()
+
+
+def model_from_json(data: Any) -> ExactModel:
+    """A stored model {A, B, C, D} with consistent shapes (n >= 0 states, m >= 1 ports)."""
+    if not isinstance(data, dict):
+        raise CertificateFormatError("field 'model' must be an object {A, B, C, D}")
+    fields(data, required=("A", "B", "C", "D"), where="model")
+    D = rational_matrix(data["D"], "model.D")
+    m = len(D)
+    if m == 0 or len(D[0]) != m:
+        raise CertificateFormatError("model.D must be a square m x m matrix with m >= 1")
+    A = rational_matrix(data["A"], "model.A")
+    n = len(A)
+    if n and len(A[0]) != n:
+        raise CertificateFormatError("model.A must be square")
+    B = rational_matrix(data["B"], "model.B", n, m if n else None)
+    C = rational_matrix(data["C"], "model.C", m, n)
+    return ExactModel(A, B, C, D)
+
+
+def claim_from_fields(margin: Any, band: Any) -> Claim:
+    """The claim of a stored certificate from its ``margin`` and ``band`` fields."""
+    def fraction(value: Any, where: str) -> Fraction:
+        x = rational(value, where)
+        return Fraction(int(x.numerator), int(x.denominator))
+
+    nu = fraction(margin, "margin")
+    if band is None:
+        return Claim(nu)
+    if not isinstance(band, list) or len(band) != 2:
+        raise CertificateFormatError("field 'band' must be [w1, w2]")
+    w1, w2 = (fraction(w, f"band[{k}]") for k, w in enumerate(band))
+    if not 0 <= w1 < w2:
+        raise CertificateFormatError(f"band [{w1}, {w2}] does not satisfy 0 <= w1 < w2")
+    return Claim(nu, (w1, w2))
+
+
+def unverified_meta(model: LTIModel) -> dict[str, Any]:
+    """The descriptive fields of a model file, to be stored under ``unverified``."""
+    return {k: model.meta[k] for k in UNVERIFIED_KEYS if k in model.meta}
+
+
+def check_unverified(value: Any) -> dict[str, Any]:
+    """The ``unverified`` block: only the known descriptive keys, with simple types."""
+    if not isinstance(value, dict):
+        raise CertificateFormatError("field 'unverified' must be an object")
+    fields(value, required=(), optional=UNVERIFIED_KEYS, where="unverified")
+    for key in ("description", "units"):
+        if key in value and not isinstance(value[key], str):
+            raise CertificateFormatError(f"unverified.{key} must be a string")
+    if "reconstructed" in value and not isinstance(value["reconstructed"], bool):
+        raise CertificateFormatError("unverified.reconstructed must be true or false")
+    if "k_s" in value and (isinstance(value["k_s"], bool)
+                           or not isinstance(value["k_s"], int | float)):
+        raise CertificateFormatError("unverified.k_s must be a number")
+    return value
+
+
+def resolve_source(source: str, cert_path: Path) -> Path | None:
+    """The model file a certificate names, if it exists here.
+
+    A relative ``source`` is taken from the working directory (as ``verify gate`` stores
+    it), then from the directory above the certificate's folder (the repository root for
+    ``certificates/``). ``python`` and ``""`` name no file.
+    """
+    if source in ("", "python"):
+        return None
+    path = Path(source)
+    candidates = [path] if path.is_absolute() else [
+        Path.cwd() / path, Path(cert_path).resolve().parent.parent / path]
+    return next((c for c in candidates if c.is_file()), None)
+
+
+@dataclass(frozen=True)
+class SourceBinding:
+    """The outcome of comparing a certificate with its source file."""
+
+    error: str | None  # a refusal, or None
+    note: str  # what was compared (for the ok line)
+
+
+def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str, Any],
+                cert_path: Path) -> SourceBinding:
+    """Compare the stored model, name and unverified fields with the source file."""
+    from verify.passivity.model_file import load_model
+
+    found = resolve_source(source, cert_path)
+    if found is None:
+        what = "no source file" if source in ("", "python") else \
+            f"source {source} not found here"
+        return SourceBinding(None, f"{what}: the claim is about the stored model only")
+    try:
+        loaded = load_model(found)
+    except VerifyInputError as exc:
+        return SourceBinding(f"source {source} is not a valid model file ({exc})", "")
+    if exact_of(loaded) != model:
+        return SourceBinding(f"source {source} denotes another model than the stored one "
+                             "(exact data differ)", "")
+    if loaded.name != name:
+        return SourceBinding(f"name {name!r} is not the source file's model name "
+                             f"{loaded.name!r}", "")
+    for key in UNVERIFIED_KEYS:
+        if key in unverified and unverified[key] != loaded.meta.get(key):
+            return SourceBinding(f"unverified.{key} = {unverified[key]!r} differs from the "
+                                 f"source file's {loaded.meta.get(key)!r}", "")
+    return SourceBinding(None, f"the stored model is exactly the one {source} denotes")
+
+
+__all__ = ["LEGACY_BAND_STATEMENT", "LEGACY_KYP_STATEMENT", "UNVERIFIED_KEYS", "Claim",
+           "SourceBinding", "bind_source", "check_unverified", "claim_from_fields",
+           "exact_of", "file_name", "model_from_json", "model_to_json", "resolve_source",
+           "shifted", "slug", "statement", "unverified_meta"]
