@@ -38,6 +38,7 @@ from verify.proof import (
     positive,
     rodrigues,
     sin,
+    sk,
     square,
     sym,
     tr,
@@ -168,7 +169,7 @@ def test_a_constant_false_condition_is_vacuous():
     d = _anything(ctx, where=(ctx.condition("tr(I) = 2", tr(I3), 2),))
     result = check(d, SMALL)
     assert result.verdict == "inconclusive"
-    assert "ideal contains 1" in result.steps[0].exact
+    assert "no common real solution" in result.steps[0].exact
 
 
 def test_lambda_min_of_the_identity_is_one_not_five():
@@ -193,6 +194,12 @@ def test_a_condition_with_no_real_solution_is_not_verified():
     c = ctx.condition("x² + 1 = 0", x * x + 1, 0)
     d = Derivation("y = 1", y, ctx, where=(c,)).equals(y * (x * x + 2), by_algebra())
     result = check(d, SMALL)
+    assert result.verdict == "inconclusive"
+    assert "no common real solution" in result.steps[0].exact  # x² + 1 is definite
+    c2 = ctx.condition("x² + y² + 1 = 2xy", x * x + y * y + 1, 2 * x * y)  # not by shape
+    d2 = Derivation("y = 1", y, ctx, where=(c2,)).equals(y * (x * x + y * y + 2 - 2 * x * y),
+                                                        by_algebra())
+    result = check(d2, SMALL)
     assert result.verdict == "inconclusive"
     assert "no sampled point" in result.steps[0].exact
 
@@ -699,3 +706,25 @@ def test_a_duck_typed_assumption_is_refused():
     x = ctx.scalar("x")
     with pytest.raises(ProofSyntaxError, match=r"ctx\.assume"):
         assumed(Fake(-x * x - 1))
+
+
+def test_two_angles_at_pi_together():
+    """cos θ + cos φ = -2 holds only at θ = φ = π: outside both charts at once."""
+    ctx = Context("gap")
+    th, ph = ctx.angle("θ"), ctx.angle("φ")
+    on = ctx.condition("cos θ + cos φ = -2", cos(th) + cos(ph), -2)
+    wrong = Derivation("sin", sin(th) + cos(ph), ctx, where=(on,)).equals(1, by_algebra())
+    result = check(wrong, SMALL)
+    assert result.verdict == "refuted"
+    values = result.steps[0].counterexample["values"]
+    assert values["θ"]["kind"] == values["φ"]["kind"] == "chart gap"
+    right = Derivation("sin", sin(th) + cos(ph), ctx, where=(on,)).equals(-1, by_algebra())
+    assert _verdict(right) == "verified"
+
+
+def test_rotation_dynamics_must_be_skew_not_merely_small():
+    ctx = Context("dyn")
+    R, M = ctx.rotation("R"), ctx.matrix("M")
+    with pytest.raises(ProofSyntaxError, match="skew"):
+        ctx.dynamics(R, R * (M + I3))
+    ctx.dynamics(R, R * sk(M))

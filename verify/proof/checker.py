@@ -190,8 +190,8 @@ def _vacuity(problem: StepProblem, pieces: list[StepProblem]) -> str:
     if false:
         return f"assumption false as a constant: {false[0]}"
     if problem.conditions and all(p.conditions_empty for p in [problem, *pieces]):
-        return ("the side conditions have no common solution (exact: their ideal "
-                "contains 1 in every chart)")
+        return ("the side conditions have no common real solution (decided exactly in "
+                "every chart)")
     return ""
 
 

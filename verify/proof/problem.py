@@ -143,8 +143,13 @@ class StepProblem:
 
     @cached_property
     def conditions_empty(self) -> bool:
-        """The side conditions have no common zero, even complex: their ideal contains 1."""
-        return any(p.is_ground for p in self.condition_basis)
+        """The side conditions have no common real zero, decided exactly: their ideal
+        contains 1, or one of them is definite (every monomial an even power product,
+        every coefficient of one sign, a non-zero constant term: then it is bounded
+        away from zero on real parameters)."""
+        return any(p.is_ground for p in self.condition_basis) or any(
+            _definite(p) for p in self.condition_polynomials
+        )
 
     @cached_property
     def false_constant_assumptions(self) -> list[str]:
@@ -161,13 +166,24 @@ class StepProblem:
         return out
 
     def vanishes(self, value: KnownFraction) -> bool:
-        """Exactly zero, or in the ideal of the side conditions (sufficient, not necessary)."""
+        """Exactly zero, or in the ideal of the side conditions, or the conditions have no
+        real solution here (each sufficient, not necessary, for zero on the condition set)."""
         if value.is_zero():
+            return True
+        if self.conditions and self.conditions_empty:
             return True
         basis = self.condition_basis
         if not basis:
             return False
         return not value.num.rem(basis)
+
+
+def _definite(poly) -> bool:
+    """poly > 0 or poly < 0 at every real point, by the shape of its terms (exact)."""
+    terms = poly.terms()
+    signs = {c > 0 for _, c in terms}
+    return (len(signs) == 1 and all(e % 2 == 0 for m, _ in terms for e in m)
+            and any(not any(m) for m, _ in terms))
 
 
 def _fraction(c) -> Fraction:
