@@ -728,3 +728,15 @@ def test_rotation_dynamics_must_be_skew_not_merely_small():
     with pytest.raises(ProofSyntaxError, match="skew"):
         ctx.dynamics(R, R * (M + I3))
     ctx.dynamics(R, R * sk(M))
+
+
+def test_replaced_bound_terms_are_refused():
+    ctx = Context("bypass")
+    x = ctx.scalar("x")
+    because = by_bound(square(x))
+    d = Derivation("swap", x * x, ctx).ge(0, because)
+    because.terms = [object()]
+    with pytest.raises(ProofSyntaxError, match="replaced"):
+        check(d, SMALL)
+    because.terms = (object(),)
+    assert check(d, SMALL).verdict == "inconclusive"

@@ -127,6 +127,8 @@ def _problem(d: Derivation, step: Step) -> StepProblem:
     assumptions = list(d.assumes)
     if isinstance(because, ByBound):
         for t in because.terms:
+            if not issued(t):
+                continue  # refused by the exact check; nothing of it is evaluated
             extra += (t.value, *(p.expr for p in t.premises))
             assumptions += [a for a in t.assumptions if a not in assumptions]
     return StepProblem(step.relation, step.lhs, step.rhs, conditions, tuple(assumptions),
@@ -246,7 +248,7 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
                            "exact evaluation at the point (float rounding)")
     kernel: list[str] = []
     if isinstance(step.because, ByBound):
-        for t in step.because.terms:
+        for t in filter(issued, step.because.terms):
             kernel += [KERNEL[k] for k in sorted(t.kernel) if KERNEL[k] not in kernel]
     return StepResult(
         index=index + 1,
@@ -373,6 +375,8 @@ def _validate(d: Derivation) -> None:
                                    "verify.proof (by_algebra, by_bound, by_citation)")
         if not all(type(c) is Condition for c in step.where):
             raise ProofSyntaxError(f"{d.name}: step {i}: where= takes conditions")
+        if isinstance(step.because, ByBound) and type(step.because.terms) is not tuple:
+            raise ProofSyntaxError(f"{d.name}: step {i}: by_bound's terms were replaced")
         validate_tree(step.lhs, step.rhs)
         if step.lhs is not previous and structural_key(step.lhs) != structural_key(previous):
             raise ProofSyntaxError(

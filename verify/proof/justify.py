@@ -292,7 +292,8 @@ class ByBound(Justification):
         self.terms = terms
 
     def describe(self) -> str:
-        reasons = "; ".join(t.reason for t in self.terms)
+        reasons = "; ".join(t.reason if issued(t) else "(a term not from the kernel)"
+                            for t in self.terms)
         return f"{self.note}: {reasons}" if self.note else reasons
 
 
