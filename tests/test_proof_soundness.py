@@ -740,3 +740,15 @@ def test_replaced_bound_terms_are_refused():
         check(d, SMALL)
     because.terms = (object(),)
     assert check(d, SMALL).verdict == "inconclusive"
+
+
+def test_a_condition_pinning_a_unit_vector_to_the_pole_is_covered():
+    """With the pole itself as a constant, u·e3 = 1 holds only outside u's chart."""
+    ctx = Context("gap")
+    u = ctx.unit_vector("u")
+    e3 = chart_gap(u.data)
+    on = ctx.condition("<u, e3> = 1", dot(u, e3), 1)
+    wrong = Derivation("u3", dot(u, e3), ctx, where=(on,)).equals(0, by_algebra())
+    result = check(wrong, SMALL)
+    assert result.verdict == "refuted"
+    assert result.steps[0].counterexample["values"]["u"]["value"] == [0.0, 0.0, 1.0]
