@@ -185,16 +185,19 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
     from verify.proof import check
-    from verify.proof.user_file import load_derivations
+    from verify.proof.user_file import contained, load_derivations
     from verify.report.atomic import write_atomic
 
     derivations = load_derivations(args.file)
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
-        r = check(d, search_settings(context, 101 * k))
+        with contained(args.file, f"checking derivation {k + 1}"):
+            r = check(d, search_settings(context, 101 * k))
         results.append(r)
-        print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.start} {r.relation} {r.end}")
+        print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.conclusion}")
+        if r.vacuous:
+            print(f"      vacuous: {r.vacuous}")
         for s in r.steps:
             print(f"  step {s.index} {s.relation:<2} {s.verdict:<12} {s.justification}")
             if s.verdict != "verified":

@@ -28,8 +28,9 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
     out = [
         Evidence(
             EvidenceKind.DERIVATION,
-            f"{result.name}: {result.start} {result.relation} {result.end} — {verdict} "
-            f"({len(result.steps)} step(s))",
+            f"{result.name}: {result.conclusion} — {verdict} "
+            f"({len(result.steps)} step(s))"
+            + (f"; vacuous: {result.vacuous}" if result.vacuous else ""),
             result.to_json(),
             passed=verdict == expected,
         )

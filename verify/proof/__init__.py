@@ -4,6 +4,8 @@ Write a derivation in Python with :class:`Context` and :class:`Derivation`, just
 each step (:func:`by_algebra`, :func:`by_bound` with non-negative terms such as
 :func:`trace_lower_bound`, or :func:`by_citation`), and decide it with :func:`check`.
 The paper's Lemma 1 and Theorem 1 are written this way in :mod:`verify.paper_proofs`.
+What a "verified" rests on (the exact kernel, the charts and how their missing points
+are covered, what a derivation file can and cannot do) is in ``verify/proof/TRUSTED.md``.
 """
 
 from verify.proof.checker import DerivationResult, StepResult, check

@@ -12,7 +12,8 @@ import casadi as ca
 from sympy import QQ
 from sympy.polys.rings import PolyElement, ring
 
-from verify.proof.evaluate import Algebra, Value, evaluate
+from verify.proof import spectral
+from verify.proof.evaluate import Algebra, Value, evaluate, to_float
 from verify.proof.exact import Denominators, KnownFraction, constant, over_factor
 from verify.proof.expr import Expr, Variable, structural_key
 
@@ -53,13 +54,19 @@ class ExactAlgebra(Algebra):
     def __init__(self, space: ExactSpace):
         self.space = space
         self.den = Denominators(space.ring, [])
+        self._atoms: list[spectral.Atom] = []
+        self._values: dict[tuple, KnownFraction] = {}
 
     def const(self, value: Fraction) -> Value:
         return constant(value, self.den)
 
     def lambda_min(self, node: Expr, matrix: Value) -> Value:
-        gen = self.space.atom_gens[structural_key(node.args[0])]
-        return KnownFraction(gen, (), self.den)
+        """The atom's generator, or a known atom's value scaled (see :mod:`spectral`)."""
+        key = structural_key(node.args[0])
+        if key not in self._values:
+            gen = KnownFraction(self.space.atom_gens[key], (), self.den)
+            self._values[key] = spectral.canonical(self._atoms, matrix, gen).value
+        return self._values[key]
 
     def divide_rows(self, rows, denominator):
         if not isinstance(denominator, KnownFraction) or any(denominator.exps):
@@ -89,7 +96,7 @@ class CasadiAlgebra(Algebra):
     """CasADi SX scalars, for the IPOPT slack minimisation of inequality steps."""
 
     def const(self, value: Fraction) -> Value:
-        return ca.SX(float(value))
+        return ca.SX(to_float(value))
 
     def lambda_min(self, node: Expr, matrix: Value) -> Value:
         return symmetric_lambda_min(matrix)

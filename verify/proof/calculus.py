@@ -47,7 +47,7 @@ def _ddt(e: Expr, dyn: Mapping[int, Expr | None], cache: dict[int, Expr | None])
 
 def _rule(e: Expr, dyn, cache) -> Expr | None:
     op = e.op
-    if op in ("const", "identity", "zero"):
+    if op in ("const", "identity", "zero", "chart_gap"):
         return None
     if op == "var":
         v = e.data

@@ -4,25 +4,40 @@ Verdict of a step:
 
 - ``verified``: the exact check passed (lhs - rhs, or lhs - rhs minus the certificate's
   non-negative terms, is the zero rational function, or lies in the ideal of the side
-  conditions) and every exact premise of the terms passed; the falsifiers found nothing.
-- ``refuted``: a counterexample was confirmed exactly (:mod:`verify.proof.confirm`).
-- ``inconclusive``: anything else, including a step the exact check cannot decide
-  (a citation, a premise that fails, a certificate that does not match) when no exact
-  counterexample was found. A numerical violation that exact arithmetic cannot confirm
-  is reported but does not refute.
+  conditions) and every exact premise of the terms passed; under side conditions it
+  passed also with each angle / unit vector at the point its chart misses; the
+  conditions and assumptions are not vacuous (no exact contradiction, and some sampled
+  point satisfies them); every numerical violation the falsifiers saw was rejected by
+  exact evaluation at that point.
+- ``refuted``: a counterexample was confirmed exactly (:mod:`verify.proof.confirm`)
+  against every declaration, condition and assumption at once.
+- ``inconclusive``: anything else, with the reason: a step the exact check cannot decide
+  (a citation, a premise that fails, a certificate that does not match), vacuous or
+  unwitnessed conditions, a numerical violation exact arithmetic could not decide.
 
-A derivation is verified when every step is; refuted when some step is.
+A derivation is verified when every step is and the union of all its steps' conditions
+and assumptions is witnessed by one sampled point; refuted when some step is. Its
+conclusion states that union. ``verify/proof/TRUSTED.md`` lists what this rests on.
 """
 
 from __future__ import annotations
 
+import sys
 import time
 from dataclasses import dataclass, field
 
-from verify.proof.confirm import confirm
-from verify.proof.derivation import Derivation, Step
-from verify.proof.falsify import SearchSettings, search
-from verify.proof.justify import KERNEL, ByAlgebra, ByBound, ByCitation
+from verify.proof.confirm import confirm, exact_witness
+from verify.proof.derivation import RELATIONS, Assumption, Condition, Derivation, Step
+from verify.proof.expr import (
+    MAX_DEPTH,
+    SCALAR,
+    Expr,
+    ProofSyntaxError,
+    structural_key,
+    validate_tree,
+)
+from verify.proof.falsify import SearchReport, SearchSettings, random_search, search
+from verify.proof.justify import KERNEL, ByAlgebra, ByBound, ByCitation, Justification, issued
 from verify.proof.problem import StepProblem
 
 VERIFIED, REFUTED, INCONCLUSIVE = "verified", "refuted", "inconclusive"
@@ -60,15 +75,27 @@ class DerivationResult:
     end: str
     steps: list[StepResult]
     seconds: float
+    conditions: list[str] = field(default_factory=list)  # union over the steps
+    vacuous: str = ""  # why the steps' conditions and assumptions cannot hold together
 
     @property
     def verdict(self) -> str:
         verdicts = {s.verdict for s in self.steps}
         if REFUTED in verdicts:
             return REFUTED
-        if verdicts <= {VERIFIED}:
+        if verdicts <= {VERIFIED} and self.steps and not self.vacuous:
             return VERIFIED
         return INCONCLUSIVE
+
+    @property
+    def conclusion(self) -> str:
+        """The statement proved, with every condition and assumption it rests on."""
+        text = f"{self.start} {self.relation} {self.end}"
+        if self.conditions:
+            text += " where " + "; ".join(self.conditions)
+        if self.assumptions:
+            text += " assuming " + "; ".join(self.assumptions)
+        return text
 
     @property
     def assumptions(self) -> list[str]:
@@ -83,9 +110,11 @@ class DerivationResult:
             "statement": self.statement,
             "cite": self.cite,
             "start": self.start,
-            "conclusion": f"{self.start} {self.relation} {self.end}",
+            "conclusion": self.conclusion,
             "verdict": self.verdict,
+            "conditions": self.conditions,
             "assumptions": self.assumptions,
+            "vacuous": self.vacuous,
             "seconds": round(self.seconds, 3),
             "steps": [s.to_json() for s in self.steps],
         }
@@ -98,6 +127,8 @@ def _problem(d: Derivation, step: Step) -> StepProblem:
     assumptions = list(d.assumes)
     if isinstance(because, ByBound):
         for t in because.terms:
+            if not issued(t):
+                continue  # refused by the exact check; nothing of it is evaluated
             extra += (t.value, *(p.expr for p in t.premises))
             assumptions += [a for a in t.assumptions if a not in assumptions]
     return StepProblem(step.relation, step.lhs, step.rhs, conditions, tuple(assumptions),
@@ -118,6 +149,8 @@ def _exact_check(step: Step, problem: StepProblem) -> tuple[bool, str]:
     if isinstance(because, ByBound):
         if step.relation == "=":
             return False, "an equality is justified by algebra, not by a bound"
+        if not because.terms or not all(issued(t) for t in because.terms):
+            return False, "a non-negative term was not built by the kernel's constructors"
         total = because.terms[0].value
         for t in because.terms[1:]:
             total = total + t.value
@@ -138,28 +171,84 @@ def _exact_check(step: Step, problem: StepProblem) -> tuple[bool, str]:
     return False, f"unknown justification {type(because).__name__}"
 
 
+MAX_CHART_GAPS = 5  # 2^5 - 1 pinned copies of a step at most
+
+
+def _pieces(problem: StepProblem) -> list[StepProblem] | None:
+    """The step in every chart combination: each chart-gap variable in its chart or at the
+    point the chart misses. None when there are too many gap variables to enumerate."""
+    gaps = problem.gap_variables
+    if len(gaps) > MAX_CHART_GAPS:
+        return None
+    out = []
+    for mask in range(1, 2 ** len(gaps)):
+        out.append(problem.pinned([v for k, v in enumerate(gaps) if mask >> k & 1]))
+    return out
+
+
+def _vacuity(problem: StepProblem, pieces: list[StepProblem]) -> str:
+    """Why the conditions and assumptions can never hold, decided exactly (or "")."""
+    false = problem.false_constant_assumptions
+    if false:
+        return f"assumption false as a constant: {false[0]}"
+    if problem.conditions and all(p.conditions_empty for p in [problem, *pieces]):
+        return ("the side conditions have no common real solution (decided exactly in "
+                "every chart)")
+    return ""
+
+
+def _covered(step: Step, pieces: list[StepProblem]) -> tuple[bool, str, list[StepProblem]]:
+    """Exact check of the step at the points the charts miss (all pinned pieces)."""
+    failing = []
+    for piece in pieces:
+        ok, text = _exact_check(step, piece)
+        if not ok:
+            failing.append((piece, text))
+    if not failing:
+        return True, "", []
+    piece, text = failing[0]
+    where = ", ".join(f"{n} = {w}" for n, w in piece.pinned_names.items())
+    return False, f"but at a point the charts miss ({where}): {text}", [p for p, _ in failing]
+
+
 def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
     step = d.steps[index]
     start = time.perf_counter()
     problem = _problem(d, step)
-    ok, exact_text = _exact_check(step, problem)
     settings = SearchSettings(cfg.samples, cfg.hypothesis_examples, cfg.ipopt_starts,
                               cfg.seed + 7919 * index)
-    report, counterexample = search(problem, settings, confirm)
+    try:
+        ok, exact_text, report, counterexample, vacuous = _decide(step, problem, settings)
+    except ProofSyntaxError:
+        raise
+    except Exception as exc:  # never an internal error as the answer: say what failed
+        ok, vacuous, counterexample = False, "", None
+        exact_text = f"not decided: {type(exc).__name__} while checking ({exc})"
+        report = SearchReport()
     if counterexample is not None:
         verdict = REFUTED
         if ok:  # an exact proof and an exact counterexample cannot both stand
             exact_text += "; INTERNAL DISAGREEMENT with an exact counterexample"
             verdict = INCONCLUSIVE
-    elif ok and not report.candidates:
-        verdict = VERIFIED
-    else:
+    elif vacuous:
+        verdict, exact_text = INCONCLUSIVE, f"{exact_text}; but vacuous: {vacuous}"
+    elif not ok:
         verdict = INCONCLUSIVE
-        if ok:
-            exact_text += "; but a numerical violation was seen (not confirmed exactly)"
+    elif report.feasible == 0:
+        verdict = INCONCLUSIVE
+        exact_text += ("; but no sampled point satisfies the side conditions and "
+                       "assumptions exactly (they may be unsatisfiable)")
+    elif report.undecided:
+        verdict = INCONCLUSIVE
+        exact_text += "; but a numerical violation was seen (not decided exactly)"
+    else:
+        verdict = VERIFIED
+        if report.rejected:
+            exact_text += (f"; {report.rejected} numerical violation(s) seen and rejected by "
+                           "exact evaluation at the point (float rounding)")
     kernel: list[str] = []
     if isinstance(step.because, ByBound):
-        for t in step.because.terms:
+        for t in filter(issued, step.because.terms):
             kernel += [KERNEL[k] for k in sorted(t.kernel) if KERNEL[k] not in kernel]
     return StepResult(
         index=index + 1,
@@ -180,11 +269,191 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
     )
 
 
+def _decide(step: Step, problem: StepProblem, settings: SearchSettings):
+    """Exact check in every chart, vacuity, the searches, and an exact witness.
+
+    Returns (exact ok, text, search report, counterexample, why vacuous). The premises
+    count as satisfiable only if a sampled point, rounded to rationals with the
+    conditions solved exactly, meets every declaration exactly (:func:`exact_witness`);
+    otherwise ``report.feasible`` is set to 0.
+    """
+    pieces: list[StepProblem] = []
+    if problem.conditions:
+        found = _pieces(problem)
+        if found is None:
+            return (False, f"more than {MAX_CHART_GAPS} angle/unit-vector variables under side "
+                    "conditions: the charts' missing points cannot be covered",
+                    SearchReport(), None, "")
+        pieces = found
+    ok, exact_text = _exact_check(step, problem)
+    failing: list[StepProblem] = list(pieces)
+    if ok and pieces:
+        ok, gap_text, failing = _covered(step, pieces)
+        exact_text = ("in the charts: " + exact_text
+                      + ("; also exactly at the points the charts miss" if ok
+                         else "; " + gap_text))
+    vacuous = _vacuity(problem, pieces)
+    report, counterexample = search(problem, settings, confirm)
+    runs = [(problem, report)]
+    for piece in failing:  # a counterexample may sit only where a chart does not reach
+        if counterexample is not None:
+            break
+        more, counterexample = search(piece, settings, confirm)
+        runs.append((piece, more))
+    if ok and not vacuous and counterexample is None:
+        witnessed = _witnessed(runs)
+        for piece in pieces:  # the conditions may hold only at a chart's missing point
+            if witnessed or counterexample is not None:
+                break
+            if all(piece is not p for p, _ in runs) and not piece.conditions_empty:
+                more, counterexample = search(piece, settings, confirm)
+                runs.append((piece, more))
+                witnessed = _witnessed(runs[-1:])
+        if not witnessed:
+            for _, r in runs:
+                r.feasible = 0
+    for _, more in runs[1:]:
+        report.merge(more)
+    return ok, exact_text, report, counterexample, vacuous
+
+
+def _witnessed(runs: list) -> bool:
+    """Some sampled point of some run meets every declaration exactly.
+
+    With no condition and no assumption the only declarations are positive scalars,
+    which any sampled point meets (its rounding to rationals stays positive).
+    """
+    return any(
+        (r.feasible > 0 and not piece.conditions and not piece.assumptions)
+        or any(exact_witness(piece, point) for point in r.feasible_points[:WITNESS_TRIES])
+        for piece, r in runs
+    )
+
+
+WITNESS_TRIES = 4
+
+
+def _snapshot(d: Derivation) -> Derivation:
+    """A private copy of the chain, so that what is validated is what is checked."""
+    if type(d) is not Derivation:
+        raise ProofSyntaxError(f"check() takes a Derivation, got {type(d).__name__}")
+    try:
+        steps = [Step(s.relation, s.lhs, s.rhs, s.because, tuple(s.where), s.note)
+                 if type(s) is Step else s for s in d.steps]
+        copy = Derivation(d.name, d.start, d.context, tuple(d.where), tuple(d.assumes),
+                          d.statement, d.cite)
+    except ProofSyntaxError:
+        raise
+    except Exception as exc:
+        raise ProofSyntaxError(f"malformed derivation: {type(exc).__name__}: {exc}") from None
+    copy.steps = steps
+    return copy
+
+
+def _validate(d: Derivation) -> None:
+    """Refuse a derivation not built through the API: each step must start where the
+    previous one ended (the first at ``start``), relations and shapes must be those the
+    builders allow, and every tree must be well formed."""
+    if type(d) is not Derivation:  # a subclass could answer differently on each read
+        raise ProofSyntaxError(f"check() takes a Derivation, got {type(d).__name__}")
+    if not all(isinstance(x, str) for x in (d.name, d.statement, d.cite)):
+        raise ProofSyntaxError("a derivation's name, statement and cite are strings")
+    if not isinstance(d.start, Expr):
+        raise ProofSyntaxError(f"{d.name}: the start is not an expression")
+    if not all(type(c) is Condition for c in d.where) or not all(
+        type(a) is Assumption for a in d.assumes
+    ):
+        raise ProofSyntaxError(f"{d.name}: where= takes conditions, assumes= assumptions")
+    previous, relations = d.start, set()
+    for i, step in enumerate(d.steps, 1):
+        if type(step) is not Step or step.relation not in RELATIONS:
+            raise ProofSyntaxError(f"{d.name}: step {i} is not a step (use equals/le/ge)")
+        if not isinstance(step.because, Justification) or not type(
+            step.because
+        ).__module__.startswith("verify."):
+            raise ProofSyntaxError(f"{d.name}: step {i} needs a justification of "
+                                   "verify.proof (by_algebra, by_bound, by_citation)")
+        if not all(type(c) is Condition for c in step.where):
+            raise ProofSyntaxError(f"{d.name}: step {i}: where= takes conditions")
+        if isinstance(step.because, ByBound) and type(step.because.terms) is not tuple:
+            raise ProofSyntaxError(f"{d.name}: step {i}: by_bound's terms were replaced")
+        validate_tree(step.lhs, step.rhs)
+        if step.lhs is not previous and structural_key(step.lhs) != structural_key(previous):
+            raise ProofSyntaxError(
+                f"{d.name}: step {i} does not start where "
+                + ("the derivation starts" if i == 1 else f"step {i - 1} ended")
+            )
+        if step.rhs.shape != d.start.shape or (step.relation != "=" and
+                                              step.rhs.shape != SCALAR):
+            raise ProofSyntaxError(f"{d.name}: step {i} has the wrong shape")
+        relations.add(step.relation)
+        previous = step.rhs
+    if {"<=", ">="} <= relations:
+        raise ProofSyntaxError(f"{d.name}: a chain cannot mix <= and >=")
+    for step in d.steps:  # conditions, assumptions, terms and premises too
+        validate_tree(*_problem(d, step).all_exprs)
+
+
+def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> str:
+    """Why the union of every step's conditions and assumptions is vacuous, or ""."""
+    conditions, assumptions = _union(problems)
+    if any(
+        all(any(c is x for x in p.conditions) for c in conditions)
+        and all(any(a is x for x in p.assumptions) for a in assumptions)
+        for p in problems
+    ):
+        return ""  # one verified step carries all of them: its samples witnessed them
+    joint = StepProblem("=", d.start, d.current, conditions, assumptions)
+    pieces = (_pieces(joint) or []) if conditions else []
+    vacuous = _vacuity(joint, pieces)
+    if vacuous:
+        return vacuous
+    for piece in [joint, *pieces]:
+        if piece.conditions and piece.conditions_empty:
+            continue
+        report = SearchReport()
+        random_search(piece, cfg, report)
+        if _witnessed([(piece, report)]):
+            return ""
+    return ("no sampled point satisfies the steps' conditions and assumptions together "
+            "exactly (they may be jointly unsatisfiable)")
+
+
+def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
+    conditions: list = []
+    assumptions: list = []
+    for p in problems:
+        conditions += [c for c in p.conditions if all(c is not x for x in conditions)]
+        assumptions += [a for a in p.assumptions if all(a is not x for x in assumptions)]
+    return tuple(conditions), tuple(assumptions)
+
+
 def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
-    """Check every step of ``d``."""
+    """Check every step of ``d``, then that its conditions and assumptions can hold together."""
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, 10 * MAX_DEPTH))  # trees are walked recursively
+    try:
+        return _check(d, cfg)
+    finally:
+        sys.setrecursionlimit(limit)
+
+
+def _check(d: Derivation, cfg: SearchSettings | None) -> DerivationResult:
     cfg = cfg or SearchSettings()
     start = time.perf_counter()
+    d = _snapshot(d)
+    _validate(d)
     steps = [check_step(d, i, cfg) for i in range(len(d.steps))]
+    problems = [_problem(d, step) for step in d.steps]
+    conditions, _ = _union(problems)
+    joint = ""
+    if steps and all(s.verdict == VERIFIED for s in steps):
+        try:
+            joint = _joint(d, problems, cfg)
+        except ProofSyntaxError:
+            raise
+        except Exception as exc:
+            joint = f"joint satisfiability not decided: {type(exc).__name__} ({exc})"
     return DerivationResult(
         name=d.name,
         statement=d.statement,
@@ -194,4 +463,6 @@ def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
         end=str(d.current),
         steps=steps,
         seconds=time.perf_counter() - start,
+        conditions=[c.label for c in conditions],
+        vacuous=joint,
     )

@@ -19,9 +19,9 @@ import numpy as np
 import sympy as sp
 from sympy import QQ
 
-from verify.proof.evaluate import Algebra
-from verify.proof.falsify import Point, _gen_index, _solve_parameter
-from verify.proof.problem import StepProblem, flatten
+from verify.proof.evaluate import Algebra, to_float
+from verify.proof.falsify import REJECTED, Point, _gen_index, _solve_parameter
+from verify.proof.problem import StepProblem, flatten, principal_minors
 
 REFINEMENTS = 80
 
@@ -115,14 +115,18 @@ def exact_point(problem: StepProblem, point: Point, limit: int = 10**6) -> Exact
             return None
         rationals[gen] = Fraction(x).limit_denominator(limit)
     algebraic: dict = {}
+    solved: set = set()
     for poly in problem.condition_polynomials:
-        choice = _solve_parameter(problem, poly)
+        choice = _solve_parameter(problem, poly, solved)
         if choice is None:
+            if solved and _solve_parameter(problem, poly) is not None:
+                continue  # fixed by earlier conditions; declarations_hold decides
             return None
         gen = choice[0]
+        solved.add(gen)
         target = rationals.pop(gen)
         rest = poly.subs([(g, _to_qq(v)) for g, v in rationals.items()])
-        if any(rest.degree(g) > 0 for g in rest.ring.gens if g != gen) or gen in algebraic:
+        if any(rest.degree(g) > 0 for g in rest.ring.gens if g != gen):
             return None
         symbol = sp.Symbol("x")
         uni = sp.Poly(rest.as_expr().subs(gen.as_expr(), symbol), symbol)
@@ -131,9 +135,11 @@ def exact_point(problem: StepProblem, point: Point, limit: int = 10**6) -> Exact
         roots = []
         for factor, _ in sp.factor_list(uni.as_expr())[1]:
             roots += _isolated_roots(sp.Poly(factor, symbol))
+        if positive_gen(problem, gen):
+            roots = [r for r in roots if r.hi > 0]
         if not roots:
             return None
-        best = min(roots, key=lambda r: abs(float(r.lo + r.hi) / 2 - float(target)))
+        best = min(roots, key=lambda r: abs(to_float(r.lo + r.hi) / 2 - to_float(target)))
         if best.lo == best.hi:
             rationals[gen] = best.lo
         else:
@@ -213,34 +219,111 @@ class Counterexample:
                 "slack_sign": self.slack_sign}
 
 
-def confirm(problem: StepProblem, point: Point) -> Counterexample | None:
-    """An exactly confirmed counterexample near ``point``, or None.
+def confirm(problem: StepProblem, point: Point) -> Counterexample | str | None:
+    """Decide a numerical violation at ``point`` exactly.
 
-    Short rationals are tried first, so that the reported point is readable.
+    Returns an exactly confirmed counterexample (a point meeting every declaration,
+    condition and assumption exactly, where the step fails), :data:`REJECTED` when the
+    point rounded to rationals (denominators up to 10^6) meets every declaration and the
+    step holds there exactly (the violation was float rounding), or None when neither
+    could be decided. Short rationals are tried first, so a reported point is readable.
     """
+    outcome = None
     for limit in (8, 100, 10**4, 10**6):
-        found = _confirm_at(problem, point, limit)
-        if found is not None:
-            return found
-    return None
+        outcome = _confirm_at(problem, point, limit)
+        if isinstance(outcome, Counterexample):
+            return outcome
+    return outcome
 
 
-def _confirm_at(problem: StepProblem, point: Point, limit: int) -> Counterexample | None:
+def _confirm_at(problem: StepProblem, point: Point, limit: int) -> Counterexample | str | None:
     xp = exact_point(problem, point, limit)
     if xp is None:
         return None
     atoms = _lambda_min_roots(problem, xp)
-    if atoms is None:
+    if atoms is None or not declarations_hold(problem, xp, atoms):
         return None
+    decided = True
     for entry, value in enumerate(problem.exact_slack):
         sign = _sign_at(value, xp, atoms)
         if sign is None:
+            decided = False
             continue
         failing = sign != 0 if problem.relation == "=" else sign < 0
         if failing:
             return Counterexample(_describe(problem, xp), sign, entry,
                                   [a.describe() for a in xp.algebraic.values()])
-    return None
+    return REJECTED if decided else None
+
+
+def exact_witness(problem: StepProblem, point: Point) -> bool:
+    """A point near ``point`` (rationals, conditions solved exactly) meets every
+    declaration, condition and assumption exactly: the premises are not vacuous."""
+    for limit in (8, 100, 10**4, 10**6):
+        xp = exact_point(problem, point, limit)
+        if xp is None:
+            continue
+        atoms = _lambda_min_roots(problem, xp)
+        if atoms is not None and declarations_hold(problem, xp, atoms):
+            return True
+    return False
+
+
+def positive_gen(problem: StepProblem, gen) -> bool:
+    """``gen`` is the parameter of a scalar declared positive."""
+    return any(v.kind == "scalar" and v.positive and problem.space.param_gens[v.uid][0] == gen
+               for v in problem.variables)
+
+
+def _is_zero_at(value, xp: ExactPoint) -> bool:
+    """Exactly zero at the point: zero after the rational substitution, or a multiple of
+    the minimal polynomial of the single algebraic parameter it still involves."""
+    subs = [(g, _to_qq(v)) for g, v in xp.rationals.items()]
+    num = value.num.subs(subs)
+    if not num:
+        return True
+    left = [g for g in num.ring.gens if num.degree(g) > 0]
+    if len(left) != 1 or left[0] not in xp.algebraic:
+        return False
+    symbol = sp.Symbol("x")
+    uni = sp.Poly(num.as_expr().subs(left[0].as_expr(), symbol), symbol)
+    minimal = sp.Poly(xp.algebraic[left[0]].poly.as_expr(), symbol)
+    return uni.rem(minimal).is_zero
+
+
+def declarations_hold(problem: StepProblem, xp: ExactPoint, atoms: dict) -> bool:
+    """Every declaration holds exactly at the point, all at once: positive scalars are
+    > 0, every side condition is 0, every assumption holds (pd by Sylvester's leading
+    minors, psd by all principal minors)."""
+    from verify.proof.exact import KnownFraction
+
+    alg_den = problem.exact_slack[0].den
+    for v in problem.variables:
+        if v.kind == "scalar" and v.positive:
+            gen = problem.space.param_gens[v.uid][0]
+            if _sign_at(KnownFraction(gen, (), alg_den), xp, atoms) != 1:
+                return False
+    for c in problem.conditions:
+        (value,) = problem.exact(c.difference)
+        if not _is_zero_at(value, xp):
+            return False
+    for a in problem.assumptions:
+        if a.kind in ("pos", "nonneg"):
+            (value,) = problem.exact(a.expr)
+            sign = _sign_at(value, xp, atoms)
+            if sign is None or sign < 0 or (a.kind == "pos" and sign == 0):
+                return False
+            continue
+        m = problem.exact(a.expr)
+        half = Fraction(1, 2)
+        s = [[(m[3 * i + j] + m[3 * j + i]) * half for j in range(3)] for i in range(3)]
+        minors = principal_minors(s)
+        keys = ((0,), (0, 1), (0, 1, 2)) if a.kind == "pd" else tuple(minors)
+        for k in keys:
+            sign = _sign_at(minors[k], xp, atoms)
+            if sign is None or sign < 0 or (a.kind == "pd" and sign == 0):
+                return False
+    return True
 
 
 def _describe(problem: StepProblem, xp: ExactPoint) -> dict:
@@ -253,24 +336,28 @@ def _describe(problem: StepProblem, xp: ExactPoint) -> dict:
         for g in gens:
             if g in xp.rationals:
                 exact.append(str(xp.rationals[g]))
-                approx.append(float(xp.rationals[g]))
+                approx.append(to_float(xp.rationals[g]))
             else:
                 a = xp.algebraic[g]
                 exact.append(a.describe())
-                approx.append(float(a.lo + a.hi) / 2)
+                approx.append(to_float(a.lo + a.hi) / 2)
         value = alg.bind(v, approx)
         if isinstance(value, tuple):  # angle: report theta
             value = 2 * float(np.arctan(approx[0]))
-        out[v.name] = {
+        name = v.name if v.name not in out else f"{v.name}#{v.uid}"  # same name twice
+        out[name] = {
             "kind": v.kind,
             "parameters": exact,
             "approx_parameters": approx,
             "value": np.round(np.array(flatten(value) if isinstance(value, list) else value,
                                        dtype=float), 6).tolist(),
         }
+    for name, where in problem.pinned_names.items():  # at the point its chart misses
+        out[name] = {"kind": "chart gap", "parameters": [where], "approx_parameters": [],
+                     "value": [3.141593] if where == "π" else [0.0, 0.0, 1.0]}
     return out
 
 
 class _FloatAlgebra(Algebra):
     def const(self, value: Fraction):
-        return float(value)
+        return to_float(value)

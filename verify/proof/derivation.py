@@ -27,6 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from verify.proof.calculus import ddt
+from verify.proof.dynamics import check_dynamics
 from verify.proof.expr import (
     MATRIX,
     SCALAR,
@@ -35,6 +36,7 @@ from verify.proof.expr import (
     Variable,
     as_expr,
     var,
+    variables_of,
     zero,
 )
 from verify.proof.justify import Justification
@@ -49,6 +51,13 @@ class Condition:
     label: str
     lhs: Expr
     rhs: Expr
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.label, str):
+            raise ProofSyntaxError("a condition's label is a string")
+        for side in (self.lhs, self.rhs):
+            if not isinstance(side, Expr) or side.shape != SCALAR:
+                raise ProofSyntaxError(f"condition '{self.label}' must equate two scalars")
 
     @property
     def difference(self) -> Expr:
@@ -65,6 +74,10 @@ class Assumption:
     cite: str = ""
 
     def __post_init__(self) -> None:
+        if not isinstance(self.label, str) or not isinstance(self.cite, str):
+            raise ProofSyntaxError("an assumption's label and cite are strings")
+        if not isinstance(self.expr, Expr):
+            raise ProofSyntaxError(f"assumption '{self.label}' needs an expression")
         if self.kind in ("pd", "psd") and self.expr.shape != MATRIX:
             raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a matrix")
         if self.kind in ("pos", "nonneg") and self.expr.shape != SCALAR:
@@ -79,6 +92,7 @@ class Context:
     def __init__(self, name: str):
         self.name = name
         self._dynamics: dict[int, Expr | None] = {}
+        self._declared: set[int] = set()
         self.variables: list[Variable] = []
 
     # -- variables ----------------------------------------------------------------------
@@ -112,20 +126,45 @@ class Context:
 
     # -- dynamics -----------------------------------------------------------------------
     def dynamics(self, variable: Expr, derivative: Expr) -> None:
-        """Declare d/dt of a variable (for ``ddt``)."""
-        v = _variable(variable)
-        derivative = as_expr(derivative)
-        if derivative.shape != variable.shape:
-            raise ProofSyntaxError(f"derivative of {v.name} has the wrong shape")
-        self._dynamics[v.uid] = derivative
+        """Declare d/dt of a variable (for ``ddt``), once.
+
+        The derivative is checked exactly to be tangent: R·W with W skew for a rotation,
+        orthogonal to u for a unit vector, symmetric for a symmetric matrix; an angle
+        takes a scalar rate ω (then d/dt cos θ = -ω sin θ).
+        """
+        v = self._own(variable)
+        check_dynamics(v, as_expr(derivative))
+        self._dynamics[v.uid] = as_expr(derivative)
+        self._declared.add(v.uid)
 
     def constant(self, *variables: Expr) -> None:
+        """Declare variables constant in time (once each)."""
         for variable in variables:
-            self._dynamics[_variable(variable).uid] = None
+            v = self._own(variable)
+            self._dynamics[v.uid] = None
+            self._declared.add(v.uid)
+
+    def _own(self, variable: Expr) -> Variable:
+        v = _variable(variable)
+        if all(v is not w for w in self.variables):
+            raise ProofSyntaxError(f"{v.name} is not a variable of context {self.name!r}")
+        if v.uid in self._declared:
+            raise ProofSyntaxError(
+                f"the dynamics of {v.name} are already declared (or used by ddt); each "
+                "variable's dynamics (or constancy) is declared once, before ddt uses it"
+            )
+        return v
 
     def ddt(self, e: Expr) -> Expr:
-        """Time derivative of ``e`` along the declared dynamics (product rule)."""
-        return ddt(e, self._dynamics)
+        """Time derivative of ``e`` along the declared dynamics (product rule).
+
+        Every variable of ``e`` counts as declared from then on (a gain used as a
+        constant cannot be given dynamics later), so all derivatives of a context
+        use the same dynamics.
+        """
+        out = ddt(e, self._dynamics)
+        self._declared.update(v.uid for v in variables_of(e))
+        return out
 
     # -- side conditions and assumptions ---------------------------------------------------
     def condition(self, label: str, lhs: Expr, rhs: Expr | int = 0) -> Condition:

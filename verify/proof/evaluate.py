@@ -13,6 +13,7 @@ parametrisations of :class:`~verify.proof.expr.Variable`) and what lambda_min is
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Mapping
 from fractions import Fraction
 from typing import Any
@@ -24,19 +25,37 @@ from verify.proof.expr import Expr, ProofSyntaxError, Variable
 Value = Any
 
 
+def to_float(value: Fraction | int) -> float:
+    """A rational as the nearest float; beyond the float range +-inf (never OverflowError).
+
+    Only the untrusted numerical side converts to float; an infinite or NaN value there
+    simply yields no candidate counterexample.
+    """
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
 def evaluate(e: Expr, algebra: Algebra, env: Mapping[int, Value]) -> Value:
     """Value of ``e`` with variables (by uid) bound in ``env``; shared subtrees once."""
     cache: dict[int, Value] = {}
 
     def ev(node: Expr) -> Value:
-        key = id(node)
-        if key in cache:
-            return cache[key]
-        out = _apply(node, algebra, env, ev)
-        cache[key] = out
-        return out
+        return cache[id(node)]
 
-    return ev(e)
+    # children before parents, without recursion (a deep tree must not exhaust the stack)
+    stack: list[tuple[Expr, bool]] = [(e, False)]
+    while stack:
+        node, expanded = stack.pop()
+        if id(node) in cache:
+            continue
+        if expanded or not node.args:
+            cache[id(node)] = _apply(node, algebra, env, ev)
+        else:
+            stack.append((node, True))
+            stack.extend((a, False) for a in node.args if id(a) not in cache)
+    return cache[id(e)]
 
 
 def _apply(node: Expr, alg: Algebra, env, ev: Callable[[Expr], Value]) -> Value:
@@ -53,6 +72,9 @@ def _apply(node: Expr, alg: Algebra, env, ev: Callable[[Expr], Value]) -> Value:
     if op == "zero":
         z = alg.const(Fraction(0))
         return {(): z, (3,): [z] * 3, (3, 3): [[z] * 3 for _ in range(3)]}[node.shape]
+    if op == "chart_gap":
+        zero, one = alg.const(Fraction(0)), alg.const(Fraction(1))
+        return (-one, zero) if node.data == "angle" else [zero, zero, one]
     if op == "lambda_min":
         return alg.lambda_min(node, ev(node.args[0]))
     a = [ev(x) for x in node.args]
@@ -178,9 +200,14 @@ class NumpyAlgebra(Algebra):
         self.size = size
 
     def const(self, value: Fraction) -> Value:
-        return np.full(self.size, float(value))
+        return np.full(self.size, to_float(value))
 
     def lambda_min(self, node: Expr, matrix: Value) -> Value:
         stacked = np.stack([np.stack(row, axis=-1) for row in matrix], axis=-2)
-        return np.linalg.eigvalsh(0.5 * (stacked + np.swapaxes(stacked, -1, -2)))[..., 0]
+        sym = 0.5 * (stacked + np.swapaxes(stacked, -1, -2))
+        finite = np.all(np.isfinite(sym), axis=(-1, -2))
+        out = np.full(sym.shape[:-2], np.nan)
+        if finite.any():  # inf/NaN entries (huge constants) give NaN, not LinAlgError
+            out[finite] = np.linalg.eigvalsh(sym[finite])[..., 0]
+        return out
 

@@ -26,6 +26,11 @@ ANGLE: tuple[str, ...] = ("angle",)
 
 _ids = itertools.count()
 
+KINDS = ("rotation", "unit_vector", "angle", "vector", "matrix", "symmetric", "scalar")
+
+#: The one point each chart misses (kinds whose chart reaches every value are absent).
+CHART_GAPS = {"angle": "π", "unit_vector": "(0, 0, 1)"}
+
 
 class ProofSyntaxError(TypeError):
     """An expression or derivation is malformed (wrong shapes, floats, unknown names)."""
@@ -35,13 +40,15 @@ class ProofSyntaxError(TypeError):
 class Variable:
     """A free variable of a derivation; ``kind`` fixes its parametrisation.
 
-    Kinds and their exact parametrisations (every value is reached, up to a closed set
-    of measure zero, which continuity makes irrelevant for identities and non-strict
-    inequalities between continuous functions):
+    Kinds and their exact parametrisations (``verify/proof/TRUSTED.md`` says which
+    points each chart misses and how the checker covers them):
 
-    - ``rotation``: quaternion (w, x, y, z) != 0, R = I + 2(w q^ + q^ q^)/|q|^2;
-    - ``unit_vector``: stereographic (a, b), u = (2a, 2b, a^2 + b^2 - 1)/(a^2 + b^2 + 1);
-    - ``angle``: t = tan(theta/2), cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2);
+    - ``rotation``: quaternion (w, x, y, z) != 0, R = I + 2(w q^ + q^ q^)/|q|^2
+      (every rotation is reached);
+    - ``unit_vector``: stereographic (a, b), u = (2a, 2b, a^2 + b^2 - 1)/(a^2 + b^2 + 1)
+      (misses u = (0, 0, 1));
+    - ``angle``: t = tan(theta/2), cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2)
+      (misses theta = pi);
     - ``vector``, ``matrix``, ``symmetric``: free real entries;
     - ``scalar``: a real number, ``positive=True`` for a gain such as k_s > 0.
     """
@@ -49,7 +56,17 @@ class Variable:
     name: str
     kind: str
     positive: bool = False
-    uid: int = field(default_factory=lambda: next(_ids))
+    uid: int = field(default_factory=lambda: next(_ids), init=False)
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ProofSyntaxError(
+                f"unknown variable kind {self.kind!r}; expected one of {', '.join(KINDS)}"
+            )
+        if not isinstance(self.name, str):
+            raise ProofSyntaxError("a variable's name is a string")
+        if self.positive is not False and (self.kind != "scalar" or self.positive is not True):
+            raise ProofSyntaxError("only a scalar can be declared positive (positive=True)")
 
     @property
     def parameter_count(self) -> int:
@@ -86,19 +103,28 @@ class Expr:
     __slots__ = ("__weakref__", "args", "data", "label", "op", "shape")
     __array_priority__ = 1000  # keep numpy from broadcasting over an Expr
 
-    def __init__(self, op: str, args: tuple[Expr, ...], shape: tuple, data: Any = None):
-        self.op = op
-        self.args = args
-        self.shape = shape
-        self.data = data
-        self.label: str | None = None
+    def __init__(self, op: str, args: tuple[Expr, ...], shape: tuple, data: Any = None,
+                 label: str | None = None):
+        set_ = object.__setattr__
+        set_(self, "op", op)
+        set_(self, "args", tuple(args))
+        set_(self, "shape", shape)
+        set_(self, "data", data)
+        set_(self, "label", label)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise ProofSyntaxError(
+            "expressions are immutable; build a new one (use .named() for a new label)"
+        )
+
+    __delattr__ = __setattr__
 
     # -- naming -----------------------------------------------------------------------
     def named(self, label: str) -> Expr:
         """A copy printed as ``label`` (evaluation is unchanged)."""
-        copy = Expr(self.op, self.args, self.shape, self.data)
-        copy.label = label
-        return copy
+        if not isinstance(label, str):
+            raise ProofSyntaxError("a label is a string")
+        return Expr(self.op, self.args, self.shape, self.data, label)
 
     # -- arithmetic -------------------------------------------------------------------
     def __add__(self, other: Any) -> Expr:
@@ -212,16 +238,25 @@ def _product(a: Expr, b: Expr) -> Expr:
 
 # -- constructors ---------------------------------------------------------------------
 def var(variable: Variable) -> Expr:
-    e = Expr("var", (), variable.shape, variable)
-    e.label = variable.name
-    return e
+    return Expr("var", (), variable.shape, variable, variable.name)
+
+
+def chart_gap(variable: Variable) -> Expr:
+    """The value a variable's chart misses, as a constant of the variable's shape.
+
+    theta = pi for an angle (t = tan(theta/2) is infinite there) and (0, 0, 1) for a
+    unit vector (the pole of the stereographic projection). The checker substitutes it
+    for the variable to decide a conditioned step at the missing point exactly.
+    """
+    if variable.kind not in CHART_GAPS:
+        raise ProofSyntaxError(f"the chart of a {variable.kind} misses no point")
+    label = "π" if variable.kind == "angle" else "(0, 0, 1)"
+    return Expr("chart_gap", (), variable.shape, variable.kind, label)
 
 
 def identity() -> Expr:
     """The 3x3 identity I_3."""
-    e = Expr("identity", (), MATRIX)
-    e.label = "I"
-    return e
+    return Expr("identity", (), MATRIX, None, "I")
 
 
 I3 = identity()
@@ -363,6 +398,11 @@ def substitute(e: Expr, mapping: dict) -> Expr:
         if v.shape != k.shape:
             raise ProofSyntaxError(f"substitute(): {k.data.name} and its value differ in shape")
         table[k.data.uid] = v
+    return replace_variables(e, table)
+
+
+def replace_variables(e: Expr, table: dict[int, Expr]) -> Expr:
+    """``e`` with each variable whose uid is in ``table`` replaced (shapes already match)."""
     cache: dict[int, Expr] = {}
 
     def walk(node: Expr) -> Expr:
@@ -378,8 +418,80 @@ def substitute(e: Expr, mapping: dict) -> Expr:
                 out = node
             else:
                 out = Expr(node.op, args, node.shape, node.data)
-                out.label = None
         cache[id(node)] = out
         return out
 
     return walk(e)
+
+
+_UNARY = {  # op -> (argument shape, result shape)
+    "neg": (None, None),
+    "transpose": (MATRIX, MATRIX),
+    "trace": (MATRIX, SCALAR),
+    "sk": (MATRIX, MATRIX),
+    "sym": (MATRIX, MATRIX),
+    "hat": (VECTOR, MATRIX),
+    "vee": (MATRIX, VECTOR),
+    "cos": (ANGLE, SCALAR),
+    "sin": (ANGLE, SCALAR),
+    "lambda_min": (MATRIX, SCALAR),
+}
+
+
+def validate_tree(*exprs: Any) -> None:
+    """Refuse a tree not built by this module's constructors (shapes re-derived per node).
+
+    The checker calls this on everything it evaluates, so a hand-assembled ``Expr`` with
+    a shape that does not match its operation is a ProofSyntaxError, not a silent
+    mis-evaluation.
+    """
+    for e in exprs:
+        if type(e) is not Expr:
+            raise ProofSyntaxError(f"expected an expression, got {type(e).__name__}")
+    depth: dict[int, int] = {}
+    for e in reversed(list(nodes(*exprs))):  # children before parents
+        if not all(type(a) is Expr for a in e.args) or not _well_formed(e):
+            raise ProofSyntaxError(f"malformed expression node {e.op!r} (build expressions "
+                                   "with operators and the functions of verify.proof)")
+        depth[id(e)] = 1 + max((depth.get(id(a), 0) for a in e.args), default=0)
+        if depth[id(e)] > MAX_DEPTH:
+            raise ProofSyntaxError(f"an expression is nested more than {MAX_DEPTH} levels "
+                                   "deep; split it into named parts or balance long sums")
+
+
+MAX_DEPTH = 1000
+
+
+def _well_formed(e: Expr) -> bool:
+    op, args, shape = e.op, e.args, e.shape
+    shapes = [a.shape for a in args]
+    if op == "var":
+        return not args and type(e.data) is Variable and shape == e.data.shape
+    if op == "const":
+        return not args and shape == SCALAR and type(e.data) is Fraction
+    if op in ("identity", "zero"):
+        return not args and shape in (SCALAR, VECTOR, MATRIX) and (op == "zero"
+                                                                   or shape == MATRIX)
+    if op == "chart_gap":
+        return not args and e.data in CHART_GAPS and shape == (
+            ANGLE if e.data == "angle" else VECTOR)
+    if op in _UNARY:
+        if len(args) != 1:
+            return False
+        a, r = _UNARY[op]
+        if op == "neg":
+            return shapes[0] == shape and shape != ANGLE
+        return shapes[0] == a and shape == r
+    if len(args) != 2 or ANGLE in shapes:
+        return False
+    if op == "add":
+        return shapes[0] == shapes[1] == shape
+    if op == "scale":
+        return shapes[0] == SCALAR and shapes[1] == shape
+    if op == "matmul":
+        return shapes[0] == MATRIX and shapes[1] in (MATRIX, VECTOR) and shape == shapes[1]
+    if op == "dot":
+        return shapes == [VECTOR, VECTOR] and shape == SCALAR
+    if op == "outer":
+        return shapes == [VECTOR, VECTOR] and shape == MATRIX
+    return False

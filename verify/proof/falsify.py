@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import casadi as ca
 import numpy as np
@@ -22,7 +23,7 @@ from hypothesis import strategies as st
 from hypothesis.errors import NoSuchExample
 
 from verify.proof.algebras import CasadiAlgebra, det3
-from verify.proof.evaluate import NumpyAlgebra, evaluate
+from verify.proof.evaluate import NumpyAlgebra, evaluate, to_float
 from verify.proof.expr import Variable, lambda_min
 from verify.proof.problem import StepProblem, flatten
 
@@ -46,12 +47,30 @@ class SearchReport:
     ipopt_runs: int = 0
     worst_violation: float = -math.inf
     candidates: list[Point] = field(default_factory=list)
+    feasible: int = 0  # sampled points meeting every condition and assumption (floats)
+    feasible_points: list[Point] = field(default_factory=list)  # a few of them
+    rejected: int = 0  # numerical violations that exact arithmetic showed to be rounding
+    undecided: int = 0  # numerical violations exact arithmetic could not decide
+
+    def merge(self, other: SearchReport) -> None:
+        self.random_points += other.random_points
+        self.hypothesis_examples += other.hypothesis_examples
+        self.ipopt_runs += other.ipopt_runs
+        self.worst_violation = max(self.worst_violation, other.worst_violation)
+        self.candidates += other.candidates
+        self.feasible += other.feasible
+        self.feasible_points += other.feasible_points
+        self.rejected += other.rejected
+        self.undecided += other.undecided
 
     def to_json(self) -> dict:
         return {
             "random_points": self.random_points,
             "hypothesis_examples": self.hypothesis_examples,
             "ipopt_runs": self.ipopt_runs,
+            "feasible_points": self.feasible,
+            "violations_rejected_exactly": self.rejected,
+            "violations_undecided": self.undecided,
             "worst_relative_violation": (
                 None if not np.isfinite(self.worst_violation) else float(self.worst_violation)
             ),
@@ -92,14 +111,20 @@ def _gen_index(problem: StepProblem) -> dict:
     return index
 
 
-def _solve_parameter(problem: StepProblem, poly) -> tuple | None:
-    """Choose the parameter to solve a condition for: lowest positive degree, angles first."""
+def _solve_parameter(problem: StepProblem, poly, exclude=()) -> tuple | None:
+    """Choose the parameter to solve a condition for: lowest positive degree, angles first.
+
+    None when the condition involves a lambda_min atom (not a polynomial in the
+    parameters) or only parameters in ``exclude`` (already fixed by another condition).
+    """
     index = _gen_index(problem)
+    if any(poly.degree(g) > 0 for g in poly.ring.gens if g not in index):
+        return None
     kinds = {v.uid: v.kind for v in problem.variables}
     best = None
     for gen, (uid, i) in index.items():
         deg = poly.degree(gen)
-        if deg < 1:
+        if deg < 1 or gen in exclude:
             continue
         rank = (0 if kinds[uid] == "angle" else 1, deg)
         if best is None or rank < best[0]:
@@ -113,7 +138,7 @@ def _univariate_coefficients(poly, gen, params: dict, index: dict, n: int) -> np
     deg = poly.degree(gen)
     coeffs = np.zeros((n, deg + 1))
     for monom, c in poly.terms():
-        term = np.full(n, float(c))
+        term = np.full(n, to_float(Fraction(int(c.numerator), int(c.denominator))))
         for k, e in enumerate(monom):
             if e and k != j:
                 uid, i = index[poly.ring.gens[k]]
@@ -123,15 +148,25 @@ def _univariate_coefficients(poly, gen, params: dict, index: dict, n: int) -> np
 
 
 def apply_conditions(problem: StepProblem, params: dict, rng) -> np.ndarray:
-    """Solve each side condition for one parameter; returns the mask of usable samples."""
+    """Solve the side conditions, each for a parameter no earlier condition fixed.
+
+    Returns the mask of usable samples: those where every condition holds afterwards
+    (checked together, to float accuracy) and every positive scalar is positive.
+    """
     n = next(iter(params.values())).shape[0] if params else 1
     ok = np.ones(n, dtype=bool)
     index = _gen_index(problem)
+    positive = {uid for uid, v in ((v.uid, v) for v in problem.variables)
+                if v.kind == "scalar" and v.positive}
+    solved: set = set()
     for poly in problem.condition_polynomials:
-        choice = _solve_parameter(problem, poly)
+        choice = _solve_parameter(problem, poly, solved)
         if choice is None:
+            if solved and _solve_parameter(problem, poly) is not None:
+                continue  # fixed by earlier conditions; the joint check below decides
             return np.zeros(n, dtype=bool)
         gen, uid, i = choice
+        solved.add(gen)
         coeffs = _univariate_coefficients(poly, gen, params, index, n)
         for s in range(n):
             if not ok[s] or not np.all(np.isfinite(coeffs[s])):
@@ -143,11 +178,22 @@ def apply_conditions(problem: StepProblem, params: dict, rng) -> np.ndarray:
                 continue
             roots = np.roots(c)
             real = roots[np.abs(roots.imag) <= 1e-9 * (1 + np.abs(roots.real))].real
+            if uid in positive:
+                real = real[real > 0]
             if real.size == 0:
                 ok[s] = False
                 continue
             pick = rng.integers(real.size) if rng is not None else int(np.argmin(np.abs(real)))
             params[uid][s, i] = real[pick]
+    if problem.conditions and ok.any():
+        diffs = [c.difference for c in problem.conditions]
+        sides = [e for c in problem.conditions for e in (c.lhs, c.rhs)]
+        with np.errstate(all="ignore"):
+            values = numeric_values(problem, params, diffs + sides)
+        for k in range(len(diffs)):
+            size = 1 + np.abs(values[len(diffs) + 2 * k][0]) + np.abs(
+                values[len(diffs) + 2 * k + 1][0])
+            ok &= np.abs(values[k][0]) <= 1e-7 * size
     return ok
 
 
@@ -196,6 +242,8 @@ def random_search(problem: StepProblem, cfg: SearchSettings, report: SearchRepor
     params = sample_parameters(problem.variables, cfg.samples, rng)
     ok = apply_conditions(problem, params, rng) & assumptions_hold(problem, params)
     report.random_points += int(ok.sum())
+    report.feasible += int(ok.sum())
+    report.feasible_points += [_point(params, int(k)) for k in np.flatnonzero(ok)[:3]]
     if not ok.any():
         return
     viol = np.where(ok, relative_violation(problem, params), -np.inf)
@@ -221,7 +269,7 @@ def hypothesis_search(problem: StepProblem, cfg: SearchSettings, report: SearchR
         positive if (v.kind == "scalar" and v.positive) else coordinate for v in kinds
     ]) if total else st.just(())
     rng = None  # deterministic root choice, as hypothesis needs for shrinking
-    seen = [0]
+    seen, feasible = [0], [0]
 
     def params_of(values) -> dict:
         out, k = {}, 0
@@ -239,8 +287,11 @@ def hypothesis_search(problem: StepProblem, cfg: SearchSettings, report: SearchR
                     return False
                 if not assumptions_hold(problem, params)[0]:
                     return False
+                feasible[0] += 1
+                if len(report.feasible_points) < 6:
+                    report.feasible_points.append(_point(params, 0))
                 return bool(relative_violation(problem, params)[0] > 0)
-        except (ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError):
+        except (ZeroDivisionError, FloatingPointError, np.linalg.LinAlgError, RecursionError):
             return False
 
     try:
@@ -258,6 +309,7 @@ def hypothesis_search(problem: StepProblem, cfg: SearchSettings, report: SearchR
     except NoSuchExample:
         found = None
     report.hypothesis_examples += seen[0]
+    report.feasible += feasible[0]
     if found is not None:
         params = params_of(found)
         apply_conditions(problem, params, rng)
@@ -353,7 +405,14 @@ def search(problem: StepProblem, cfg: SearchSettings, confirm=None):
             continue
         for candidate in report.candidates[tried:]:
             found = confirm(problem, candidate)
-            if found is not None:
+            if found is REJECTED:
+                report.rejected += 1
+            elif found is None:
+                report.undecided += 1
+            else:
                 return report, found
         tried = len(report.candidates)
     return report, None
+
+
+REJECTED = "rejected"  # what ``confirm`` returns for a violation exact arithmetic disproves

@@ -17,6 +17,7 @@ inconclusive.
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -55,9 +56,46 @@ class ExactPremise:
     expr: Expr
 
 
-@dataclass(frozen=True)
+# Terms issued by the kernel's constructors, each with a fingerprint of its fields taken
+# when it was issued: the checker accepts a term only if it is here, unchanged.
+_ISSUED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_issuing = [0]
+
+
+def _fingerprint(t: Nonneg) -> tuple:
+    return (id(t.value), t.reason, tuple((id(p), p.label, id(p.expr)) for p in t.premises),
+            tuple(id(a) for a in t.assumptions), t.kernel)
+
+
+def _issue(*args, **kwargs) -> Nonneg:
+    _issuing[0] += 1
+    try:
+        return Nonneg(*args, **kwargs)
+    finally:
+        _issuing[0] -= 1
+
+
+def issued(term: object) -> bool:
+    """``term`` came from a kernel constructor and has not been altered since."""
+    return type(term) is Nonneg and _ISSUED.get(term) == _fingerprint(term)
+
+
+def _require_issued(*terms: object) -> None:
+    for t in terms:
+        if not issued(t):
+            raise ProofSyntaxError("a non-negative term must come from the kernel's "
+                                   "constructors, unaltered")
+
+
+@dataclass(frozen=True, eq=False)
 class Nonneg:
-    """A scalar quantity ``value`` that is >= 0, with the grounds for it."""
+    """A scalar quantity ``value`` that is >= 0, with the grounds for it.
+
+    Only the kernel's constructors make these (:func:`square`, :func:`positive`,
+    :func:`assumed`, :func:`trace_lower_bound`, :func:`trace_psd_product`, and sums,
+    products and non-negative multiples of such terms); ``Nonneg(...)`` written in a
+    user's file is refused, and a term altered after it was made is not accepted.
+    """
 
     value: Expr
     reason: str
@@ -65,8 +103,20 @@ class Nonneg:
     assumptions: tuple[Assumption, ...] = ()
     kernel: frozenset[str] = field(default_factory=frozenset)
 
+    def __post_init__(self) -> None:
+        if not _issuing[0]:
+            raise ProofSyntaxError(
+                "Nonneg terms come only from the kernel (square, positive, assumed, "
+                "trace_lower_bound, trace_psd_product and their sums and products); "
+                "they cannot be constructed directly"
+            )
+        if not isinstance(self.value, Expr) or self.value.shape != SCALAR:
+            raise ProofSyntaxError("a non-negative term is a scalar expression")
+        _ISSUED[self] = _fingerprint(self)
+
     def _merge(self, other: Nonneg, value: Expr, reason: str) -> Nonneg:
-        return Nonneg(
+        _require_issued(self, other)
+        return _issue(
             value,
             reason,
             self.premises + other.premises,
@@ -87,7 +137,8 @@ class Nonneg:
         c = Fraction(other) if isinstance(other, int | Fraction) else None
         if c is None or isinstance(other, bool) or c < 0:
             raise ProofSyntaxError("a non-negative term can be scaled by a constant >= 0 only")
-        return Nonneg(
+        _require_issued(self)
+        return _issue(
             as_expr(c) * self.value,
             f"{c} * ({self.reason})",
             self.premises,
@@ -108,29 +159,39 @@ def square(g: Expr) -> Nonneg:
         value = g * g
     else:
         raise ProofSyntaxError("square() needs a matrix, vector or scalar")
-    return Nonneg(value, f"square of {g}", kernel=frozenset({"squares"}))
+    return _issue(value, f"square of {g}", kernel=frozenset({"squares"}))
 
 
 def positive(k: Expr) -> Nonneg:
     """A scalar variable declared positive, e.g. the gain k_s (kernel: positive)."""
     if k.op != "var" or k.data.kind != "scalar" or not k.data.positive:
         raise ProofSyntaxError(f"{k} is not a variable declared positive")
-    return Nonneg(k, f"{k} > 0 (declared)", kernel=frozenset({"positive"}))
+    return _issue(k, f"{k} > 0 (declared)", kernel=frozenset({"positive"}))
 
 
 def assumed(assumption: Assumption) -> Nonneg:
     """A scalar assumption (kind pos or nonneg) used as a non-negative term."""
+    _require_assumption(assumption)
     if assumption.kind not in ("pos", "nonneg"):
         raise ProofSyntaxError("assumed() takes a scalar assumption (pos or nonneg)")
-    return Nonneg(assumption.expr, f"assumed: {assumption.label}", assumptions=(assumption,))
+    return _issue(assumption.expr, f"assumed: {assumption.label}", assumptions=(assumption,))
+
+
+def _require_assumption(a: object) -> None:
+    from verify.proof.derivation import Assumption
+
+    if type(a) is not Assumption:
+        raise ProofSyntaxError(f"expected an assumption made by ctx.assume(), got "
+                               f"{type(a).__name__}")
 
 
 def _psd_by_gram(label: str, b: Expr, gram: Expr, scale: Nonneg | int | Fraction):
     """Premise sym(B) = c G^T G, returning (premise, scale term)."""
     if isinstance(scale, Nonneg):
+        _require_issued(scale)
         c_term = scale
     else:
-        c_term = Nonneg(as_expr(Fraction(scale)), f"{scale} >= 0", kernel=frozenset({"positive"}))
+        c_term = _issue(as_expr(Fraction(scale)), f"{scale} >= 0", kernel=frozenset({"positive"}))
         if Fraction(scale) < 0:
             raise ProofSyntaxError("a Gram scale must be >= 0")
     premise = ExactPremise(f"{label}: sym({b}) = c G^T G", sym(b) - c_term.value * (gram.T * gram))
@@ -156,7 +217,7 @@ def trace_lower_bound(
         )
     premise, c_term = _psd_by_gram("B", b, gram, gram_scale)
     premises.append(premise)
-    return Nonneg(
+    return _issue(
         value,
         f"trace inequality tr(AB) >= lambda_min(A) tr(B), A = {a}, B = {b}",
         tuple(premises) + c_term.premises,
@@ -178,6 +239,7 @@ def trace_psd_product(
     premises = [ExactPremise(f"{a} is symmetric", a - a.T)]
     assumptions: tuple = ()
     if a_psd is not None:
+        _require_assumption(a_psd)
         if a_psd.kind not in ("pd", "psd"):
             raise ProofSyntaxError("a_psd must be a pd or psd assumption")
         premises.append(ExactPremise(f"{a} = sym of the assumed matrix", a - sym(a_psd.expr)))
@@ -188,7 +250,7 @@ def trace_psd_product(
         raise ProofSyntaxError("trace_psd_product needs a_psd= or a_gram=")
     premise, c_term = _psd_by_gram("B", b, b_gram, b_scale)
     premises.append(premise)
-    return Nonneg(
+    return _issue(
         tr(a * b),
         f"trace of a product of PSD matrices, A = {a}, B = {b}",
         tuple(premises) + c_term.premises,
@@ -230,7 +292,8 @@ class ByBound(Justification):
         self.terms = terms
 
     def describe(self) -> str:
-        reasons = "; ".join(t.reason for t in self.terms)
+        reasons = "; ".join(t.reason if issued(t) else "(a term not from the kernel)"
+                            for t in self.terms)
         return f"{self.note}: {reasons}" if self.note else reasons
 
 

@@ -8,16 +8,70 @@ a list or tuple) is checked, in order of appearance.
 
 from __future__ import annotations
 
+import os
 import runpy
+import sys
 import traceback
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 from verify.errors import VerifyInputError
 from verify.proof.derivation import Derivation
+from verify.proof.expr import ProofSyntaxError
+
+
+@contextmanager
+def contained(path: Path, stage: str) -> Iterator[None]:
+    """Run the user's code (loading, or checking objects it made) as a malformed-file
+    risk: an exit (``sys.exit``, ``exit()``, ``os._exit``, ``posix._exit``,
+    ``raise SystemExit``) or an
+    exception raised from the file's own code becomes one VerifyInputError line.
+
+    The file is Python with the verifier's privileges (see ``verify/proof/TRUSTED.md``):
+    this catches a file that stops the run, not one that rewrites the verifier.
+    """
+    modules = [os] + [m for m in (sys.modules.get("posix"), sys.modules.get("nt")) if m]
+    saved = [(m, m._exit) for m in modules]
+
+    def refuse_exit(code: int = 0) -> None:
+        raise SystemExit(code)
+
+    for m in modules:
+        m._exit = refuse_exit
+    try:
+        yield
+    except VerifyInputError:
+        raise
+    except SystemExit as exc:
+        raise VerifyInputError(
+            f"{path}: the file exited while {stage} (exit code {exc.code!r}); a derivation "
+            "file only defines derivations"
+        ) from None
+    except ProofSyntaxError as exc:
+        frames = [f for f in traceback.extract_tb(exc.__traceback__)
+                  if Path(f.filename).resolve() == path.resolve()]
+        where = f"{path}:{frames[-1].lineno}" if frames else f"{path}: {stage}"
+        raise VerifyInputError(f"{where}: {exc}") from None
+    except Exception as exc:
+        frames = [f for f in traceback.extract_tb(exc.__traceback__)
+                  if Path(f.filename).resolve() == path.resolve()]
+        if not frames and stage != "loading":
+            raise  # ours, not the file's: an internal error
+        where = f"{path}:{frames[-1].lineno}" if frames else str(path)
+        raise VerifyInputError(f"{where}: {type(exc).__name__}: {exc}") from None
+    finally:
+        for m, f in saved:
+            m._exit = f
 
 
 def load_derivations(path: Path) -> list[Derivation]:
     """Run ``path`` and return its derivations; any failure is one VerifyInputError line."""
+    with contained(path, "loading"):
+        return _load(path)
+
+
+def _load(path: Path) -> list[Derivation]:
     if not path.is_file():
         raise VerifyInputError(f"{path}: no such file")
     if path.suffix != ".py":
@@ -26,11 +80,6 @@ def load_derivations(path: Path) -> list[Derivation]:
         namespace = runpy.run_path(str(path), run_name="__verify_check__")
     except SyntaxError as exc:
         raise VerifyInputError(f"{path}:{exc.lineno}: syntax error: {exc.msg}") from None
-    except Exception as exc:  # the user's code failed: say where, in one line
-        frames = [f for f in traceback.extract_tb(exc.__traceback__)
-                  if Path(f.filename).resolve() == path.resolve()]
-        where = f"{path}:{frames[-1].lineno}" if frames else str(path)
-        raise VerifyInputError(f"{where}: {type(exc).__name__}: {exc}") from None
     if "DERIVATIONS" in namespace:
         found = namespace["DERIVATIONS"]
         if not isinstance(found, list | tuple) or not all(
