@@ -2,7 +2,8 @@
 
 Write a derivation in Python with :class:`Context` and :class:`Derivation`, justify
 each step (:func:`by_algebra`, :func:`by_bound` with non-negative terms such as
-:func:`trace_lower_bound`, or :func:`by_citation`), and decide it with :func:`check`.
+:func:`trace_lower_bound`, :func:`by_sos` with an exact sum-of-squares certificate, or
+:func:`by_citation`), and decide it with :func:`check`.
 The paper's Lemma 1 and Theorem 1 are written this way in :mod:`verify.paper_proofs`.
 """
 
@@ -27,6 +28,7 @@ from verify.proof.expr import (
     vee,
 )
 from verify.proof.falsify import SearchSettings
+from verify.proof.sos_step import by_sos, certificate_store
 from verify.proof.justify import (
     KERNEL,
     Nonneg,
@@ -56,6 +58,8 @@ __all__ = [
     "by_algebra",
     "by_bound",
     "by_citation",
+    "by_sos",
+    "certificate_store",
     "check",
     "cos",
     "dot",

@@ -24,6 +24,8 @@ from verify.proof.derivation import Derivation, Step
 from verify.proof.falsify import SearchSettings, search
 from verify.proof.justify import KERNEL, ByAlgebra, ByBound, ByCitation
 from verify.proof.problem import StepProblem
+from verify.proof.sos_step import BySos
+from verify.proof.sos_step import exact_check as sos_exact_check
 
 VERIFIED, REFUTED, INCONCLUSIVE = "verified", "refuted", "inconclusive"
 
@@ -100,6 +102,8 @@ def _problem(d: Derivation, step: Step) -> StepProblem:
         for t in because.terms:
             extra += (t.value, *(p.expr for p in t.premises))
             assumptions += [a for a in t.assumptions if a not in assumptions]
+    if isinstance(because, BySos):
+        assumptions += [a for a in because.assumptions if a not in assumptions]
     return StepProblem(step.relation, step.lhs, step.rhs, conditions, tuple(assumptions),
                        extra)
 
@@ -135,6 +139,8 @@ def _exact_check(step: Step, problem: StepProblem) -> tuple[bool, str]:
             f"slack = sum of {len(because.terms)} non-negative term(s) exactly{where}; "
             f"{n} exact premise(s) hold"
         )
+    if isinstance(because, BySos):
+        return sos_exact_check(step, problem)
     return False, f"unknown justification {type(because).__name__}"
 
 
