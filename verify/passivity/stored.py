@@ -26,6 +26,9 @@ def check_stored_certificate(path: Path) -> KypCheck:
         return gkyp.check_band_certificate_data(data, Path(path))
     if schema == certificate.SCHEMA:
         return certificate.check_certificate_file(Path(path))
+    if schema == "verify-sos-certificate/1":  # SOS certificates of by_sos steps
+        from verify.sos.certificate import check_sos_certificate_data
+        return check_sos_certificate_data(data, Path(path))
     raise ValueError(f"{path}: schema is neither {certificate.SCHEMA} nor {gkyp.SCHEMA}")
 
 

@@ -28,7 +28,6 @@ from verify.proof.expr import (
     vee,
 )
 from verify.proof.falsify import SearchSettings
-from verify.proof.sos_step import by_sos, certificate_store
 from verify.proof.justify import (
     KERNEL,
     Nonneg,
@@ -41,6 +40,7 @@ from verify.proof.justify import (
     trace_lower_bound,
     trace_psd_product,
 )
+from verify.proof.sos_step import by_sos, certificate_store
 
 __all__ = [
     "I3",

@@ -38,7 +38,7 @@ from verify.proof.derivation import Assumption
 from verify.proof.expr import ProofSyntaxError, sym
 from verify.proof.justify import Justification
 from verify.proof.problem import StepProblem
-from verify.sos import poly as P
+from verify.sos import poly as pl
 from verify.sos.program import Multiplier, SosProgram, scalar_multiplier
 
 MAX_PRODUCT = 3  # at most this many scalar facts multiplied into one multiplier
@@ -97,8 +97,8 @@ def by_sos(*assumptions: Assumption, degree: int | None = None, note: str = "") 
 class StepProgram:
     program: SosProgram
     groups: list[list[int]]
-    numerator: P.Poly
-    factors: list[tuple[P.Poly, int]]
+    numerator: pl.Poly
+    factors: list[tuple[pl.Poly, int]]
     statement: str
 
 
@@ -122,7 +122,7 @@ def _matrix_multiplier(problem: StepProblem, expr, grounds: str, shift=None):
             e = nums[3 * i + j]
             if i == j and shift is not None:
                 e = e - shift * d
-            row.append(P.from_ring(e))
+            row.append(pl.from_ring(e))
         rows.append(tuple(row))
     return Multiplier(grounds, tuple(rows))
 
@@ -131,9 +131,8 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
     """Target polynomial and multipliers of a step, re-derived from the step alone."""
     (slack,) = problem.exact_slack
     space = problem.space
-    ring = space.ring
     num = slack.num
-    factors: list[tuple[P.Poly, int]] = []
+    factors: list[tuple[pl.Poly, int]] = []
     for f in slack.den.factors:
         k = 0
         while num:
@@ -142,7 +141,7 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
                 break
             num, k = q, k + 1
         if k:
-            factors.append((P.from_ring(f), k))
+            factors.append((pl.from_ring(f), k))
     names = _names(space)
     groups: list[list[int]] = []
     i = 0
@@ -154,12 +153,12 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
     for v in space.variables:
         if v.kind == "scalar" and v.positive:
             scalars.append(scalar_multiplier(f"{v.name} > 0 (declared)",
-                                             P.from_ring(space.param_gens[v.uid][0])))
+                                             pl.from_ring(space.param_gens[v.uid][0])))
     matrices: list[Multiplier] = []
     for a in because.assumptions:
         if a.kind in ("pos", "nonneg"):
             (value,) = problem.exact(a.expr)
-            scalars.append(scalar_multiplier(f"assumed: {a.label}", P.from_ring(value.num)))
+            scalars.append(scalar_multiplier(f"assumed: {a.label}", pl.from_ring(value.num)))
         else:
             matrices.append(_matrix_multiplier(problem, sym(a.expr), f"assumed: {a.label}"))
     for atom in space.atoms:
@@ -168,29 +167,29 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
             gen = space.atom_gens[_key(arg)]
             matrices.append(_matrix_multiplier(
                 problem, arg, f"spectral: {atom} I ⪯ {arg} (symmetric)", shift=gen))
-    target = P.from_ring(num)
-    top = because.degree if because.degree is not None else P.degree(target)
+    target = pl.from_ring(num)
+    top = because.degree if because.degree is not None else pl.degree(target)
     n = len(names)
-    mults = [scalar_multiplier("1 (plain SOS)", P.constant(1, n))]
+    mults = [scalar_multiplier("1 (plain SOS)", pl.constant(1, n))]
     products: list[Multiplier] = []
     for size in range(1, MAX_PRODUCT + 1):
         for combo in itertools.combinations(scalars, size):
-            g = P.constant(1, n)
+            g = pl.constant(1, n)
             for m in combo:
-                g = P.mul(g, m.matrix[0][0])
-            if P.degree(g) <= top:
+                g = pl.mul(g, m.matrix[0][0])
+            if pl.degree(g) <= top:
                 products.append(scalar_multiplier(" × ".join(m.grounds for m in combo), g))
     mults += products
     for mat in matrices:
         mults.append(mat)
         for prod in products[: len(scalars) * 2]:
             g = prod.matrix[0][0]
-            scaled = tuple(tuple(P.mul(g, e) for e in row) for row in mat.matrix)
-            if max(P.degree(e) for row in scaled for e in row) <= top:
+            scaled = tuple(tuple(pl.mul(g, e) for e in row) for row in mat.matrix)
+            if max(pl.degree(e) for row in scaled for e in row) <= top:
                 mults.append(Multiplier(f"{prod.grounds} × {mat.grounds}", scaled))
     program = SosProgram(names, target, tuple(mults))
     statement = f"{problem.lhs} {problem.relation} {problem.rhs}"
-    return StepProgram(program, groups, P.from_ring(slack.num), factors, statement)
+    return StepProgram(program, groups, pl.from_ring(slack.num), factors, statement)
 
 
 def _names(space) -> tuple[str, ...]:
@@ -233,7 +232,7 @@ def certificate_store(directory: Path | None, source: str = ""):
 
 def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
     """The exact check of a by_sos step (called by :func:`verify.proof.checker`)."""
-    from verify.sos import certificate as C
+    from verify.sos import certificate as cert
     from verify.sos.prove import find_certificate
 
     if step.relation == "=":
@@ -242,24 +241,24 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
         sp = step_program(problem, step.because)
     except (ArithmeticError, ValueError, TypeError, KeyError) as exc:
         return False, f"no SOS program for this step ({type(exc).__name__}: {exc})"
-    key = C.claim_key(sp)
+    key = cert.claim_key(sp)
     store, source = _STORE.get()
     if store is not None:
-        stored = C.lookup(store, key)
+        stored = cert.lookup(store, key)
         if stored is not None:
-            result = C.check_bound(stored, sp)
+            result = cert.check_bound(stored, sp)
             if result.ok:
-                return True, f"{result.reason}; stored certificate {C.file_name(key)}"
+                return True, f"{result.reason}; stored certificate {cert.file_name(key)}"
     found = find_certificate(sp.program, sp.groups, max_degree=step.because.degree)
     if not found.check.ok:
         return False, f"no SOS certificate: {found.check.reason}"
-    data = C.to_data(sp, found.blocks, found.grams, key, source)
-    result = C.check_bound(data, sp)  # the same trusted check a stored file gets
+    data = cert.to_data(sp, found.blocks, found.grams, key, source)
+    result = cert.check_bound(data, sp)  # the same trusted check a stored file gets
     if not result.ok:
         return False, f"SOS certificate rejected: {result.reason}"
     where = ""
     if store is not None:
-        where = f"; written to {C.write(store, data)}"
+        where = f"; written to {cert.write(store, data)}"
     size = sum(b.gram_size for b in found.blocks)
     return True, (f"{result.reason} (search {found.solver_seconds:.2f} s, Gram order {size}, "
                   f"denominators <= {found.denominator}){where}")

@@ -15,23 +15,23 @@ from __future__ import annotations
 import itertools
 from collections.abc import Sequence
 
-from verify.sos import poly as P
+from verify.sos import poly as pl
 from verify.sos.program import Multiplier
 
 
-def _ranges(exps: Sequence[P.Monomial], idx: Sequence[int]) -> tuple[int, int]:
+def _ranges(exps: Sequence[pl.Monomial], idx: Sequence[int]) -> tuple[int, int]:
     sums = [sum(m[i] for i in idx) for m in exps]
     return min(sums), max(sums)
 
 
 def choose_basis(
-    target: P.Poly,
+    target: pl.Poly,
     multiplier: Multiplier,
     groups: Sequence[Sequence[int]],
     *,
     max_degree: int | None = None,
     limit: int = 400,
-) -> tuple[P.Monomial, ...]:
+) -> tuple[pl.Monomial, ...]:
     """Candidate basis for one block; empty when the multiplier cannot fit the target."""
     if not target:
         return ()
@@ -39,7 +39,7 @@ def choose_basis(
     h_exps = multiplier.exponents()
     if not h_exps:
         return ()
-    top = max_degree if max_degree is not None else P.degree(target)
+    top = max_degree if max_degree is not None else pl.degree(target)
     h_hi_total = max(sum(e) for e in h_exps)
     if top < h_hi_total:
         return ()
@@ -53,7 +53,7 @@ def choose_basis(
             return ()
         options = []
         for d in range(d_lo, d_hi + 1):
-            for m in P.monomials_of_degree(len(idx), d):
+            for m in pl.monomials_of_degree(len(idx), d):
                 ok = True
                 for pos, i in enumerate(idx):
                     if 2 * m[pos] + _ranges(h_exps, [i])[1] > _ranges(t_exps, [i])[1]:
@@ -81,7 +81,7 @@ def choose_basis(
     return tuple(_prune(sorted(basis), target, multiplier))[:limit] if basis else ()
 
 
-def _prune(basis: list[P.Monomial], target: P.Poly, multiplier: Multiplier):
+def _prune(basis: list[pl.Monomial], target: pl.Poly, multiplier: Multiplier):
     """Drop m when no term of H's diagonal times m^2 can be produced or matched."""
     diag = [e for i in range(multiplier.size) for e in multiplier.matrix[i][i]]
     if not diag:
@@ -91,14 +91,14 @@ def _prune(basis: list[P.Monomial], target: P.Poly, multiplier: Multiplier):
     changed = True
     while changed:
         changed = False
-        products: dict[P.Monomial, int] = {}
+        products: dict[pl.Monomial, int] = {}
         for a, b in itertools.combinations(basis, 2):
             for e in multiplier.exponents():
-                products[P.mono_mul(e, P.mono_mul(a, b))] = 1
+                products[pl.mono_mul(e, pl.mono_mul(a, b))] = 1
         keep = []
         for m in basis:
-            sq = P.mono_mul(m, m)
-            tops = [P.mono_mul(e, sq) for e in diag]
+            sq = pl.mono_mul(m, m)
+            tops = [pl.mono_mul(e, sq) for e in diag]
             if any(t in support or t in products for t in tops):
                 keep.append(m)
         if len(keep) < len(basis):

@@ -36,7 +36,7 @@ import os
 import tempfile
 from pathlib import Path
 
-from verify.sos import poly as P
+from verify.sos import poly as pl
 from verify.sos.check import SosCheck, check_identity_and_psd
 from verify.sos.program import Block, Multiplier
 
@@ -45,14 +45,14 @@ PAPER = "verify.paper_proofs"
 
 
 def _matrix_json(m: Multiplier) -> list:
-    return [[P.to_json(e) for e in row] for row in m.matrix]
+    return [[pl.to_json(e) for e in row] for row in m.matrix]
 
 
 def claim_key(sp) -> str:
     """SHA-256 of the claim: variables, numerator, allowed multipliers (canonical JSON)."""
     claim = {
         "variables": list(sp.program.variables),
-        "numerator": P.to_json(sp.numerator),
+        "numerator": pl.to_json(sp.numerator),
         "multipliers": [[m.grounds, _matrix_json(m)] for m in sp.program.multipliers],
     }
     text = json.dumps(claim, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
@@ -68,9 +68,9 @@ def to_data(sp, blocks: list[Block], grams, key: str, source: str = "") -> dict:
         "schema": SCHEMA,
         "claim": {"statement": sp.statement, "key": key, "source": source},
         "variables": list(sp.program.variables),
-        "numerator": P.to_json(sp.numerator),
-        "factors": [{"polynomial": P.to_json(f), "power": k} for f, k in sp.factors],
-        "target": P.to_json(sp.program.target),
+        "numerator": pl.to_json(sp.numerator),
+        "factors": [{"polynomial": pl.to_json(f), "power": k} for f, k in sp.factors],
+        "target": pl.to_json(sp.program.target),
         "blocks": [
             {
                 "grounds": b.multiplier.grounds,
@@ -128,8 +128,8 @@ class Parsed:
                 and isinstance(claim.get("statement"), str)):
             raise ValueError("claim must name its statement and key")
         self.claim = claim
-        self.numerator = P.from_json(data.get("numerator"), n, "numerator")
-        self.target = P.from_json(data.get("target"), n, "target")
+        self.numerator = pl.from_json(data.get("numerator"), n, "numerator")
+        self.target = pl.from_json(data.get("target"), n, "target")
         factors = data.get("factors")
         if not isinstance(factors, list):
             raise ValueError("factors must be a list")
@@ -138,7 +138,7 @@ class Parsed:
             if not (isinstance(f, dict) and isinstance(f.get("power"), int)
                     and not isinstance(f.get("power"), bool) and 1 <= f["power"] <= 64):
                 raise ValueError("a factor needs a polynomial and a power in [1, 64]")
-            self.factors.append((P.from_json(f.get("polynomial"), n, "factor"), f["power"]))
+            self.factors.append((pl.from_json(f.get("polynomial"), n, "factor"), f["power"]))
         blocks = data.get("blocks")
         if not isinstance(blocks, list) or len(blocks) > 200:
             raise ValueError("blocks must be a list")
@@ -152,11 +152,11 @@ class Parsed:
             if not (isinstance(mat, list) and mat and len(mat) <= 9
                     and all(isinstance(r, list) and len(r) == len(mat) for r in mat)):
                 raise ValueError(f"{what}: multiplier must be a square matrix of polynomials")
-            matrix = tuple(tuple(P.from_json(e, n, what) for e in row) for row in mat)
+            matrix = tuple(tuple(pl.from_json(e, n, what) for e in row) for row in mat)
             basis = b.get("basis")
             if not isinstance(basis, list) or not basis or len(basis) > 2000:
                 raise ValueError(f"{what}: basis must be a non-empty list of exponents")
-            mons = tuple(P.monomial_from_json(m, n, what) for m in basis)
+            mons = tuple(pl.monomial_from_json(m, n, what) for m in basis)
             block = Block(Multiplier(b["grounds"], matrix), mons)
             gram = b.get("gram")
             size = block.gram_size
@@ -164,13 +164,13 @@ class Parsed:
                     and all(isinstance(r, list) and len(r) == size for r in gram)):
                 raise ValueError(f"{what}: gram must be {size} x {size}")
             self.blocks.append(block)
-            self.grams.append([[P.rational(x, what) for x in row] for row in gram])
+            self.grams.append([[pl.rational(x, what) for x in row] for row in gram])
 
 
 def _identity(c: Parsed) -> SosCheck:
     rebuilt = c.target
     for f, k in c.factors:
-        rebuilt = P.mul(rebuilt, P.power(f, k, c.n))
+        rebuilt = pl.mul(rebuilt, pl.power(f, k, c.n))
     if rebuilt != c.numerator:
         return SosCheck(False, "numerator is not prod(factor^power) * target")
     return check_identity_and_psd(c.target, c.blocks, c.grams)
@@ -193,7 +193,7 @@ def check_bound(data: dict, sp) -> SosCheck:
     return _identity(c)
 
 
-def _nonneg_factor(f: P.Poly) -> bool:
+def _nonneg_factor(f: pl.Poly) -> bool:
     """A constant >= 0 plus non-negative multiples of squares of single variables."""
     for m, c in f.items():
         if c < 0 or not (sum(m) == 0 or (sum(m) == 2 and max(m) == 2)):
@@ -212,7 +212,7 @@ def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
     if c.claim.get("source") == PAPER:
         from verify.paper_proofs.sos_proofs import program_for_key
 
-        sp = program_for_key(c.claim["key"])
+        sp = program_for_key(c.claim["key"], c.claim["statement"])
         if sp is None:
             return SosCheck(False, "no by_sos step of the paper's proofs has this claim key")
         result = check_bound(data, sp)

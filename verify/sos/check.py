@@ -18,7 +18,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from verify.passivity.psd import psd_exact
-from verify.sos import poly as P
+from verify.sos import poly as pl
 from verify.sos.program import Block, expand
 
 
@@ -28,10 +28,10 @@ class SosCheck:
     reason: str
 
 
-def check_identity_and_psd(target: P.Poly, blocks, grams) -> SosCheck:
+def check_identity_and_psd(target: pl.Poly, blocks, grams) -> SosCheck:
     if len(blocks) != len(grams):
         return SosCheck(False, "one Gram matrix per block is needed")
-    total: P.Poly = {}
+    total: pl.Poly = {}
     for k, (b, q) in enumerate(zip(blocks, grams, strict=True)):
         if not isinstance(b, Block):
             return SosCheck(False, f"block {k} is malformed")
@@ -40,8 +40,8 @@ def check_identity_and_psd(target: P.Poly, blocks, grams) -> SosCheck:
             return SosCheck(False, f"block {k}: Gram matrix must be {n} x {n}")
         if any(q[r][s] != q[s][r] for r in range(n) for s in range(r)):
             return SosCheck(False, f"block {k}: Gram matrix is not symmetric")
-        total = P.add(total, expand(b, q))
-    difference = P.add(target, P.scale(-1, total))
+        total = pl.add(total, expand(b, q))
+    difference = pl.add(target, pl.scale(-1, total))
     if difference:
         return SosCheck(False, f"the identity fails in {len(difference)} coefficient(s)")
     for k, (b, q) in enumerate(zip(blocks, grams, strict=True)):

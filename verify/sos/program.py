@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from verify.sos import poly as P
+from verify.sos import poly as pl
 
 
 @dataclass(frozen=True)
@@ -26,30 +26,30 @@ class Multiplier:
     """A k x k matrix of polynomials, PSD on all real x for the reason ``grounds``."""
 
     grounds: str
-    matrix: tuple[tuple[P.Poly, ...], ...]
+    matrix: tuple[tuple[pl.Poly, ...], ...]
 
     @property
     def size(self) -> int:
         return len(self.matrix)
 
     def degree(self) -> int:
-        return max(P.degree(e) for row in self.matrix for e in row)
+        return max(pl.degree(e) for row in self.matrix for e in row)
 
-    def exponents(self) -> list[P.Monomial]:
+    def exponents(self) -> list[pl.Monomial]:
         return [m for row in self.matrix for e in row for m in e]
 
     def same_as(self, other: Multiplier) -> bool:
         return self.grounds == other.grounds and self.matrix == other.matrix
 
 
-def scalar_multiplier(grounds: str, g: P.Poly) -> Multiplier:
+def scalar_multiplier(grounds: str, g: pl.Poly) -> Multiplier:
     return Multiplier(grounds, ((g,),))
 
 
 @dataclass(frozen=True)
 class Block:
     multiplier: Multiplier
-    basis: tuple[P.Monomial, ...]
+    basis: tuple[pl.Monomial, ...]
 
     @property
     def gram_size(self) -> int:
@@ -60,18 +60,18 @@ class Block:
         k = self.multiplier.size
         return r // k, r % k
 
-    def entry_polynomial(self, r: int, s: int) -> P.Poly:
+    def entry_polynomial(self, r: int, s: int) -> pl.Poly:
         """Coefficient polynomial of Q_rs (one ordered pair) in the block's sum."""
         a, i = self.index(r)
         b, j = self.index(s)
         h = self.multiplier.matrix[i][j]
-        m = P.mono_mul(self.basis[a], self.basis[b])
-        return {P.mono_mul(e, m): c for e, c in h.items()}
+        m = pl.mono_mul(self.basis[a], self.basis[b])
+        return {pl.mono_mul(e, m): c for e, c in h.items()}
 
 
-def expand(block: Block, gram) -> P.Poly:
+def expand(block: Block, gram) -> pl.Poly:
     """sum_{r,s} Q_rs * entry_polynomial(r, s), exactly (``gram`` of mpq, symmetric)."""
-    out: P.Poly = {}
+    out: pl.Poly = {}
     n = block.gram_size
     for r in range(n):
         for s in range(r, n):
@@ -93,5 +93,5 @@ class SosProgram:
     """Prove ``target`` >= 0 over R^n with the given multipliers (bases chosen by search)."""
 
     variables: tuple[str, ...]
-    target: P.Poly
+    target: pl.Poly
     multipliers: tuple[Multiplier, ...]

@@ -6,14 +6,14 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from verify.sos import poly as P
+from verify.sos import poly as pl
 from verify.sos.basis import choose_basis
 from verify.sos.check import SosCheck, check_identity_and_psd
 from verify.sos.program import Block, SosProgram
 from verify.sos.rounding import DENOMINATORS, _columns, correct, round_grams
 from verify.sos.search import solve
 
-MAX_GRAM_ENTRIES = 40000  # sum of n(n+1)/2 over blocks; larger programs are not attempted
+MAX_GRAM_ENTRIES = 12000  # sum of n(n+1)/2 over a stage's blocks; larger ones are not attempted
 
 
 @dataclass
@@ -47,7 +47,24 @@ def find_certificate(program: SosProgram, groups: Sequence[Sequence[int]], *,
     blocks = blocks_for(program, groups, max_degree)
     if not blocks:
         return Found(SosCheck(False, "no multiplier and monomial basis fits the slack "
-                                     f"(degree {P.degree(target)})"), [], None)
+                                     f"(degree {pl.degree(target)})"), [], None)
+    # matrix multipliers (spectral facts, PSD assumptions) first, alone: when they
+    # suffice the program is much smaller; then every block
+    stages = [[b for b in blocks if b.multiplier.size > 1], blocks]
+    stages = [st for k, st in enumerate(stages) if st and (k == 0 or st != stages[0])]
+    last = SosCheck(False, "no SOS decomposition found")
+    solver_seconds = 0.0
+    for stage in stages:
+        found = _attempt(stage, target, time_limit)
+        solver_seconds += found.solver_seconds
+        found.solver_seconds, found.seconds = solver_seconds, time.perf_counter() - start
+        if found.check.ok:
+            return found
+        last = found.check
+    return Found(last, blocks, None, solver_seconds, time.perf_counter() - start)
+
+
+def _attempt(blocks: list[Block], target: pl.Poly, time_limit: float) -> Found:
     entries = sum(b.gram_size * (b.gram_size + 1) // 2 for b in blocks)
     if entries > MAX_GRAM_ENTRIES:
         return Found(SosCheck(False, f"too large for the SOS search ({entries} Gram unknowns "
@@ -55,7 +72,7 @@ def find_certificate(program: SosProgram, groups: Sequence[Sequence[int]], *,
     result = solve(blocks, target, time_limit=time_limit)
     if result.grams is None:
         return Found(SosCheck(False, f"no SOS decomposition found ({result.status})"),
-                     blocks, None, result.seconds, time.perf_counter() - start)
+                     blocks, None, result.seconds)
     structure = _columns(blocks)
     last = SosCheck(False, "rounding failed")
     for bound in DENOMINATORS:
@@ -65,8 +82,7 @@ def find_certificate(program: SosProgram, groups: Sequence[Sequence[int]], *,
             continue
         check = check_identity_and_psd(target, blocks, grams)
         if check.ok:
-            return Found(check, blocks, grams, result.seconds, time.perf_counter() - start,
-                         bound)
+            return Found(check, blocks, grams, result.seconds, 0.0, bound)
         last = check
     return Found(SosCheck(False, f"numerical SOS found, but no exact rounding: {last.reason}"),
-                 blocks, None, result.seconds, time.perf_counter() - start)
+                 blocks, None, result.seconds)

@@ -20,7 +20,7 @@ from fractions import Fraction
 import numpy as np
 from gmpy2 import mpq
 
-from verify.sos import poly as P
+from verify.sos import poly as pl
 from verify.sos.program import Block, expand
 
 DENOMINATORS = (1, 12, 360, 10**4, 10**6, 2**30)
@@ -50,7 +50,7 @@ def _columns(blocks: list[Block]):
         cols += [(k, r, r) for r in range(b.gram_size)]
     for k, b in enumerate(blocks):
         cols += [(k, r, s) for r in range(b.gram_size) for s in range(r + 1, b.gram_size)]
-    rows: dict[P.Monomial, dict[int, mpq]] = {}
+    rows: dict[pl.Monomial, dict[int, mpq]] = {}
     for c, (k, r, s) in enumerate(cols):
         w = 1 if r == s else 2
         for m, v in blocks[k].entry_polynomial(r, s).items():
@@ -58,11 +58,11 @@ def _columns(blocks: list[Block]):
     return cols, rows
 
 
-def correct(blocks: list[Block], grams, target: P.Poly, structure=None):
+def correct(blocks: list[Block], grams, target: pl.Poly, structure=None):
     """Exactly corrected copies of ``grams`` (None when the residual is out of reach)."""
     cols, rows = structure or _columns(blocks)
-    total = P.add(*(expand(b, q) for b, q in zip(blocks, grams, strict=True)))
-    residual = P.add(target, P.scale(-1, total))
+    total = pl.add(*(expand(b, q) for b, q in zip(blocks, grams, strict=True)))
+    residual = pl.add(target, pl.scale(-1, total))
     if not residual:
         return grams
     pivots: list[tuple[int, dict[int, mpq], mpq]] = []
