@@ -290,3 +290,24 @@ def test_theorem1_reachable_steps_are_reproved_by_sos():
         if r.original.startswith("thm1.") and r.derivation.name not in OUT_OF_REACH:
             result = check(r.derivation, FAST)
             assert result.verdict == "verified", (r.derivation.name, result.steps[0].exact)
+
+
+def test_report_marks_steps_proved_by_hand_terms_and_by_sos(tmp_path):
+    from verify.claims.catalog import REGISTRY
+    from verify.claims.model import CheckContext
+    from verify.claims.registry import run_claims
+    from verify.report.render import render_markdown
+
+    wanted = ("lemma1.trace-inequality", "lemma1.sos-reproofs")
+    claims = [c for c in REGISTRY if c.id in wanted]
+    run = run_claims(claims, CheckContext(quick=True, out_dir=tmp_path,
+                                          certificates_dir=tmp_path / "certs"))
+    text = render_markdown(run)
+    assert "| proved by |" in text
+    rows = [line for line in text.splitlines() if line.startswith("| `lemma1.trace-inequality")]
+    psd = [r for r in rows if r.startswith("| `lemma1.trace-inequality-psd` | 1 |")]
+    assert psd and "| hand terms + SOS |" in psd[0]
+    twin = [r for r in rows if r.startswith("| `lemma1.trace-inequality-psd.step1-sos` | 1 |")]
+    assert twin and "| SOS |" in twin[0]
+    quoted = [r for r in rows if r.startswith("| `lemma1.trace-inequality-as-quoted` | 1 |")]
+    assert quoted and "| citation |" in quoted[0]

@@ -93,10 +93,11 @@ def _evidence_line(e) -> str:
     return f"- [{e.kind.value}, {status}] {e.summary}{path}"
 
 
-def _step_rows(results) -> list[dict[str, str]]:
-    """One row per derivation step of a section's claims (issue 3's step tables)."""
+def _step_rows(results, twins: set[tuple[str, int]] | None = None) -> list[dict[str, str]]:
+    """One row per derivation step of a section's claims; ``twins`` are the verified SOS
+    twins of the whole run (they may sit in another claim's table)."""
     rows = []
-    twins = _sos_twins(results)
+    twins = _sos_twins(results) if twins is None else twins
     for r in results:
         for e in r.outcome.evidence:
             if e.kind is not EvidenceKind.DERIVATION:
@@ -164,8 +165,8 @@ _STEP_COLUMNS = ("derivation", "step", "relation", "justification", "assumptions
                  "proved by", "evidence")
 
 
-def _section_steps_markdown(results) -> list[str]:
-    rows = _step_rows(results)
+def _section_steps_markdown(results, twins=None) -> list[str]:
+    rows = _step_rows(results, twins)
     if not rows:
         return []
     seconds = sum(r.seconds for r in results)
@@ -211,7 +212,7 @@ def render_markdown(run: RunResult, generated: datetime | None = None) -> str:
     for section, results in _sections(run):
         results = list(results)
         lines += ["", f"## Section {section}", ""]
-        lines += _section_steps_markdown(results)
+        lines += _section_steps_markdown(results, _sos_twins(run.results))
         for r in results:
             lines += _claim_markdown(r)
     lines += ["", "## Environment", ""]
@@ -278,7 +279,7 @@ def render_html(run: RunResult, generated: datetime | None = None) -> str:
     for section, results in _sections(run):
         results = list(results)
         parts.append(f"<h2>Section {esc(section)}</h2>")
-        rows = _step_rows(results)
+        rows = _step_rows(results, _sos_twins(run.results))
         if rows:
             head = "".join(f"<th>{c}</th>" for c in _STEP_COLUMNS)
             body = "".join(
