@@ -311,3 +311,16 @@ def test_report_marks_steps_proved_by_hand_terms_and_by_sos(tmp_path):
     assert twin and "| SOS |" in twin[0]
     quoted = [r for r in rows if r.startswith("| `lemma1.trace-inequality-as-quoted` | 1 |")]
     assert quoted and "| citation |" in quoted[0]
+
+
+def test_an_assumption_on_a_partial_chart_is_not_a_multiplier():
+    # 1 + cos θ <= 0 holds only at θ = π, which tan(θ/2) misses: on the chart the
+    # assumption's numerator is the constant -2, and -2 * (t²/2) + 1 = 1 - t² would
+    # "prove" cos θ >= 0 there. It is false at θ = π, so it must not be verified.
+    from verify.proof import cos
+
+    ctx = Context("partial chart")
+    theta = ctx.angle("θ")
+    at_pi = ctx.assume("1 + cos θ <= 0", -(1 + cos(theta)), "nonneg")
+    step = _one(Derivation("cos", cos(theta), ctx).ge(0, by_sos(at_pi)))
+    assert step.verdict != "verified", step.exact

@@ -20,6 +20,17 @@ covers every rotation). The checker
    a polynomial identity in every parameter, lambda_min atoms included, so it holds
    whatever their values, and the multipliers' signs are the only facts used.
 
+Charts. The identity holds for every real parameter, so the slack is >= 0 on the image
+of the charts; the half-angle and stereographic charts miss points (theta = pi, a pole),
+and the slack, a continuous function on the manifold, is >= 0 there too because the
+image is dense. With an assumption as multiplier the claim is only made where the
+assumption holds, and that set may meet a missed point with no chart point nearby
+(e.g. "1 + cos theta <= 0" holds at theta = pi only). So an assumption whose expression
+involves an angle or a unit vector is never used as a multiplier: the assumptions used
+then depend only on fully charted variables (rotations by quaternions, vectors,
+matrices, scalars), the set where they hold is a product with the partially charted
+factors, and density works again.
+
 No certificate means *inconclusive*, never verified. Side conditions (``where=``) are
 not used: a certificate proves the inequality everywhere, hence under any condition.
 Certificates are kept as JSON (:mod:`verify.sos.certificate`), reused when a stored one
@@ -35,12 +46,13 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from verify.proof.derivation import Assumption
-from verify.proof.expr import ProofSyntaxError, sym
+from verify.proof.expr import ProofSyntaxError, sym, variables_of
 from verify.proof.justify import Justification
 from verify.proof.problem import StepProblem
 from verify.sos import poly as pl
 from verify.sos.program import Multiplier, SosProgram, scalar_multiplier
 
+PARTIAL_CHARTS = ("angle", "unit_vector")  # parametrisations that miss points
 MAX_PRODUCT = 3  # at most this many scalar facts multiplied into one multiplier
 
 
@@ -156,6 +168,12 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
                                              pl.from_ring(space.param_gens[v.uid][0])))
     matrices: list[Multiplier] = []
     for a in because.assumptions:
+        partial = sorted({v.name for v in variables_of(a.expr) if v.kind in PARTIAL_CHARTS})
+        if partial:
+            # the chart misses points (theta = pi, a pole of the sphere) where the
+            # assumption may hold while it holds at no nearby chart point; a multiplier
+            # from it would prove nothing there (see the module docstring)
+            continue
         if a.kind in ("pos", "nonneg"):
             (value,) = problem.exact(a.expr)
             scalars.append(scalar_multiplier(f"assumed: {a.label}", pl.from_ring(value.num)))
@@ -239,7 +257,7 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
         return False, "an equality is justified by algebra, not by an SOS certificate"
     try:
         sp = step_program(problem, step.because)
-    except (ArithmeticError, ValueError, TypeError, KeyError) as exc:
+    except (ArithmeticError, ValueError, TypeError, KeyError, AttributeError) as exc:
         return False, f"no SOS program for this step ({type(exc).__name__}: {exc})"
     key = cert.claim_key(sp)
     store, source = _STORE.get()
