@@ -82,8 +82,9 @@ def by_sos(*assumptions: Assumption, degree: int | None = None, note: str = "") 
         multipliers: kind ``pos``/``nonneg`` (scalar) or ``pd``/``psd`` (matrix).
         Scalars declared positive and lambda_min atoms are used without being named.
     degree
-        Largest total degree of a term multiplier x SOS (default: the degree of the
-        slack's numerator).
+        Cap on the total degree of each term multiplier x SOS (default: the degree of
+        the slack's numerator, the most a certificate without cancellation needs);
+        a lower cap keeps the search small.
 
     Examples
     --------
