@@ -149,16 +149,35 @@ def stored(tmp_path_factory):
     return directory, path, d
 
 
-def test_certificate_is_reused_and_reproducible(stored):
+def test_certificate_is_reused_and_reproducible(stored, monkeypatch):
+    import verify.sos.prove
+
     directory, path, d = stored
     before = path.read_bytes()
+
+    def no_solver(*args, **kwargs):
+        raise AssertionError("the stored certificate should have been reused")
+
+    monkeypatch.setattr(verify.sos.prove, "find_certificate", no_solver)
     again = _one(d, directory)
-    assert again.verdict == "verified"
-    assert "stored certificate" in again.exact
+    assert again.verdict == "verified", again.exact
+    assert path.name in again.exact
     assert path.read_bytes() == before
     data = json.loads(before)
     assert data["schema"] == "verify-sos-certificate/1"
     assert check_sos_certificate_data(data, path).ok
+
+
+def test_a_tampered_stored_certificate_is_not_reused(stored, tmp_path):
+    _, path, d = stored
+    data = _tampered(json.loads(path.read_text()), "gram entry")
+    copy_dir = tmp_path / "store"
+    copy_dir.mkdir()
+    (copy_dir / path.name).write_text(json.dumps(data))
+    step = _one(d, copy_dir)  # rejected, so searched again and rewritten
+    assert step.verdict == "verified"
+    assert check_sos_certificate_data(json.loads((copy_dir / path.name).read_text()),
+                                      path).ok
 
 
 def test_verify_certificates_check_accepts_and_rejects(stored, tmp_path, capsys):

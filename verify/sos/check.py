@@ -35,6 +35,10 @@ def check_identity_and_psd(target: pl.Poly, blocks, grams) -> SosCheck:
     for k, (b, q) in enumerate(zip(blocks, grams, strict=True)):
         if not isinstance(b, Block):
             return SosCheck(False, f"block {k} is malformed")
+        h = b.multiplier.matrix
+        if any(len(row) != len(h) for row in h) or any(
+                h[i][j] != h[j][i] for i in range(len(h)) for j in range(i)):
+            return SosCheck(False, f"block {k}: multiplier is not a symmetric matrix")
         n = b.gram_size
         if len(q) != n or any(len(row) != n for row in q):
             return SosCheck(False, f"block {k}: Gram matrix must be {n} x {n}")
