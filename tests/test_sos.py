@@ -299,6 +299,12 @@ def test_lemma1_inequality_steps_are_reproved_by_sos(tmp_path):
     assert len(files) == 5
     for f in files:  # bound again to the paper's step, re-derived by name-free key
         assert check_sos_certificate_data(json.loads(f.read_text()), f).ok
+    data = json.loads(files[0].read_text())
+    data["claim"]["key"] = "0" * 64  # a paper certificate for no step of the paper
+    assert not check_sos_certificate_data(data, files[0]).ok
+    data = json.loads(files[0].read_text())
+    data["blocks"][0]["grounds"] = "assumed: whatever helps"
+    assert not check_sos_certificate_data(data, files[0]).ok
 
 
 @pytest.mark.slow
