@@ -26,7 +26,8 @@ def test_help_lists_every_command():
 
 
 def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys):
-    assert main(["all", "--quick", "--out", str(tmp_path)]) == 0
+    assert main(["all", "--quick", "--out", str(tmp_path),
+                 "--certificates", str(tmp_path / "certificates")]) == 0
     data = json.loads((tmp_path / "report.json").read_text())
     verdicts = {c["id"]: c["verdict"] for c in data["claims"]}
     assert verdicts["sec2.wtw-invertible"] == "refuted"
