@@ -79,6 +79,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--quick", action="store_true", help="less falsification effort")
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
+    p_check.add_argument("--certificates", type=Path, default=Path("certificates"),
+                         metavar="DIR", help="where by_sos steps reuse and write their SOS "
+                         "certificates (default certificates)")
 
     p_gate = sub.add_parser(
         "gate",
@@ -184,7 +187,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
-    from verify.proof import check
+    from verify.proof import certificate_store, check
     from verify.proof.user_file import contained, load_derivations
     from verify.report.atomic import write_atomic
 
@@ -192,7 +195,8 @@ def _cmd_check(args: argparse.Namespace) -> int:
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
-        with contained(args.file, f"checking derivation {k + 1}"):
+        with contained(args.file, f"checking derivation {k + 1}"), \
+                certificate_store(args.certificates, source=f"file:{args.file.name}"):
             r = check(d, search_settings(context, 101 * k))
         results.append(r)
         print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.conclusion}")

@@ -4,6 +4,7 @@ from verify.claims import (
     section2,  # noqa: F401  (Section 2, stealthy control)
     section3,  # noqa: F401  (Lemma 1 and Theorem 1)
     section3_dynamics,  # noqa: F401  (trajectories; dropped assumptions)
+    section3_sos,  # noqa: F401  (inequality steps re-proved by SOS certificates)
     section4,  # noqa: F401  (human passivity)
 )
 from verify.claims.registry import REGISTRY

@@ -22,7 +22,19 @@ from verify.passivity.strict_json import CertificateFormatError, read_strict
 
 Checker = Callable[[dict[str, Any], Path], KypCheck]
 
+def _check_sos(data: dict[str, Any], path: Path) -> KypCheck:
+    """SOS certificates of ``by_sos`` steps (:mod:`verify.sos.certificate`)."""
+    from verify.sos.certificate import check_sos_certificate_data
+
+    try:
+        result = check_sos_certificate_data(data, path)
+    except ValueError as exc:
+        raise CertificateFormatError(str(exc).removeprefix(f"{path}: ")) from None
+    return KypCheck(bool(result.ok), result.reason)
+
+
 SCHEMAS: dict[str, Checker] = {
+    "verify-sos-certificate/1": _check_sos,
     cf.KYP_V1: cf.check_kyp_file,
     cf.KYP_V2: cf.check_kyp_file,
     cf.BAND_V1: cf.check_band_file,

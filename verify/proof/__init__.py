@@ -2,7 +2,8 @@
 
 Write a derivation in Python with :class:`Context` and :class:`Derivation`, justify
 each step (:func:`by_algebra`, :func:`by_bound` with non-negative terms such as
-:func:`trace_lower_bound`, or :func:`by_citation`), and decide it with :func:`check`.
+:func:`trace_lower_bound`, :func:`by_sos` with an exact sum-of-squares certificate, or
+:func:`by_citation`), and decide it with :func:`check`.
 The paper's Lemma 1 and Theorem 1 are written this way in :mod:`verify.paper_proofs`.
 What a "verified" rests on (the exact kernel, the charts and how their missing points
 are covered, what a derivation file can and cannot do) is in ``verify/proof/TRUSTED.md``.
@@ -41,6 +42,7 @@ from verify.proof.justify import (
     trace_lower_bound,
     trace_psd_product,
 )
+from verify.proof.sos_step import by_sos, certificate_store
 
 __all__ = [
     "I3",
@@ -58,6 +60,8 @@ __all__ = [
     "by_algebra",
     "by_bound",
     "by_citation",
+    "by_sos",
+    "certificate_store",
     "check",
     "cos",
     "dot",

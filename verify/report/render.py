@@ -143,9 +143,11 @@ def _evidence_line(e) -> str:
     return f"- [{e.kind.value}, {status}] {e.summary}{path}"
 
 
-def _step_rows(results) -> list[dict[str, str]]:
-    """One row per derivation step of a section's claims (issue 3's step tables)."""
+def _step_rows(results, twins: set[tuple[str, int]] | None = None) -> list[dict[str, str]]:
+    """One row per derivation step of a section's claims; ``twins`` are the verified SOS
+    twins of the whole run (they may sit in another claim's table)."""
     rows = []
+    twins = _sos_twins(results) if twins is None else twins
     for r in results:
         for e in r.outcome.evidence:
             if e.kind is not EvidenceKind.DERIVATION:
@@ -155,7 +157,7 @@ def _step_rows(results) -> list[dict[str, str]]:
                 {"claim": r.claim.id, "derivation": d["name"], "step": "start",
                  "relation": d["start"],
                  "justification": d["statement"], "assumptions": "", "verdict": d["verdict"],
-                 "evidence": f"derivation {d['verdict']}"}
+                 "evidence": f"derivation {d['verdict']}", "proved by": ""}
             )
             for step in d["steps"]:
                 if step["counterexample"]:
@@ -179,17 +181,42 @@ def _step_rows(results) -> list[dict[str, str]]:
                         "assumptions": ", ".join(step["assumptions"]) or "none",
                         "verdict": step["verdict"],
                         "evidence": proof,
+                        "proved by": _proved_by(d["name"], step, twins),
                     }
                 )
     return rows
 
 
+def _sos_twins(results) -> set[tuple[str, int]]:
+    """(derivation, step) pairs whose SOS twin (``<name>.step<k>-sos``) was verified."""
+    out = set()
+    for r in results:
+        for e in r.outcome.evidence:
+            if e.kind is EvidenceKind.DERIVATION and e.data["verdict"] == "verified":
+                name = e.data["name"]
+                head, _, tail = name.rpartition(".step")
+                if tail.endswith("-sos") and tail[:-4].isdigit():
+                    out.add((head, int(tail[:-4])))
+    return out
+
+
+def _proved_by(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
+    """How an inequality step is proved: hand terms, SOS, or both (equalities: empty)."""
+    if step["relation"] == "=":
+        return ""
+    if "SOS certificate" in step["justification"]:
+        return "SOS"
+    if step["justification"].startswith("cited:"):
+        return "citation"
+    return "hand terms + SOS" if (name, step["index"]) in twins else "hand terms"
+
+
 _STEP_COLUMNS = ("derivation", "step", "relation", "justification", "assumptions", "verdict",
-                 "evidence")
+                 "proved by", "evidence")
 
 
-def _section_steps_markdown(results) -> list[str]:
-    rows = _step_rows(results)
+def _section_steps_markdown(results, twins=None) -> list[str]:
+    rows = _step_rows(results, twins)
     if not rows:
         return []
     out = [
@@ -203,7 +230,7 @@ def _section_steps_markdown(results) -> list[str]:
     for row in rows:
         cells = [_md_escape(row[c]) for c in _STEP_COLUMNS]
         cells[0] = f"`{cells[0]}`"
-        cells[5] = f"**{cells[5]}**"
+        cells[5] = f"**{cells[5]}**"  # the verdict
         out.append("| " + " | ".join(cells) + " |")
     out.append("")
     return out
@@ -235,7 +262,7 @@ def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
     for section, results in _sections(run):
         results = list(results)
         lines += ["", f"## Section {section}", ""]
-        lines += _section_steps_markdown(results)
+        lines += _section_steps_markdown(results, _sos_twins(run.results))
         for r in results:
             lines += _claim_markdown(r)
     lines += ["", "## Environment", ""]
@@ -319,7 +346,7 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
     for section, results in _sections(run):
         results = list(results)
         parts.append(f"<h2>Section {esc(section)}</h2>")
-        rows = _step_rows(results)
+        rows = _step_rows(results, _sos_twins(run.results))
         if rows:
             head = "".join(f"<th>{c}</th>" for c in _STEP_COLUMNS)
             body = "".join(

@@ -1,0 +1,232 @@
+"""SOS certificates as JSON (schema ``verify-sos-certificate/1``), and their exact checks.
+
+A certificate holds exact rationals as strings and nothing else numeric::
+
+    {"schema": "verify-sos-certificate/1",
+     "claim": {"statement": "tr(R) <= 3", "key": "<sha256>", "source": "..."},
+     "variables": ["R[0]", ...],
+     "numerator": [[[exponents], "p/q"], ...],     # the slack's numerator
+     "factors": [{"polynomial": [...], "power": 1}],  # numerator = prod f^k * target
+     "target": [...],
+     "blocks": [{"grounds": "...", "multiplier": [[poly, ...], ...],
+                 "basis": [[exponents], ...], "gram": [["p/q", ...], ...]}]}
+
+Bytes are deterministic (sorted keys, canonical term order). The key is a SHA-256 of
+the claim's own data (variables, numerator, and every multiplier the step allows), so a
+stored file is reused only for the very step it was made for.
+
+Two checks, both exact and solver-free:
+
+- :func:`check_bound` (used by ``verify check``/``verify all``): the certificate must
+  match the step as re-derived now (numerator, factors, target, each block's multiplier
+  among those the step allows, with the same grounds), then identity and Gram PSD.
+- :func:`check_sos_certificate_data` (``verify certificates check``): the factors are
+  visibly non-negative (a constant >= 0 plus squares of single variables), numerator =
+  prod f^k * target, identity and Gram PSD; for certificates of the paper's proofs the
+  claim is rebuilt from :mod:`verify.paper_proofs.sos_proofs` and bound as above. A
+  user file's certificate is not bound here (that would mean running its code); its
+  multipliers' grounds are re-derived when ``verify check`` checks the file again.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import tempfile
+from pathlib import Path
+
+from verify.sos import poly as pl
+from verify.sos.check import SosCheck, check_identity_and_psd
+from verify.sos.program import Block, Multiplier
+
+SCHEMA = "verify-sos-certificate/1"
+PAPER = "verify.paper_proofs"
+
+
+def _matrix_json(m: Multiplier) -> list:
+    return [[pl.to_json(e) for e in row] for row in m.matrix]
+
+
+def claim_key(sp) -> str:
+    """SHA-256 of the claim: variables, numerator, allowed multipliers (canonical JSON)."""
+    claim = {
+        "variables": list(sp.program.variables),
+        "numerator": pl.to_json(sp.numerator),
+        "multipliers": [[m.grounds, _matrix_json(m)] for m in sp.program.multipliers],
+    }
+    text = json.dumps(claim, sort_keys=True, separators=(",", ":"), ensure_ascii=True)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def file_name(key: str) -> str:
+    return f"sos-{key[:20]}.json"
+
+
+def to_data(sp, blocks: list[Block], grams, key: str, source: str = "") -> dict:
+    return {
+        "schema": SCHEMA,
+        "claim": {"statement": sp.statement, "key": key, "source": source},
+        "variables": list(sp.program.variables),
+        "numerator": pl.to_json(sp.numerator),
+        "factors": [{"polynomial": pl.to_json(f), "power": k} for f, k in sp.factors],
+        "target": pl.to_json(sp.program.target),
+        "blocks": [
+            {
+                "grounds": b.multiplier.grounds,
+                "multiplier": _matrix_json(b.multiplier),
+                "basis": [list(m) for m in b.basis],
+                "gram": [[str(x) for x in row] for row in q],
+            }
+            for b, q in zip(blocks, grams, strict=True)
+        ],
+    }
+
+
+def dumps(data: dict) -> str:
+    return json.dumps(data, sort_keys=True, indent=1, ensure_ascii=False) + "\n"
+
+
+def write(directory: Path, data: dict) -> Path:
+    """Write atomically (temporary file, then rename); returns the path."""
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    path = directory / file_name(data["claim"]["key"])
+    fd, tmp = tempfile.mkstemp(dir=directory, prefix=".sos-", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(dumps(data))
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def lookup(directory: Path, key: str) -> dict | None:
+    path = Path(directory) / file_name(key)
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+        return None
+    return data if isinstance(data, dict) else None
+
+
+# -- parsing --------------------------------------------------------------------------
+class Parsed:
+    def __init__(self, data: dict):
+        if not isinstance(data, dict) or data.get("schema") != SCHEMA:
+            raise ValueError(f"schema is not {SCHEMA}")
+        names = data.get("variables")
+        if not (isinstance(names, list) and all(isinstance(x, str) for x in names)
+                and 0 < len(names) <= 400):
+            raise ValueError("variables must be a non-empty list of names")
+        n = self.n = len(names)
+        self.variables = tuple(names)
+        claim = data.get("claim")
+        if not (isinstance(claim, dict) and isinstance(claim.get("key"), str)
+                and isinstance(claim.get("statement"), str)):
+            raise ValueError("claim must name its statement and key")
+        self.claim = claim
+        self.numerator = pl.from_json(data.get("numerator"), n, "numerator")
+        self.target = pl.from_json(data.get("target"), n, "target")
+        factors = data.get("factors")
+        if not isinstance(factors, list):
+            raise ValueError("factors must be a list")
+        self.factors = []
+        for f in factors:
+            if not (isinstance(f, dict) and isinstance(f.get("power"), int)
+                    and not isinstance(f.get("power"), bool) and 1 <= f["power"] <= 64):
+                raise ValueError("a factor needs a polynomial and a power in [1, 64]")
+            self.factors.append((pl.from_json(f.get("polynomial"), n, "factor"), f["power"]))
+        blocks = data.get("blocks")
+        if not isinstance(blocks, list) or len(blocks) > 200:
+            raise ValueError("blocks must be a list")
+        self.blocks: list[Block] = []
+        self.grams = []
+        for k, b in enumerate(blocks):
+            what = f"block {k}"
+            if not isinstance(b, dict) or not isinstance(b.get("grounds"), str):
+                raise ValueError(f"{what}: needs grounds, multiplier, basis and gram")
+            mat = b.get("multiplier")
+            if not (isinstance(mat, list) and mat and len(mat) <= 9
+                    and all(isinstance(r, list) and len(r) == len(mat) for r in mat)):
+                raise ValueError(f"{what}: multiplier must be a square matrix of polynomials")
+            matrix = tuple(tuple(pl.from_json(e, n, what) for e in row) for row in mat)
+            basis = b.get("basis")
+            if not isinstance(basis, list) or not basis or len(basis) > 2000:
+                raise ValueError(f"{what}: basis must be a non-empty list of exponents")
+            mons = tuple(pl.monomial_from_json(m, n, what) for m in basis)
+            block = Block(Multiplier(b["grounds"], matrix), mons)
+            gram = b.get("gram")
+            size = block.gram_size
+            if not (isinstance(gram, list) and len(gram) == size
+                    and all(isinstance(r, list) and len(r) == size for r in gram)):
+                raise ValueError(f"{what}: gram must be {size} x {size}")
+            self.blocks.append(block)
+            self.grams.append([[pl.rational(x, what) for x in row] for row in gram])
+
+
+def _identity(c: Parsed) -> SosCheck:
+    rebuilt = c.target
+    for f, k in c.factors:
+        rebuilt = pl.mul(rebuilt, pl.power(f, k, c.n))
+    if rebuilt != c.numerator:
+        return SosCheck(False, "numerator is not prod(factor^power) * target")
+    return check_identity_and_psd(c.target, c.blocks, c.grams)
+
+
+def check_bound(data: dict, sp) -> SosCheck:
+    """Exact check of a certificate against the step it claims (re-derived as ``sp``)."""
+    try:
+        c = Parsed(data)
+    except ValueError as exc:
+        return SosCheck(False, f"malformed SOS certificate: {exc}")
+    if c.variables != sp.program.variables or c.numerator != sp.numerator:
+        return SosCheck(False, "the certificate is about another polynomial than this step's")
+    if c.target != sp.program.target or c.factors != sp.factors:
+        return SosCheck(False, "the certificate's factors or target differ from this step's")
+    for k, b in enumerate(c.blocks):
+        if not any(b.multiplier.same_as(m) for m in sp.program.multipliers):
+            return SosCheck(False, f"block {k}: multiplier '{b.multiplier.grounds}' is not one "
+                                   "this step allows")
+    return _identity(c)
+
+
+def _nonneg_factor(f: pl.Poly) -> bool:
+    """A constant >= 0 plus non-negative multiples of squares of single variables."""
+    for m, c in f.items():
+        if c < 0 or not (sum(m) == 0 or (sum(m) == 2 and max(m) == 2)):
+            return False
+    return bool(f)
+
+
+def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
+    """Re-check a stored SOS certificate with no solver (``verify certificates check``)."""
+    try:
+        c = Parsed(data)
+    except ValueError as exc:
+        raise ValueError(f"{path}: malformed SOS certificate: {exc}") from None
+    if not all(_nonneg_factor(f) for f, _k in c.factors):
+        return SosCheck(False, "a factor is not visibly non-negative")
+    if c.claim.get("source") == PAPER:
+        from verify.paper_proofs.sos_proofs import program_for_key
+
+        sp = program_for_key(c.claim["key"], c.claim["statement"])
+        if sp is None:
+            return SosCheck(False, "no by_sos step of the paper's proofs has this claim key")
+        result = check_bound(data, sp)
+        if not result.ok:
+            return result
+        return SosCheck(True, f"{c.claim['statement']}: {result.reason}; bound to the "
+                              "paper's step (re-derived)")
+    result = _identity(c)
+    if not result.ok:
+        return result
+    grounds = "; ".join(sorted({b.multiplier.grounds for b in c.blocks}))
+    return SosCheck(True, f"{c.claim['statement']}: {result.reason}; multipliers rest on: "
+                          f"{grounds} (re-derived when `verify check` checks the file)")
+
+
+__all__ = ["SCHEMA", "check_bound", "check_sos_certificate_data", "claim_key", "file_name",
+           "lookup", "to_data", "write"]
