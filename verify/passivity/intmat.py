@@ -5,6 +5,10 @@ integers and d a positive ``mpz``, with R = Z / d. Products and sums then run as
 object-array loops over integers with no gcd per operation (a 100 x 100 product takes a
 few hundredths of a second where ``mpq`` arithmetic takes about a second); converting
 back to ``mpq`` normalises each entry once. Nothing here rounds: every step is exact.
+
+Linear systems go to FLINT (python-flint ``fmpz_mat.solve``: p-adic lifting over the
+integers, no rational arithmetic per step); on a 200-state model a solve that exact
+Gaussian elimination in ``mpq`` does not finish takes seconds and a few MB.
 """
 
 from __future__ import annotations
@@ -12,6 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import reduce
 
+import flint
 import numpy as np
 from gmpy2 import lcm, mpq, mpz
 
@@ -68,3 +73,23 @@ def to_float(s: ScaledInt) -> np.ndarray:
     except OverflowError:  # a quotient beyond the float range
         return np.array([[float(mpq(z, s.d)) for z in row] for row in s.Z],
                         dtype=float).reshape(s.shape)
+
+
+def to_fmpz_mat(s: ScaledInt) -> flint.fmpz_mat:
+    """The integer matrix Z as a FLINT ``fmpz_mat`` (the denominator is kept apart)."""
+    rows, cols = s.shape
+    return flint.fmpz_mat(rows, cols, [int(z) for z in s.Z.flat])
+
+
+def fmpq_to_rational(m: flint.fmpq_mat) -> RationalMatrix:
+    """A FLINT rational matrix as normalised ``mpq`` rows (exact)."""
+    return [[mpq(int(m[i, j].p), int(m[i, j].q)) for j in range(m.ncols())]
+            for i in range(m.nrows())]
+
+
+def rational_to_fmpq(m: RationalMatrix, cols: int | None = None) -> flint.fmpq_mat:
+    """``mpq`` rows as a FLINT rational matrix (exact)."""
+    rows = len(m)
+    c = (len(m[0]) if rows else 0) if cols is None else cols
+    return flint.fmpq_mat(rows, c, [flint.fmpq(int(x.numerator), int(x.denominator))
+                                    for row in m for x in row])
