@@ -27,6 +27,7 @@ from scipy.optimize import minimize_scalar
 from verify.passivity.certificate import Certificate, ExactModel, exact_model
 from verify.passivity.hamiltonian import nu_minimum, nu_values
 from verify.passivity.kyp import find_certificate
+from verify.passivity.scaling import rescale, restore
 from verify.passivity.witness import (
     Witness,
     frequency_witness,
@@ -125,6 +126,16 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     start = time.perf_counter()
     A, B, C, D = model.A, model.B, model.C, model.D
     em = exact_model(A, B, C, D)
+    rescaled = rescale(model)  # entries far from 1: decide H(beta s)/alpha exactly instead
+    if rescaled is not None:
+        inner = decide(rescaled.model, margin / rescaled.alpha)
+        if margin:
+            em = ExactModel(em.A, em.B, em.C, [[x - mpq(margin) if i == j else x
+                                                for j, x in enumerate(row)]
+                                               for i, row in enumerate(em.D)])
+        out = restore(inner, rescaled, model, em, margin)
+        out.seconds = time.perf_counter() - start
+        return out
     if margin:  # H - margin I, exactly
         shift = mpq(margin)
         em = ExactModel(em.A, em.B, em.C, [[x - shift if i == j else x for j, x in enumerate(row)]

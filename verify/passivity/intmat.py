@@ -70,9 +70,31 @@ def to_float(s: ScaledInt) -> np.ndarray:
     d = int(s.d)
     try:  # Python's int / int is correctly rounded
         return np.array([[int(z) / d for z in row] for row in s.Z], dtype=float).reshape(s.shape)
-    except OverflowError:  # a quotient beyond the float range
-        return np.array([[float(mpq(z, s.d)) for z in row] for row in s.Z],
+    except OverflowError:  # a quotient beyond the float range: +-inf there
+        return np.array([[_saturated(z, d) for z in row] for row in s.Z],
                         dtype=float).reshape(s.shape)
+
+
+def _saturated(z, d: int) -> float:
+    try:
+        return int(z) / d
+    except OverflowError:
+        return float("inf") if (z > 0) == (d > 0) else float("-inf")
+
+
+def normalised(s: ScaledInt) -> ScaledInt:
+    """c Z / d with c a power of two that brings the largest entry near 1 (exact).
+
+    Definiteness and the sign of a quadratic form do not change under c > 0, so the float
+    copy used to propose a certificate or a direction stays in range for any entries.
+    """
+    top = max((abs(int(z)) for z in s.Z.flat), default=0)
+    if top == 0:
+        return s
+    shift = int(s.d).bit_length() - top.bit_length()
+    if shift >= 0:
+        return ScaledInt(s.Z * (mpz(1) << shift), s.d)
+    return ScaledInt(s.Z, s.d * (mpz(1) << -shift))
 
 
 def to_fmpz_mat(s: ScaledInt) -> flint.fmpz_mat:

@@ -213,7 +213,10 @@ FAST_CANDIDATES = 3  # Riccati margins tried before the fallback
 def _reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | str:
     """The fast path: a KypSearch when it decides (certificate, or none can exist), else
     the reason it does not apply."""
-    red = reduce_kyp(_balanced(model, scaling))
+    try:
+        red = reduce_kyp(_balanced(model, scaling))
+    except OverflowError:
+        return "the reduced problem does not fit the floating-point range"
     if isinstance(red, NoCertificate):
         return KypSearch(None, None, "structure", red.reason)
     if not isinstance(red, Reduction):
@@ -281,6 +284,9 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
             continue
         P_float = Ti.T @ Pb @ Ti  # back to the model's coordinates
         P_float = (P_float + P_float.T) / 2
+        if not np.all(np.isfinite(P_float)):
+            last = f"{method}: the candidate is not finite"
+            continue
         for label, P in _roundings(P_float):
             P = [[(P[i][j] + P[j][i]) / 2 for j in range(n)] for i in range(n)]
             if k:

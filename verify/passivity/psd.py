@@ -47,7 +47,7 @@ def _dominance_certificate(m: ex.RationalMatrix, strict: bool) -> bool | None:
     """Exactly checked evidence: True proves M >= 0 (M > 0 if strict) by dominance, False
     refutes it by a rational vector with v^T M v < 0; None when neither was found."""
     n = len(m)
-    s = intmat.from_rational(m)
+    s = intmat.normalised(intmat.from_rational(m))  # c M, c = 2^k: same definiteness
     F = intmat.to_float(s)
     scale = float(np.max(np.abs(F)))
     if not np.isfinite(scale) or scale == 0.0:

@@ -53,7 +53,8 @@ def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
 
 def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     """A rational v with v^T M v < 0 (exact), from the float eigenvector; None if none found."""
-    F = np.array([[float(x) for x in row] for row in M])
+    # a float copy of c M (c a power of two, same signs) proposes v, whatever the entries
+    F = intmat.to_float(intmat.normalised(intmat.from_rational(M)))
     w, V = np.linalg.eigh((F + F.T) / 2)
     if w[0] >= 0:
         # the float eigenvalue may miss a tiny negative one; LDL decides below
@@ -278,7 +279,11 @@ def _may_have_rhp_root(poly) -> bool:
     Exact root isolation costs seconds per polynomial; skipping it can only miss a
     witness, never make one (the witness itself is isolated exactly).
     """
-    roots = np.roots([float(c) for c in poly.all_coeffs()])
+    try:
+        with np.errstate(all="ignore"):
+            roots = np.roots([float(c) for c in poly.all_coeffs()])
+    except (np.linalg.LinAlgError, OverflowError, ValueError):
+        return True
     if not np.all(np.isfinite(roots)):
         return True
     scale = max(1.0, float(np.max(np.abs(roots)))) if roots.size else 1.0
