@@ -19,6 +19,7 @@ from xml.sax.saxutils import escape, quoteattr
 from verify.errors import VerifyInputError
 from verify.passivity.certificate import write_certificate
 from verify.passivity.decide import PASSIVE, Decision, decide
+from verify.passivity.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
 
 
@@ -28,6 +29,19 @@ def parse_margin(text: str) -> Fraction:
         value = Fraction(text.strip())
     except (ValueError, ZeroDivisionError):
         raise VerifyInputError(f"--margin {text!r} is not a finite number") from None
+    return value
+
+
+def parse_tolerance(text: str) -> Fraction:
+    """--tolerance EPS as an exact rational >= 0 ("1e-12", "0"); one-line error otherwise."""
+    try:
+        value = Fraction(str(text).strip())
+    except (ValueError, ZeroDivisionError):
+        raise VerifyInputError(f"--tolerance {text!r} is not a finite number "
+                               "(e.g. --tolerance 1e-12)") from None
+    if value < 0:
+        raise VerifyInputError(f"--tolerance {text!r} is negative; it is a relative "
+                               "distance >= 0 (0 = exact)")
     return value
 
 
@@ -43,23 +57,35 @@ class GateResult:
 
     @property
     def passed(self) -> bool:
-        return self.decision.verdict == PASSIVE
+        return self.decision.verdict in (PASSIVE, PASSIVE_WITHIN)
 
     def line(self) -> str:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
-        text = f"{head}; certificate {self.certificate_path}" if self.passed \
-            else f"{head}; {d.reason}"
+        perturbation = getattr(d, "perturbation", None)
+        if perturbation is not None:
+            text = (f"{head}: {perturbation.summary()}; certificate of the perturbed model "
+                    f"{self.certificate_path}")
+        elif self.passed:
+            text = f"{head}; certificate {self.certificate_path}"
+        else:
+            text = f"{head}; {d.reason}"
         for index in self.indices or ():
             text += f"\n  {index.summary()}"
         return text
 
 
-def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResult]:
+def run_gate(models, margin: Fraction, certificates_dir: Path,
+             tolerance: Fraction = Fraction(0)) -> list[GateResult]:
+    """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
+    pass as *passive within tolerance* (:mod:`verify.passivity.tolerance`), and then the
+    certificate written is the perturbed model's (it names that model exactly)."""
     results = []
     for model in models:
         d = decide(model, margin)
+        if tolerance:
+            d = within_tolerance(model, tolerance, margin, d)
         path = None
         if d.certificate is not None:
             tag = d.certificate.model.fingerprint()[:12]
