@@ -67,8 +67,9 @@ def _dominance_certificate(m: ex.RationalMatrix, strict: bool) -> bool | None:
     Li = np.array([[mpz(int(x)) for x in row] for row in np.rint(np.ldexp(Lf, e))],
                   dtype=object)
     # M = Z / d and L = Li / 2^e, so (M - L L^T) d 2^(2e) = Z 2^(2e) - d Li Li^T
-    E = s.Z * (mpz(1) << (2 * e)) - s.d * Li.dot(Li.T) if e >= 0 else (
-        s.Z - s.d * Li.dot(Li.T) * (mpz(1) << (-2 * e)))
+    LLt = intmat.int_dot(Li, np.ascontiguousarray(Li.T))
+    E = s.Z * (mpz(1) << (2 * e)) - s.d * LLt if e >= 0 else (
+        s.Z - s.d * LLt * (mpz(1) << (-2 * e)))
     absE = np.abs(E)
     diag = np.array([E[i, i] for i in range(n)], dtype=object)
     off = absE.sum(axis=1) - np.abs(diag)

@@ -109,7 +109,7 @@ def rescale(model: LTIModel) -> Rescaling | None:
     return Rescaling(freq, gain, state, scaled)
 
 
-_FREQUENCY_KEYS = ("omega", "s", "mu")
+_FREQUENCY_KEYS = ("omega", "s")
 _GAIN_KEYS = ("value", "value_bound")
 
 
@@ -123,7 +123,10 @@ def _map_witness(witness, r: Rescaling):
         if key in data:
             data[key] = str(Fraction(data[key]) * r.alpha)
     data["rescaled"] = {"frequency_exponent": r.freq, "gain_exponent": r.gain,
-                        "state_exponent": r.state}
+                        "state_exponent": r.state,
+                        "note": "omega, s and value are for the model as written; other "
+                                "fields (error-bound terms, pole intervals) are the scaled "
+                                "model's"}
     return replace(witness, summary=f"{witness.summary} ({r.describe()}: the numbers "
                    "in this sentence are the scaled model's, the witness fields are for "
                    "the model as written)", data=data)
