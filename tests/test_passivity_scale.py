@@ -203,3 +203,20 @@ def test_hostile_finite_models_never_raise():
             assert check_kyp(d.certificate.model, d.certificate.P).ok
         elif d.verdict == NOT_PASSIVE:
             assert d.witness is not None
+
+
+@pytest.mark.parametrize("margin, verdict", [
+    (Fraction(10) ** 400, NOT_PASSIVE), (-Fraction(10) ** 400, PASSIVE),
+    (-Fraction(10) ** 300, PASSIVE), (Fraction(1, 10**400), NOT_PASSIVE),
+])
+def test_margins_beyond_the_float_range(margin, verdict):
+    """H - nu0 I for nu0 = +-1e400: decided on the rescaled problem, no overflow."""
+    model = from_state_space([[-1.0, 0.0], [0.0, -2.0]], [[1.0], [1.0]], [[1.0, 1.0]],
+                             [[0.0]])
+    d = decide(model, margin)
+    assert d.verdict == verdict, d.reason
+    if verdict == PASSIVE:
+        assert check_kyp(d.certificate.model, d.certificate.P).ok
+        assert d.certificate.model.D[0][0] == -margin  # the certificate is for H - nu0 I
+    else:
+        assert d.witness is not None

@@ -15,6 +15,7 @@ rational).
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass
 from fractions import Fraction
@@ -121,12 +122,20 @@ def hamiltonian_candidates(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.nd
     return ([found.omega] if found.value < 0 else []), (found.omega, found.value)
 
 
+def _search_float(x: Fraction) -> float:
+    """x as a float for the floating-point search only (saturated at the float range)."""
+    try:
+        return float(x)
+    except OverflowError:
+        return math.copysign(1e308, x)
+
+
 def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     """Verdict for passivity of H (or of H - margin I when a margin is asked for)."""
     start = time.perf_counter()
     A, B, C, D = model.A, model.B, model.C, model.D
     em = exact_model(A, B, C, D)
-    rescaled = rescale(model)  # entries far from 1: decide H(beta s)/alpha exactly instead
+    rescaled = rescale(model, margin)  # far from 1: decide H(beta s)/alpha exactly instead
     if rescaled is not None:
         inner = decide(rescaled.model, margin / rescaled.alpha)
         if margin:
@@ -140,7 +149,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         shift = mpq(margin)
         em = ExactModel(em.A, em.B, em.C, [[x - shift if i == j else x for j, x in enumerate(row)]
                                            for i, row in enumerate(em.D)])
-        D = D - float(margin) * np.eye(model.m)
+        D = D - _search_float(margin) * np.eye(model.m)
 
     def done(verdict, reason, **kw) -> Decision:
         return Decision(model, verdict, reason, margin=margin,

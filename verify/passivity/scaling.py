@@ -83,13 +83,24 @@ def _scaled(x: np.ndarray, e: int) -> np.ndarray | None:
     return y
 
 
-def rescale(model: LTIModel) -> Rescaling | None:
-    """The exact rescaling of a badly scaled model; None when it is well scaled (or when
-    no power-of-two scaling keeps every entry exact, an extreme dynamic range)."""
+def _fraction_exponent(x: Fraction) -> int | None:
+    """About log2 |x| (within one), for any size of x; None for 0."""
+    if x == 0:
+        return None
+    return abs(x.numerator).bit_length() - x.denominator.bit_length() + 1
+
+
+def rescale(model: LTIModel, margin: Fraction = Fraction(0)) -> Rescaling | None:
+    """The exact rescaling of a badly scaled model (with the margin nu0 of H - nu0 I on the
+    same gain scale); None when it is well scaled (or when no power-of-two scaling keeps
+    every entry exact, an extreme dynamic range)."""
     from verify.passivity.model import from_state_space
 
     A, B, C, D = model.A, model.B, model.C, model.D
     eA, eB, eC, eD = (_exponent(x) for x in (A, B, C, D))
+    eM = _fraction_exponent(Fraction(margin))
+    if eM is not None:
+        eD = eM if eD is None else max(eD, eM)
     tiny = any(x.size and np.any((x != 0) & (np.abs(x) < 2.0**-900)) for x in (A, B, C, D))
     freq = eA or 0
     gains = [e for e in (eD, None if eB is None or eC is None else eB + eC - freq)
