@@ -18,7 +18,7 @@ import pytest
 import sympy as sp
 
 from verify.passivity.certificate import check_kyp, exact_model
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide
+from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.model import from_state_space
 from verify.passivity.scaling import rescale
 from verify.passivity.witness import response_at
@@ -144,9 +144,8 @@ def test_rank_deficient_b_n_with_output_on_the_dropped_direction_is_not_passive(
     """B u = 0 but C u != 0 for u = (1, -1): H = [[1, 1], [2, 2]]/(s + 1) is not passive."""
     model = from_state_space([[-1.0]], [[1.0, 1.0]], [[1.0], [2.0]], np.zeros((2, 2)))
     d = decide(model)
-    assert d.verdict in (NOT_PASSIVE, INCONCLUSIVE) and d.verdict != PASSIVE
-    if d.verdict == NOT_PASSIVE:
-        assert d.witness is not None
+    assert d.verdict == NOT_PASSIVE, d.reason
+    assert d.witness is not None and d.witness.kind == "rhp-point"
 
 
 @pytest.mark.parametrize("A, B, C, D", [
