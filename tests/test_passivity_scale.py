@@ -219,3 +219,36 @@ def test_margins_beyond_the_float_range(margin, verdict):
         assert d.certificate.model.D[0][0] == -margin  # the certificate is for H - nu0 I
     else:
         assert d.witness is not None
+
+
+def test_verified_solve_bound_is_above_the_exact_value_and_close():
+    """The bound of witness_bound for v from the float eigenvector: exact q <= bound, and
+    the bound is tight (the Neumann error term is tiny for a well-conditioned K)."""
+    from verify.passivity.witness_bound import bounded_form, float_direction
+
+    model = resonant(24, 3)
+    em = exact_model(model.A, model.B, model.C, model.D)
+    w = Fraction(3)
+    a, b = float_direction(model.A, model.B, model.C, model.D, 3.0)
+    bound = bounded_form(em, w, a, b)
+    Hr, Hi = response_at(em, w)
+    m = model.m
+    # v^H (H + H^H) v with H = Hr + j Hi, v = a + j b, exactly
+    re = sum(a[i] * (Hr[i][j] + Hr[j][i]) * a[j] + b[i] * (Hr[i][j] + Hr[j][i]) * b[j]
+             for i in range(m) for j in range(m))
+    im = sum(2 * (a[i] * (Hi[i][j] - Hi[j][i]) * b[j]) for i in range(m) for j in range(m))
+    exact_q = re - im
+    assert exact_q < 0
+    assert exact_q <= bound < 0
+    assert bound - exact_q < Fraction(1, 10**6) * abs(exact_q)
+
+
+def test_large_resonant_model_uses_the_verified_solve():
+    model = resonant(80, 3)
+    d = decide(model)
+    assert d.verdict == NOT_PASSIVE, d.reason
+    w = d.witness
+    assert w.kind == "frequency" and Fraction(w.data["value_bound"]) < 0
+    v = np.array([float(Fraction(x)) + 1j * float(Fraction(y))
+                  for x, y in zip(w.data["a"], w.data["b"], strict=True)])
+    assert float(np.real(v.conj() @ _float_form(model, float(Fraction(w.data["omega"]))) @ v)) < 0

@@ -136,8 +136,46 @@ def hermitian_part_at(model: ExactModel, omega: Fraction) -> ex.RationalMatrix |
     return ex.block([[Pr, ex.scale(-1, Pi)], [Pi, Pr]])
 
 
+#: above this many states a verified float solve is tried before the exact one
+BOUND_FROM_STATES = 60
+
+
+def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
+    """The witness at w proved by :mod:`verify.passivity.witness_bound` (no exact solve)."""
+    from verify.passivity.witness_bound import bounded_form, float_direction
+
+    A, B, C, D = (intmat.to_float(intmat.from_rational(x))
+                  for x in (model.A, model.B, model.C, model.D))
+    if not all(np.all(np.isfinite(x)) for x in (A, B, C, D)):
+        return None
+    proposal = float_direction(A, B, C, D, float(w))
+    if proposal is None:
+        return None
+    a, b = proposal
+    bound = bounded_form(model, w, a, b)
+    if bound is None or bound >= 0:
+        return None
+    return Witness(
+        "frequency",
+        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ {float(bound):.3g} "
+        "< 0 for an exact rational vector v = a + jb (exact bound of a verified "
+        "floating-point solve)",
+        {"omega": str(w), "a": [str(x) for x in a], "b": [str(x) for x in b],
+         "value_bound": str(bound), "method": "verified solve (Neumann bound)"},
+    )
+
+
 def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
-    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at the rational w itself."""
+    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at the rational w itself.
+
+    Above :data:`BOUND_FROM_STATES` states a bound from a verified float solve is tried
+    first (O(n^3) integer work, :mod:`verify.passivity.witness_bound`); the exact H(jw)
+    of :func:`response_at` decides when it does not apply.
+    """
+    if model.n > BOUND_FROM_STATES:
+        found = _bounded_witness(model, w)
+        if found is not None:
+            return found
     M = hermitian_part_at(model, w)
     if M is None:
         return None
