@@ -1,21 +1,36 @@
-"""Passivity gate vs python-control's ``ispassive`` on random port-Hamiltonian models.
+"""Passivity gate: decision times against python-control, a plain SDP and a float test.
 
-Run: ``python benchmarks/bench_passivity_gate.py [--sizes 4,16,30,60,100] [--no-control]``
-(needs ``pip install -e '.[bench]'`` for cvxopt, which python-control's ``ispassive``
-uses; at n = 100 it takes minutes). Both tools see the same models in the same process;
-the script prints, per model, each tool's verdict, whether it is right, the wall time
-and the time ratio (python-control / ours). Our time includes the exact check of the
-certificate or witness (``decide`` returns only exactly checked evidence); the benchmark
-re-checks a certificate once more, untimed, with :func:`check_kyp`.
+Run: ``python benchmarks/bench_passivity_gate.py [--sizes 2,10,30,100,200,400]
+[--control-max 100] [--sdp-max 100] [--kinds passive,flipped,resonant]
+[--frequency-route MODULE:FUNCTION]`` (``pip install -e '.[bench]'`` for cvxopt, which
+python-control's ``ispassive`` uses; at n = 100 it takes minutes, so beyond n = 30 it runs
+on the passive family only, up to ``--control-max``; the plain SDP likewise). All tools
+see the same models in the same process. Columns:
 
-Models: x' = (J - R) Q x + G u, y = G^T Q x, with J skew, R = L L^T/n + 0.1 I > 0 and
-Q = diag(2^k), k in {-2..2}. Q diagonal with powers of two keeps C = G^T Q exact in
-floating point, so the exact model is passive (P = Q solves the KYP LMI with margin).
-A sign-flipped output (y = -G^T Q x) gives a non-passive twin. The truth is known; the
-gate is not told Q. Each size has its own seed, so any subset of sizes gives the same
-models.
+- ``kyp``: our gate, :func:`verify.passivity.decide.decide` (KYP certificate checked
+  exactly, or an exactly checked witness); ``ok`` says the verdict is the known truth and
+  its evidence re-checks (a certificate once more with :func:`check_kyp`, untimed);
+- ``freq``: the exact frequency-domain route, when a module providing it is importable
+  (``--frequency-route``; "-" otherwise);
+- ``ispassive``: python-control's ``ispassive`` (an SDP in cvxopt, floating point);
+- ``sdp``: a plain KYP LMI in cvxpy + Clarabel (P >= eps I, M(P) <= 0; feasibility only, no
+  exact check): what an SDP costs before any rounding;
+- ``ham``: a float Hamiltonian-eigenvalue test (stable A and no imaginary-axis eigenvalue
+  of the Hamiltonian of H + eps I, eps = 1e-9 of the gain scale; a yes/no with no
+  evidence, the speed limit of any exact method).
+- ratios: ``ctl/kyp`` (python-control's time over ours), ``kyp/sdp`` and ``kyp/ham``
+  (our time over each).
 
-BLAS threads are pinned to 1 for both tools unless OPENBLAS_NUM_THREADS / OMP_NUM_THREADS
+Models (m = 2 ports unless ``--ports``): ``passive``: x' = (J - R) Q x + G u,
+y = G^T Q x, with J skew, R = L L^T/n + 0.1 I > 0 and Q = diag(2^k), k in {-2..2} (exact in
+floats, so the exact model is passive; the gate is not told Q); ``flipped``: y = -G^T Q x
+(not passive, caught on the real axis); ``resonant``: a passive port-Hamiltonian part with
+D = 0.05 I plus a negative lightly damped resonance at 3 rad/s (not passive only near
+3 rad/s: needs a frequency witness, the exact H(jw*) of the whole model). Each size has
+its own seed, so any subset of sizes gives the same models. The peak RSS of the process
+is printed at the end.
+
+BLAS threads are pinned to 1 for every tool unless OPENBLAS_NUM_THREADS / OMP_NUM_THREADS
 are set: on a loaded machine threaded BLAS makes timings erratic (a 10x spread).
 """
 
@@ -27,7 +42,10 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ.setdefault(_var, "1")  # before numpy is imported
 
 import argparse  # noqa: E402
+import importlib  # noqa: E402
+import resource  # noqa: E402
 import time  # noqa: E402
+import warnings  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -35,8 +53,13 @@ from verify.passivity.certificate import check_kyp  # noqa: E402
 from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide  # noqa: E402
 from verify.passivity.model import from_state_space  # noqa: E402
 
-SIZES = (4, 16, 30, 60, 100)
+SIZES = (2, 10, 30, 100, 200, 400)
+KINDS = ("passive", "flipped", "resonant")
 SEED = 20261121
+FREQUENCY_ROUTE = "verify.passivity.frequency:decide_frequency"
+#: python-control and the plain SDP run on every family up to this n, beyond it (up to
+#: --control-max / --sdp-max) on the passive family only: each takes minutes there
+ALL_KINDS_UP_TO = 30
 
 
 def port_hamiltonian(n: int, m: int, rng: np.random.Generator, flip: bool = False):
@@ -50,6 +73,29 @@ def port_hamiltonian(n: int, m: int, rng: np.random.Generator, flip: bool = Fals
     return (J - R) @ Q, G, -C if flip else C, np.zeros((m, m))
 
 
+def resonant(n: int, m: int, rng: np.random.Generator):
+    """Passive port-Hamiltonian (n - 2 states, D = 0.05 I) minus a resonance at w0 = 3."""
+    p, d, w0, zeta = max(n - 2, 1), 0.05, 3.0, 0.01
+    A0, G, C0, _ = port_hamiltonian(p, m, rng)
+    H0 = C0 @ np.linalg.solve(1j * w0 * np.eye(p) - A0, G) + d * np.eye(m)
+    k = float(np.linalg.eigvalsh((H0 + H0.conj().T) / 2)[-1]) + 0.3
+    v = rng.standard_normal(m)
+    v /= np.linalg.norm(v)
+    Ar = np.array([[0.0, 1.0], [-w0 * w0, -2 * zeta * w0]])
+    A = np.block([[A0, np.zeros((p, 2))], [np.zeros((2, p)), Ar]])
+    B = np.vstack([G, np.outer([0.0, 1.0], v)])
+    C = np.hstack([C0, -k * 2 * zeta * w0 * np.outer(v, [0.0, 1.0])])
+    return A, B, C, d * np.eye(m)
+
+
+def build(kind: str, n: int, m: int):
+    rng = np.random.default_rng([SEED, n, KINDS.index(kind)])
+    if kind == "resonant":
+        return resonant(n, m, rng), NOT_PASSIVE
+    return port_hamiltonian(n, m, rng, flip=kind == "flipped"), (
+        NOT_PASSIVE if kind == "flipped" else PASSIVE)
+
+
 def timed(f):
     start = time.perf_counter()
     try:
@@ -61,7 +107,7 @@ def timed(f):
 
 def ours(A, B, C, D, n: int) -> tuple[str, float, bool]:
     """Verdict, seconds, and whether the evidence re-checks exactly."""
-    model = from_state_space(A, B, C, D, name=f"pH n={n}")
+    model = from_state_space(A, B, C, D, name=f"n={n}")
     d, seconds = timed(lambda: decide(model))
     if isinstance(d, str):
         return d, seconds, False
@@ -73,6 +119,15 @@ def ours(A, B, C, D, n: int) -> tuple[str, float, bool]:
     return d.verdict, seconds, evidence
 
 
+def frequency_route(spec: str):
+    """The frequency-domain decision function, or None when it is not importable."""
+    module, _, name = spec.partition(":")
+    try:
+        return getattr(importlib.import_module(module), name)
+    except (ImportError, AttributeError):
+        return None
+
+
 def theirs(A, B, C, D) -> tuple[str, float]:
     import control
 
@@ -81,26 +136,80 @@ def theirs(A, B, C, D) -> tuple[str, float]:
     return text, seconds
 
 
-def main(sizes, with_control: bool = True) -> None:
-    head = (f"{'n':>4} {'truth':>12} {'verify':>12} {'ok':>3} {'s':>8} "
-            f"{'ispassive':>12} {'ok':>3} {'s':>8} {'ratio':>8}")
+def plain_sdp(A, B, C, D) -> tuple[str, float]:
+    """Feasibility of P >= eps I, M(P) <= 0 in cvxpy + Clarabel (floating point only)."""
+    import cvxpy as cp
+
+    def run():
+        n = A.shape[0]
+        P = cp.Variable((n, n), symmetric=True)
+        M = cp.bmat([[A.T @ P + P @ A, P @ B - C.T], [B.T @ P - C, -(D + D.T)]])
+        prob = cp.Problem(cp.Minimize(0), [P >> 1e-6 * np.eye(n), -(M + M.T) / 2 >> 0])
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            prob.solve(solver=cp.CLARABEL)
+        return PASSIVE if prob.status == cp.OPTIMAL else NOT_PASSIVE
+
+    return timed(run)
+
+
+def hamiltonian_test(A, B, C, D) -> tuple[str, float]:
+    """Stable A and no imaginary eigenvalue of the Hamiltonian of H + eps I (float)."""
+    def run():
+        if np.max(np.linalg.eigvals(A).real) >= 0:
+            return NOT_PASSIVE
+        m = D.shape[0]
+        gain = max(float(np.abs(D).max()), float(np.abs(C @ B).max()), 1e-300)
+        R = D + D.T + 2e-9 * gain * np.eye(m)
+        if np.min(np.linalg.eigvalsh(R)) <= 0:
+            return NOT_PASSIVE
+        Ri = np.linalg.inv(R)
+        H = np.block([[A - B @ Ri @ C, -B @ Ri @ B.T], [C.T @ Ri @ C, -A.T + C.T @ Ri @ B.T]])
+        eig = np.linalg.eigvals(H)
+        on_axis = np.abs(eig.real) <= 1e-8 * np.abs(eig)  # relative to each eigenvalue
+        return NOT_PASSIVE if np.any(on_axis) else PASSIVE
+
+    return timed(run)
+
+
+def _cell(result, truth) -> str:
+    verdict, seconds = result
+    mark = "" if verdict == truth else "!"
+    return f"{seconds:8.3f}{mark:1}"
+
+
+def main(sizes, kinds, ports: int, control_max: int, sdp_max: int, freq_spec: str) -> None:
+    freq = frequency_route(freq_spec)
+    print(f"frequency route {freq_spec}: {'importable' if freq else 'not available'}; "
+          f"'!' marks a wrong verdict; times in seconds")
+    head = (f"{'n':>4} {'model':>9} {'truth':>11} {'kyp':>9} {'ok':>3} {'freq':>9} "
+            f"{'ispassive':>10} {'sdp':>9} {'ham':>9} {'ctl/kyp':>8} {'kyp/sdp':>8} "
+            f"{'kyp/ham':>8}")
     print(head)
     for n in sizes:
-        for flip in (False, True):
-            rng = np.random.default_rng([SEED, n])
-            A, B, C, D = port_hamiltonian(n, 2, rng, flip)
-            truth = NOT_PASSIVE if flip else PASSIVE
+        for kind in kinds:
+            (A, B, C, D), truth = build(kind, n, ports)
             verdict, t_ours, evidence = ours(A, B, C, D, n)
             ok = "yes" if verdict == truth and evidence else "NO"
-            if with_control:
-                their_verdict, t_theirs = theirs(A, B, C, D)
-                their_ok = "yes" if their_verdict == truth else "NO"
-                ratio = f"{t_theirs / t_ours:8.1f}" if t_ours > 0 else "inf"
-                tail = f"{their_verdict:>12} {their_ok:>3} {t_theirs:8.2f} {ratio:>8}"
-            else:
-                tail = f"{'-':>12} {'-':>3} {'-':>8} {'-':>8}"
-            print(f"{n:>4} {truth:>12} {verdict:>12} {ok:>3} {t_ours:8.2f} {tail}",
+            f_cell = "-"
+            if freq is not None:
+                model = from_state_space(A, B, C, D, name=f"n={n}")
+                d, t_f = timed(lambda model=model: freq(model))
+                f_verdict = getattr(d, "verdict", d)
+                f_cell = _cell((f_verdict, t_f), truth)
+            every = n <= ALL_KINDS_UP_TO or kind == "passive"  # minutes each beyond
+            c = theirs(A, B, C, D) if n <= control_max and every else None
+            s = plain_sdp(A, B, C, D) if n <= sdp_max and every else None
+            h = hamiltonian_test(A, B, C, D)
+            ratio = lambda num, den: f"{num / den:8.3g}" if den > 0 else "inf"  # noqa: E731
+            print(f"{n:>4} {kind:>9} {truth:>11} {t_ours:8.3f}{'':1} {ok:>3} {f_cell:>9} "
+                  f"{_cell(c, truth) if c else '-':>10} {_cell(s, truth) if s else '-':>9} "
+                  f"{_cell(h, truth):>9} "
+                  f"{ratio(c[1], t_ours) if c else '-':>8} "
+                  f"{ratio(t_ours, s[1]) if s else '-':>8} {ratio(t_ours, h[1]):>8}",
                   flush=True)
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"peak RSS of the benchmark process: {peak:.0f} MB")
 
 
 def _sizes(text: str) -> list[int]:
@@ -108,16 +217,35 @@ def _sizes(text: str) -> list[int]:
         sizes = [int(x) for x in text.split(",") if x.strip()]
     except ValueError:
         raise argparse.ArgumentTypeError(f"--sizes {text!r}: comma-separated integers") from None
-    if not sizes or min(sizes) < 1:
-        raise argparse.ArgumentTypeError("--sizes needs positive integers")
+    if not sizes or min(sizes) < 2:
+        raise argparse.ArgumentTypeError("--sizes needs integers >= 2")
     return sizes
+
+
+def _kinds(text: str) -> list[str]:
+    kinds = [k.strip() for k in text.split(",") if k.strip()]
+    unknown = [k for k in kinds if k not in KINDS]
+    if not kinds or unknown:
+        raise argparse.ArgumentTypeError(f"--kinds: choose from {', '.join(KINDS)}")
+    return kinds
 
 
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", type=_sizes, default=list(SIZES),
-                        help="comma-separated state dimensions (default 4,16,30,60,100)")
+                        help="comma-separated state dimensions (default 2,10,30,100,200,400)")
+    parser.add_argument("--kinds", type=_kinds, default=list(KINDS),
+                        help="model families (default passive,flipped,resonant)")
+    parser.add_argument("--ports", type=int, default=2, help="inputs = outputs (default 2)")
+    parser.add_argument("--control-max", type=int, default=100,
+                        help="largest n for python-control's ispassive (default 100)")
+    parser.add_argument("--sdp-max", type=int, default=100,
+                        help="largest n for the plain cvxpy + Clarabel LMI (default 100)")
+    parser.add_argument("--frequency-route", default=FREQUENCY_ROUTE,
+                        help=f"MODULE:FUNCTION of the exact frequency-domain decision "
+                        f"(default {FREQUENCY_ROUTE})")
     parser.add_argument("--no-control", action="store_true",
-                        help="skip python-control's ispassive (ours only)")
+                        help="skip python-control's ispassive")
     args = parser.parse_args()
-    main(args.sizes, with_control=not args.no_control)
+    main(args.sizes, args.kinds, args.ports, -1 if args.no_control else args.control_max,
+         args.sdp_max, args.frequency_route)

@@ -100,6 +100,9 @@ def _build_parser() -> argparse.ArgumentParser:
                         help="also report the passivity indices nu_IFP and rho_OFP: numerical "
                         "estimates with exact rational lower (certificate) and upper (witness) "
                         "bounds")
+    p_gate.add_argument("--tolerance", default="0", metavar="EPS",
+                        help="pass a model within relative distance EPS of one certified "
+                        "passive (H(s + a) + d I; default 0 = exact)")
     p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
                         metavar="DIR", help="where certificates are written")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
@@ -223,6 +226,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     from verify.passivity.gate import (
         add_indices,
         parse_margin,
+        parse_tolerance,
         run_band_gate,
         run_gate,
         write_json,
@@ -231,10 +235,14 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     from verify.passivity.model_file import load_model
 
     margin = parse_margin(args.margin)
+    tolerance = parse_tolerance(args.tolerance)
     band = parse_band(args.band) if args.band is not None else None
+    if tolerance and band is not None:
+        raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
+                               "--band")
     models = [load_model(path) for path in args.models]  # validate all before any work
     if band is None:
-        results = run_gate(models, margin, args.certificates)
+        results = run_gate(models, margin, args.certificates, tolerance)
     else:
         results = run_band_gate(models, band, margin, args.certificates)
     if args.indices:
@@ -243,7 +251,9 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         print(r.line(), flush=True)
     passed = sum(r.passed for r in results)
     where = "" if band is None else f" on [{band[0]}, {band[1]}] rad/s"
+    within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
     print(f"{passed} of {len(results)} model(s) passive{where}"
+          + (f" ({within} within tolerance {args.tolerance})" if within else "")
           + (f" with margin {margin}" if margin else ""))
     if args.json:
         write_json(results, args.json)

@@ -35,6 +35,7 @@ from verify.passivity.hamiltonian import nu_minimum, nu_values
 from verify.passivity.kyp import find_certificate
 from verify.passivity.rational import float_view
 from verify.passivity.realization import MinimalPart, minimal_part
+from verify.passivity.scaling import rescale, restore
 from verify.passivity.witness import (
     Witness,
     frequency_witness,
@@ -189,15 +190,23 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     part = minimal_part(model.exact)
     note = realisation_note(part)
     em = shifted(part.model, margin)
-    A, B, C, D = float_views(em)
 
     def done(verdict, reason, **kw) -> Decision:
         return Decision(model, verdict, reason + note, margin=margin,
                         seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
-    w = infinity_witness(em)
+    w = infinity_witness(em)  # exact on the model as written, at any scale
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
+    rescaled = rescale(part.model, margin)  # far from 1: decide H(beta s)/alpha instead
+    if rescaled is not None:
+        inner = decide(rescaled.model, margin / rescaled.alpha)
+        out = restore(inner, rescaled, model, em, margin)
+        out.reason += note if note not in out.reason else ""
+        out.note = note.lstrip("; ")
+        out.seconds = time.perf_counter() - start
+        return out
+    A, B, C, D = float_views(em)
     search = propose(find_certificate, em, A, B, C, D)
     if search is not None and search.P is not None:
         cert = Certificate(model.name, model.source, em, search.P,

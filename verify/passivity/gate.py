@@ -20,6 +20,7 @@ from verify.passivity import certificate_files as cf
 from verify.passivity.binding import Claim, shifted, unverified_meta
 from verify.passivity.canonical import coarse_band, coarse_kyp
 from verify.passivity.decide import PASSIVE, Decision, decide
+from verify.passivity.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
 
 
@@ -44,6 +45,19 @@ def parse_margin(text: str) -> Fraction:
     return value
 
 
+def parse_tolerance(text: str) -> Fraction:
+    """--tolerance EPS as an exact rational >= 0 ("1e-12", "0"); one-line error otherwise."""
+    try:
+        value = parse_margin(text)
+    except VerifyInputError:
+        raise VerifyInputError(f"--tolerance {text!r} is not a finite number "
+                               "(e.g. --tolerance 1e-12)") from None
+    if value < 0:
+        raise VerifyInputError(f"--tolerance {text!r} is negative; it is a relative "
+                               "distance >= 0 (0 = exact)")
+    return value
+
+
 @dataclass
 class GateResult:
     decision: Decision
@@ -53,16 +67,22 @@ class GateResult:
 
     @property
     def passed(self) -> bool:
-        return self.decision.verdict == PASSIVE
+        return self.decision.verdict in (PASSIVE, PASSIVE_WITHIN)
 
     def line(self) -> str:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
+        perturbation = getattr(d, "perturbation", None)
         kept = " (kept: already a valid certificate of this model and claim)" \
             if self.kept else ""
-        text = f"{head}; certificate {self.certificate_path}{kept}" if self.passed \
-            else f"{head}; {d.reason}"
+        if perturbation is not None:
+            text = (f"{head}: {perturbation.summary()}; certificate of the perturbed model "
+                    f"{self.certificate_path}{kept}")
+        elif self.passed:
+            text = f"{head}; certificate {self.certificate_path}{kept}"
+        else:
+            text = f"{head}; {d.reason}"
         if self.passed and d.note:  # a non-minimal realisation: say what was decided
             text += f"; {d.note}"
         for index in self.indices or ():
@@ -70,17 +90,27 @@ class GateResult:
         return text
 
 
-def run_gate(models, margin: Fraction, certificates_dir: Path) -> list[GateResult]:
+def run_gate(models, margin: Fraction, certificates_dir: Path,
+             tolerance: Fraction = Fraction(0)) -> list[GateResult]:
+    """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
+    pass as *passive within tolerance* (:mod:`verify.passivity.tolerance`), and then the
+    certificate written is the perturbed model's (it names that model exactly)."""
     results = []
     for model in models:
         d = decide(model, margin)
+        if tolerance:
+            d = within_tolerance(model, tolerance, margin, d)
         path, kept = None, False
         if d.certificate is not None:
             claim = Claim(Fraction(margin))
             H = shifted(d.certificate.model, -claim.margin)  # the model as given
             P = coarse_kyp(d.certificate.model, d.certificate.P)
-            path, kept = cf.store_certificate(cf.kyp_json(
-                model.name, model.source, H, claim, P, unverified_meta(model)), certificates_dir)
+            if getattr(d, "perturbation", None) is None:
+                name, source, meta = model.name, model.source, unverified_meta(model)
+            else:  # the perturbed model is no file's model: nothing to bind it to
+                name, source, meta = f"{model.name} (perturbed within tolerance)", "", {}
+            path, kept = cf.store_certificate(
+                cf.kyp_json(name, source, H, claim, P, meta), certificates_dir)
         results.append(GateResult(d, path, kept=path is not None and kept))
     return results
 

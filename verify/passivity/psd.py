@@ -47,7 +47,7 @@ def _dominance_certificate(m: ex.RationalMatrix, strict: bool) -> bool | None:
     """Exactly checked evidence: True proves M >= 0 (M > 0 if strict) by dominance, False
     refutes it by a rational vector with v^T M v < 0; None when neither was found."""
     n = len(m)
-    s = intmat.from_rational(m)
+    s = intmat.normalised(intmat.from_rational(m))  # c M, c = 2^k: same definiteness
     F = intmat.to_float(s)
     scale = float(np.max(np.abs(F)))
     if not np.isfinite(scale) or scale == 0.0:
@@ -67,8 +67,9 @@ def _dominance_certificate(m: ex.RationalMatrix, strict: bool) -> bool | None:
     Li = np.array([[mpz(int(x)) for x in row] for row in np.rint(np.ldexp(Lf, e))],
                   dtype=object)
     # M = Z / d and L = Li / 2^e, so (M - L L^T) d 2^(2e) = Z 2^(2e) - d Li Li^T
-    E = s.Z * (mpz(1) << (2 * e)) - s.d * Li.dot(Li.T) if e >= 0 else (
-        s.Z - s.d * Li.dot(Li.T) * (mpz(1) << (-2 * e)))
+    LLt = intmat.int_dot(Li, np.ascontiguousarray(Li.T))
+    E = s.Z * (mpz(1) << (2 * e)) - s.d * LLt if e >= 0 else (
+        s.Z - s.d * LLt * (mpz(1) << (-2 * e)))
     absE = np.abs(E)
     diag = np.array([E[i, i] for i in range(n)], dtype=object)
     off = absE.sum(axis=1) - np.abs(diag)

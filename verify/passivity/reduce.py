@@ -118,17 +118,57 @@ def _v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) 
     return V
 
 
+def equality_directions(model: ExactModel) -> ex.RationalMatrix | NoCertificate:
+    """An exact basis N' (m x k') of the input directions on which P B N' = C^T N' binds.
+
+    N spans ker S. For z with B N z = 0 the equality reads 0 = C^T N z: if that fails no
+    P exists (an exact argument); if it holds, the direction u = N z enters neither the
+    state nor the output (H(s) u = D u) and its rows of the KYP matrix are zero for every
+    P, so it is dropped. What remains, N' = N W with W spanning range((B N)^T), has
+    B N' of full column rank (this is what makes one-state models with two identical
+    input columns, B B^T rank deficient, decidable).
+    """
+    S = ex.add(model.D, ex.transpose(model.D))
+    N = ex.kernel_basis(S)
+    k = len(N[0]) if model.m else 0
+    if k == 0 or model.n == 0:
+        return N
+    Bp = ex.matmul(model.B, N)
+    Z = ex.kernel_basis(Bp)
+    if not Z or not Z[0]:
+        return N
+    CtNZ = ex.matmul(ex.matmul(ex.transpose(model.C), N), Z)
+    if any(x != 0 for row in CtNZ for x in row):
+        return NoCertificate("a direction u in ker(D + Dᵀ) has B u = 0 but C u ≠ 0, so "
+                             "P B u = Cᵀ u has no solution")
+    W = ex.range_basis(ex.transpose(Bp))
+    if not W or not W[0]:
+        return [[] for _ in range(model.m)]
+    return ex.matmul(N, W)
+
+
 def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
     """The exact parametrisation and the auxiliary problem; a string says why the
     reduction does not apply (the caller then searches without it)."""
     n, m = model.n, model.m
     S = ex.add(model.D, ex.transpose(model.D))
-    N = ex.kernel_basis(S)
+    N = equality_directions(model)
+    if isinstance(N, NoCertificate):
+        return N
     k = len(N[0]) if m else 0
     Sf = _floats(S, m, m)
     Af, Bf, Cf = _floats(model.A, n, n), _floats(model.B, n, m), _floats(model.C, m, n)
+    R = ex.range_basis(S)
+    r = len(R[0]) if R and R[0] else 0
+    Rf = _floats(R, m, r) if r else np.zeros((m, 0))
     if k == 0:
-        return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf, Cf, Sf)
+        if r == m:  # S > 0: no equality constraint
+            return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf, Cf, Sf)
+        if r == 0:
+            return "B = 0 on ker(D + Dᵀ) and D + Dᵀ = 0"
+        # the kernel directions were all dropped: the problem lives on range S
+        return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf @ Rf, Rf.T @ Cf,
+                         Rf.T @ Sf @ Rf)
     Bp = ex.matmul(model.B, N)
     Cp = ex.matmul(ex.transpose(N), model.C)
     G0 = ex.matmul(Cp, Bp)
@@ -151,8 +191,6 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
         Ti = np.linalg.inv(T)
     except np.linalg.LinAlgError:
         return "the coordinate change [C'; Vᵀ] is numerically singular"
-    R = ex.range_basis(S)
-    Rf = _floats(R, m, m - k) if m > k else np.zeros((m, 0))
     Kf = _floats(K, k, k)
     At, Btr, Ctr = T @ Af @ Ti, T @ Bf @ Rf, Rf.T @ Cf @ Ti
     Sr = Rf.T @ Sf @ Rf

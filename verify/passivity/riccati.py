@@ -56,10 +56,16 @@ def margin_candidates(A, B, C, S, steps: int = 9) -> Iterator[tuple[np.ndarray, 
     if n == 0:
         yield np.zeros((0, 0)), 0.0
         return
-    Sinv = np.linalg.inv(S)
-    rho = float(np.linalg.norm(C.T @ Sinv @ C, 2))
-    if not np.isfinite(rho) or rho == 0.0:
-        rho = max(float(np.linalg.norm(A, 2)), 1.0)
+    try:  # S is positive definite in floating point, but may be badly conditioned
+        with np.errstate(all="ignore"):
+            Sinv = np.linalg.inv(S)
+            rho = float(np.linalg.norm(C.T @ Sinv @ C, 2))
+            if not np.isfinite(rho) or rho == 0.0:
+                rho = max(float(np.linalg.norm(A, 2)), 1.0)
+    except (np.linalg.LinAlgError, ValueError):
+        return
+    if not np.isfinite(rho):
+        return
     for j in range(steps):
         w = rho * 10.0 ** (-j)
         pair = riccati_pair(A, B, C, S, w * np.eye(n))

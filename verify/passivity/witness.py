@@ -3,8 +3,10 @@
 - at infinity: a rational v with v^T (D + D^T) v < 0, so H(jw) + H(jw)^H has a negative
   eigenvalue for all large w;
 - at a frequency: a rational w* and a rational complex vector v = a + jb with
-  v^H (H(jw*) + H(jw*)^H) v < 0, H(jw*) computed exactly over Q(j) by solving
-  (jw*I - A) X = B as a real 2n x 2n rational system;
+  v^H (H(jw*) + H(jw*)^H) v < 0, H(jw*) computed exactly over Q(j) from one real
+  n x n integer system (A^2 + w*^2 I) Y = B solved by FLINT (see :func:`response_at`);
+  w* is a short rational near the floating-point minimiser of nu, and v the rounded
+  eigenvector of its smallest eigenvalue: no symbolic system is formed;
 - at a real point s* > 0 of the right half-plane: a rational v in ker(D + D^T) with
   v^T (H(s*) + H(s*)^T) v < 0, where H(s*) v is not solved exactly but bounded: a rounded
   solution x of (s* I - A) x = B v leaves an exact residual r, and Gershgorin's theorem
@@ -28,14 +30,15 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+import flint
 import gmpy2
 import numpy as np
 import sympy as sp
 from gmpy2 import mpq
 
 from verify.passivity import exact as ex
+from verify.passivity import intmat
 from verify.passivity.certificate import ExactModel
-from verify.passivity.rational import to_float
 
 
 @dataclass
@@ -51,9 +54,8 @@ def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
 
 def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     """A rational v with v^T M v < 0 (exact), from the float eigenvector; None if none found."""
-    big = max((abs(x) for row in M for x in row), default=mpq(0))
-    unit = mpq(2) ** -int(gmpy2.floor(gmpy2.log2(big))) if big else mpq(1)  # exact scaling
-    F = np.array([[to_float(x * unit) for x in row] for row in M])
+    # a float copy of c M (c a power of two, same signs) proposes v, whatever the entries
+    F = intmat.to_float(intmat.normalised(intmat.from_rational(M)))
     w, V = np.linalg.eigh((F + F.T) / 2)
     if w[0] >= 0:
         # the float eigenvalue may miss a tiny negative one; LDL decides below
@@ -82,40 +84,46 @@ def infinity_witness(model: ExactModel) -> Witness | None:
     )
 
 
-def _solve(M: ex.RationalMatrix, rhs: ex.RationalMatrix) -> ex.RationalMatrix | None:
-    """Exact Gaussian elimination M X = rhs; None if M is singular."""
-    n = len(M)
-    k = len(rhs[0]) if rhs else 0
-    a = [row[:] + r[:] for row, r in zip(M, rhs, strict=True)]
-    for col in range(n):
-        pivot = next((r for r in range(col, n) if a[r][col] != 0), None)
-        if pivot is None:
-            return None
-        a[col], a[pivot] = a[pivot], a[col]
-        p = a[col][col]
-        for r in range(n):
-            if r != col and a[r][col] != 0:
-                f = a[r][col] / p
-                a[r] = [x - f * y for x, y in zip(a[r], a[col], strict=True)]
-    return [[a[i][n + j] / a[i][i] for j in range(k)] for i in range(n)]
-
-
 def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
                                                              ex.RationalMatrix] | None:
-    """(Re H(jw), Im H(jw)) exactly, for rational w; None when jw is a pole."""
+    """(Re H(jw), Im H(jw)) exactly, for rational w; None when jw is a pole.
+
+    (jw I - A)(-jw I - A) = A^2 + w^2 I, so (jw I - A)^-1 B = -(A + jw I) Y with
+    (A^2 + w^2 I) Y = B: one real n x n system instead of the 2n x 2n real form of the
+    complex one. Over a common denominator (A = Za/da, w = p/q) it is the integer system
+    (q^2 Za^2 + p^2 da^2 I) Y' = Zb, solved exactly by FLINT (:mod:`verify.passivity.intmat`).
+    A^2 + w^2 I is singular exactly when jw (or -jw, the same for real A) is an eigenvalue
+    of A.
+    """
     n, m = model.n, model.m
-    w = mpq(omega)
+    w = Fraction(omega)
     if not n:
         return model.D, ex.zeros(m, m)
-    A, B, C = model.A, model.B, model.C
-    negA = ex.scale(-1, A)
-    wI = [[w if i == j else mpq(0) for j in range(n)] for i in range(n)]
-    big = ex.block([[negA, ex.scale(-1, wI)], [wI, negA]])
-    rhs = ex.block([[B], [ex.zeros(n, m)]])
-    X = _solve(big, rhs)
-    if X is None:
+    a = intmat.from_rational(model.A)
+    b = intmat.from_rational(model.B)
+    Za, Zb = intmat.to_fmpz_mat(a), intmat.to_fmpz_mat(b)
+    p, q, da, db = w.numerator, w.denominator, int(a.d), int(b.d)
+    if p == 0:  # A Y = -B directly: a smaller system
+        K, rhs_scale = Za, flint.fmpq(-da, db)  # Y = -(da/db) Za^-1 Zb
+    else:
+        K = Za * Za * (q * q)
+        shift = p * p * da * da
+        for i in range(n):
+            K[i, i] += shift
+        rhs_scale = flint.fmpq(q * q * da * da, db)  # Y = q^2 da^2 / db K^-1 Zb
+    try:
+        Y = K.solve(Zb) * rhs_scale
+    except ZeroDivisionError:  # singular: jw is an eigenvalue of A
         return None
-    return ex.add(ex.matmul(C, X[:n]), model.D), ex.matmul(C, X[n:])
+    C = intmat.rational_to_fmpq(model.C, n)
+    if p == 0:  # X = Y, real
+        Hr = C * Y
+        return ex.add(intmat.fmpq_to_rational(Hr), model.D), ex.zeros(m, m)
+    A = intmat.rational_to_fmpq(model.A, n)
+    CY = C * Y
+    Hr = -(C * (A * Y))
+    Hi = CY * flint.fmpq(-p, q)
+    return ex.add(intmat.fmpq_to_rational(Hr), model.D), intmat.fmpq_to_rational(Hi)
 
 
 def hermitian_part_at(model: ExactModel, omega: Fraction) -> ex.RationalMatrix | None:
@@ -129,8 +137,46 @@ def hermitian_part_at(model: ExactModel, omega: Fraction) -> ex.RationalMatrix |
     return ex.block([[Pr, ex.scale(-1, Pi)], [Pi, Pr]])
 
 
+#: above this many states a verified float solve is tried before the exact one
+BOUND_FROM_STATES = 60
+
+
+def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
+    """The witness at w proved by :mod:`verify.passivity.witness_bound` (no exact solve)."""
+    from verify.passivity.witness_bound import bounded_form, float_direction
+
+    A, B, C, D = (intmat.to_float(intmat.from_rational(x))
+                  for x in (model.A, model.B, model.C, model.D))
+    if not all(np.all(np.isfinite(x)) for x in (A, B, C, D)):
+        return None
+    proposal = float_direction(A, B, C, D, float(w))
+    if proposal is None:
+        return None
+    a, b = proposal
+    bound = bounded_form(model, w, a, b)
+    if bound is None or bound >= 0:
+        return None
+    return Witness(
+        "frequency",
+        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ {float(bound):.3g} "
+        "< 0 for an exact rational vector v = a + jb (exact bound of a verified "
+        "floating-point solve)",
+        {"omega": str(w), "a": [str(x) for x in a], "b": [str(x) for x in b],
+         "value_bound": str(bound), "method": "verified solve (Neumann bound)"},
+    )
+
+
 def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
-    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at the rational w itself."""
+    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at the rational w itself.
+
+    Above :data:`BOUND_FROM_STATES` states a bound from a verified float solve is tried
+    first (O(n^3) integer work, :mod:`verify.passivity.witness_bound`); the exact H(jw)
+    of :func:`response_at` decides when it does not apply.
+    """
+    if model.n > BOUND_FROM_STATES:
+        found = _bounded_witness(model, w)
+        if found is not None:
+            return found
     M = hermitian_part_at(model, w)
     if M is None:
         return None
@@ -272,7 +318,11 @@ def _may_have_rhp_root(poly) -> bool:
     Exact root isolation costs seconds per polynomial; skipping it can only miss a
     witness, never make one (the witness itself is isolated exactly).
     """
-    roots = np.roots([float(c) for c in poly.all_coeffs()])
+    try:
+        with np.errstate(all="ignore"):
+            roots = np.roots([float(c) for c in poly.all_coeffs()])
+    except (np.linalg.LinAlgError, OverflowError, ValueError):
+        return True
     if not np.all(np.isfinite(roots)):
         return True
     scale = max(1.0, float(np.max(np.abs(roots)))) if roots.size else 1.0
