@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from verify.passivity import certificate, gkyp
+from verify.passivity import certificate, fd_certificate, gkyp
 from verify.passivity.certificate import KypCheck
 
 
@@ -24,6 +24,8 @@ def check_stored_certificate(path: Path) -> KypCheck:
     schema = data.get("schema") if isinstance(data, dict) else None
     if schema == gkyp.SCHEMA:
         return gkyp.check_band_certificate_data(data, Path(path))
+    if schema == fd_certificate.SCHEMA:
+        return fd_certificate.check_pr_certificate_data(data, Path(path))
     if schema == certificate.SCHEMA:
         return certificate.check_certificate_file(Path(path))
     raise ValueError(f"{path}: schema is neither {certificate.SCHEMA} nor {gkyp.SCHEMA}")
