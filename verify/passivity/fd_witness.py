@@ -40,7 +40,7 @@ def exact_negative_vector(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
             found = col(k)
             break
         if S[k][k] == 0:
-            other = next((l for l in range(k + 1, n) if S[k][l] != 0), None)
+            other = next((i for i in range(k + 1, n) if S[k][i] != 0), None)
             if other is None:
                 continue
             if S[other][other] < 0:
@@ -88,7 +88,7 @@ def frequency_vector_witness(model: ExactModel, w: fmpq, note: str) -> Witness |
 
 def negative_points(Q: fmpq_poly, avoid: fmpq_poly):
     """Rational w with Q(w) < 0 and avoid(w) != 0, nearest sign changes first."""
-    content, factors = Q.factor_squarefree()
+    _content, factors = Q.factor_squarefree()
     if all(e % 2 == 0 for _, e in factors) or not factors:
         for w in (0, 1, -1, 2, 3, 5, 7, 11):
             w = fmpq(w)

@@ -13,6 +13,7 @@ References: Sturm's theorem and the Routh-Hurwitz criterion as in Basu, Pollack 
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 from fractions import Fraction
 
@@ -124,7 +125,7 @@ def sturm_sequence(p: Poly) -> list[Poly]:
 
 def _variations(signs: list[int]) -> int:
     nz = [s for s in signs if s]
-    return sum(1 for a, b in zip(nz, nz[1:], strict=False) if a != b)
+    return sum(1 for a, b in itertools.pairwise(nz) if a != b)
 
 
 def _signs_at(seq: list[Poly], x) -> list[int]:

@@ -34,7 +34,7 @@ from verify.passivity import qpoly as qp
 Sos = list[tuple[fmpq, fmpq_poly]]  # sum of weight * poly^2, weights >= 0
 
 
-class SosNotFound(RuntimeError):
+class SosNotFoundError(RuntimeError):
     """The search gave up (the polynomial may have a real root)."""
 
 
@@ -63,7 +63,7 @@ def sos_positive(p: fmpq_poly, max_rounds: int = 12) -> Sos:
     """A weighted SOS of p > 0 on R (even degree, positive leading coefficient)."""
     d2 = p.degree()
     if d2 < 0 or d2 % 2 or p.leading_coefficient() <= 0:
-        raise SosNotFound("not a polynomial of even degree with positive leading coefficient")
+        raise SosNotFoundError("not a polynomial of even degree with positive leading coefficient")
     if d2 == 0:
         return [(p.leading_coefficient(), qp.ONE)]
     d = d2 // 2
@@ -75,7 +75,7 @@ def sos_positive(p: fmpq_poly, max_rounds: int = 12) -> Sos:
             break
         eps /= 4
     else:
-        raise SosNotFound("no perturbation keeps the polynomial positive")
+        raise SosNotFoundError("no perturbation keeps the polynomial positive")
     pe = p - eps * t
     lce = pe.leading_coefficient()
     bits = 64
@@ -106,10 +106,10 @@ def sos_positive(p: fmpq_poly, max_rounds: int = 12) -> Sos:
                     sos.append((wt, fmpq_poly([0] * i + [1])))
             sos = [(w, f) for w, f in sos if w != 0 and not f.is_zero()]
             if not check_sos(p, sos):  # cannot happen; kept as a guard on this module
-                raise SosNotFound("internal: SOS identity failed")
+                raise SosNotFoundError("internal: SOS identity failed")
             return sos
         bits *= 2
-    raise SosNotFound("precision budget exhausted")
+    raise SosNotFoundError("precision budget exhausted")
 
 
 def sos_value(sos: Sos) -> fmpq_poly:
@@ -129,13 +129,13 @@ class Nonnegativity:
     """f = content * prod factor^exponent, with an SOS for each odd-exponent factor."""
 
     content: fmpq
-    factors: list[tuple[fmpq_poly, int, Sos | None]]
+    factors: list[tuple[fmpq_poly, int, Sos | str | None]]
 
     def to_json(self) -> dict:
         return {
             "content": str(self.content),
             "factors": [{"poly": qp.coeff_strings(f), "exponent": e,
-                         "sos": None if s is None else [
+                         "sos": s if s is None or s == "sturm" else [
                              {"weight": str(w), "poly": qp.coeff_strings(g)} for w, g in s]}
                         for f, e, s in self.factors],
         }
@@ -156,8 +156,22 @@ def nonnegativity_certificate(f: fmpq_poly) -> Nonnegativity | None:
         return None
     out = []
     for g, e in factors:
-        out.append((g, int(e), sos_positive(g) if e % 2 else None))
+        out.append((g, int(e), _positivity(g) if e % 2 else None))
     return Nonnegativity(content, out)
+
+
+SOS_DEGREE_LIMIT = 80  # above it root approximation near the real axis gets slow
+
+
+def _positivity(g: fmpq_poly) -> Sos | str:
+    """An SOS of g > 0, or "sturm" (no real root by Sturm's theorem, re-counted by the
+    checker) when the SOS search gives up or g is of high degree."""
+    if g.degree() <= SOS_DEGREE_LIMIT:
+        try:
+            return sos_positive(g, max_rounds=6)
+        except SosNotFoundError:
+            pass
+    return "sturm"
 
 
 def check_nonnegativity(f: fmpq_poly, cert: Nonnegativity) -> str | None:
@@ -171,7 +185,10 @@ def check_nonnegativity(f: fmpq_poly, cert: Nonnegativity) -> str | None:
         if e < 1:
             return "a factor has exponent < 1"
         if e % 2:
-            if s is None or not check_sos(g, s):
+            if s == "sturm":
+                if g.leading_coefficient() <= 0 or qp.count_roots(g) != 0:
+                    return "an odd-exponent factor is not positive (Sturm count)"
+            elif s is None or not check_sos(g, s):
                 return "an odd-exponent factor lacks a valid sum of squares"
         product *= g ** e
     if product != f:
@@ -191,7 +208,9 @@ def nonnegativity_from_json(data: dict) -> Nonnegativity:
         if not isinstance(e, int) or isinstance(e, bool):
             raise ValueError("a factor exponent is not an integer")
         sos = None
-        if item["sos"] is not None:
+        if item["sos"] == "sturm":
+            sos = "sturm"
+        elif item["sos"] is not None:
             if not isinstance(item["sos"], list):
                 raise ValueError("malformed sum of squares")
             sos = []
