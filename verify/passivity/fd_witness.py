@@ -89,12 +89,11 @@ def frequency_vector_witness(model: ExactModel, w: fmpq, note: str) -> Witness |
 def negative_points(Q: fmpq_poly, avoid: fmpq_poly):
     """Rational w with Q(w) < 0 and avoid(w) != 0, nearest sign changes first."""
     _content, factors = Q.factor_squarefree()
-    if all(e % 2 == 0 for _, e in factors) or not factors:
-        for w in (0, 1, -1, 2, 3, 5, 7, 11):
-            w = fmpq(w)
+    for i in range(-8, 9):  # Q < 0 on an interval, or everywhere but at its roots
+        base = fmpq(2) ** i if i >= 0 else fmpq(1, 2 ** -i)
+        for w in (base, base * 3 / 2):
             if Q(w) < 0 and avoid(w) != 0:
                 yield w
-        return
     for prec in (64, 256, 1024, 4096):
         for g, e in factors:
             if e % 2 == 0:

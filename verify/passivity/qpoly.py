@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Sequence
+from contextlib import contextmanager
 from fractions import Fraction
 
 import flint
@@ -238,14 +239,21 @@ def is_hurwitz(p: Poly) -> bool:
 
 # approximate roots (arb balls; proposals only) -------------------------------------------
 
-def approximate_roots(p: Poly, prec: int = 64) -> list:
-    """Rigorous acb enclosures of the roots of p (each listed once), at ``prec`` bits."""
+@contextmanager
+def precision(bits: int):
+    """FLINT's working precision for arb/acb within the block."""
     old = flint.ctx.prec
-    flint.ctx.prec = prec
+    flint.ctx.prec = bits
     try:
-        return [r for r, _ in p.complex_roots()]
+        yield
     finally:
         flint.ctx.prec = old
+
+
+def approximate_roots(p: Poly, prec: int = 64) -> list:
+    """Rigorous acb enclosures of the roots of p (each listed once), at ``prec`` bits."""
+    with precision(prec):
+        return [r for r, _ in p.complex_roots()]
 
 
 def dyadic(x) -> fmpq:

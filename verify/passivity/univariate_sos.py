@@ -52,7 +52,7 @@ def _positive(p: fmpq_poly) -> bool:
 
 def _round_poly(coeffs, bits: int) -> fmpq_poly:
     out = []
-    scale = fmpq(2) ** bits
+    scale = fmpq(2) ** bits if bits >= 0 else fmpq(1, 2 ** -bits)
     for x in coeffs:
         m = qp.dyadic(x)
         out.append(fmpq(int((m * scale).p // (m * scale).q)) / scale if m != 0 else fmpq(0))
@@ -85,9 +85,13 @@ def sos_positive(p: fmpq_poly, max_rounds: int = 12) -> Sos:
         if len(upper) != d:
             bits *= 2
             continue
-        s = acb_poly.from_roots(upper)
-        s1 = _round_poly([c.real for c in s.coeffs()], bits)
-        s2 = _round_poly([c.imag for c in s.coeffs()], bits)
+        with qp.precision(bits + 32):
+            s = acb_poly.from_roots(upper)
+        top = max(int(abs(c).mid().man_exp()[1]) + abs(c).mid().man_exp()[0].bit_length()
+                  for c in s.coeffs())  # about log2 of the largest coefficient
+        keep = bits - top  # fractional bits: ``bits`` significant bits overall
+        s1 = _round_poly([c.real for c in s.coeffs()], keep)
+        s2 = _round_poly([c.imag for c in s.coeffs()], keep)
         u = p - eps * t - lce * (s1 * s1 + s2 * s2)
         uc = u.coeffs() + [fmpq(0)] * (d2 + 2 - len(u.coeffs()))
         weights = []
