@@ -190,7 +190,7 @@ def test_transfer_matrix_cancels_exactly():
 
 def test_exact_negative_vector():
     M = Q([[0, 1], [1, 0]])
-    v, value = exact_negative_vector(M)
+    _v, value = exact_negative_vector(M)
     assert value < 0
     assert exact_negative_vector(Q([[1, 1], [1, 1]])) is None
     M = Q([[1, 2, 0], [2, 1, 0], [0, 0, 5]])
@@ -333,7 +333,7 @@ def test_random_port_hamiltonian_models_are_passive(seed, n, m):
 def test_random_perturbed_models_agree_with_the_float_grid(seed, n, m):
     """C -> -C flips the sign of H - D: not passive whenever H - D is not zero."""
     rng = np.random.default_rng(seed)
-    A, B, C, D = _random_ph(rng, n, m)
+    A, B, C, _D = _random_ph(rng, n, m)
     model = em(A, B, [[-x for x in row] for row in C], [[0] * m for _ in range(m)])
     verdict, reason, cert, witness = decide_positive_real(model)
     assert verdict == NOT_PASSIVE, reason

@@ -13,7 +13,7 @@ import pytest
 
 from verify.passivity import exact as ex
 from verify.passivity.certificate import check_kyp
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide, nu
+from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide, nu
 from verify.passivity.model import from_state_space
 
 
@@ -111,10 +111,15 @@ def test_exact_ldl_decides_semidefinite_matrices():
     assert ex.psd_ldl(q([[0, 0], [0, 0]])).ok
 
 
-def test_a_hidden_unstable_mode_gives_inconclusive_not_a_wrong_verdict():
-    """1/(s+1) with an extra uncontrollable, unobservable unstable state: H is passive, but
-    no P > 0 solves the KYP LMI for this non-minimal realisation and no witness exists."""
+def test_a_hidden_unstable_mode_is_decided_for_the_transfer_function():
+    """1/(s+1) with an extra uncontrollable, unobservable unstable state: no P > 0 solves
+    the KYP LMI for this non-minimal realisation, but H(s) = 1/(s+1) is positive real;
+    the verdict says it is about H(s), not a storage function on the given state."""
+    from verify.passivity.fd_certificate import PrCertificate, check_pr_certificate_data
+
     model = ss([[-1, 0], [0, 1]], [[1], [0]], [[1, 0]], [[0]])
     d = decide(model)
-    assert d.verdict == INCONCLUSIVE
-    assert d.certificate is None and d.witness is None
+    assert d.verdict == PASSIVE
+    assert "not minimal" in d.reason and "storage" in d.reason
+    assert isinstance(d.certificate, PrCertificate)
+    assert check_pr_certificate_data(d.certificate.to_json()).ok
