@@ -337,7 +337,26 @@ def test_random_perturbed_models_agree_with_the_float_grid(seed, n, m):
     model = em(A, B, [[-x for x in row] for row in C], [[0] * m for _ in range(m)])
     verdict, reason, cert, witness = decide_positive_real(model)
     assert verdict == NOT_PASSIVE, reason
+    assert witness.kind == "frequency"
     recheck(model, verdict, cert, witness)
+
+
+@pytest.mark.parametrize("seed, n, m, negate", [(31, 3, 1, False), (32, 4, 2, True),
+                                                (33, 6, 2, False), (34, 5, 1, True)])
+def test_random_models_agree_with_the_kyp_route(seed, n, m, negate):
+    """decide() tries KYP first; where it decides, both routes give the same verdict."""
+    from verify.passivity.kyp import find_certificate
+
+    A, B, C, D = _random_ph(np.random.default_rng(seed), n, m)
+    if negate:
+        C, D = [[-x for x in row] for row in C], [[0] * m for _ in range(m)]
+    model = em(A, B, C, D)
+    lti = _lti(model)
+    kyp = find_certificate(model, lti.A, lti.B, lti.C, lti.D)
+    verdict = decide_positive_real(model)[0]
+    if kyp.P is not None:
+        assert verdict == PASSIVE
+    assert decide(lti).verdict == verdict == (NOT_PASSIVE if negate else PASSIVE)
 
 
 @pytest.mark.slow
@@ -392,3 +411,24 @@ def test_verdict_agrees_with_a_float_grid(data):
         roots = np.roots([float(c) for c in reversed(an.tm.d.coeffs())]) \
             if an.tm.d.degree() > 0 else np.array([])
         assert np.all(roots.real < 1e-6)
+
+
+# hostile inputs ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("model, expected", [
+    (em([[-1, 0], [0, 2]], [[1], [1]], [[0, 0]], [[0]]), PASSIVE),  # H = 0
+    (em([], [], [], [[0, 0], [0, 0]]), PASSIVE),  # static zero
+    (em([[-(2**200)]], [[2**200]], [[2**200]], [[0]]), PASSIVE),  # 2^400/(s + 2^200)
+    (em([[-(2**200)]], [[2**200]], [[-(2**200)]], [[2**-1]]), NOT_PASSIVE),
+    (em([[-1, 0], [0, 2]], [[1], [0]], [[1, 0]], [[0]]), PASSIVE),  # hidden unstable mode
+    # unobservable imaginary-axis modes: jw = +-j is an eigenvalue of A but no pole of H
+    (em([[0, 1, 0], [-1, 0, 0], [0, 0, -1]], [[1], [0], [1]], [[0, 0, -1]], [[0]]),
+     NOT_PASSIVE),
+    (em([[0, 1, 0], [-1, 0, 0], [0, 0, -1]], [[1], [0], [1]], [[0, 0, 1]], [[0]]), PASSIVE),
+], ids=["H = 0", "static zero", "2^400/(s+2^200)", "1/2 - 2^400/(s+2^200)",
+        "hidden unstable", "unobservable axis modes, -1/(s+1)",
+        "unobservable axis modes, 1/(s+1)"])
+def test_hostile_models(model, expected):
+    verdict, reason, cert, witness = decide_positive_real(model)
+    assert verdict == expected, reason
+    recheck(model, verdict, cert, witness)

@@ -164,7 +164,7 @@ def nonnegativity_certificate(f: fmpq_poly) -> Nonnegativity | None:
     return Nonnegativity(content, out)
 
 
-SOS_DEGREE_LIMIT = 80  # above it root approximation near the real axis gets slow
+SOS_DEGREE_LIMIT = 400  # above it, Sturm counts (root approximation gets slow)
 
 
 def _positivity(g: fmpq_poly) -> Sos | str:
