@@ -432,3 +432,15 @@ def test_hostile_models(model, expected):
     verdict, reason, cert, witness = decide_positive_real(model)
     assert verdict == expected, reason
     recheck(model, verdict, cert, witness)
+
+
+def test_hermitian_part_from_the_transfer_matrix_matches_the_state_space():
+    from flint import fmpq
+
+    from verify.passivity.fd_witness import hermitian_part_from
+
+    model = em(*_random_ph(np.random.default_rng(7), 4, 2))
+    tm = transfer_matrix(model)
+    for w in (fmpq(0), fmpq(3, 2), fmpq(1000)):
+        assert hermitian_part_from(tm, w) == hermitian_part_at(
+            model, Fraction(int(w.p), int(w.q)))

@@ -41,7 +41,7 @@ def decide_positive_real(model: ExactModel, name: str = "", source: str = "",
             kind, an.reason, fact, {"repeated_factor": qp.coeff_strings(fact.repeated_axis)})
     sp = an.split if an.split is not None else axis_split(an.tm.d)
     if kind == "residue-not-hermitian":
-        w = near_axis_pole_witness(model, sp.rho)
+        w = near_axis_pole_witness(model, sp.rho, an.tm)
         if w is not None:
             return NOT_PASSIVE, f"{an.reason}; {w.summary}", None, w
         return NOT_PASSIVE, an.reason, None, Witness(
@@ -55,7 +55,7 @@ def decide_positive_real(model: ExactModel, name: str = "", source: str = "",
             "signs": pole.signs})
     # kind == "frequency"
     k, Q = an.failure["k"], an.failure["quotient"]
-    w = frequency_witness_for(model, Q, sp.rho, k)
+    w = frequency_witness_for(model, Q, sp.rho, k, an.tm)
     if w is not None:
         return NOT_PASSIVE, w.summary, None, w
     # the exact sign fact alone (a point was not separated from the poles in budget)

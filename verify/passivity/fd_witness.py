@@ -3,9 +3,10 @@
 A failed condition (c) of :mod:`verify.passivity.frequency_domain` leaves a polynomial
 Q(w) = E_k(w) / |c(jw)|^(2j) that is negative somewhere. Root enclosures (arb) of its
 odd-multiplicity factors propose rational points beside a sign change; the first w* with
-Q(w*) < 0 exactly and w* not a pole is kept, and H(jw*) + H(jw*)^H is then formed from
-the state-space data by exact elimination (:func:`verify.passivity.witness.hermitian_part_at`,
-independent of the polynomial route) and a rational vector v = a + jb with
+Q(w*) < 0 exactly and w* not a pole is kept, and H(jw*) + H(jw*)^H is then formed exactly:
+for small models from the state-space data by elimination
+(:func:`verify.passivity.witness.hermitian_part_at`, independent of the polynomial
+route), for larger ones from the exact transfer matrix; and a rational vector v = a + jb with
 v^H (H(jw*) + H(jw*)^H) v < 0 is found exactly (a rounded eigenvector, else a symmetric
 elimination that tracks its congruence). The pole-condition failures carry exact facts
 instead (an entry with a pole in Re s > 0, a repeated axis pole, a residue's sign).
@@ -66,10 +67,37 @@ def exact_negative_vector(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     return (found, value) if value < 0 else None
 
 
-def frequency_vector_witness(model: ExactModel, w: fmpq, note: str) -> Witness | None:
+def hermitian_part_from(tm, w: fmpq) -> ex.RationalMatrix | None:
+    """[[Re, -Im], [Im, Re]] of H(jw) + H(jw)^H from the exact H = N / d (None at a pole)."""
+    dr, di = (p(w) for p in qp.at_jw(tm.d))
+    norm = dr * dr + di * di
+    if norm == 0:
+        return None
+    m = len(tm.N)
+    Hr = [[None] * m for _ in range(m)]
+    Hi = [[None] * m for _ in range(m)]
+    for i in range(m):
+        for k in range(m):
+            nr, ni = (p(w) for p in qp.at_jw(tm.N[i][k]))
+            Hr[i][k] = (nr * dr + ni * di) / norm
+            Hi[i][k] = (ni * dr - nr * di) / norm
+    P = [[qp.to_mpq(Hr[i][k] + Hr[k][i]) for k in range(m)] for i in range(m)]
+    S = [[qp.to_mpq(Hi[i][k] - Hi[k][i]) for k in range(m)] for i in range(m)]
+    return ex.block([[P, ex.scale(-1, S)], [S, P]])
+
+
+STATE_SPACE_CHECK_LIMIT = 20  # states up to which H(jw*) is also solved from (A, B, C, D)
+
+
+def frequency_vector_witness(model: ExactModel, w: fmpq, note: str, tm=None
+                             ) -> Witness | None:
     """The exact vector witness at the rational frequency w (None if jw is a pole or
-    H(jw) + H(jw)^H >= 0)."""
-    M = hermitian_part_at(model, Fraction(int(w.p), int(w.q)))
+    H(jw) + H(jw)^H >= 0). H(jw) comes from the state-space data by exact elimination for
+    small models, else from the exact transfer matrix tm (cheaper: no 2n x 2n solve)."""
+    if tm is not None and model.n > STATE_SPACE_CHECK_LIMIT:
+        M = hermitian_part_from(tm, w)
+    else:
+        M = hermitian_part_at(model, Fraction(int(w.p), int(w.q)))
     if M is None:
         return None
     found = _negative_direction(M) or exact_negative_vector(M)
@@ -111,17 +139,17 @@ def negative_points(Q: fmpq_poly, avoid: fmpq_poly):
                             return
 
 
-def frequency_witness_for(model: ExactModel, Q: fmpq_poly, avoid: fmpq_poly, k: int
-                          ) -> Witness | None:
+def frequency_witness_for(model: ExactModel, Q: fmpq_poly, avoid: fmpq_poly, k: int,
+                          tm=None) -> Witness | None:
     for w in negative_points(Q, avoid):
         found = frequency_vector_witness(
-            model, w, f"E_{k}(ω*) < 0: the sum of the {k} x {k} principal minors")
+            model, w, f"E_{k}(ω*) < 0: the sum of the {k} x {k} principal minors", tm)
         if found is not None:
             return found
     return None
 
 
-def near_axis_pole_witness(model: ExactModel, rho: fmpq_poly) -> Witness | None:
+def near_axis_pole_witness(model: ExactModel, rho: fmpq_poly, tm=None) -> Witness | None:
     """Beside a pole jw0 with a non-Hermitian residue, H + H^H ~ -j(K - K^H)/(w - w0)
     has a negative eigenvalue on one side; try rational points on both sides."""
     for interval in qp.isolate_real_roots(rho):
@@ -132,7 +160,7 @@ def near_axis_pole_witness(model: ExactModel, rho: fmpq_poly) -> Witness | None:
                 if rho(w) == 0:
                     continue
                 found = frequency_vector_witness(
-                    model, w, "beside an imaginary-axis pole with a non-Hermitian residue")
+                    model, w, "beside an imaginary-axis pole with a non-Hermitian residue", tm)
                 if found is not None:
                     return found
     return None
