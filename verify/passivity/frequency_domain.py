@@ -292,6 +292,8 @@ def axis_poles(sp: AxisSplit, forms: list[fmpq_poly]) -> list[AxisPole]:
                 lo = hi = fmpq(0)
             else:
                 lo = fmpq(0)
+        if hi > 0:  # a readable enclosure of w0: relative width about 2^-24
+            lo, hi = qp.refine_root(sp.rho, (lo, hi), (1 + hi) / 2**24)
         out.append(AxisPole(lo, hi, [qp.sign_at_root(g, sp.rho, (lo, hi)) for g in forms]))
     return out
 
@@ -371,7 +373,8 @@ def analyse(model: ExactModel, *, certify: bool = True) -> Analysis:
                 an.failure = {"kind": "residue-not-psd", "pole": pole, "k": bad[0]}
                 where = "0" if pole.hi == 0 else f"j·w0, w0 in ({pole.lo}, {pole.hi}]"
                 an.reason = (f"the residue of H at the imaginary-axis pole s = {where} "
-                             f"(w0 ≈ {float(pole.hi):.6g}) is not positive semidefinite "
+                             f"(w0 ≈ {float((pole.lo + pole.hi) / 2):.6g}) is not positive "
+                             "semidefinite "
                              f"(exact: E_{bad[0]} of its Hermitian form is negative)")
                 return an
     c = qp.at_jw(tm.d / sp.a)
