@@ -444,3 +444,12 @@ def test_hermitian_part_from_the_transfer_matrix_matches_the_state_space():
     for w in (fmpq(0), fmpq(3, 2), fmpq(1000)):
         assert hermitian_part_from(tm, w) == hermitian_part_at(
             model, Fraction(int(w.p), int(w.q)))
+
+
+@pytest.mark.parametrize("margin, expected", [(Fraction(1), PASSIVE),
+                                              (Fraction(1) + Fraction(1, 2**50), NOT_PASSIVE)])
+def test_margin_is_decided_exactly(margin, expected):
+    """1 + s/(s^2+1): nu(w) = 1 exactly, with a lossless pole pair at +-j."""
+    lti = _lti(em([[0, 1], [-1, 0]], [[0], [1]], [[0, 1]], [[1]]))
+    d = decide(lti, margin)
+    assert d.verdict == expected, d.reason
