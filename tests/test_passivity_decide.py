@@ -111,13 +111,18 @@ def test_exact_ldl_decides_semidefinite_matrices():
     assert ex.psd_ldl(q([[0, 0], [0, 0]])).ok
 
 
-def test_a_hidden_unstable_mode_is_named_and_the_transfer_function_decided():
-    """1/(s+1) with an extra uncontrollable, unobservable unstable state: H is positive
-    real, which is decided on the exact minimal part; no P > 0 exists on the given state,
-    and the verdict says so."""
+def test_a_hidden_unstable_mode_is_decided_for_the_transfer_function():
+    """1/(s+1) with an extra uncontrollable, unobservable unstable state: no P > 0 solves
+    the KYP LMI for this non-minimal realisation, but H(s) = 1/(s+1) is positive real;
+    the verdict says it is about H(s), not a storage function on the given state."""
+    from verify.passivity.fd_certificate import PrCertificate, check_pr_certificate_data
+
     model = ss([[-1, 0], [0, 1]], [[1], [0]], [[1, 0]], [[0]])
     d = decide(model)
     assert d.verdict == PASSIVE
-    assert d.certificate is not None and d.certificate.model.n == 1
     assert "not minimal" in d.reason and "1 in Re s > 0" in d.reason
     assert "positive realness of the transfer function" in d.reason
+    assert d.certificate is not None and d.certificate.model.n == 1
+    if not isinstance(d.certificate, PrCertificate):  # the KYP route, on the minimal part
+        return
+    assert check_pr_certificate_data(d.certificate.to_json()).ok

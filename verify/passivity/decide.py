@@ -14,7 +14,10 @@ smallest eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, the first candidat
 the minimiser of nu located by Hamiltonian level crossings
 (:mod:`verify.passivity.hamiltonian`), which no grid spacing can step over, then a log
 sweep with local refinement; and an exact RHP pole or a bad pole at 0 (symbolic, so
-last); each confirmed exactly. Anything else is inconclusive with the reason. A margin
+last); each confirmed exactly. Up to ``FREQUENCY_DOMAIN_LIMIT`` states whatever is
+still open goes to the complete exact frequency-domain decision
+(:mod:`verify.passivity.fd_decision`): positive real with a sum-of-squares certificate,
+or not with an exact witness. Above it, anything else is inconclusive with the reason. A margin
 nu0 asks for nu(w) >= nu0 everywhere, decided as passivity of H - nu0 I (exactly: nu0 is
 rational).
 """
@@ -45,9 +48,13 @@ from verify.passivity.witness import (
 )
 
 if TYPE_CHECKING:
+    from verify.passivity.fd_certificate import PrCertificate
     from verify.passivity.model import LTIModel
 
 PASSIVE, NOT_PASSIVE, INCONCLUSIVE = "passive", "not passive", "inconclusive"
+# states up to which the exact frequency-domain decision (verify.passivity.fd_decision)
+# runs when the KYP route and the floating-point witness search both fail
+FREQUENCY_DOMAIN_LIMIT = 60
 
 
 @dataclass
@@ -55,7 +62,7 @@ class Decision:
     model: LTIModel
     verdict: str
     reason: str
-    certificate: Certificate | None = None
+    certificate: Certificate | PrCertificate | None = None
     witness: Witness | None = None
     nu_min: tuple[float, float] | None = None  # (omega, nu) of the smallest nu found
     margin: Fraction = Fraction(0)
@@ -231,6 +238,12 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         w = propose(frequency_witness, em, omega)
         if w is not None:
             return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
+    if em.n <= FREQUENCY_DOMAIN_LIMIT:  # complete and exact: never inconclusive
+        from verify.passivity.fd_decision import decide_positive_real
+
+        verdict, reason, cert, w = decide_positive_real(
+            em, model.name, model.source, {"margin": str(margin)})
+        return done(verdict, reason, certificate=cert, witness=w, nu_min=best)
     # last: the symbolic transfer matrix can take minutes even at n = 8
     w = propose(pole_witness, em)
     if w is not None:

@@ -20,6 +20,7 @@ from verify.passivity import certificate_files as cf
 from verify.passivity.binding import Claim, shifted, unverified_meta
 from verify.passivity.canonical import coarse_band, coarse_kyp
 from verify.passivity.decide import PASSIVE, Decision, decide
+from verify.passivity.fd_certificate import PrCertificate
 from verify.passivity.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
 
@@ -90,6 +91,32 @@ class GateResult:
         return text
 
 
+def store_pr_certificate(cert: PrCertificate, margin: Fraction,
+                         certificates_dir: Path) -> tuple[Path, bool]:
+    """Write a frequency-domain certificate under the name its claim asks for; a file that
+    already holds a valid certificate of the same model and claim is kept."""
+    from verify.passivity import fd_certificate as fd
+    from verify.passivity.binding import file_name
+    from verify.passivity.certificate_files import dumps
+
+    data = dict(cert.to_json(), meta={"margin": str(Fraction(margin))})
+    given = shifted(cert.model, -Fraction(margin))
+    path = Path(certificates_dir) / file_name(cert.name, Claim(Fraction(margin)),
+                                              given.fingerprint())
+    text = dumps(data)
+    if path.is_file():
+        try:
+            if path.read_text() == text or (
+                    fd.check_pr_file(fd.parse_json_text(path.read_text()), path).ok
+                    and fd.parse_json_text(path.read_text())["fingerprint"]
+                    == data["fingerprint"]):
+                return path, True
+        except (OSError, ValueError):
+            pass  # unreadable or not ours: replaced below
+    write_atomic(path, text)
+    return path, False
+
+
 def run_gate(models, margin: Fraction, certificates_dir: Path,
              tolerance: Fraction = Fraction(0)) -> list[GateResult]:
     """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
@@ -101,7 +128,9 @@ def run_gate(models, margin: Fraction, certificates_dir: Path,
         if tolerance:
             d = within_tolerance(model, tolerance, margin, d)
         path, kept = None, False
-        if d.certificate is not None:
+        if isinstance(d.certificate, PrCertificate):  # the frequency-domain route
+            path, kept = store_pr_certificate(d.certificate, margin, certificates_dir)
+        elif d.certificate is not None:
             claim = Claim(Fraction(margin))
             H = shifted(d.certificate.model, -claim.margin)  # the model as given
             P = coarse_kyp(d.certificate.model, d.certificate.P)

@@ -160,6 +160,15 @@ def restore(d: Decision, r: Rescaling, model: LTIModel, em, margin: Fraction) ->
         with np.errstate(all="ignore"):  # floats (an estimate): may overflow to inf
             out = replace(out, nu_min=(float(np.ldexp(d.nu_min[0], r.freq)),
                                        float(np.ldexp(d.nu_min[1], r.gain))))
+    if d.certificate is not None and not hasattr(d.certificate, "P"):
+        # a frequency-domain certificate is about the scaled model; the exact route does
+        # not need the scaling, so it is re-run on the model as written
+        from verify.passivity.fd_decision import decide_positive_real
+
+        verdict, reason, cert, witness = decide_positive_real(
+            em, model.name, model.source, {"margin": str(margin)})
+        return replace(out, verdict=verdict, reason=reason, certificate=cert,
+                       witness=witness)
     if d.certificate is not None:
         factor = ex.mpq(r.p_factor)
         P = [[factor * x for x in row] for row in d.certificate.P]

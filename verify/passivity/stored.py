@@ -17,6 +17,7 @@ from typing import Any
 
 from verify.errors import VerifyInputError
 from verify.passivity import certificate_files as cf
+from verify.passivity import fd_certificate
 from verify.passivity.certificate import KypCheck
 from verify.passivity.strict_json import CertificateFormatError, read_strict
 
@@ -35,6 +36,7 @@ def _check_sos(data: dict[str, Any], path: Path) -> KypCheck:
 
 SCHEMAS: dict[str, Checker] = {
     "verify-sos-certificate/1": _check_sos,
+    fd_certificate.SCHEMA: fd_certificate.check_pr_file,
     cf.KYP_V1: cf.check_kyp_file,
     cf.KYP_V2: cf.check_kyp_file,
     cf.BAND_V1: cf.check_band_file,

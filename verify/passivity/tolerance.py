@@ -118,6 +118,7 @@ class ToleranceDecision(Decision):
             "exact_verdict": None if self.exact is None else self.exact.verdict,
             "exact_reason": None if self.exact is None else self.exact.reason,
             "perturbed_certificate": None if self.certificate is None
+            else self.certificate.to_json() if hasattr(self.certificate, "to_json")
             else {"model": self.certificate.model.to_json(),
                   "P": ex.to_strings(self.certificate.P)},
         }

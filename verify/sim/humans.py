@@ -119,11 +119,12 @@ class LTIHuman(Human):
     @classmethod
     def gated(cls, model) -> tuple[LTIHuman, Decision]:
         """The model with the passivity gate's verdict; a passive model gets the storage
-        x^T P x / 2 from its exactly checked KYP certificate, any other none."""
+        x^T P x / 2 from its exactly checked KYP certificate, any other none (a
+        frequency-domain certificate proves H(s) positive real but holds no P)."""
         from verify.passivity.decide import PASSIVE, decide
 
         decision = decide(model)
-        if decision.verdict != PASSIVE:
+        if decision.verdict != PASSIVE or not hasattr(decision.certificate, "P"):
             return cls.from_model(model), decision
         cert = decision.certificate
         if cert.model.n != model.n:  # not minimal: the storage is on the minimal part

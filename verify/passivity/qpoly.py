@@ -1,0 +1,283 @@
+"""Exact univariate polynomials over Q for the frequency-domain decision (python-flint).
+
+Everything here is exact: FLINT's ``fmpq_poly`` (rational coefficients, gcd, exact
+division), Sturm sequences for counting real roots in rational intervals, the Routh table
+for the Hurwitz test, and the split of p(jw) into real and imaginary parts. Floating
+point never enters; arb balls (rigorous interval arithmetic) appear only in
+:func:`approximate_roots`, used to *propose* witness points and sum-of-squares terms that
+are then checked exactly.
+
+References: Sturm's theorem and the Routh-Hurwitz criterion as in Basu, Pollack and Roy,
+*Algorithms in Real Algebraic Geometry* (2006), Sections 2.2.2 and 9.1.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Sequence
+from contextlib import contextmanager
+from fractions import Fraction
+
+import flint
+from flint import fmpq, fmpq_poly
+from gmpy2 import mpq
+
+Poly = fmpq_poly
+CPoly = tuple[fmpq_poly, fmpq_poly]  # p = re + j im, both real polynomials in w
+
+ZERO = fmpq_poly([])
+ONE = fmpq_poly([1])
+
+
+def q(x) -> fmpq:
+    """An exact rational (int, Fraction, gmpy2 mpq, fmpq or 'p/q' string) as fmpq."""
+    if isinstance(x, fmpq):
+        return x
+    if isinstance(x, str):
+        x = Fraction(x)
+    return fmpq(int(x.numerator), int(x.denominator))
+
+
+def to_mpq(x: fmpq) -> mpq:
+    return mpq(int(x.p), int(x.q))
+
+
+def poly(coeffs: Sequence) -> Poly:
+    """Polynomial from ascending coefficients."""
+    return fmpq_poly([q(c) for c in coeffs])
+
+
+def coeff_strings(p: Poly) -> list[str]:
+    """Ascending coefficients as 'p/q' strings (the JSON form; [] for the zero polynomial)."""
+    return [str(c) for c in p.coeffs()]
+
+
+def from_strings(texts: Sequence[str]) -> Poly:
+    if not isinstance(texts, list) or not all(isinstance(t, str) for t in texts):
+        raise ValueError("a polynomial is a list of 'p/q' coefficient strings")
+    return fmpq_poly([q(Fraction(t)) for t in texts])
+
+
+def monic(p: Poly) -> Poly:
+    return p if p.is_zero() else p / p.leading_coefficient()
+
+
+def mirror(p: Poly) -> Poly:
+    """p(-s)."""
+    return fmpq_poly([c if k % 2 == 0 else -c for k, c in enumerate(p.coeffs())])
+
+
+def squarefree_part(p: Poly) -> Poly:
+    """The monic product of the distinct irreducible factors of p (p != 0)."""
+    if p.degree() < 1:
+        return ONE
+    return monic(p / p.gcd(p.derivative()))
+
+
+def at_jw(p: Poly) -> CPoly:
+    """(Re, Im) of p(jw) as real polynomials in w."""
+    re, im = [], []
+    for k, c in enumerate(p.coeffs()):
+        sign = 1 if k % 4 in (0, 1) else -1
+        (re if k % 2 == 0 else im).append((k, sign * c))
+    out = []
+    for part in (re, im):
+        coeffs = [fmpq(0)] * (p.degree() + 1 if p.degree() >= 0 else 0)
+        for k, c in part:
+            coeffs[k] = c
+        out.append(fmpq_poly(coeffs))
+    return out[0], out[1]
+
+
+# complex polynomials in w (pairs of real polynomials) --------------------------------
+
+def cmul(a: CPoly, b: CPoly) -> CPoly:
+    return a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0]
+
+
+def cadd(a: CPoly, b: CPoly) -> CPoly:
+    return a[0] + b[0], a[1] + b[1]
+
+
+def conj(a: CPoly) -> CPoly:
+    return a[0], -a[1]
+
+
+def times_j_power(a: CPoly, e: int) -> CPoly:
+    """j^e a (e may be negative)."""
+    for _ in range(e % 4):
+        a = (-a[1], a[0])
+    return a
+
+
+# signs, Sturm sequences, root counting -----------------------------------------------
+
+def sign(x) -> int:
+    return (x > 0) - (x < 0)
+
+
+def sturm_sequence(p: Poly) -> list[Poly]:
+    """p, p', then negated remainders until the last non-zero one."""
+    seq = [p, p.derivative()]
+    while not seq[-1].is_zero():
+        seq.append(-(seq[-2] % seq[-1]))
+    return seq[:-1]
+
+
+def _variations(signs: list[int]) -> int:
+    nz = [s for s in signs if s]
+    return sum(1 for a, b in itertools.pairwise(nz) if a != b)
+
+
+def _signs_at(seq: list[Poly], x) -> list[int]:
+    if x == "-inf":
+        return [sign(p.leading_coefficient()) * (-1) ** p.degree() for p in seq]
+    if x == "+inf":
+        return [sign(p.leading_coefficient()) for p in seq]
+    return [sign(p(x)) for p in seq]
+
+
+def count_roots(p: Poly, lo="-inf", hi="+inf", seq: list[Poly] | None = None) -> int:
+    """Number of distinct real roots of p != 0 in (lo, hi] (Sturm's theorem)."""
+    if p.degree() < 1:
+        return 0
+    seq = sturm_sequence(p) if seq is None else seq
+    return _variations(_signs_at(seq, lo)) - _variations(_signs_at(seq, hi))
+
+
+def cauchy_bound(p: Poly) -> fmpq:
+    """Every root z of p has |z| < 1 + max |a_k / a_n| (a rational bound)."""
+    c = p.coeffs()
+    lead = abs(c[-1])
+    return 1 + max((abs(x) / lead for x in c[:-1]), default=fmpq(0))
+
+
+def isolate_real_roots(p: Poly) -> list[tuple[fmpq, fmpq]]:
+    """Disjoint rational intervals (a, b], each holding exactly one root of squarefree p.
+
+    Bisection of half-open intervals driven by Sturm counts (a root at a split point
+    falls in the left half, so nothing is counted twice).
+    """
+    if p.degree() < 1:
+        return []
+    seq = sturm_sequence(p)
+    bound = cauchy_bound(p)
+    out: list[tuple[fmpq, fmpq]] = []
+    stack = [(-bound, bound)]
+    while stack:
+        a, b = stack.pop()
+        k = count_roots(p, a, b, seq)
+        if k == 1:
+            out.append((a, b))
+        elif k > 1:
+            mid = (a + b) / 2
+            stack += [(a, mid), (mid, b)]
+    return sorted(out)
+
+
+def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq]) -> int:
+    """The sign of g at the one root of squarefree rho in the interval (a, b].
+
+    g(w0) = 0 iff gcd(g, rho) vanishes at w0, i.e. changes sign across (a, b] (it is
+    squarefree with at most that one root there); otherwise the interval is halved,
+    keeping w0 inside, until g has no root in it, and the sign of g at b is returned.
+    """
+    a, b = interval
+    if a == b:
+        return sign(g(a))
+    r = g % rho
+    if r.is_zero():
+        return 0
+    h = r.gcd(rho)
+    if h.degree() >= 1 and count_roots(h, a, b) == 1:
+        return 0
+    seq = sturm_sequence(r) if r.degree() >= 1 else None
+    while True:
+        if r.degree() < 1 or (count_roots(r, a, b, seq) == 0 and r(b) != 0):
+            return sign(r(b))
+        mid = (a + b) / 2
+        if rho(mid) == 0:
+            return sign(r(mid))
+        if count_roots(rho, a, mid) == 1:
+            b = mid
+        else:
+            a = mid
+
+
+# Routh-Hurwitz -------------------------------------------------------------------------
+
+def routh_first_column(p: Poly) -> list[fmpq]:
+    """First column of the Routh table of p (leading coefficient made positive).
+
+    p is Hurwitz (every root in Re s < 0) iff this column has deg p + 1 entries, all
+    positive; the table stops at the first entry that is not positive.
+    """
+    c = p.coeffs()[::-1]  # descending
+    if c and c[0] < 0:
+        c = [-x for x in c]
+    r0, r1 = c[0::2], c[1::2]
+    column = [r0[0]] if r0 else []
+    rows = [r0, r1]
+    for _ in range(len(c) - 1):
+        top, bottom = rows[-2], rows[-1]
+        if not bottom or bottom[0] <= 0:
+            column.append(bottom[0] if bottom else fmpq(0))
+            return column
+        column.append(bottom[0])
+        nxt = []
+        for k in range(len(top) - 1):
+            below = bottom[k + 1] if k + 1 < len(bottom) else fmpq(0)
+            nxt.append((bottom[0] * top[k + 1] - top[0] * below) / bottom[0])
+        rows.append(nxt)
+    return column
+
+
+def is_hurwitz(p: Poly) -> bool:
+    column = routh_first_column(p)
+    return len(column) == p.degree() + 1 and all(x > 0 for x in column)
+
+
+# approximate roots (arb balls; proposals only) -------------------------------------------
+
+@contextmanager
+def precision(bits: int):
+    """FLINT's working precision for arb/acb within the block."""
+    old = flint.ctx.prec
+    flint.ctx.prec = bits
+    try:
+        yield
+    finally:
+        flint.ctx.prec = old
+
+
+def approximate_roots(p: Poly, prec: int = 64) -> list:
+    """Rigorous acb enclosures of the roots of p (each listed once), at ``prec`` bits."""
+    with precision(prec):
+        return [r for r, _ in p.complex_roots()]
+
+
+def dyadic(x) -> fmpq:
+    """The midpoint of an arb ball as an exact rational."""
+    man, exp = x.mid().man_exp()
+    return fmpq(man) * fmpq(2) ** int(exp) if exp >= 0 else fmpq(man, 2 ** int(-exp))
+
+
+def has_real_root(p: Poly) -> bool:
+    """Whether p has a real root, from FLINT's certified complex root isolation
+    (``arb_fmpz_poly_complex_roots``: isolating balls, real roots with an exactly zero
+    imaginary part)."""
+    if p.degree() < 1:
+        return False
+    return any(r.imag == 0 for r in approximate_roots(squarefree_part(p), prec=64))
+
+
+def refine_root(p: Poly, interval: tuple[fmpq, fmpq], width: fmpq) -> tuple[fmpq, fmpq]:
+    """Halve the isolating interval (a, b] of a root of squarefree p below ``width``."""
+    a, b = interval
+    while b - a > width:
+        mid = (a + b) / 2
+        if count_roots(p, a, mid) == 1:
+            b = mid
+        else:
+            a = mid
+    return a, b
