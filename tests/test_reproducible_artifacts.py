@@ -75,3 +75,29 @@ def test_bad_source_date_epoch_is_one_line_and_exit_2(monkeypatch, capsys, value
     err = capsys.readouterr().err
     assert "SOURCE_DATE_EPOCH" in err and len(err.strip().splitlines()) == 1
     assert not list(tmp_path.iterdir())
+
+
+def test_parallel_claim_checks_give_the_sequential_report(tmp_path, monkeypatch):
+    """verify all --jobs 2 renders byte for byte what --jobs 1 renders (fast claims)."""
+    from verify.cli import main
+
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    outs = []
+    for jobs in ("1", "2"):
+        out = tmp_path / f"jobs{jobs}"
+        args = ["all", "--quick", "--jobs", jobs, "--out", str(out), "--certificates",
+                str(tmp_path / "certs"), "--only", "sec2.d-dot", "--only", "thm1.phi",
+                "--only", "sec4.nu-criterion"]
+        assert main(args) == 0
+        outs.append(out)
+    for name in ("report.md", "report.json", "report.html"):
+        a = (outs[0] / name).read_text().replace(str(outs[0]), "OUT")
+        b = (outs[1] / name).read_text().replace(str(outs[1]), "OUT")
+        assert a == b, name
+
+
+def test_jobs_below_one_is_bad_input(tmp_path, capsys):
+    from verify.cli import main
+
+    assert main(["all", "--jobs", "0", "--out", str(tmp_path)]) == 2
+    assert "--jobs must be at least 1" in capsys.readouterr().err

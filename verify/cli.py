@@ -39,6 +39,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_all.add_argument("--seed", type=int, default=20261121, help="seed of the random samples")
     p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
                        metavar="DIR", help="where certificates are written (default certificates)")
+    p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
+                       help="claim checks run in N processes (default: the cores, at most 4); "
+                            "the report does not depend on N")
     p_all.add_argument(
         "--only",
         metavar="PREFIX",
@@ -162,6 +165,8 @@ def _cmd_all(args: argparse.Namespace) -> int:
     from verify.report.render import VERDICT_MARK
 
     info = RunInfo.from_environment()  # a bad SOURCE_DATE_EPOCH fails before any work
+    if args.jobs < 1:
+        raise VerifyInputError(f"--jobs must be at least 1, got {args.jobs}")
     claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
@@ -174,7 +179,7 @@ def _cmd_all(args: argparse.Namespace) -> int:
         print(f"  {result.claim.id:<{width}}  {mark:<22} {result.seconds:6.2f} s", flush=True)
 
     print(f"verify all: {len(claims)} claims (seed {args.seed})")
-    run = run_claims(claims, context, progress=progress)
+    run = run_claims(claims, context, progress=progress, jobs=args.jobs)
     paths = write_report(run, args.out, info)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
