@@ -11,7 +11,7 @@ see the same models in the same process. Columns:
   exactly, or an exactly checked witness); ``ok`` says the verdict is the known truth and
   its evidence re-checks (a certificate once more with :func:`check_kyp`, untimed);
 - ``freq``: the exact frequency-domain route, when a module providing it is importable
-  (``--frequency-route``; "-" otherwise);
+  (``--frequency-route``, by default verify.passivity.fd_decision; up to 100 states);
 - ``ispassive``: python-control's ``ispassive`` (an SDP in cvxopt, floating point);
 - ``sdp``: a plain KYP LMI in cvxpy + Clarabel (P >= eps I, M(P) <= 0; feasibility only, no
   exact check): what an SDP costs before any rounding;
@@ -51,12 +51,17 @@ import numpy as np  # noqa: E402
 
 from verify.passivity.certificate import check_kyp  # noqa: E402
 from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide  # noqa: E402
+from verify.passivity.fd_certificate import (  # noqa: E402
+    PrCertificate,
+    check_pr_certificate_data,
+)
 from verify.passivity.model import from_state_space  # noqa: E402
 
 SIZES = (2, 10, 30, 100, 200, 400)
 KINDS = ("passive", "flipped", "resonant")
 SEED = 20261121
-FREQUENCY_ROUTE = "verify.passivity.frequency:decide_frequency"
+FREQUENCY_ROUTE = "verify.passivity.fd_decision:decide_positive_real"
+FREQUENCY_MAX = 100  # the exact frequency-domain route alone, up to this many states
 #: python-control and the plain SDP run on every family up to this n, beyond it (up to
 #: --control-max / --sdp-max) on the passive family only: each takes minutes there
 ALL_KINDS_UP_TO = 30
@@ -111,7 +116,9 @@ def ours(A, B, C, D, n: int) -> tuple[str, float, bool]:
     d, seconds = timed(lambda: decide(model))
     if isinstance(d, str):
         return d, seconds, False
-    if d.verdict == PASSIVE:
+    if d.verdict == PASSIVE and isinstance(d.certificate, PrCertificate):
+        evidence = check_pr_certificate_data(d.certificate.to_json()).ok
+    elif d.verdict == PASSIVE:
         evidence = d.certificate is not None and check_kyp(d.certificate.model,
                                                            d.certificate.P).ok
     else:
@@ -192,10 +199,10 @@ def main(sizes, kinds, ports: int, control_max: int, sdp_max: int, freq_spec: st
             verdict, t_ours, evidence = ours(A, B, C, D, n)
             ok = "yes" if verdict == truth and evidence else "NO"
             f_cell = "-"
-            if freq is not None:
-                model = from_state_space(A, B, C, D, name=f"n={n}")
-                d, t_f = timed(lambda model=model: freq(model))
-                f_verdict = getattr(d, "verdict", d)
+            if freq is not None and n <= FREQUENCY_MAX:
+                em = from_state_space(A, B, C, D, name=f"n={n}").exact
+                d, t_f = timed(lambda em=em, n=n: freq(em, f"n={n}", "python", {"margin": "0"}))
+                f_verdict = d if isinstance(d, str) else d[0]
                 f_cell = _cell((f_verdict, t_f), truth)
             every = n <= ALL_KINDS_UP_TO or kind == "passive"  # minutes each beyond
             c = theirs(A, B, C, D) if n <= control_max and every else None

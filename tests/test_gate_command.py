@@ -91,3 +91,28 @@ def test_gate_indices_are_printed_and_written(tmp_path, capsys):
     assert "ν_IFP = 0 exactly" in out and "ρ_OFP = 0 exactly" in out
     (data,) = json.loads(out_json.read_text())
     assert data["indices"]["IFP"]["lower"] == "0" and data["indices"]["OFP"]["exact"]
+
+
+def test_frequency_domain_certificate_is_written_bound_and_kept(tmp_path, monkeypatch, capsys):
+    """With the KYP search out of the way, the gate decides by positive realness, writes a
+    verify-pr-certificate/1 file under the name its claim asks for, keeps it on a rerun,
+    and `verify certificates check` refuses it once the source file denotes another model.
+    """
+    import verify.passivity.decide as decide_module
+
+    monkeypatch.setattr(decide_module, "find_certificate", lambda *args: None)
+    monkeypatch.chdir(tmp_path)
+    model = Path("lossless.toml")
+    model.write_text("[transfer_function]\nnum = [[[2, 18, 24, 26]]]\nden = [[[1, 4, 2, 8]]]\n")
+    assert main(["gate", str(model), "--certificates", "certs"]) == 0
+    (cert,) = Path("certs").glob("*.json")
+    assert json.loads(cert.read_text())["schema"] == "verify-pr-certificate/1"
+    before = cert.read_bytes()
+    assert main(["gate", str(model), "--certificates", "certs"]) == 0
+    assert "(kept: already a valid certificate" in capsys.readouterr().out
+    assert cert.read_bytes() == before
+    assert main(["certificates", "check", "certs"]) == 0
+    assert "exactly the one lossless.toml denotes" in capsys.readouterr().out
+    model.write_text("[transfer_function]\nnum = [[[2, 18, 24, 27]]]\nden = [[[1, 4, 2, 8]]]\n")
+    assert main(["certificates", "check", "certs"]) == 1
+    assert "denotes another model" in capsys.readouterr().out

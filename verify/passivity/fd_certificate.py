@@ -13,7 +13,6 @@ it fail, and duplicate or unknown keys are refused.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -85,18 +84,11 @@ class PrCertificate:
                 "model": self.model.to_json(), **facts, "meta": self.meta}
 
 
-def _no_duplicates(pairs):
-    out = {}
-    for k, v in pairs:
-        if k in out:
-            raise ValueError(f"duplicate key {k!r}")
-        out[k] = v
-    return out
-
-
 def parse_json_text(text: str) -> Any:
-    """json.loads that refuses duplicate keys (ValueError)."""
-    return json.loads(text, object_pairs_hook=_no_duplicates)
+    """The strict JSON reading of every certificate kind (duplicate keys, NaN: ValueError)."""
+    from verify.passivity.strict_json import loads_strict
+
+    return loads_strict(text)
 
 
 def _model(data: dict) -> ExactModel:

@@ -106,10 +106,10 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
     text = dumps(data)
     if path.is_file():
         try:
-            if path.read_text() == text or (
-                    fd.check_pr_file(fd.parse_json_text(path.read_text()), path).ok
-                    and fd.parse_json_text(path.read_text())["fingerprint"]
-                    == data["fingerprint"]):
+            old = path.read_text()
+            stored = fd.parse_json_text(old)
+            if old == text or (stored.get("fingerprint") == data["fingerprint"]
+                               and fd.check_pr_file(stored, path).ok):
                 return path, True
         except (OSError, ValueError):
             pass  # unreadable or not ours: replaced below
