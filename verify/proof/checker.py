@@ -44,7 +44,6 @@ from verify.proof.sos_step import BySos
 from verify.proof.sos_step import exact_check as sos_exact_check
 
 
-
 class ProofVerdict(enum.StrEnum):
     """Verdicts of a step and of a derivation (see the module docstring).
 
