@@ -344,7 +344,7 @@ def lambda_min(m: Expr) -> Expr:
     Exactly, lambda_min is an algebraic function, not a rational one; the checker treats
     each distinct lambda_min(M) as an opaque real number, so an identity is verified
     only if it holds whatever that number is. Inequalities about it enter through the
-    spectral lemma of :mod:`verify.proof.lemmas` (A - lambda_min(A) I is PSD).
+    kernel fact "spectral" of :mod:`verify.proof.justify` (A - lambda_min(A) I is PSD).
     """
     _require(m, MATRIX, "lambda_min")
     return Expr("lambda_min", (m,), SCALAR)
