@@ -93,7 +93,7 @@ def near_cancelling_networks(*, max_bodies: int = 200) -> st.SearchStrategy[np.n
 
 @st.composite
 def _near_cancelling_networks(draw, max_bodies: int) -> np.ndarray:
-    from verify.sampling import near_cancelling_network
+    from verify.random_networks import near_cancelling_network
 
     n = draw(st.integers(2, max_bodies))
     residual = 10.0 ** draw(st.floats(-6.0, -2.0))
@@ -114,9 +114,10 @@ def _matrix(shape: tuple[int, int], bound: float = 1.0):
 def passive_lti_models(*, max_states: int = 3, ports: int = 2) -> st.SearchStrategy:
     """Passive LTI models (port-Hamiltonian with a strictly passive feedthrough).
 
-    The free matrices are drawn and assembled by :func:`verify.sim.sampling.port_hamiltonian`
-    (x^T Q x / 2 is a storage; D + D^T > 0 keeps the KYP LMI strictly feasible after
-    floating-point rounding of the entries).
+    The free matrices are drawn and assembled by
+    :func:`verify.sim.random_scenarios.port_hamiltonian` (x^T Q x / 2 is a storage;
+    D + D^T > 0 keeps the KYP LMI strictly feasible after floating-point rounding of the
+    entries).
     """
     integer_at_least("max_states", max_states, 1, error=InvalidArgument)
     integer_at_least("ports", ports, 1, error=InvalidArgument)
@@ -125,7 +126,7 @@ def passive_lti_models(*, max_states: int = 3, ports: int = 2) -> st.SearchStrat
 
 @st.composite
 def _passive_lti_models(draw, max_states: int, ports: int):
-    from verify.sim.sampling import port_hamiltonian
+    from verify.sim.random_scenarios import port_hamiltonian
 
     n = draw(st.integers(1, max_states))
     J = draw(_matrix((n, n)))

@@ -22,7 +22,7 @@ from verify.claims.model import (
     Verdict,
 )
 from verify.claims.registry import REGISTRY
-from verify.sampling import network_suite, random_network
+from verify.random_networks import network_suite, random_network
 from verify.sim.humans import SignalHuman
 from verify.sim.inputs import Reference, SignalInput, smooth_random_signal
 from verify.sim.run import simulate
