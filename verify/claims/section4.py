@@ -69,7 +69,7 @@ def model_class_conditions() -> dict[str, bool]:
 def model_class(context: CheckContext) -> Outcome:
     facts = model_class_conditions()
     evidence = [exact(f"{k}: {'holds' if v else 'FAILS'}", v) for k, v in facts.items()]
-    instances = {
+    cases = {
         # (a0, a1, b0, b1, c12, c21): expected by the criterion
         (1.5, 2.0, 0.8, 1.2, 0.05, -0.05): PASSIVE,
         (2.0, 1.0, 1.0, 0.5, 0.05, -0.05): NOT_PASSIVE,   # b0 > a1 b1
@@ -78,7 +78,7 @@ def model_class(context: CheckContext) -> Outcome:
         (1.0, 1.0, -0.1, 1.0, 0.0, 0.0): NOT_PASSIVE,     # b0 < 0
     }
     agree = []
-    for (a0, a1, b0, b1, c12, c21), expected in instances.items():
+    for (a0, a1, b0, b1, c12, c21), expected in cases.items():
         A = [[0, 1, 0, 0], [-a0, -a1, 0, 0], [0, 0, 0, 1], [0, 0, -a0, -a1]]
         B = [[0, 0], [1, 0], [0, 0], [0, 1]]
         C = [[b0, b1, 0, 0], [0, 0, b0, b1]]
