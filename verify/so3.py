@@ -20,6 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.spatial.transform import Rotation
 
 from verify.errors import NotARotationError, VerifyInputError
+from verify.validation import message
 
 Array = NDArray[np.float64]
 
@@ -32,6 +33,11 @@ E3 = np.array([0.0, 0.0, 1.0])
 def hat(v: ArrayLike) -> Array:
     """Skew-symmetric matrix of ``v`` (shape ``(..., 3)`` -> ``(..., 3, 3)``): hat(v) w = v x w."""
     v = np.asarray(v, dtype=float)
+    if v.ndim == 0 or v.shape[-1] != 3:
+        raise VerifyInputError(message(
+            "vectors of shape (..., 3)", "v", v, "pass 3-vectors (hat maps R^3 to so(3)); "
+            "for a quaternion (w, x, y, z) use quaternion_to_matrix",
+            detail=f"shape {v.shape}"))
     x, y, z = v[..., 0], v[..., 1], v[..., 2]
     zero = np.zeros_like(x)
     return np.stack(

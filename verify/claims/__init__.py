@@ -1,4 +1,4 @@
-"""The claim registry (DESIGN.md: "The spine is a claim registry")."""
+"""The claim registry: every claim of the paper, its check and its verdict."""
 
 from verify.claims.model import (
     CheckContext,

@@ -1,4 +1,4 @@
-"""The data model of the claim registry (DESIGN.md, "The spine is a claim registry").
+"""The data model of the claim registry (README, "What the report says").
 
 A :class:`Claim` is one checkable statement of the paper: where it stands, what the paper
 writes (in our words), what exactly is checked and how, and the function that checks

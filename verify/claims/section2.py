@@ -13,6 +13,7 @@ import numpy as np
 import sympy as sp
 
 from verify import so3
+from verify.claims.evidence import argument, exact, instances, numeric, verdict_from
 from verify.claims.model import (
     CheckContext,
     Evidence,
@@ -21,7 +22,7 @@ from verify.claims.model import (
     Verdict,
 )
 from verify.claims.registry import REGISTRY
-from verify.sampling import network_suite, random_network
+from verify.random_networks import network_suite, random_network
 from verify.sim.humans import SignalHuman
 from verify.sim.inputs import Reference, SignalInput, smooth_random_signal
 from verify.sim.run import simulate
@@ -34,41 +35,6 @@ from verify.system import stealthy as st
 EPS = float(np.finfo(float).eps)
 
 # ---------------------------------------------------------------------------- helpers
-
-
-def _exact(summary: str, ok: bool, **data) -> Evidence:
-    return Evidence(EvidenceKind.EXACT_IDENTITY, summary, data, passed=ok)
-
-
-def _instances(summary: str, ok: bool, **data) -> Evidence:
-    return Evidence(EvidenceKind.EXACT_INSTANCE, summary, data, passed=ok)
-
-
-def _numeric(summary: str, ok: bool, **data) -> Evidence:
-    return Evidence(EvidenceKind.NUMERICAL, summary, data, passed=ok)
-
-
-def _argument(summary: str) -> Evidence:
-    return Evidence(EvidenceKind.ARGUMENT, summary)
-
-
-def _verdict_from(
-    evidence: list[Evidence], success: Verdict, finding: str, repaired: str | None = None
-) -> Outcome:
-    """Success only if every exact and numerical piece passed; otherwise inconclusive.
-
-    A failed numerical check beside a passed exact one is a contradiction (a bug in the
-    tool or a rounding bound that is wrong): never a pass, never a refutation.
-    """
-    failed = [e for e in evidence if not e.passed]
-    if failed:
-        names = "; ".join(e.summary for e in failed)
-        return Outcome(
-            Verdict.INCONCLUSIVE,
-            f"Some evidence did not pass ({names}); no verdict is given.",
-            tuple(evidence),
-        )
-    return Outcome(success, finding, tuple(evidence), repaired)
 
 
 def _networks(ctx: CheckContext, salt: str) -> list[np.ndarray]:
@@ -99,7 +65,7 @@ def check_d_dot(ctx: CheckContext) -> Outcome:
     difference = R * alg.hat(w) * alg.E3 - (-R * alg.hat(alg.E3) * w)
     exact_ok = alg.is_zero_matrix(difference)
     evidence = [
-        _exact("R hat(w) e3 = -R hat(e3) w as polynomials in 12 free symbols", exact_ok),
+        exact("R hat(w) e3 = -R hat(e3) w as polynomials in 12 free symbols", exact_ok),
     ]
     rng = ctx.rng("sec2.d-dot")
     worst = 0.0
@@ -117,13 +83,13 @@ def check_d_dot(ctx: CheckContext) -> Outcome:
         bound = np.linalg.norm(omega, axis=1) ** 3 * h**2 / 6 + 20 * EPS / h
         worst = max(worst, float(np.max(error / bound)))
     evidence.append(
-        _numeric(
+        numeric(
             "central differences of d along exp-flows match S(d) Omega (error / bound)",
             worst <= 1,
             max_error_over_bound=worst,
         )
     )
-    return _verdict_from(
+    return verdict_from(
         evidence,
         Verdict.VERIFIED,
         "Holds. A notational remark: the blocks -R_i hat(e3) depend on the whole attitude R_i "
@@ -160,15 +126,15 @@ def check_dbar_defined(ctx: CheckContext) -> Outcome:
     except st.DbarUndefinedError:
         pass
     evidence = [
-        _numeric(
+        numeric(
             "kappa(W) grows like 1/|sum d_i| on a nearly opposite pair",
             rows[-1]["kappa_W"] > rows[0]["kappa_W"],
             rows=rows,
         ),
-        _numeric("an exactly opposite pair (sum d_i = 0) is rejected", rejected),
+        numeric("an exactly opposite pair (sum d_i = 0) is rejected", rejected),
     ]
     if any(not e.passed for e in evidence):
-        return _verdict_from(evidence, Verdict.ASSUMPTION, "")
+        return verdict_from(evidence, Verdict.ASSUMPTION, "")
     return Outcome(
         Verdict.ASSUMPTION,
         "The paper needs sum d_i != 0 wherever it uses dbar, its Jacobian or A(d), but does "
@@ -202,7 +168,7 @@ def check_dbar_jacobian(ctx: CheckContext) -> Outcome:
     closed = (sp.eye(3) - s * s.T / ss) / sp.sqrt(ss)
     diff = (f.jacobian(s) - closed).subs(sp.sqrt(ss), r)
     core_ok = all(alg.is_zero_modulo_root(e, r, ss) for e in diff)
-    evidence = [_exact("d(s/|s|)/ds = (I - s s^T/|s|^2)/|s|, decided modulo r^2 = s.s", core_ok)]
+    evidence = [exact("d(s/|s|)/ds = (I - s s^T/|s|^2)/|s|, decided modulo r^2 = s.s", core_ok)]
     per_n_ok = True
     for n in (1, 2, 3):
         d = sp.Matrix([sp.Symbol(f"d{i}_{k}", real=True) for i in range(n) for k in range(3)])
@@ -212,7 +178,7 @@ def check_dbar_jacobian(ctx: CheckContext) -> Outcome:
         block = (sp.eye(3) - sv * sv.T / svs) / sp.sqrt(svs)
         D = (full - sp.Matrix.hstack(*([block] * n))).subs(sp.sqrt(svs), r)
         per_n_ok &= all(alg.is_zero_modulo_root(e, r, svs) for e in D)
-    evidence.append(_exact("full Jacobian equals [P/|s|, ..., P/|s|] for n = 1, 2, 3", per_n_ok))
+    evidence.append(exact("full Jacobian equals [P/|s|, ..., P/|s|] for n = 1, 2, 3", per_n_ok))
 
     import casadi as ca
 
@@ -227,13 +193,13 @@ def check_dbar_jacobian(ctx: CheckContext) -> Outcome:
         scale = float(np.abs(J).max())
         worst = max(worst, float(np.abs(J_ad - J).max()) / scale)
     evidence.append(
-        _numeric(
+        numeric(
             "CasADi AD Jacobian agrees with the closed form (relative error)",
             worst <= 1e-9,
             max_relative_error=worst,
         )
     )
-    return _verdict_from(
+    return verdict_from(
         evidence,
         Verdict.VERIFIED,
         "Every block of the Jacobian is the same 3x3 matrix (I - dbar dbar^T)/|s|, the "
@@ -258,7 +224,7 @@ def check_wtw_invertible(ctx: CheckContext) -> Outcome:
     s = alg.vector_symbols("s")
     P = sp.eye(3) - s * s.T / (s.T * s)[0, 0]
     kernel_ok = alg.is_zero_matrix(P * s)
-    evidence = [_exact("P s = 0 for symbolic s, hence W_i dbar = 0 for every i and n", kernel_ok)]
+    evidence = [exact("P s = 0 for symbolic s, hence W_i dbar = 0 for every i and n", kernel_ok)]
     net = RationalNetwork.of([(2, 1, -1, 3), (1, 2, 2, -1), (3, -1, 0, 2)])
     G = net.gram
     det = G.det()
@@ -282,14 +248,14 @@ def check_wtw_invertible(ctx: CheckContext) -> Outcome:
         sv = np.linalg.svd(st.w_matrix(R, scaled=False), compute_uv=False)
         worst = max(worst, float(sv[2] / sv[0]))
     evidence.append(
-        _numeric(
+        numeric(
             "smallest/largest singular value of W over random networks (rounding level)",
             worst <= 1e3 * EPS,
             max_ratio=worst,
         )
     )
     if not all(e.passed for e in evidence):
-        return _verdict_from(evidence, Verdict.REFUTED, "")
+        return verdict_from(evidence, Verdict.REFUTED, "")
     return Outcome(
         Verdict.REFUTED,
         "False for every network: W dbar = 0 because every block of W ends in the projector "
@@ -325,9 +291,9 @@ def check_w_rank_two(ctx: CheckContext) -> Outcome:
     lagrange = (v.T * v)[0] * (u.T * u)[0] - (u.T * v)[0] ** 2 - (u.cross(v).T * u.cross(v))[0]
     lagrange_ok = alg.is_zero(lagrange)
     evidence = [
-        _exact("R(q) hat(e3)^T hat(e3) R(q)^T = I - d d^T (rational in q)", gram_block_ok),
-        _exact("Lagrange identity |v|^2|u|^2 - (u.v)^2 = |u x v|^2", lagrange_ok),
-        _argument(
+        exact("R(q) hat(e3)^T hat(e3) R(q)^T = I - d d^T (rational in q)", gram_block_ok),
+        exact("Lagrange identity |v|^2|u|^2 - (u.v)^2 = |u x v|^2", lagrange_ok),
+        argument(
             "W~^T W~ = P (n I - sum d_i d_i^T) P. For v orthogonal to dbar, "
             "v^T W~^T W~ v = sum_i |d_i x v|^2 >= 0, and it is zero only if every d_i is "
             "parallel to v; then s is parallel to v and orthogonal to it, so s = 0, which "
@@ -337,7 +303,7 @@ def check_w_rank_two(ctx: CheckContext) -> Outcome:
     ]
     ranks = {name: net.w_unscaled.rank() for name, net in sample_networks()}
     evidence.append(
-        _instances(
+        instances(
             "exact rank of W~ is 2 on every rational instance",
             set(ranks.values()) == {2},
             ranks=ranks,
@@ -348,13 +314,13 @@ def check_w_rank_two(ctx: CheckContext) -> Outcome:
         sv = np.linalg.svd(st.w_matrix(Rn, scaled=False), compute_uv=False)
         worst = min(worst, float(sv[1] / sv[0]))
     evidence.append(
-        _numeric(
+        numeric(
             "second singular value stays clear of rounding level",
             worst > 1e6 * EPS,
             min_s2_over_s1=worst,
         )
     )
-    return _verdict_from(
+    return verdict_from(
         evidence,
         Verdict.VERIFIED,
         "W has rank exactly 2 whenever dbar is defined, so its pseudo-inverse is smooth in the "
@@ -418,14 +384,14 @@ def _instance_checks() -> dict[str, dict[str, bool | int]]:
 def check_stealthiness(ctx: CheckContext) -> Outcome:
     stealth_ok, _ = _gram_reduction()
     evidence = [
-        _exact(
+        exact(
             "(I - G M^{-1}) W^T = 0 for symbolic Gram entries a, b, c (frame dbar = e3)", stealth_ok
         ),
     ]
     inst = _instance_checks()
     inst_ok = all(v["JS_A_zero"] and v["A_equals_I_minus_W_Wpinv"] for v in inst.values())
     evidence.append(
-        _instances(
+        instances(
             "|s| (d dbar/d d) S A = 0 exactly on every rational instance",
             inst_ok,
             instances={k: {"n": v["n"], "JS_A_zero": v["JS_A_zero"]} for k, v in inst.items()},
@@ -446,7 +412,7 @@ def check_stealthiness(ctx: CheckContext) -> Outcome:
                 worst_dense, float(np.linalg.norm(dense - y) / (tol * np.linalg.norm(x)))
             )
     evidence.append(
-        _numeric(
+        numeric(
             "residual |P S A x| within the rounding bound 30 n eps kappa(W) |x| "
             "(ratio <= 1); dense and structured A agree within the same bound",
             worst_ratio <= 1 and worst_dense <= 1,
@@ -456,7 +422,7 @@ def check_stealthiness(ctx: CheckContext) -> Outcome:
     )
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
 
-    return cross_checked(_verdict_from(
+    return cross_checked(verdict_from(
         evidence,
         Verdict.REPAIRED,
         "Holds once (W^T W)^{-1} is replaced by the pseudo-inverse: every autonomous input "
@@ -478,7 +444,7 @@ def check_stealthiness(ctx: CheckContext) -> Outcome:
 )
 def check_projector(ctx: CheckContext) -> Outcome:
     _, idem_ok = _gram_reduction()
-    evidence = [_exact("A^2 = A via M^{-1} G M^{-1} = M^{-1} off the dbar entry", idem_ok)]
+    evidence = [exact("A^2 = A via M^{-1} G M^{-1} = M^{-1} off the dbar entry", idem_ok)]
     inst = _instance_checks()
     inst_ok = all(
         v["A_symmetric"]
@@ -488,7 +454,7 @@ def check_projector(ctx: CheckContext) -> Outcome:
         for v in inst.values()
     )
     evidence.append(
-        _instances(
+        instances(
             "A symmetric, idempotent, rank 3n - 2, identity on null(J S): exact",
             inst_ok,
             instances=inst,
@@ -503,13 +469,13 @@ def check_projector(ctx: CheckContext) -> Outcome:
         err = max(float(np.abs(A @ A - A).max()), float(np.abs(A - A.T).max()))
         worst = max(worst, err / tol)
     evidence.append(
-        _numeric(
+        numeric(
             "dense A idempotent and symmetric within the rounding bound",
             worst <= 1,
             max_error_over_bound=worst,
         )
     )
-    return _verdict_from(
+    return verdict_from(
         evidence,
         Verdict.REPAIRED,
         "The repaired A(d) is the orthogonal projector onto the 3n - 2 dimensional space of "
@@ -541,8 +507,8 @@ def check_dbar_dot(ctx: CheckContext) -> Outcome:
     s, w = alg.vector_symbols("s"), alg.vector_symbols("w")
     orth_ok = alg.is_zero((s.T * w.cross(s))[0])
     evidence = [
-        _exact("R(q) hat(e3) R(q)^T = hat(R(q) e3), so -R_i hat(e3) R_i^T w = w x d_i", conj_ok),
-        _exact("s . (w x s) = 0, so (I - dbar dbar^T)(w x s)/|s| = w x dbar", orth_ok),
+        exact("R(q) hat(e3) R(q)^T = hat(R(q) e3), so -R_i hat(e3) R_i^T w = w x d_i", conj_ok),
+        exact("s . (w x s) = 0, so (I - dbar dbar^T)(w x s)/|s| = w x dbar", orth_ok),
     ]
     rng = ctx.rng("sec2.dbar-dot-x")
     worst = 0.0
@@ -558,13 +524,13 @@ def check_dbar_dot(ctx: CheckContext) -> Outcome:
         scale = tol * (1 + np.abs(omega).max()) * n / np.linalg.norm(st.direction_sum(Rn))
         worst = max(worst, float(np.abs(rate - target).max() / scale))
     evidence.append(
-        _numeric(
+        numeric(
             "(d dbar/d d) S Omega = omega~ x dbar within the rounding bound",
             worst <= 1,
             max_error_over_bound=worst,
         )
     )
-    return _verdict_from(
+    return verdict_from(
         evidence,
         Verdict.REPAIRED,
         "dbar turns exactly with the human's spatial velocity omega~; the autonomous part drops "
@@ -654,7 +620,7 @@ def _closed_loop_shrinkage(ctx: CheckContext) -> Evidence:
             sums = [float(np.linalg.norm(st.direction_sum(R0))), 0.0]
         ratios.append({"n": n, "initial": sums[0], "minimum": min(sums)})
     smallest = min(r["minimum"] / r["initial"] for r in ratios)
-    return _numeric(
+    return numeric(
         "closed loop, random smooth autonomous inputs (2 s): |sum d_i| falls below 10% "
         "of its initial value in some run",
         smallest < 0.1,
@@ -683,8 +649,8 @@ def check_rbar_e3(ctx: CheckContext) -> Outcome:
     w = alg.vector_symbols("w")
     ode_ok = alg.is_zero_matrix(alg.hat(w) * Rb * alg.E3 - w.cross(Rb * alg.E3))
     evidence = [
-        _exact("hat(w) R-bar e3 = w x (R-bar e3): R-bar e3 obeys y' = omega~ x y", ode_ok),
-        _argument(
+        exact("hat(w) R-bar e3 = w x (R-bar e3): R-bar e3 obeys y' = omega~ x y", ode_ok),
+        argument(
             "dbar obeys the same linear equation y' = omega~(t) x y (claim sec2.dbar-dot); "
             "omega~ is continuous along solutions, so the solution through y(0) is unique and "
             "R-bar e3 = dbar for all t in the interval where dbar is defined."
@@ -715,9 +681,9 @@ def check_rbar_e3(ctx: CheckContext) -> Outcome:
     ok &= all(r["gap_h_1_120"] <= 1e-12 or r["gap_h_1_60"] / r["gap_h_1_120"] >= 8 for r in runs)
     ok &= all(r["gap_h_1_120"] <= 1e-6 for r in runs)
     evidence.append(
-        _numeric("closed-loop gap |R-bar e3 - dbar| at t = 1 s converges at order 4", ok, runs=runs)
+        numeric("closed-loop gap |R-bar e3 - dbar| at t = 1 s converges at order 4", ok, runs=runs)
     )
-    return _verdict_from(
+    return verdict_from(
         evidence,
         Verdict.REPAIRED,
         "Holds as long as dbar is defined; it rests on the stealthy property, so on the repaired "

@@ -1,4 +1,4 @@
-"""Claims of Section 3: Lemma 1 and Theorem 1, every step (issue 3).
+"""Claims of Section 3: Lemma 1 and Theorem 1, every step.
 
 The derivations live in :mod:`verify.paper_proofs`; each claim below checks a group of
 them with :func:`verify.proof.check` and states the finding. Verdicts of steps rest on

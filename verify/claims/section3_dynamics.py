@@ -24,7 +24,7 @@ from verify.sim import counterexamples as cx
 from verify.sim import properties as props
 from verify.sim.energy import energy
 from verify.sim.outputs import counterexample_figure
-from verify.sim.sampling import random_scenario
+from verify.sim.random_scenarios import random_scenario
 
 FIGURES = "figures"
 

@@ -1,4 +1,4 @@
-"""Claims of Section 4: passivity of the human models (issue 4, items 2, 5 and 6).
+"""Claims of Section 4: passivity of the human models (Section 4, the nu(w) criterion).
 
 The paper identifies 2x2 human models with diagonal (b1 s + b0)/(s^2 + a1 s + a0) and
 constant off-diagonal entries, and judges passivity from nu(w) >= 0. These claims derive
@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
+from verify.claims.evidence import exact, instances
 from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 from verify.passivity.band import decide_band
@@ -67,9 +68,8 @@ def model_class_conditions() -> dict[str, bool]:
 )
 def model_class(context: CheckContext) -> Outcome:
     facts = model_class_conditions()
-    evidence = [Evidence(EvidenceKind.EXACT_IDENTITY, f"{k}: {'holds' if v else 'FAILS'}",
-                         passed=v) for k, v in facts.items()]
-    instances = {
+    evidence = [exact(f"{k}: {'holds' if v else 'FAILS'}", v) for k, v in facts.items()]
+    cases = {
         # (a0, a1, b0, b1, c12, c21): expected by the criterion
         (1.5, 2.0, 0.8, 1.2, 0.05, -0.05): PASSIVE,
         (2.0, 1.0, 1.0, 0.5, 0.05, -0.05): NOT_PASSIVE,   # b0 > a1 b1
@@ -78,7 +78,7 @@ def model_class(context: CheckContext) -> Outcome:
         (1.0, 1.0, -0.1, 1.0, 0.0, 0.0): NOT_PASSIVE,     # b0 < 0
     }
     agree = []
-    for (a0, a1, b0, b1, c12, c21), expected in instances.items():
+    for (a0, a1, b0, b1, c12, c21), expected in cases.items():
         A = [[0, 1, 0, 0], [-a0, -a1, 0, 0], [0, 0, 0, 1], [0, 0, -a0, -a1]]
         B = [[0, 0], [1, 0], [0, 0], [0, 1]]
         C = [[b0, b1, 0, 0], [0, 0, b0, b1]]
@@ -86,10 +86,9 @@ def model_class(context: CheckContext) -> Outcome:
                              np.array([[0, c12], [c21, 0]], float), name="instance")
         got = decide(m).verdict
         agree.append(got == expected)
-        evidence.append(Evidence(
-            EvidenceKind.EXACT_INSTANCE,
+        evidence.append(instances(
             f"a0={a0}, a1={a1}, b0={b0}, b1={b1}, c12={c12}, c21={c21}: criterion says "
-            f"{expected}, gate says {got}", passed=got == expected))
+            f"{expected}, gate says {got}", got == expected))
     ok = all(facts.values()) and all(agree)
     return Outcome(
         Verdict.VERIFIED if ok else Verdict.INCONCLUSIVE,
@@ -218,8 +217,7 @@ def nu_curves_indices(context: CheckContext) -> Outcome:
         for index in indices(m):
             good = (index.lower is None or index.upper is None or index.lower <= index.upper)
             index_ok &= good
-            evidence.append(Evidence(EvidenceKind.EXACT_INSTANCE, f"{m.name}: {index.summary()}",
-                                     index.to_json(), passed=good))
+            evidence.append(instances(f"{m.name}: {index.summary()}", good, index.to_json()))
     band_ok = True
     for band, expected in (((Fraction(0), Fraction(3, 2)), PASSIVE),
                            ((Fraction(1), Fraction(10)), NOT_PASSIVE)):

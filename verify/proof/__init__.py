@@ -1,4 +1,4 @@
-"""A proof checker for derivations over SO(3) (issue 3; DESIGN.md, ``symbolic``).
+"""A proof checker for derivations over SO(3) (Lemma 1 and Theorem 1 of Section 3).
 
 Write a derivation in Python with :class:`Context` and :class:`Derivation`, justify
 each step (:func:`by_algebra`, :func:`by_bound` with non-negative terms such as
@@ -9,11 +9,12 @@ What a "verified" rests on (the exact kernel, the charts and how their missing p
 are covered, what a derivation file can and cannot do) is in ``verify/proof/TRUSTED.md``.
 """
 
-from verify.proof.checker import DerivationResult, StepResult, check
+from verify.proof.checker import DerivationResult, ProofVerdict, StepResult, check
 from verify.proof.derivation import Assumption, Condition, Context, Derivation
 from verify.proof.expr import (
     I3,
     ProofSyntaxError,
+    VariableKind,
     cos,
     dot,
     fro2,
@@ -54,8 +55,10 @@ __all__ = [
     "DerivationResult",
     "Nonneg",
     "ProofSyntaxError",
+    "ProofVerdict",
     "SearchSettings",
     "StepResult",
+    "VariableKind",
     "assumed",
     "by_algebra",
     "by_bound",

@@ -22,6 +22,7 @@ conclusion states that union. ``verify/proof/TRUSTED.md`` lists what this rests 
 
 from __future__ import annotations
 
+import enum
 import sys
 import time
 from dataclasses import dataclass, field
@@ -42,7 +43,20 @@ from verify.proof.problem import StepProblem
 from verify.proof.sos_step import BySos
 from verify.proof.sos_step import exact_check as sos_exact_check
 
-VERIFIED, REFUTED, INCONCLUSIVE = "verified", "refuted", "inconclusive"
+
+class ProofVerdict(enum.StrEnum):
+    """Verdicts of a step and of a derivation (see the module docstring).
+
+    A StrEnum, as :class:`verify.claims.model.Verdict`: a member equals, prints and
+    serialises to JSON as its plain string, so reports are unchanged.
+    """
+
+    VERIFIED = "verified"
+    REFUTED = "refuted"
+    INCONCLUSIVE = "inconclusive"
+
+
+VERIFIED, REFUTED, INCONCLUSIVE = ProofVerdict
 
 
 @dataclass
@@ -52,7 +66,7 @@ class StepResult:
     lhs: str
     rhs: str
     justification: str
-    verdict: str
+    verdict: ProofVerdict
     exact: str  # what the exact check established, or why it could not
     conditions: list[str] = field(default_factory=list)
     assumptions: list[str] = field(default_factory=list)
@@ -81,7 +95,7 @@ class DerivationResult:
     vacuous: str = ""  # why the steps' conditions and assumptions cannot hold together
 
     @property
-    def verdict(self) -> str:
+    def verdict(self) -> ProofVerdict:
         verdicts = {s.verdict for s in self.steps}
         if REFUTED in verdicts:
             return REFUTED

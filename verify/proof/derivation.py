@@ -40,6 +40,7 @@ from verify.proof.expr import (
     zero,
 )
 from verify.proof.justify import Justification
+from verify.validation import message, one_of
 
 RELATIONS = ("=", "<=", ">=")
 
@@ -64,6 +65,10 @@ class Condition:
         return self.lhs - self.rhs
 
 
+#: Sign assumptions: sym(M) positive (semi)definite, a scalar positive (non-negative).
+ASSUMPTION_KINDS = ("pd", "psd", "pos", "nonneg")
+
+
 @dataclass(frozen=True)
 class Assumption:
     """A sign assumption of the paper: ``kind`` in pd, psd (of sym(M)), pos, nonneg."""
@@ -82,8 +87,7 @@ class Assumption:
             raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a matrix")
         if self.kind in ("pos", "nonneg") and self.expr.shape != SCALAR:
             raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a scalar")
-        if self.kind not in ("pd", "psd", "pos", "nonneg"):
-            raise ProofSyntaxError(f"unknown assumption kind {self.kind!r}")
+        one_of("kind", self.kind, ASSUMPTION_KINDS, ProofSyntaxError)
 
 
 class Context:
@@ -177,6 +181,17 @@ class Context:
         return Assumption(label, as_expr(expr), kind, cite)
 
 
+def _justification_error(name: str, index: int, because: object) -> str:
+    factory = getattr(because, "__name__", "")
+    if callable(because) and factory.startswith("by_"):
+        return f"{name}: step {index} needs a justification: " + message(
+            f"a justification such as {factory}()", "because", because,
+            f"did you mean {factory}()?", detail="the function itself")
+    return f"{name}: step {index} needs a justification: " + message(
+        "a justification (by_algebra(), by_bound(...), by_sos(...), by_citation(...))",
+        "because", because)
+
+
 def _variable(e: Expr) -> Variable:
     if not isinstance(e, Expr) or e.op != "var":
         raise ProofSyntaxError("expected a variable created by the context")
@@ -228,7 +243,7 @@ class Derivation:
         if relation != "=" and expr.shape != SCALAR:
             raise ProofSyntaxError(f"{self.name}: inequalities relate scalars")
         if not isinstance(because, Justification):
-            raise ProofSyntaxError(f"{self.name}: step {len(self.steps) + 1} needs a justification")
+            raise ProofSyntaxError(_justification_error(self.name, len(self.steps) + 1, because))
         used = {s.relation for s in self.steps if s.relation != "="} | (
             {relation} - {"="}
         )

@@ -14,6 +14,7 @@ it is written, not later in the checker. Exact constants only: ints and
 
 from __future__ import annotations
 
+import enum
 import itertools
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -26,7 +27,24 @@ ANGLE: tuple[str, ...] = ("angle",)
 
 _ids = itertools.count()
 
-KINDS = ("rotation", "unit_vector", "angle", "vector", "matrix", "symmetric", "scalar")
+
+
+class VariableKind(enum.StrEnum):
+    """The kinds of free variable, each with its own exact chart (see :class:`Variable`).
+
+    A StrEnum: each member equals, prints and serialises as its plain string.
+    """
+
+    ROTATION = "rotation"
+    UNIT_VECTOR = "unit_vector"
+    ANGLE = "angle"
+    VECTOR = "vector"
+    MATRIX = "matrix"
+    SYMMETRIC = "symmetric"
+    SCALAR = "scalar"
+
+
+KINDS = tuple(VariableKind)
 
 #: The one point each chart misses (kinds whose chart reaches every value are absent).
 CHART_GAPS = {"angle": "π", "unit_vector": "(0, 0, 1)"}
@@ -54,7 +72,7 @@ class Variable:
     """
 
     name: str
-    kind: str
+    kind: VariableKind
     positive: bool = False
     uid: int = field(default_factory=lambda: next(_ids), init=False)
 
@@ -63,6 +81,7 @@ class Variable:
             raise ProofSyntaxError(
                 f"unknown variable kind {self.kind!r}; expected one of {', '.join(KINDS)}"
             )
+        object.__setattr__(self, "kind", VariableKind(self.kind))
         if not isinstance(self.name, str):
             raise ProofSyntaxError("a variable's name is a string")
         if self.positive is not False and (self.kind != "scalar" or self.positive is not True):
@@ -325,7 +344,7 @@ def lambda_min(m: Expr) -> Expr:
     Exactly, lambda_min is an algebraic function, not a rational one; the checker treats
     each distinct lambda_min(M) as an opaque real number, so an identity is verified
     only if it holds whatever that number is. Inequalities about it enter through the
-    spectral lemma of :mod:`verify.proof.lemmas` (A - lambda_min(A) I is PSD).
+    kernel fact "spectral" of :mod:`verify.proof.justify` (A - lambda_min(A) I is PSD).
     """
     _require(m, MATRIX, "lambda_min")
     return Expr("lambda_min", (m,), SCALAR)

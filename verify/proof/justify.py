@@ -35,6 +35,7 @@ from verify.proof.expr import (
     sym,
     tr,
 )
+from verify.validation import message
 
 if TYPE_CHECKING:
     from verify.proof.derivation import Assumption
@@ -151,6 +152,11 @@ class Nonneg:
 
 def square(g: Expr) -> Nonneg:
     """tr(G^T G), |v|^2 or s^2 (kernel: squares)."""
+    if not isinstance(g, Expr):
+        raise ProofSyntaxError(message(
+            "an expression of the context (matrix, vector or scalar)", "g", g,
+            "did you mean the square of a variable from ctx.scalar(), ctx.vector() or "
+            "ctx.matrix()? A constant c >= 0 scales a term instead: c * square(x)"))
     if g.shape == MATRIX:
         value = fro2(g)
     elif g.shape == VECTOR:
@@ -164,8 +170,12 @@ def square(g: Expr) -> Nonneg:
 
 def positive(k: Expr) -> Nonneg:
     """A scalar variable declared positive, e.g. the gain k_s (kernel: positive)."""
-    if k.op != "var" or k.data.kind != "scalar" or not k.data.positive:
-        raise ProofSyntaxError(f"{k} is not a variable declared positive")
+    if not isinstance(k, Expr) or k.op != "var" or k.data.kind != "scalar" or not k.data.positive:
+        raise ProofSyntaxError(message(
+            "a scalar variable declared positive", "k", k,
+            "declare it with ctx.scalar(name, positive=True); a constant c >= 0 scales a "
+            "term instead (c * term)",
+            detail=f"{k} is not a variable declared positive" if isinstance(k, Expr) else ""))
     return _issue(k, f"{k} > 0 (declared)", kernel=frozenset({"positive"}))
 
 
@@ -181,8 +191,10 @@ def _require_assumption(a: object) -> None:
     from verify.proof.derivation import Assumption
 
     if type(a) is not Assumption:
-        raise ProofSyntaxError(f"expected an assumption made by ctx.assume(), got "
-                               f"{type(a).__name__}")
+        raise ProofSyntaxError(message(
+            "an assumption made by ctx.assume()", "assumption", a,
+            "did you mean assumed(ctx.assume(label, expr, 'nonneg'))?",
+            detail=f"of type {type(a).__name__}"))
 
 
 def _psd_by_gram(label: str, b: Expr, gram: Expr, scale: Nonneg | int | Fraction):

@@ -1,4 +1,4 @@
-"""Writing files so that a reader never sees a half-written one (DESIGN.md, Principles).
+"""Writing files so that a reader never sees a half-written one (temp file, then rename).
 
 Each file is written to a temporary file in the same directory and moved into place
 with ``os.replace``; a set of files is rendered fully in memory before the first move.

@@ -1,4 +1,4 @@
-"""Counterexamples when an assumption of Lemma 1 or Theorem 1 is dropped (issue 5, item 5).
+"""Counterexamples when an assumption of Lemma 1 or Theorem 1 is dropped (Assumption 1).
 
 * Lemma 1 without sym(R_rl) > 0 (Assumption 1, item 2): an exact state on the boundary
   tr(R-bar_r) = 1 where h' < 0 (so the trajectory leaves the set at once), and a

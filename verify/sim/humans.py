@@ -86,8 +86,8 @@ class Human:
 class LTIHuman(Human):
     """An LTI model H(s) as the human (Section 4): x' = A x + B e, omega_h^b = C x + D e.
 
-    ``P`` is the KYP matrix of a certificate for exactly these (A, B, C, D) (issue 4);
-    with it, x^T P x / 2 is a storage function: its rate is at most e^T omega_h^b.
+    ``P`` is the KYP matrix of a certificate for exactly these (A, B, C, D) (the KYP
+    lemma); with it, x^T P x / 2 is a storage function: its rate is at most e^T omega_h^b.
     """
 
     A: Array

@@ -1,4 +1,4 @@
-"""Lie-group time stepping on SO(3) (DESIGN.md: "Integrate on SO(3) with Lie-group steps").
+"""Lie-group time stepping on SO(3): each step stays on the group (paper, eq. (1)).
 
 Equations of the form Y' = hat(F(t, Y)) Y for a batch of rotations Y (shape (m, 3, 3)),
 with F the spatial angular velocities (shape (m, 3)); a body velocity omega of R enters

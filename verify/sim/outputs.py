@@ -1,7 +1,7 @@
 """Files written by ``verify simulate``: the trajectory (NPZ or CSV) and its plots.
 
 Everything is rendered in memory first and then written file by file atomically, so a
-failure leaves no half-written output (DESIGN.md, Principles).
+failure leaves no half-written output (:mod:`verify.report.atomic`).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The paper's dynamic conclusions as checks on simulated trajectories (issue 5, item 4).
+"""The paper's dynamic conclusions as checks on simulated trajectories (Lemma 1, Theorem 1).
 
 Each check runs a scenario twice, with steps h and h/2; the difference of a quantity
 between the two runs, times 16/15 (Richardson, order 4), estimates the integration error

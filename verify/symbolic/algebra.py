@@ -1,4 +1,4 @@
-"""Exact algebra over SO(3) with sympy (DESIGN.md, ``symbolic``).
+"""Exact algebra over SO(3) with sympy (paper, Sections 2 and 3).
 
 Rotations are parametrised by a quaternion q = (w, x, y, z) with rational entries,
 R(q) = I + 2 (w hat(v) + hat(v)^2) / |q|^2, v = (x, y, z). Every rotation except none is
