@@ -143,7 +143,7 @@ def passive_humans(draw, max_states: int = 3):
         k = draw(_gains)
         skew = draw(st.floats(-1.0, 1.0))
         return StaticGainHuman(np.array([[k, skew], [-skew, k]]))
-    from verify.passivity.decide import PASSIVE
+    from verify.passivity.decision import PASSIVE
 
     human, decision = LTIHuman.gated(draw(passive_lti_models(max_states)))
     assume(decision.verdict == PASSIVE)

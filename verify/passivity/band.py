@@ -4,10 +4,10 @@
 in [w1, w2] only. Untrusted search, trusted check, as for the full axis:
 
 1. nu is minimised over the band by Hamiltonian level crossings
-   (:mod:`verify.passivity.hamiltonian`); where it is negative, a rational w* inside the
+   (:mod:`verify.passivity.search.hamiltonian`); where it is negative, a rational w* inside the
    band and a rational vector v with v^H (H(jw*) + H(jw*)^H) v < 0 are checked exactly
-   (:func:`verify.passivity.witness.frequency_witness_at`): not passive on the band.
-2. Otherwise the generalized KYP LMI (:mod:`verify.passivity.gkyp`) is solved with cvxpy +
+   (:func:`verify.passivity.check.witness.frequency_witness_at`): not passive on the band.
+2. Otherwise the generalized KYP LMI (:mod:`verify.passivity.check.gkyp`) is solved with cvxpy +
    Clarabel for Hermitian P, Q with a margin, rounded to Gaussian rationals and checked
    exactly: passive on the band.
 3. If neither is exact (rounding broke strict feasibility, a boundary case), the verdict
@@ -29,9 +29,12 @@ import scipy.linalg as sla
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
-from verify.passivity.decide import (
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.gkyp import BandCertificate, ComplexMatrix, check_gkyp
+from verify.passivity.check.realization import minimal_part
+from verify.passivity.check.witness import Witness, frequency_witness_at
+from verify.passivity.decision import (
     INCONCLUSIVE,
     NOT_PASSIVE,
     PASSIVE,
@@ -40,10 +43,7 @@ from verify.passivity.decide import (
     propose,
     realisation_note,
 )
-from verify.passivity.gkyp import BandCertificate, ComplexMatrix, check_gkyp
-from verify.passivity.hamiltonian import nu_minimum
-from verify.passivity.realization import minimal_part
-from verify.passivity.witness import Witness, frequency_witness_at
+from verify.passivity.search.hamiltonian import nu_minimum
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel
