@@ -3,7 +3,8 @@
 These modules work in floating point or with heuristics, and everything they return is
 re-checked exactly by :mod:`verify.passivity.check` before it counts: Riccati interior
 points of the KYP LMI (:mod:`.riccati`) and the KYP search around them, with the exact
-removal of the LMI's equality constraints (:mod:`.kyp`, :mod:`.reduce`); the minimum of
+removal of the LMI's equality constraints (:mod:`.kyp`, :mod:`.reduce`); the SDP that
+proposes generalized KYP certificates for a band (:mod:`.gkyp_sdp`); the minimum of
 nu(w) (paper, Section 4) located by Hamiltonian level crossings (:mod:`.hamiltonian`);
 rounding of certificates to a coarse rational grid so their bytes do not depend on the
 BLAS (:mod:`.canonical`); exact power-of-two rescaling of badly scaled models
