@@ -3,7 +3,7 @@
 Random port-Hamiltonian models (passive: A = (J - R) Q, B = G, C = G^T Q, D + D^T >= 0)
 with rational entries, and the same models with C negated and D = 0 (not passive), for
 n = 2, 10, 30, 60 states and m = 1, 2, 5 ports. Also the exact transfer matrix by
-FLINT against the sympy Faddeev-LeVerrier of :mod:`verify.passivity.witness`.
+FLINT against the sympy Faddeev-LeVerrier of :mod:`verify.passivity.check.witness`.
 
     PYTHONPATH=. python benchmarks/bench_frequency_domain.py [--sizes 2 10 30] [--ports 1 2]
 """
@@ -17,9 +17,9 @@ from fractions import Fraction
 import numpy as np
 from gmpy2 import mpq
 
-from verify.passivity.certificate import ExactModel
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.frequency_domain import transfer_matrix
 from verify.passivity.fd_decision import decide_positive_real
-from verify.passivity.frequency_domain import transfer_matrix
 
 
 def random_ph(seed: int, n: int, m: int, negate: bool = False) -> ExactModel:
@@ -81,7 +81,7 @@ def main() -> None:
             row = (f"| {n} | {m} | {t1:.2f} ({v1}) | {'+'.join(kinds) or '-'} | "
                    f"{t2:.2f} ({v2}) | {w.kind if w else '-'} | {t3:.3f} |")
             if args.sympy:
-                from verify.passivity.witness import _transfer_matrix
+                from verify.passivity.check.witness import _transfer_matrix
 
                 t = time.perf_counter()
                 _transfer_matrix(good)

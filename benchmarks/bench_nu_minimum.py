@@ -13,8 +13,8 @@ import time
 
 import numpy as np
 
-from verify.passivity.decide import candidate_frequencies
-from verify.passivity.hamiltonian import nu_minimum
+from verify.passivity.decision import candidate_frequencies
+from verify.passivity.search.hamiltonian import nu_minimum
 
 SIZES = (2, 8, 20, 50)
 

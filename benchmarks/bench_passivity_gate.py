@@ -7,7 +7,7 @@ python-control's ``ispassive`` uses; at n = 100 it takes minutes, so beyond n = 
 on the passive family only, up to ``--control-max``; the plain SDP likewise). All tools
 see the same models in the same process. Columns:
 
-- ``kyp``: our gate, :func:`verify.passivity.decide.decide` (KYP certificate checked
+- ``kyp``: our gate, :func:`verify.passivity.decision.decide` (KYP certificate checked
   exactly, or an exactly checked witness); ``ok`` says the verdict is the known truth and
   its evidence re-checks (a certificate once more with :func:`check_kyp`, untimed);
 - ``freq``: the exact frequency-domain route, when a module providing it is importable
@@ -49,12 +49,12 @@ import warnings  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from verify.passivity.certificate import check_kyp  # noqa: E402
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide  # noqa: E402
-from verify.passivity.fd_certificate import (  # noqa: E402
+from verify.passivity.check.certificate import check_kyp  # noqa: E402
+from verify.passivity.check.fd_certificate import (  # noqa: E402
     PrCertificate,
     check_pr_certificate_data,
 )
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide  # noqa: E402
 from verify.passivity.model import from_state_space  # noqa: E402
 
 SIZES = (2, 10, 30, 100, 200, 400)

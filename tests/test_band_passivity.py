@@ -16,12 +16,12 @@ from gmpy2 import mpq
 
 from verify.cli import main
 from verify.passivity.band import decide_band, parse_band
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
-from verify.passivity.gkyp import check_gkyp
-from verify.passivity.hamiltonian import nu_values
+from verify.passivity.check.gkyp import check_gkyp
+from verify.passivity.check.witness import hermitian_part_at
+from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
+from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
-from verify.passivity.model_file import load_model
-from verify.passivity.witness import hermitian_part_at
+from verify.passivity.search.hamiltonian import nu_values
 
 KS25 = "verify/data/models/reconstructed_ks2p5.toml"
 F = Fraction
@@ -185,9 +185,9 @@ def test_a_pole_inside_the_band_is_named_in_the_verdict():
 
 def test_gkyp_matrix_with_q_zero_is_the_kyp_matrix(ks25):
     """Sign conventions: with Q = 0 the generalized KYP matrix is the ordinary one."""
-    from verify.passivity import exact as ex
-    from verify.passivity.certificate import exact_model, kyp_matrix
-    from verify.passivity.gkyp import gkyp_matrix
+    from verify.passivity.check import exact as ex
+    from verify.passivity.check.certificate import exact_model, kyp_matrix
+    from verify.passivity.check.gkyp import gkyp_matrix
 
     em = exact_model(ks25.A, ks25.B, ks25.C, ks25.D)
     rng = np.random.default_rng(3)
@@ -201,9 +201,9 @@ def test_gkyp_matrix_with_q_zero_is_the_kyp_matrix(ks25):
 def test_gkyp_quadratic_form_identity(ks25):
     """z^H L(P, Q) z = psi(w) x^H Q x - u^H (H + H^H) u for z = ((jw - A)^-1 B u, u), any
     Hermitian P, Q, with psi(w) = -(w - w1)(w - w2): the identity behind the certificate."""
-    from verify.passivity import exact as ex
-    from verify.passivity.certificate import exact_model
-    from verify.passivity.gkyp import gkyp_matrix
+    from verify.passivity.check import exact as ex
+    from verify.passivity.check.certificate import exact_model
+    from verify.passivity.check.gkyp import gkyp_matrix
 
     em = exact_model(ks25.A, ks25.B, ks25.C, ks25.D)
     n, m = em.n, em.m

@@ -17,8 +17,8 @@ from pathlib import Path
 import pytest
 
 from verify.cli import main
-from verify.passivity.binding import Claim, file_name, statement
-from verify.passivity.stored import SCHEMAS, check_stored_certificate
+from verify.passivity.io.binding import Claim, file_name, statement
+from verify.passivity.io.stored import SCHEMAS, check_stored_certificate
 
 ROOT = Path(__file__).resolve().parents[1]
 MODELS = ROOT / "verify" / "data" / "models"
@@ -78,7 +78,7 @@ def write(path: Path, data: dict) -> Path:
 
 def rename_to_content(path: Path, data: dict) -> Path:
     """Move the file to the name its (edited) content asks for, so only the edit counts."""
-    from verify.passivity.binding import claim_from_fields
+    from verify.passivity.io.binding import claim_from_fields
 
     claim = claim_from_fields(data.get("margin", "0"), data.get("band"))
     new = path.with_name(file_name(data["name"], claim, data["fingerprint"]))

@@ -26,12 +26,7 @@ from hypothesis import strategies as st
 
 from verify.cli import main
 from verify.errors import VerifyInputError
-from verify.passivity.decide import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide
-from verify.passivity.gate import parse_margin
-from verify.passivity.model import LTIModel, from_python, from_state_space, from_transfer_function
-from verify.passivity.model_file import load_model
-from verify.passivity.rational import decimal_literal, rational, to_float
-from verify.passivity.realization import (
+from verify.passivity.check.realization import (
     _companion_columns,
     _elements,
     _observable_quotient,
@@ -39,6 +34,11 @@ from verify.passivity.realization import (
     is_minimal,
     minimal_part,
 )
+from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide
+from verify.passivity.gate import parse_margin
+from verify.passivity.io.model_file import load_model
+from verify.passivity.model import LTIModel, from_python, from_state_space, from_transfer_function
+from verify.passivity.rational import decimal_literal, rational, to_float
 
 s = sp.Symbol("s")
 
@@ -613,7 +613,7 @@ def _hidden_pair_model(visible: int, seed: int) -> LTIModel:
 
 @pytest.mark.parametrize("visible, seed", [(4, 1), (8, 2)])
 def test_multimodular_row_space_equals_exact_elimination(visible, seed):
-    from verify.passivity.realization import (
+    from verify.passivity.check.realization import (
         _fm,
         _invariant_row_space,
         _invariant_row_space_exact,

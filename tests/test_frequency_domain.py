@@ -16,19 +16,19 @@ from gmpy2 import mpq
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide, nu
-from verify.passivity.fd_certificate import (
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.fd_certificate import (
     check_pr_certificate_data,
     check_pr_certificate_file,
     parse_json_text,
 )
+from verify.passivity.check.fd_witness import exact_negative_vector
+from verify.passivity.check.frequency_domain import analyse, transfer_matrix
+from verify.passivity.check.witness import hermitian_part_at
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide, nu
 from verify.passivity.fd_decision import decide_positive_real
-from verify.passivity.fd_witness import exact_negative_vector
-from verify.passivity.frequency_domain import analyse, transfer_matrix
 from verify.passivity.model import from_state_space
-from verify.passivity.witness import hermitian_part_at
 
 
 def Q(rows) -> ex.RationalMatrix:
@@ -211,8 +211,8 @@ def test_certificate_bytes_are_deterministic():
 
 
 def test_certificate_file_round_trip(tmp_path):
-    from verify.passivity.binding import Claim, file_name
-    from verify.passivity.stored import check_stored_certificate
+    from verify.passivity.io.binding import Claim, file_name
+    from verify.passivity.io.stored import check_stored_certificate
 
     data = _passive_json()
     path = tmp_path / "c.json"
@@ -363,7 +363,7 @@ def test_random_perturbed_models_agree_with_the_float_grid(seed, n, m):
                                                 (33, 6, 2, False), (34, 5, 1, True)])
 def test_random_models_agree_with_the_kyp_route(seed, n, m, negate):
     """decide() tries KYP first; where it decides, both routes give the same verdict."""
-    from verify.passivity.kyp import find_certificate
+    from verify.passivity.search.kyp import find_certificate
 
     A, B, C, D = _random_ph(np.random.default_rng(seed), n, m)
     if negate:
@@ -455,7 +455,7 @@ def test_hostile_models(model, expected):
 def test_hermitian_part_from_the_transfer_matrix_matches_the_state_space():
     from flint import fmpq
 
-    from verify.passivity.fd_witness import hermitian_part_from
+    from verify.passivity.check.fd_witness import hermitian_part_from
 
     model = em(*_random_ph(np.random.default_rng(7), 4, 2))
     tm = transfer_matrix(model)

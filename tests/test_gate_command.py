@@ -98,7 +98,7 @@ def test_frequency_domain_certificate_is_written_bound_and_kept(tmp_path, monkey
     verify-pr-certificate/1 file under the name its claim asks for, keeps it on a rerun,
     and `verify certificates check` refuses it once the source file denotes another model.
     """
-    import verify.passivity.decide as decide_module
+    import verify.passivity.decision as decide_module
 
     monkeypatch.setattr(decide_module, "find_certificate", lambda *args: None)
     monkeypatch.chdir(tmp_path)

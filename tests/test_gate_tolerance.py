@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 from verify.cli import main
-from verify.passivity.certificate import check_kyp
-from verify.passivity.decide import PASSIVE, decide
+from verify.passivity.check.certificate import check_kyp
+from verify.passivity.decision import PASSIVE, decide
 from verify.passivity.model import from_state_space
-from verify.passivity.tolerance import PASSIVE_WITHIN, scales, within_tolerance
+from verify.passivity.search.tolerance import PASSIVE_WITHIN, scales, within_tolerance
 
 EPS = Fraction(1, 10**12)
 

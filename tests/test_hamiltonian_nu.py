@@ -8,9 +8,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from verify.passivity.decide import NOT_PASSIVE, candidate_frequencies, decide
-from verify.passivity.hamiltonian import LEVEL_GAP, level_crossings, nu_minimum, nu_values
+from verify.passivity.decision import NOT_PASSIVE, candidate_frequencies, decide
 from verify.passivity.model import from_state_space
+from verify.passivity.search.hamiltonian import LEVEL_GAP, level_crossings, nu_minimum, nu_values
 
 
 def arrays(A, B, C, D):
@@ -47,7 +47,7 @@ def test_known_minima(system, omega, value):
 
 def test_reconstructed_ks2p5_minimum_and_band():
     """Diagonal (0.5 s + 1)/(s^2 + s + 2), skew constant coupling: nu = Re h."""
-    from verify.passivity.model_file import load_model
+    from verify.passivity.io.model_file import load_model
 
     m = load_model("verify/data/models/reconstructed_ks2p5.toml")
     x = np.linspace(0, 50, 500001)  # w^2; Re h = (2 - x/2)/((2 - x)^2 + x)

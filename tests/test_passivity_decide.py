@@ -11,9 +11,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import check_kyp
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide, nu
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import check_kyp
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide, nu
 from verify.passivity.model import from_state_space
 
 
@@ -115,7 +115,7 @@ def test_a_hidden_unstable_mode_is_decided_for_the_transfer_function():
     """1/(s+1) with an extra uncontrollable, unobservable unstable state: no P > 0 solves
     the KYP LMI for this non-minimal realisation, but H(s) = 1/(s+1) is positive real;
     the verdict says it is about H(s), not a storage function on the given state."""
-    from verify.passivity.fd_certificate import PrCertificate, check_pr_certificate_data
+    from verify.passivity.check.fd_certificate import PrCertificate, check_pr_certificate_data
 
     model = ss([[-1, 0], [0, 1]], [[1], [0]], [[1, 0]], [[0]])
     d = decide(model)

@@ -15,11 +15,11 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import check_kyp, exact_model
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import check_kyp, exact_model
 from verify.passivity.indices import check_ofp, ifp_index, loop_transform, ofp_index, round_up
+from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
-from verify.passivity.model_file import load_model
 
 
 def ss(A, B, C, D, name="m"):

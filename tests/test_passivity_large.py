@@ -12,12 +12,12 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import check_kyp, exact_model
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import check_kyp, exact_model
+from verify.passivity.check.psd import psd_exact
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.model import from_state_space
-from verify.passivity.psd import psd_exact
-from verify.passivity.reduce import NoCertificate, Reduction, reduce_kyp
+from verify.passivity.search.reduce import NoCertificate, Reduction, reduce_kyp
 
 
 def port_hamiltonian(n: int, seed: int, flip: bool = False, D=None):
@@ -120,7 +120,7 @@ def test_transfer_matrix_by_faddeev_leverrier_matches_sympy():
     """The pole witness's exact C (sI - A)^-1 B equals the symbolic inverse."""
     import sympy as sp
 
-    from verify.passivity.witness import _transfer_matrix
+    from verify.passivity.check.witness import _transfer_matrix
 
     rng = np.random.default_rng(3)
     n, m = 4, 2

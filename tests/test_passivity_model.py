@@ -7,13 +7,13 @@ import pytest
 from scipy import signal
 
 from verify.errors import VerifyInputError
+from verify.passivity.io.model_file import load_model
 from verify.passivity.model import (
     LTIModel,
     from_python,
     from_state_space,
     from_transfer_function,
 )
-from verify.passivity.model_file import load_model
 
 SS_EXAMPLE = """
 [state_space]            # continuous time

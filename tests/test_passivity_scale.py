@@ -17,12 +17,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from verify.passivity.certificate import check_kyp, exact_model
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide
-from verify.passivity.fd_certificate import check_pr_certificate_data
+from verify.passivity.check.certificate import check_kyp, exact_model
+from verify.passivity.check.fd_certificate import check_pr_certificate_data
+from verify.passivity.check.witness import response_at
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.model import from_state_space
-from verify.passivity.scaling import rescale
-from verify.passivity.witness import response_at
+from verify.passivity.search.scaling import rescale
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -105,7 +105,7 @@ def test_two_hundred_states_five_ports_within_two_gigabytes():
     code = (
         "import json, resource, sys; sys.path.insert(0, 'tests')\n"
         "from test_passivity_scale import resonant\n"
-        "from verify.passivity.decide import decide\n"
+        "from verify.passivity.decision import decide\n"
         "d = decide(resonant(200, 5))\n"
         "print(json.dumps([d.verdict, d.witness.kind if d.witness else None,\n"
         "    resource.getrusage(resource.RUSAGE_SELF).ru_maxrss]))\n")
@@ -227,7 +227,7 @@ def test_margins_beyond_the_float_range(margin, verdict):
 def test_verified_solve_bound_is_above_the_exact_value_and_close():
     """The bound of witness_bound for v from the float eigenvector: exact q <= bound, and
     the bound is tight (the Neumann error term is tiny for a well-conditioned K)."""
-    from verify.passivity.witness_bound import bounded_form, float_direction
+    from verify.passivity.check.witness_bound import bounded_form, float_direction
 
     model = resonant(24, 3)
     em = exact_model(model.A, model.B, model.C, model.D)

@@ -8,7 +8,7 @@ from hypothesis import given, settings
 
 from verify import so3
 from verify.errors import DbarUndefinedError, VerifyInputError
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.sim.humans import LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, Synchronisation, autonomous_input
 from verify.sim.lie_group import cf4_mixed_step

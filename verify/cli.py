@@ -237,7 +237,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         write_json,
         write_junit,
     )
-    from verify.passivity.model_file import load_model
+    from verify.passivity.io.model_file import load_model
 
     margin = parse_margin(args.margin)
     tolerance = parse_tolerance(args.tolerance)
@@ -268,7 +268,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.stored import certificate_files, check_stored_certificate
+    from verify.passivity.io.stored import certificate_files, check_stored_certificate
 
     files = certificate_files(args.paths)
     if not files:

@@ -186,7 +186,7 @@ def _passive_humans(draw, max_states: int):
         k = draw(_gains)
         skew = draw(st.floats(-1.0, 1.0))
         return StaticGainHuman(np.array([[k, skew], [-skew, k]]))
-    from verify.passivity.decide import PASSIVE
+    from verify.passivity.decision import PASSIVE
 
     human, decision = LTIHuman.gated(draw(_passive_lti_models(max_states, 2)))
     assume(decision.verdict == PASSIVE)

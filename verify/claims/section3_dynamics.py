@@ -146,7 +146,7 @@ def premise_needed(ctx: CheckContext) -> Outcome:
     scope="one body (the bodies do not act on R-bar, R_l), R_r = I",
 )
 def passivity_needed(ctx: CheckContext) -> Outcome:
-    from verify.passivity.model_file import load_model
+    from verify.passivity.io.model_file import load_model
     from verify.sim.humans import LTIHuman
 
     evidence = []

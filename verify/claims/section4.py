@@ -19,12 +19,12 @@ from verify.claims.evidence import exact, instances
 from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 from verify.passivity.band import decide_band
-from verify.passivity.decide import NOT_PASSIVE, PASSIVE, decide
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.gate import run_band_gate, run_gate
-from verify.passivity.hamiltonian import nu_minimum
 from verify.passivity.indices import indices
+from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
-from verify.passivity.model_file import load_model
+from verify.passivity.search.hamiltonian import nu_minimum
 from verify.report.figures import bode_figure, nu_figure
 
 SECTION = "4, human passivity"

@@ -4,12 +4,12 @@
 in [w1, w2] only. Untrusted search, trusted check, as for the full axis:
 
 1. nu is minimised over the band by Hamiltonian level crossings
-   (:mod:`verify.passivity.hamiltonian`); where it is negative, a rational w* inside the
+   (:mod:`verify.passivity.search.hamiltonian`); where it is negative, a rational w* inside the
    band and a rational vector v with v^H (H(jw*) + H(jw*)^H) v < 0 are checked exactly
-   (:func:`verify.passivity.witness.frequency_witness_at`): not passive on the band.
-2. Otherwise the generalized KYP LMI (:mod:`verify.passivity.gkyp`) is solved with cvxpy +
-   Clarabel for Hermitian P, Q with a margin, rounded to Gaussian rationals and checked
-   exactly: passive on the band.
+   (:func:`verify.passivity.check.witness.frequency_witness_at`): not passive on the band.
+2. Otherwise the generalized KYP LMI (:mod:`verify.passivity.check.gkyp`) is solved with
+   cvxpy + Clarabel for Hermitian P, Q with a margin (:mod:`verify.passivity.search.gkyp_sdp`),
+   rounded to Gaussian rationals and checked exactly: passive on the band.
 3. If neither is exact (rounding broke strict feasibility, a boundary case), the verdict
    is inconclusive with the reason.
 """
@@ -18,20 +18,19 @@ from __future__ import annotations
 
 import math
 import time
-import warnings
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
-import cvxpy as cp
 import numpy as np
-import scipy.linalg as sla
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
-from verify.passivity.decide import (
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.gkyp import BandCertificate
+from verify.passivity.check.realization import minimal_part
+from verify.passivity.check.witness import Witness, frequency_witness_at
+from verify.passivity.decision import (
     INCONCLUSIVE,
     NOT_PASSIVE,
     PASSIVE,
@@ -40,10 +39,8 @@ from verify.passivity.decide import (
     propose,
     realisation_note,
 )
-from verify.passivity.gkyp import BandCertificate, ComplexMatrix, check_gkyp
-from verify.passivity.hamiltonian import nu_minimum
-from verify.passivity.realization import minimal_part
-from verify.passivity.witness import Witness, frequency_witness_at
+from verify.passivity.search.gkyp_sdp import band_certificate
+from verify.passivity.search.hamiltonian import nu_minimum
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel
@@ -109,76 +106,6 @@ def band_witness(em: ExactModel, omega: float,
     return None
 
 
-def solve_gkyp(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray,
-               band: tuple[float, float]) -> tuple[np.ndarray, np.ndarray, float] | None:
-    """Max-margin Hermitian (P, Q) of the generalized KYP LMI (cvxpy + Clarabel); untrusted."""
-    n, m = A.shape[0], D.shape[0]
-    w1, w2 = band
-    wc = (w1 + w2) / 2
-    P = cp.Variable((n, n), hermitian=True)
-    Q = cp.Variable((n, n), hermitian=True)
-    t = cp.Variable()
-    W = cp.bmat([[-Q, P + 1j * wc * Q], [P - 1j * wc * Q, -w1 * w2 * Q]])
-    N = np.block([[A, B], [np.eye(n), np.zeros((n, m))]])
-    Theta = -np.block([[np.zeros((n, n)), C.T], [C, D + D.T]])
-    L = N.T @ W @ N + Theta
-    cons = [Q >> t * np.eye(n), -L >> t * np.eye(n + m), t <= 1.0]
-    prob = cp.Problem(cp.Maximize(t), cons)
-    try:
-        with warnings.catch_warnings():  # an inaccurate solution is caught by the exact check
-            warnings.simplefilter("ignore")
-            prob.solve(solver=cp.CLARABEL)
-    except (cp.error.SolverError, ValueError):
-        return None
-    if P.value is None or Q.value is None or t.value is None:
-        return None
-    return np.asarray(P.value), np.asarray(Q.value), float(t.value)
-
-
-def _hermitian_rational(X: np.ndarray, bits: int) -> ComplexMatrix:
-    """Dyadic Gaussian-rational rounding, made exactly Hermitian."""
-    Xr, Xi = ex.rationalize(X.real, bits), ex.rationalize(X.imag, bits)
-    n = len(Xr)
-    return ([[(Xr[i][j] + Xr[j][i]) / 2 for j in range(n)] for i in range(n)],
-            [[(Xi[i][j] - Xi[j][i]) / 2 for j in range(n)] for i in range(n)])
-
-
-def _unbalance(X: ComplexMatrix, t: list[mpq]) -> ComplexMatrix:
-    """T^-H X T^-1 for T = diag(t), exactly (back from balanced to model coordinates)."""
-    return tuple([[row[j] / (t[i] * t[j]) for j in range(len(t))] for i, row in enumerate(part)]
-                 for part in X)  # type: ignore[return-value]
-
-
-def band_certificate(em: ExactModel, A: np.ndarray, B: np.ndarray, C: np.ndarray,
-                     D: np.ndarray, band: tuple[Fraction, Fraction]
-                     ) -> tuple[ComplexMatrix, ComplexMatrix, float | None, str] | None:
-    """Search, round and check exactly; (P, Q, margin, rounding) or None.
-
-    The LMI is solved in coordinates balanced by a diagonal power-of-two similarity T
-    (x = T xb), rounded there, and mapped back exactly by P = T^-H Pb T^-1 (same for Q),
-    so badly scaled models keep their relative precision.
-    """
-    if em.n == 0:
-        return (([], []), ([], []), None, "static") if check_gkyp(em, ([], []), ([], []),
-                                                                  band).ok else None
-    _, (scaling, _) = sla.matrix_balance(A, permute=False, separate=True)
-    t = np.asarray(scaling, dtype=float)
-    Ab, Bb, Cb = A * (1.0 / t)[:, None] * t[None, :], B / t[:, None], C * t[None, :]
-    found = solve_gkyp(Ab, Bb, Cb, D, (float(band[0]), float(band[1])))
-    if found is None:
-        return None
-    Pf, Qf, margin = found
-    t_exact = [mpq(Fraction(float(x))) for x in t]
-    scale = max(1.0, float(np.max(np.abs(np.concatenate([Pf.ravel(), Qf.ravel()])))))
-    for bits in (16, 24, 36, 48, 60):
-        step = max(bits - int(np.ceil(np.log2(scale))), 8)
-        P = _unbalance(_hermitian_rational(Pf, step), t_exact)
-        Q = _unbalance(_hermitian_rational(Qf, step), t_exact)
-        if check_gkyp(em, P, Q, band).ok:
-            return P, Q, margin, f"{bits}-bit"
-    return None
-
-
 def _poles_in_band(A: np.ndarray, band: tuple[Fraction, Fraction]) -> list[float]:
     """Frequencies w in the band with jw (numerically) an eigenvalue of A."""
     if A.shape[0] == 0:
@@ -237,5 +164,4 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                 f"exact witness{smallest}", nu_min=nu_min)
 
 
-__all__ = ["BandDecision", "band_certificate", "band_witness", "decide_band", "parse_band",
-           "solve_gkyp"]
+__all__ = ["BandDecision", "band_witness", "decide_band", "parse_band"]

@@ -1,20 +1,20 @@
 """The frequency-domain route of the passivity gate: verdict, certificate or witness.
 
-Runs :func:`verify.passivity.frequency_domain.analyse` on the exact model and packages
-its outcome: a positive-real certificate (:mod:`verify.passivity.fd_certificate`) for a
-passive verdict, an exact witness (:mod:`verify.passivity.fd_witness`) otherwise. The
+Runs :func:`verify.passivity.check.frequency_domain.analyse` on the exact model and packages
+its outcome: a positive-real certificate (:mod:`verify.passivity.check.fd_certificate`) for a
+passive verdict, an exact witness (:mod:`verify.passivity.check.fd_witness`) otherwise. The
 verdict is about the transfer function H(s), which the reason says, since a
 non-minimal realisation may hide modes that no storage function on its state can cover.
 """
 
 from __future__ import annotations
 
-from verify.passivity import qpoly as qp
-from verify.passivity.certificate import ExactModel
-from verify.passivity.fd_certificate import PrCertificate
-from verify.passivity.fd_witness import frequency_witness_for, near_axis_pole_witness
-from verify.passivity.frequency_domain import NOT_PASSIVE, PASSIVE, analyse, axis_split
-from verify.passivity.witness import Witness
+from verify.passivity.check import qpoly as qp
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.fd_certificate import PrCertificate
+from verify.passivity.check.fd_witness import frequency_witness_for, near_axis_pole_witness
+from verify.passivity.check.frequency_domain import NOT_PASSIVE, PASSIVE, analyse, axis_split
+from verify.passivity.check.witness import Witness
 
 
 def _pole_witness(kind: str, reason: str, fact, extra: dict) -> Witness:

@@ -16,12 +16,12 @@ from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from verify.errors import VerifyInputError
-from verify.passivity import certificate_files as cf
-from verify.passivity.binding import Claim, shifted, unverified_meta
-from verify.passivity.canonical import coarse_band, coarse_kyp
-from verify.passivity.decide import PASSIVE, Decision, decide
-from verify.passivity.fd_certificate import PrCertificate
-from verify.passivity.tolerance import PASSIVE_WITHIN, within_tolerance
+from verify.passivity.check.fd_certificate import PrCertificate
+from verify.passivity.decision import PASSIVE, Decision, decide
+from verify.passivity.io import certificate_files as cf
+from verify.passivity.io.binding import Claim, shifted, unverified_meta
+from verify.passivity.search.canonical import coarse_band, coarse_kyp
+from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
 
 
@@ -95,9 +95,9 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
                          certificates_dir: Path) -> tuple[Path, bool]:
     """Write a frequency-domain certificate under the name its claim asks for; a file that
     already holds a valid certificate of the same model and claim is kept."""
-    from verify.passivity import fd_certificate as fd
-    from verify.passivity.binding import file_name
-    from verify.passivity.certificate_files import dumps
+    from verify.passivity.check import fd_certificate as fd
+    from verify.passivity.io.binding import file_name
+    from verify.passivity.io.certificate_files import dumps
 
     data = dict(cert.to_json(), meta={"margin": str(Fraction(margin))})
     given = shifted(cert.model, -Fraction(margin))
@@ -120,7 +120,7 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
 def run_gate(models, margin: Fraction, certificates_dir: Path,
              tolerance: Fraction = Fraction(0)) -> list[GateResult]:
     """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
-    pass as *passive within tolerance* (:mod:`verify.passivity.tolerance`), and then the
+    pass as *passive within tolerance* (:mod:`verify.passivity.search.tolerance`), and then the
     certificate written is the perturbed model's (it names that model exactly)."""
     results = []
     for model in models:

@@ -15,7 +15,7 @@ model nu_IFP = inf_w nu(w) including w -> infinity.
 What is exact and what is not:
 
 * ``estimate``: floating point. nu_IFP from the Hamiltonian minimum of nu
-  (:mod:`verify.passivity.hamiltonian`); rho_OFP from an SDP (cvxpy + Clarabel).
+  (:mod:`verify.passivity.search.hamiltonian`); rho_OFP from an SDP (cvxpy + Clarabel).
 * ``lower``: a rational bound with an exactly checked certificate P. For IFP it is a KYP
   certificate of H - nu_lo I. For OFP, the loop transformation u = u~ + rho y turns
   OFP(rho) of H into passivity of H~ = (I - rho H)^-1 H, realised exactly
@@ -42,13 +42,13 @@ import numpy as np
 from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, kyp_matrix
-from verify.passivity.decide import float_views, propose
-from verify.passivity.hamiltonian import nu_minimum
-from verify.passivity.kyp import find_certificate
-from verify.passivity.realization import minimal_part
-from verify.passivity.witness import hermitian_part_at, response_at
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel, kyp_matrix
+from verify.passivity.check.realization import minimal_part
+from verify.passivity.check.witness import hermitian_part_at, response_at
+from verify.passivity.decision import float_views, propose
+from verify.passivity.search.hamiltonian import nu_minimum
+from verify.passivity.search.kyp import find_certificate
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel
@@ -342,7 +342,7 @@ def unstable_loop(em: ExactModel, upper: Fraction | None) -> tuple[Fraction, str
     rho0 refutes OFP(rho) for every rho >= rho0: rho_OFP < rho0. (Small models only: the
     pole is isolated exactly on the loop's transfer matrix.)
     """
-    from verify.passivity.witness import pole_witness
+    from verify.passivity.check.witness import pole_witness
 
     for rho0 in LOOP_GAINS:
         if upper is not None and rho0 >= upper:

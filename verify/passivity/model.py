@@ -20,7 +20,7 @@ Every problem with the input is a :class:`~verify.errors.VerifyInputError` whose
 is one line naming the problem.
 
 The realisation of a transfer matrix and its check are in
-:mod:`verify.passivity.realization`.
+:mod:`verify.passivity.check.realization`.
 """
 
 from __future__ import annotations
@@ -35,8 +35,8 @@ from gmpy2 import mpq
 from numpy.typing import ArrayLike, NDArray
 
 from verify.errors import VerifyInputError
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel
 from verify.passivity.rational import float_view, rational, to_float
 
 Array = NDArray[np.float64]
@@ -307,11 +307,11 @@ def from_transfer_function(
     ``num[i][j]`` and ``den[i][j]`` are coefficient lists of element (i, j) in descending
     powers of s (leading zeros are ignored). Each element must be proper and have a
     non-zero denominator. A constant transfer matrix gives n = 0. The realisation is exact
-    (:mod:`verify.passivity.realization`): no floating point between the numbers given
+    (:mod:`verify.passivity.check.realization`): no floating point between the numbers given
     and the rational (A, B, C, D).
     """
     ctx = f"model {name!r}" if source == "python" else source
-    from verify.passivity.realization import transfer_function_model
+    from verify.passivity.check.realization import transfer_function_model
 
     return transfer_function_model(num, den, ctx, name=name, source=source, meta=meta)
 

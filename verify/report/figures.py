@@ -4,7 +4,7 @@ The paper shows Bode diagrams of the identified 2x2 models (Fig. "bode_diagram_2
 nu(w) = lambda_min(H(jw) + H(jw)^H)/2 (Fig. "passivity_index_2x2"). These are drawn for
 the shipped reconstructions: illustrations only, no verdict rests on a picture. The
 minimum marked on the nu curve is the one located by Hamiltonian level crossings
-(:mod:`verify.passivity.hamiltonian`), not the lowest grid point.
+(:mod:`verify.passivity.search.hamiltonian`), not the lowest grid point.
 
 Matplotlib runs with the Agg backend; each PNG is rendered in memory and written with a
 temporary file and a rename (:func:`verify.report.atomic.write_atomic`), without the
@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from verify.passivity.hamiltonian import NuMinimum, nu_values
+from verify.passivity.search.hamiltonian import NuMinimum, nu_values
 from verify.report.atomic import write_atomic
 from verify.report.figure_bytes import figure_bytes
 

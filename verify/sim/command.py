@@ -67,8 +67,8 @@ def build_human(s: SimulateSettings) -> tuple[Human, str]:
     if s.human == "model":
         if s.model is None:
             raise VerifyInputError("--human model needs --model FILE")
-        from verify.passivity.decide import PASSIVE
-        from verify.passivity.model_file import load_model
+        from verify.passivity.decision import PASSIVE
+        from verify.passivity.io.model_file import load_model
 
         model = load_model(s.model)
         if model.m not in (2, 3):

@@ -26,7 +26,7 @@ from verify.errors import VerifyInputError
 from verify.so3 import E3, Array, exp, log, transpose
 
 if TYPE_CHECKING:
-    from verify.passivity.decide import Decision
+    from verify.passivity.decision import Decision
 
 _EMPTY = np.zeros(0)
 
@@ -121,7 +121,7 @@ class LTIHuman(Human):
         """The model with the passivity gate's verdict; a passive model gets the storage
         x^T P x / 2 from its exactly checked KYP certificate, any other none (a
         frequency-domain certificate proves H(s) positive real but holds no P)."""
-        from verify.passivity.decide import PASSIVE, decide
+        from verify.passivity.decision import PASSIVE, decide
 
         decision = decide(model)
         if decision.verdict != PASSIVE or not hasattr(decision.certificate, "P"):

@@ -5,7 +5,7 @@ Given the target p, blocks (multiplier H_k, basis z_k) and rational Gram matrice
 1. every Q_k is square of the block's size and symmetric;
 2. p == sum_k sum_{r,s} (Q_k)_rs (H_k)_{i(r) i(s)} z_{a(r)} z_{a(s)} as polynomials with
    rational coefficients (:func:`verify.sos.program.expand`), exactly;
-3. every Q_k is PSD, decided exactly (:func:`verify.passivity.psd.psd_exact`: a
+3. every Q_k is PSD, decided exactly (:func:`verify.passivity.check.psd.psd_exact`: a
    dominance certificate over the integers, else exact LDL^T with zero pivots).
 
 That p >= 0 then follows from each H_k being PSD on R^n, which is the caller's to
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from verify.passivity.psd import psd_exact
+from verify.passivity.check.psd import psd_exact
 from verify.sos import poly as pl
 from verify.sos.program import Block, expand
 

@@ -29,8 +29,8 @@ from typing import TYPE_CHECKING, Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.passivity.certificate import ExactModel
-from verify.passivity.strict_json import (
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.io.strict_json import (
     CertificateFormatError,
     fields,
     rational,
@@ -108,7 +108,7 @@ def exact_of(model: LTIModel) -> ExactModel:
     The one conversion from a loaded model to the data a certificate is about: the gate
     certifies this, and a certificate's ``source`` file must yield exactly this again.
     """
-    from verify.passivity.realization import minimal_part
+    from verify.passivity.check.realization import minimal_part
 
     return minimal_part(model.exact).model
 
@@ -208,7 +208,7 @@ class SourceBinding:
 def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str, Any],
                 cert_path: Path) -> SourceBinding:
     """Compare the stored model, name and unverified fields with the source file."""
-    from verify.passivity.model_file import load_model
+    from verify.passivity.io.model_file import load_model
 
     found = resolve_source(source, cert_path)
     if found is None:

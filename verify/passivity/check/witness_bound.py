@@ -17,7 +17,7 @@ solution u~ of K u = B v leaves the exact residual rho = B v - K u~, and
 with q~ evaluated exactly at u~. Every quantity on the right is an exact rational; the
 only O(n^3) work is the integer product R K (FLINT). When the right side is negative, q < 0
 is proved. Floating point only proposes R, u~ and v; a poor proposal makes the bound fail
-(then the exact solve of :func:`verify.passivity.witness.response_at` decides), never pass.
+(then the exact solve of :func:`verify.passivity.check.witness.response_at` decides), never pass.
 """
 
 from __future__ import annotations
@@ -28,9 +28,9 @@ import flint
 import numpy as np
 from gmpy2 import mpq, mpz
 
-from verify.passivity import exact as ex
-from verify.passivity import intmat
-from verify.passivity.certificate import ExactModel
+from verify.passivity.check import exact as ex
+from verify.passivity.check import intmat
+from verify.passivity.check.certificate import ExactModel
 
 
 def _dyadic(x: np.ndarray, bits: int = 52) -> tuple[list[int], int]:

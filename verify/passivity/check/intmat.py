@@ -20,7 +20,7 @@ import flint
 import numpy as np
 from gmpy2 import lcm, mpq, mpz
 
-RationalMatrix = list[list[mpq]]  # the same alias as verify.passivity.exact
+RationalMatrix = list[list[mpq]]  # the same alias as verify.passivity.check.exact
 
 
 @dataclass(frozen=True)

@@ -19,7 +19,7 @@ from fractions import Fraction
 import numpy as np
 from gmpy2 import mpq
 
-from verify.passivity import intmat
+from verify.passivity.check import intmat
 
 RationalMatrix = list[list[mpq]]
 

@@ -2,7 +2,7 @@
 
 Two layouts per kind. Version 2 (written now) stores the model H exactly as its source
 file denotes it, the margin nu0 and band as fields of their own, the statement derived
-from them (:func:`verify.passivity.binding.statement`), the certificate matrices, and the
+from them (:func:`verify.passivity.io.binding.statement`), the certificate matrices, and the
 model file's descriptive fields under ``unverified``. Version 1 (the first certificates)
 stored descriptive and solver fields under ``meta``; it is still checked, with a fixed
 statement text and margin 0 only.
@@ -11,8 +11,8 @@ Checking a file (:func:`check_kyp_file`, :func:`check_band_file`) refuses, with 
 unknown or missing fields, a fingerprint or file name that does not match the content,
 a statement other than the derived one, a source file that denotes another model or
 another name, and matrices that fail the exact check of
-:func:`verify.passivity.certificate.check_kyp` or :func:`verify.passivity.gkyp.check_gkyp`
-for H - nu0 I. Nothing here calls a solver.
+:func:`verify.passivity.check.certificate.check_kyp` or
+:func:`verify.passivity.check.gkyp.check_gkyp` for H - nu0 I. Nothing here calls a solver.
 """
 
 from __future__ import annotations
@@ -22,8 +22,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from verify.passivity import exact as ex
-from verify.passivity.binding import (
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel, KypCheck, check_kyp
+from verify.passivity.check.gkyp import ComplexMatrix, check_gkyp
+from verify.passivity.io.binding import (
     LEGACY_BAND_STATEMENT,
     LEGACY_KYP_STATEMENT,
     UNVERIFIED_KEYS,
@@ -36,9 +38,7 @@ from verify.passivity.binding import (
     shifted,
     statement,
 )
-from verify.passivity.certificate import ExactModel, KypCheck, check_kyp
-from verify.passivity.gkyp import ComplexMatrix, check_gkyp
-from verify.passivity.strict_json import (
+from verify.passivity.io.strict_json import (
     CertificateFormatError,
     fields,
     rational_matrix,
@@ -113,7 +113,7 @@ def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool
     different P, leaves a committed certificate untouched. Returns the path and whether
     the existing file was kept.
     """
-    from verify.passivity.stored import check_stored_certificate
+    from verify.passivity.io.stored import check_stored_certificate
     from verify.report.atomic import write_atomic
 
     fresh = PARSERS[data["schema"]](data)
@@ -254,12 +254,12 @@ def check_parsed(cert: StoredCertificate, path: Path) -> KypCheck:
 
 
 def check_kyp_file(data: dict[str, Any], path: Path) -> KypCheck:
-    """Checker of the KYP schemas (registered in :mod:`verify.passivity.stored`)."""
+    """Checker of the KYP schemas (registered in :mod:`verify.passivity.io.stored`)."""
     return check_parsed(parse_kyp(data), path)
 
 
 def check_band_file(data: dict[str, Any], path: Path) -> KypCheck:
-    """Checker of the band schemas (registered in :mod:`verify.passivity.stored`)."""
+    """Checker of the band schemas (registered in :mod:`verify.passivity.io.stored`)."""
     return check_parsed(parse_band(data), path)
 
 

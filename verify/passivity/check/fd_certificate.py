@@ -1,7 +1,7 @@
 """Positive-realness certificates (frequency domain): JSON form and exact re-check.
 
 A certificate of schema ``verify-pr-certificate/1`` holds the exact model and every
-fact the frequency-domain decision (:mod:`verify.passivity.frequency_domain`) derived
+fact the frequency-domain decision (:mod:`verify.passivity.check.frequency_domain`) derived
 from it: the reduced transfer matrix, per-entry pole evidence (Routh column, Sturm
 count), the imaginary-axis poles with isolating intervals and the signs of their residue
 forms, the principal-minor sums E_k of the Hermitian part, and for each E_k an exact
@@ -17,11 +17,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from verify.passivity import exact as ex
-from verify.passivity import qpoly as qp
-from verify.passivity.certificate import ExactModel, KypCheck
-from verify.passivity.frequency_domain import PASSIVE, Analysis, analyse
-from verify.passivity.univariate_sos import check_nonnegativity, nonnegativity_from_json
+from verify.passivity.check import exact as ex
+from verify.passivity.check import qpoly as qp
+from verify.passivity.check.certificate import ExactModel, KypCheck
+from verify.passivity.check.frequency_domain import PASSIVE, Analysis, analyse
+from verify.passivity.check.univariate_sos import check_nonnegativity, nonnegativity_from_json
 
 SCHEMA = "verify-pr-certificate/1"
 STATEMENT = ("H(s) = C(sI - A)^-1 B + D is positive real: no pole in Re s > 0, simple "
@@ -86,7 +86,7 @@ class PrCertificate:
 
 def parse_json_text(text: str) -> Any:
     """The strict JSON reading of every certificate kind (duplicate keys, NaN: ValueError)."""
-    from verify.passivity.strict_json import loads_strict
+    from verify.passivity.io.strict_json import loads_strict
 
     return loads_strict(text)
 
@@ -156,7 +156,7 @@ def check_pr_certificate_file(path: Path) -> KypCheck:
 
 def check_pr_file(data: dict[str, Any], path: Path) -> KypCheck:
     """Checker of this schema for ``verify certificates check``: the exact facts, then the
-    claim's binding (:mod:`verify.passivity.binding`).
+    claim's binding (:mod:`verify.passivity.io.binding`).
 
     The stored model is H - nu0 I (``meta.margin`` = nu0, the only meta field); the model
     as given, H, must match the file name's fingerprint and, when the ``source`` file is
@@ -164,8 +164,8 @@ def check_pr_file(data: dict[str, Any], path: Path) -> KypCheck:
     """
     from fractions import Fraction
 
-    from verify.passivity.binding import Claim, bind_source, file_name, shifted
-    from verify.passivity.strict_json import CertificateFormatError, rational
+    from verify.passivity.io.binding import Claim, bind_source, file_name, shifted
+    from verify.passivity.io.strict_json import CertificateFormatError, rational
 
     try:
         result = check_pr_certificate_data(data, path)

@@ -3,7 +3,7 @@
 1. Balance the state coordinates with a diagonal similarity of powers of two (exact, so
    the certificate maps back without rounding): badly scaled models (poles near 1e12
    and 1e-4 together) become tractable.
-2. Fast path (:mod:`verify.passivity.reduce`, :mod:`verify.passivity.riccati`): solve
+2. Fast path (:mod:`verify.passivity.search.reduce`, :mod:`verify.passivity.search.riccati`): solve
    the equality constraints P B N = C^T N (N spans ker(D + D^T)) exactly once, as
    P = P0 + V Y V^T, and find Y with a margin from two Riccati equations of the
    remaining regular problem. Rounding Y keeps the equality exact. No SDP is solved;
@@ -12,11 +12,11 @@
    the Riccati midpoint of the KYP equation and the max-margin SDP (cvxpy + Clarabel),
    rounded and then projected exactly onto the equality constraints by a symmetric
    rank-2k correction (Peyrl-Parrilo style). Input directions u in ker(D + D^T) with
-   B u = 0 are dropped first (:func:`verify.passivity.reduce.equality_directions`). The
+   B u = 0 are dropped first (:func:`verify.passivity.search.reduce.equality_directions`). The
    fallback is skipped when nu(w) is clearly negative in floating point (no certificate
    can exist; the caller seeks a witness), and the SDP above :data:`SDP_STATE_LIMIT`
    states (642 MB and 14 s at 60 states, over 3.6 GB at 100).
-4. Every candidate is checked exactly (:func:`verify.passivity.certificate.check_kyp`):
+4. Every candidate is checked exactly (:func:`verify.passivity.check.certificate.check_kyp`):
    P > 0 and M(P) <= 0. The solvers' status never decides anything.
 """
 
@@ -31,15 +31,15 @@ import numpy as np
 import scipy.linalg as sla
 from gmpy2 import mpq
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, check_kyp
-from verify.passivity.reduce import (
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel, check_kyp
+from verify.passivity.search.reduce import (
     NoCertificate,
     Reduction,
     equality_directions,
     reduce_kyp,
 )
-from verify.passivity.riccati import lmi_margin, margin_candidates
+from verify.passivity.search.riccati import lmi_margin, margin_candidates
 
 
 @dataclass
@@ -197,7 +197,7 @@ def _clearly_not_passive(A, B, C, D) -> str:
     exact witness instead. Skipping a search only ever loses a certificate, so a wrong
     float answer costs completeness, never soundness.
     """
-    from verify.passivity.hamiltonian import nu_minimum, nu_values
+    from verify.passivity.search.hamiltonian import nu_minimum, nu_values
 
     try:
         with np.errstate(all="ignore"):

@@ -36,9 +36,9 @@ import numpy as np
 import sympy as sp
 from gmpy2 import mpq
 
-from verify.passivity import exact as ex
-from verify.passivity import intmat
-from verify.passivity.certificate import ExactModel
+from verify.passivity.check import exact as ex
+from verify.passivity.check import intmat
+from verify.passivity.check.certificate import ExactModel
 
 
 @dataclass
@@ -91,7 +91,7 @@ def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
     (jw I - A)(-jw I - A) = A^2 + w^2 I, so (jw I - A)^-1 B = -(A + jw I) Y with
     (A^2 + w^2 I) Y = B: one real n x n system instead of the 2n x 2n real form of the
     complex one. Over a common denominator (A = Za/da, w = p/q) it is the integer system
-    (q^2 Za^2 + p^2 da^2 I) Y' = Zb, solved exactly by FLINT (:mod:`verify.passivity.intmat`).
+    (q^2 Za^2 + p^2 da^2 I) Y' = Zb, solved exactly by FLINT (:mod:`verify.passivity.check.intmat`).
     A^2 + w^2 I is singular exactly when jw (or -jw, the same for real A) is an eigenvalue
     of A.
     """
@@ -142,8 +142,8 @@ BOUND_FROM_STATES = 60
 
 
 def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
-    """The witness at w proved by :mod:`verify.passivity.witness_bound` (no exact solve)."""
-    from verify.passivity.witness_bound import bounded_form, float_direction
+    """The witness at w proved by :mod:`verify.passivity.check.witness_bound` (no exact solve)."""
+    from verify.passivity.check.witness_bound import bounded_form, float_direction
 
     A, B, C, D = (intmat.to_float(intmat.from_rational(x))
                   for x in (model.A, model.B, model.C, model.D))
@@ -170,7 +170,7 @@ def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
     """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at the rational w itself.
 
     Above :data:`BOUND_FROM_STATES` states a bound from a verified float solve is tried
-    first (O(n^3) integer work, :mod:`verify.passivity.witness_bound`); the exact H(jw)
+    first (O(n^3) integer work, :mod:`verify.passivity.check.witness_bound`); the exact H(jw)
     of :func:`response_at` decides when it does not apply.
     """
     if model.n > BOUND_FROM_STATES:

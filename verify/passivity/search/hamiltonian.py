@@ -22,7 +22,7 @@ consecutive crossings either improves the best value or shows (up to the toleran
 the eigenvalue test) that none lies below gamma. This is the Boyd-Balakrishnan /
 Bruinsma-Steinbuch iteration for the H-infinity norm, applied to nu. A last local
 polish refines the minimiser. The result is a floating-point estimate: the gate turns
-it into exact statements with :mod:`verify.passivity.witness` and KYP certificates.
+it into exact statements with :mod:`verify.passivity.check.witness` and KYP certificates.
 """
 
 from __future__ import annotations

@@ -52,8 +52,8 @@ from flint import fmpq, fmpq_mat, fmpq_poly, nmod_mat
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel
 from verify.passivity.rational import Rational, rational
 
 # --------------------------------------------------------------------------- conversions

@@ -24,7 +24,7 @@ the two ratios. The model is exact (``LTIModel.exact``) and so is the perturbati
 moved entries are exactly A - a I and D + d I, and ||dA|| = a, ||dD|| = d. Candidates a, d
 are powers of two, from 2^-30 of the budget up to the budget, smallest first; the first
 whose perturbed model the exact gate certifies
-(:func:`verify.passivity.decide.decide`, its KYP certificate re-checked exactly) is
+(:func:`verify.passivity.decision.decide`, its KYP certificate re-checked exactly) is
 reported. A model for which none is certified keeps its exact verdict.
 
 References: the shift s -> s + a is the usual passage between positive-real and strictly
@@ -41,13 +41,13 @@ from fractions import Fraction
 
 import numpy as np
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import Certificate, ExactModel, check_kyp
-from verify.passivity.decide import PASSIVE, Decision, decide, decision_json
-from verify.passivity.kyp import KypSearch
-from verify.passivity.kyp import _balance as kyp_balance
-from verify.passivity.kyp import _reduced_search as kyp_reduced_search
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import Certificate, ExactModel, check_kyp
+from verify.passivity.decision import PASSIVE, Decision, decide, decision_json
 from verify.passivity.model import LTIModel
+from verify.passivity.search.kyp import KypSearch
+from verify.passivity.search.kyp import _balance as kyp_balance
+from verify.passivity.search.kyp import _reduced_search as kyp_reduced_search
 
 PASSIVE_WITHIN = "passive within tolerance"
 
@@ -190,7 +190,7 @@ def _boundary_certificate(model: LTIModel, perturbed: LTIModel,
     When d is tiny the perturbed model's KYP problem is nearly singular and floating-point
     Riccati equations fail on it. Its neighbour (A - a I, B, C + dC, D) with the original
     D and C B made symmetric on ker(D + D^T) (see :func:`_symmetrised_output`) is exactly
-    the singular problem that :mod:`verify.passivity.reduce` parametrises; its certificate
+    the singular problem that :mod:`verify.passivity.search.reduce` parametrises; its certificate
     P meets P B N = (C + dC)^T N exactly, and the remaining mismatch dC is absorbed by the
     d I added to D. P is then checked exactly against the perturbed model itself.
     """

@@ -3,8 +3,8 @@
 :data:`SCHEMAS` maps a schema name to its checker; a new kind of certificate plugs in
 with one line, ``SCHEMAS["verify-xyz-certificate/1"] = check_xyz``. A checker takes the
 strictly parsed JSON object and the file's path and returns a
-:class:`~verify.passivity.certificate.KypCheck`; it raises
-:class:`~verify.passivity.strict_json.CertificateFormatError` for malformed content.
+:class:`~verify.passivity.check.certificate.KypCheck`; it raises
+:class:`~verify.passivity.io.strict_json.CertificateFormatError` for malformed content.
 Every checker re-derives what the certificate claims and decides it in exact arithmetic,
 with no solver (DESIGN.md: a certificate is bound to its claim).
 """
@@ -16,10 +16,10 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
-from verify.passivity import certificate_files as cf
-from verify.passivity import fd_certificate
-from verify.passivity.certificate import KypCheck
-from verify.passivity.strict_json import CertificateFormatError, read_strict
+from verify.passivity.check import fd_certificate
+from verify.passivity.check.certificate import KypCheck
+from verify.passivity.io import certificate_files as cf
+from verify.passivity.io.strict_json import CertificateFormatError, read_strict
 
 Checker = Callable[[dict[str, Any], Path], KypCheck]
 

@@ -1,11 +1,11 @@
 """Exact witnesses for the frequency-domain decision's negative verdicts.
 
-A failed condition (c) of :mod:`verify.passivity.frequency_domain` leaves a polynomial
+A failed condition (c) of :mod:`verify.passivity.check.frequency_domain` leaves a polynomial
 Q(w) = E_k(w) / |c(jw)|^(2j) that is negative somewhere. Root enclosures (arb) of its
 odd-multiplicity factors propose rational points beside a sign change; the first w* with
 Q(w*) < 0 exactly and w* not a pole is kept, and H(jw*) + H(jw*)^H is then formed exactly:
 for small models from the state-space data by elimination
-(:func:`verify.passivity.witness.hermitian_part_at`, independent of the polynomial
+(:func:`verify.passivity.check.witness.hermitian_part_at`, independent of the polynomial
 route), for larger ones from the exact transfer matrix; and a rational vector v = a + jb with
 v^H (H(jw*) + H(jw*)^H) v < 0 is found exactly (a rounded eigenvector, else a symmetric
 elimination that tracks its congruence). The pole-condition failures carry exact facts
@@ -19,10 +19,10 @@ from fractions import Fraction
 from flint import fmpq, fmpq_poly
 from gmpy2 import mpq
 
-from verify.passivity import exact as ex
-from verify.passivity import qpoly as qp
-from verify.passivity.certificate import ExactModel
-from verify.passivity.witness import Witness, _negative_direction, hermitian_part_at
+from verify.passivity.check import exact as ex
+from verify.passivity.check import qpoly as qp
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.witness import Witness, _negative_direction, hermitian_part_at
 
 
 def exact_negative_vector(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:

@@ -15,7 +15,7 @@ the band with jw not a pole, put x = (jwI - A)^-1 B u and z = (x, u). Then N z =
 so z^H L z = (lambda + conj lambda) x^H P x + psi(w) x^H Q x - u^H (H + H^H) u with
 lambda = jw, where the first term vanishes and psi(w) = -(w - w1)(w - w2) >= 0 on the
 band. L <= 0 and Q >= 0 thus give u^H (H(jw) + H(jw)^H) u >= 0. With Q = 0 this is the
-ordinary KYP matrix of :mod:`verify.passivity.certificate`.
+ordinary KYP matrix of :mod:`verify.passivity.check.certificate`.
 
 P and Q have Gaussian-rational entries (real and imaginary parts rational); the band ends
 are rational. :func:`check_gkyp` decides both conditions exactly through the real
@@ -30,8 +30,8 @@ from fractions import Fraction
 
 from gmpy2 import mpq
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, KypCheck
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel, KypCheck
 
 #: A complex rational matrix as (real part, imaginary part).
 ComplexMatrix = tuple[ex.RationalMatrix, ex.RationalMatrix]

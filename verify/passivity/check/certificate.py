@@ -7,10 +7,10 @@ symmetric P with
 
 the KYP (positive-real) lemma; x^T P x / 2 is then a storage function of the human
 (Theorem 1's S_h). :func:`check_kyp` decides both conditions in exact rational
-arithmetic (:mod:`verify.passivity.psd`): no solver; floating point only proposes the
+arithmetic (:mod:`verify.passivity.check.psd`): no solver; floating point only proposes the
 factor of a dominance certificate, which is then checked exactly. The JSON form of a
 certificate, bound to its claim and source file, is in
-:mod:`verify.passivity.certificate_files`.
+:mod:`verify.passivity.io.certificate_files`.
 """
 
 from __future__ import annotations
@@ -22,8 +22,8 @@ from typing import Any
 
 from gmpy2 import mpq
 
-from verify.passivity import exact as ex
-from verify.passivity.psd import psd_exact
+from verify.passivity.check import exact as ex
+from verify.passivity.check.psd import psd_exact
 
 
 @dataclass(frozen=True)
@@ -124,7 +124,7 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
 @dataclass(frozen=True)
 class Certificate:
     """A checked KYP matrix P for ``model`` (the file form is in
-    :mod:`verify.passivity.certificate_files`)."""
+    :mod:`verify.passivity.io.certificate_files`)."""
 
     name: str
     source: str

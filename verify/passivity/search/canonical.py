@@ -18,9 +18,9 @@ from fractions import Fraction
 
 from gmpy2 import mpq
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel, check_kyp
-from verify.passivity.gkyp import ComplexMatrix, check_gkyp
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel, check_kyp
+from verify.passivity.check.gkyp import ComplexMatrix, check_gkyp
 
 GRID_BITS = (8, 12, 16, 24, 32)  # significant bits relative to the largest entry
 
@@ -65,7 +65,7 @@ def _equalities(model: ExactModel):
 
 def coarse_kyp(model: ExactModel, P: ex.RationalMatrix) -> ex.RationalMatrix:
     """The coarsest grid rounding of a valid KYP matrix P that ``check_kyp`` accepts."""
-    from verify.passivity.kyp import _project_equalities
+    from verify.passivity.search.kyp import _project_equalities
 
     if model.n == 0:
         return P

@@ -9,7 +9,7 @@ Maschke and Egeland, *Dissipative Systems Analysis and Control*, 3rd ed., Theore
     positive semidefinite residue K = lim (s - jw0) H(s);
 (c) H(jw) + H(jw)^H >= 0 for every real w that is not a pole.
 
-Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.qpoly`):
+Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.check.qpoly`):
 
 1. H exactly by Faddeev-LeVerrier (characteristic polynomial chi of A by FLINT, then
    C adj(sI - A) B), each entry reduced by its gcd with chi; a pole of H is a pole of an
@@ -33,7 +33,7 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.qpo
    power |c|^(2j), j < k, that divides it exactly; the quotient's squarefree
    decomposition decides the sign: >= 0 iff the content is positive and no
    odd-multiplicity factor has a real root, certified by an exact sum of squares
-   (:mod:`verify.passivity.univariate_sos`).
+   (:mod:`verify.passivity.check.univariate_sos`).
 
 Negative verdicts carry exact evidence: an entry with a pole in Re s > 0 (the Routh
 column or the Sturm count, and a certified root enclosure), an entry with a repeated
@@ -47,9 +47,9 @@ from dataclasses import dataclass, field
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from verify.passivity import qpoly as qp
-from verify.passivity.certificate import ExactModel
-from verify.passivity.univariate_sos import Nonnegativity, nonnegativity_certificate
+from verify.passivity.check import qpoly as qp
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.univariate_sos import Nonnegativity, nonnegativity_certificate
 
 PASSIVE, NOT_PASSIVE = "passive", "not passive"
 
@@ -398,7 +398,7 @@ def analyse(model: ExactModel, *, certify: bool = True) -> Analysis:
 
 
 def _sign_only(f: fmpq_poly):
-    from verify.passivity.univariate_sos import has_real_root
+    from verify.passivity.check.univariate_sos import has_real_root
 
     if f.is_zero():
         return Nonnegativity(fmpq(0), [])

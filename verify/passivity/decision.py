@@ -1,7 +1,7 @@
 """The passivity verdict of a model: passive / not passive / inconclusive.
 
 Everything is decided on the model's exact data (``LTIModel.exact``), reduced to its
-exact minimal part (:func:`verify.passivity.realization.minimal_part`); a non-minimal
+exact minimal part (:func:`verify.passivity.check.realization.minimal_part`); a non-minimal
 realisation is named in the reason, with what the verdict is then about. Floating-point
 views only propose, and a proposal that fails numerically (overflow, subnormals, data
 beyond the float range) yields nothing rather than an error.
@@ -9,10 +9,10 @@ beyond the float range) yields nothing rather than an error.
 Order of work: a witness at infinity (D + D^T not PSD) is cheapest; then a KYP
 certificate is sought and checked exactly (passive); failing that, witnesses are sought:
 a real point of the right half-plane where the Hermitian part of H is negative (cheap
-for any n, see :func:`verify.passivity.witness.real_axis_witness`); frequencies where the
+for any n, see :func:`verify.passivity.check.witness.real_axis_witness`); frequencies where the
 smallest eigenvalue nu(w) of (H(jw) + H(jw)^H)/2 is negative, the first candidate being
 the minimiser of nu located by Hamiltonian level crossings
-(:mod:`verify.passivity.hamiltonian`), which no grid spacing can step over, then a log
+(:mod:`verify.passivity.search.hamiltonian`), which no grid spacing can step over, then a log
 sweep with local refinement; and an exact RHP pole or a bad pole at 0 (symbolic, so
 last); each confirmed exactly. Up to ``FREQUENCY_DOMAIN_LIMIT`` states whatever is
 still open goes to the complete exact frequency-domain decision
@@ -33,22 +33,22 @@ import numpy as np
 from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
-from verify.passivity.certificate import Certificate, ExactModel
-from verify.passivity.hamiltonian import nu_minimum, nu_values
-from verify.passivity.kyp import find_certificate
-from verify.passivity.rational import float_view
-from verify.passivity.realization import MinimalPart, minimal_part
-from verify.passivity.scaling import rescale, restore
-from verify.passivity.witness import (
+from verify.passivity.check.certificate import Certificate, ExactModel
+from verify.passivity.check.realization import MinimalPart, minimal_part
+from verify.passivity.check.witness import (
     Witness,
     frequency_witness,
     infinity_witness,
     pole_witness,
     real_axis_witness,
 )
+from verify.passivity.rational import float_view
+from verify.passivity.search.hamiltonian import nu_minimum, nu_values
+from verify.passivity.search.kyp import find_certificate
+from verify.passivity.search.scaling import rescale, restore
 
 if TYPE_CHECKING:
-    from verify.passivity.fd_certificate import PrCertificate
+    from verify.passivity.check.fd_certificate import PrCertificate
     from verify.passivity.model import LTIModel
 
 PASSIVE, NOT_PASSIVE, INCONCLUSIVE = "passive", "not passive", "inconclusive"

@@ -25,7 +25,7 @@ TOML allows; the exponent at most 4300 in size), never a rounded binary float
 (:mod:`verify.passivity.rational`). TOML's ``nan`` and ``inf`` are refused; nothing is
 evaluated. Unknown keys, at the top level or inside a table, are refused by name. A
 transfer function is realised exactly over Q and minimally
-(:mod:`verify.passivity.realization`). Every problem is a one-line
+(:mod:`verify.passivity.check.realization`). Every problem is a one-line
 :class:`~verify.errors.VerifyInputError` starting with the file path.
 """
 
@@ -37,8 +37,8 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
+from verify.passivity.check.realization import transfer_function_model
 from verify.passivity.model import LTIModel, _state_space_model
-from verify.passivity.realization import transfer_function_model
 from verify.toml_input import read_toml
 
 TABLES = {"state_space": ("A", "B", "C", "D"), "transfer_function": ("num", "den")}

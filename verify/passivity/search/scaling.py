@@ -29,11 +29,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel
 
 if TYPE_CHECKING:
-    from verify.passivity.decide import Decision
+    from verify.passivity.decision import Decision
     from verify.passivity.model import LTIModel
 
 #: Rescale when a frequency, gain or state exponent exceeds this (|log2| of the scale).
@@ -152,8 +152,8 @@ def restore(d: Decision, r: Rescaling, model: LTIModel, em, margin: Fraction) ->
     as written, margin applied); if that check failed (it cannot, by the congruence in
     the module doc) the verdict would be inconclusive.
     """
-    from verify.passivity.certificate import Certificate, check_kyp
-    from verify.passivity.decide import INCONCLUSIVE
+    from verify.passivity.check.certificate import Certificate, check_kyp
+    from verify.passivity.decision import INCONCLUSIVE
 
     out = replace(d, model=model, margin=margin)
     if d.nu_min is not None:

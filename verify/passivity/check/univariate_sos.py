@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from flint import acb_poly, fmpq, fmpq_poly
 
-from verify.passivity import qpoly as qp
+from verify.passivity.check import qpoly as qp
 
 Sos = list[tuple[fmpq, fmpq_poly]]  # sum of weight * poly^2, weights >= 0
 

@@ -1,14 +1,14 @@
 """Exact positive (semi)definiteness of a symmetric rational matrix, fast when there is room.
 
 The test tries a *dominance certificate* first and falls back to exact LDL^T
-(:func:`verify.passivity.exact.psd_ldl`), so its answer is always exact:
+(:func:`verify.passivity.check.exact.psd_ldl`), so its answer is always exact:
 
 1. Rows and columns that are exactly zero are dropped (M is PSD iff the rest is).
 2. If the float copy has a clearly negative eigenvalue, a rounded eigenvector v with
    v^T M v < 0 (exactly) refutes M >= 0.
 3. A floating-point Cholesky factor of M - delta I (delta half the smallest eigenvalue
    estimate) is rounded to a dyadic matrix L. Then E = M - L L^T is formed *exactly*
-   over integers (:mod:`verify.passivity.intmat`). If E has a non-negative diagonal that
+   over integers (:mod:`verify.passivity.check.intmat`). If E has a non-negative diagonal that
    dominates each row (E_ii >= sum_{j != i} |E_ij|), E is PSD by Gershgorin's theorem, so
    M = L L^T + E is PSD; strict dominance makes E, hence M, positive definite.
 
@@ -22,8 +22,8 @@ from __future__ import annotations
 import numpy as np
 from gmpy2 import mpz
 
-from verify.passivity import exact as ex
-from verify.passivity import intmat
+from verify.passivity.check import exact as ex
+from verify.passivity.check import intmat
 
 _FLOAT_MARGIN = 1e-11  # smallest eigenvalue, relative to |M|, worth a dominance attempt
 

@@ -22,7 +22,7 @@ as the KYP LMI of an auxiliary system of order n - k in the unknown Y:
 
 (A = T A T^-1 in blocks k, n - k; Br = T B R, Cr = R^T C T^-1, Sr = R^T S R). When Sa is
 positive definite that problem is regular and Riccati equations solve it
-(:mod:`verify.passivity.riccati`). The auxiliary system is floating point: it only
+(:mod:`verify.passivity.search.riccati`). The auxiliary system is floating point: it only
 steers the search; the certificate P is assembled exactly and checked exactly.
 """
 
@@ -33,9 +33,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 
-from verify.passivity import exact as ex
-from verify.passivity.certificate import ExactModel
-from verify.passivity.psd import psd_exact
+from verify.passivity.check import exact as ex
+from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.psd import psd_exact
 
 
 @dataclass(frozen=True)
