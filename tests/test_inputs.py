@@ -199,3 +199,13 @@ def test_model_file_numbers_are_exact(tmp_path):
 )
 def test_model_constructor(D, fragment):
     one_line(lambda: from_state_space([[-1.0]], [[1.0]], [[1.0]], D), "model 'model'", fragment)
+
+
+@pytest.mark.parametrize(("tolerance", "fragment"),
+                         [(float("nan"), "NaN or Inf"), (-1e-9, "must be >= 0"),
+                          (True, "bool")])
+def test_network_tolerance(tmp_path, tolerance, fragment):
+    """A NaN tolerance would let every matrix pass as a rotation (NaN comparisons fail)."""
+    path = tmp_path / "net.toml"
+    path.write_text("rotations = [[[2.0, 0, 0], [0, 1, 0], [0, 0, 1]]]\n")
+    one_line(lambda: load_network(path, tolerance=tolerance), "--tolerance", fragment)

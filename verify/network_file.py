@@ -21,7 +21,7 @@ import numpy as np
 
 from verify import so3
 from verify.errors import VerifyInputError
-from verify.inputs.numbers import real_array
+from verify.inputs.numbers import real, real_array
 from verify.inputs.toml import read_toml
 from verify.so3 import Array
 from verify.system.stealthy import as_network, dbar
@@ -53,6 +53,9 @@ def parse_network(
     tolerance: float = so3.ROTATION_TOLERANCE,
 ) -> Network:
     """Validate a parsed TOML document and return the network."""
+    where = "the SO(3) tolerance (--tolerance)"
+    if real(tolerance, where) < 0:
+        raise VerifyInputError(f"{where} must be >= 0, got {tolerance}; e.g. --tolerance 1e-9")
     unknown = sorted(set(data) - ALLOWED_KEYS)
     if unknown:
         raise VerifyInputError(
