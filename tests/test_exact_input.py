@@ -26,6 +26,7 @@ from hypothesis import strategies as st
 
 from verify.cli import main
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import decimal_literal, rational, to_float
 from verify.passivity.check.realization import (
     _companion_columns,
     _elements,
@@ -38,7 +39,6 @@ from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.gate import parse_margin
 from verify.passivity.io.model_file import load_model
 from verify.passivity.model import LTIModel, from_python, from_state_space, from_transfer_function
-from verify.passivity.rational import decimal_literal, rational, to_float
 
 s = sp.Symbol("s")
 

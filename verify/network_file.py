@@ -13,7 +13,6 @@ matrices must lie in SO(3) within a tolerance, or be projected onto it on reques
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -22,9 +21,10 @@ import numpy as np
 
 from verify import so3
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import real, real_array
+from verify.inputs.toml import read_toml
 from verify.so3 import Array
 from verify.system.stealthy import as_network, dbar
-from verify.toml_input import read_toml
 
 ALLOWED_KEYS = {"name", "description", "quaternions", "rotations"}
 
@@ -38,29 +38,11 @@ class Network:
     projected_by: float = 0.0  # largest change made by projection onto SO(3)
 
 
-def _numbers(value: Any, where: str) -> Any:
-    """Check that a nested list holds only real numbers (bool is not a number)."""
-    if isinstance(value, list):
-        return [_numbers(v, f"{where}[{i}]") for i, v in enumerate(value)]
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise VerifyInputError(f"{where}: expected a number, got {type(value).__name__} {value!r}")
-    if not math.isfinite(value):
-        raise VerifyInputError(f"{where}: NaN or Inf is not allowed")
-    return float(value)
-
-
 def _array(value: Any, where: str, tail: tuple[int, ...]) -> Array:
-    nested = _numbers(value, where)
-    try:
-        arr = np.array(nested, dtype=float)
-    except ValueError:
-        raise VerifyInputError(f"{where}: ragged nesting, expected shape (n, {tail})") from None
-    if arr.shape[:1] == (0,):
-        raise VerifyInputError(f"{where}: a network needs at least one body")
-    if arr.ndim != 1 + len(tail) or arr.shape[1:] != tail:
-        shape = "(n, " + ", ".join(map(str, tail)) + ")"
-        raise VerifyInputError(f"{where}: expected shape {shape}, got {arr.shape}")
-    return arr
+    if isinstance(value, list) and not value:
+        raise VerifyInputError(f"{where}: a network needs at least one body; give one entry "
+                               "per body")
+    return real_array(value, where, (None, *tail))
 
 
 def parse_network(
@@ -71,6 +53,9 @@ def parse_network(
     tolerance: float = so3.ROTATION_TOLERANCE,
 ) -> Network:
     """Validate a parsed TOML document and return the network."""
+    where = "the SO(3) tolerance (--tolerance)"
+    if real(tolerance, where) < 0:
+        raise VerifyInputError(f"{where} must be >= 0, got {tolerance}; e.g. --tolerance 1e-9")
     unknown = sorted(set(data) - ALLOWED_KEYS)
     if unknown:
         raise VerifyInputError(

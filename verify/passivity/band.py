@@ -26,6 +26,7 @@ import numpy as np
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import parse_number
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.check.gkyp import BandCertificate
 from verify.passivity.check.realization import minimal_part
@@ -51,14 +52,7 @@ def parse_band(text: str) -> tuple[Fraction, Fraction]:
     parts = str(text).split(":")
     if len(parts) != 2:
         raise VerifyInputError(f"--band {text!r}: expected W1:W2, e.g. 0:1.5 (rad/s)")
-    values = []
-    for part in parts:
-        try:
-            values.append(Fraction(part.strip()))
-        except (ValueError, ZeroDivisionError):
-            raise VerifyInputError(f"--band {text!r}: {part.strip()!r} is not a finite "
-                                   "number") from None
-    w1, w2 = values
+    w1, w2 = (parse_number(part, f"--band {text!r}:", "--band 0:1.5") for part in parts)
     if max(abs(w1), abs(w2)) > 10**12:
         raise VerifyInputError(f"--band {text!r}: frequencies above 1e12 rad/s are not supported")
     if w1 < 0:

@@ -16,6 +16,7 @@ from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import parse_number
 from verify.passivity.check.fd_certificate import PrCertificate
 from verify.passivity.decision import PASSIVE, Decision, decide
 from verify.passivity.io import certificate_files as cf
@@ -29,30 +30,12 @@ def parse_margin(text: str) -> Fraction:
     """A margin nu0 as an exact rational ("1e-8", "0.01", "1/100"); one-line error otherwise.
 
     A decimal denotes the decimal it spells, as in model files."""
-    from verify.passivity.rational import decimal_literal
-
-    body = text.strip()
-    try:
-        if "/" in body:
-            value = Fraction(body)
-        else:
-            parsed = decimal_literal(body)
-            if not isinstance(parsed, Fraction):
-                raise ValueError
-            value = parsed
-    except (ValueError, ZeroDivisionError):
-        raise VerifyInputError(f"--margin {text!r} is not a finite number (or its exponent "
-                               "is beyond +-4300)") from None
-    return value
+    return parse_number(text, "--margin", "--margin 1e-8 or --margin 1/100")
 
 
 def parse_tolerance(text: str) -> Fraction:
     """--tolerance EPS as an exact rational >= 0 ("1e-12", "0"); one-line error otherwise."""
-    try:
-        value = parse_margin(text)
-    except VerifyInputError:
-        raise VerifyInputError(f"--tolerance {text!r} is not a finite number "
-                               "(e.g. --tolerance 1e-12)") from None
+    value = parse_number(text, "--tolerance", "--tolerance 1e-12")
     if value < 0:
         raise VerifyInputError(f"--tolerance {text!r} is negative; it is a relative "
                                "distance >= 0 (0 = exact)")

@@ -12,7 +12,7 @@ from
 * :func:`from_python`: python-control ``StateSpace`` / ``TransferFunction`` and
   scipy.signal ``lti`` objects (continuous time only).
 
-Every number denotes an exact rational (:mod:`verify.passivity.rational`: integers
+Every number denotes an exact rational (:mod:`verify.inputs.numbers`: integers
 exactly, binary floats as the dyadic rationals they store, decimals of a model file as the
 decimal they spell); the model keeps it in ``LTIModel.exact`` and derives float views.
 
@@ -26,88 +26,21 @@ The realisation of a transfer matrix and its check are in
 from __future__ import annotations
 
 import dataclasses
-import math
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from gmpy2 import mpq
 from numpy.typing import ArrayLike, NDArray
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import exact_array, float_view, real_array
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
-from verify.passivity.rational import float_view, rational, to_float
 
 Array = NDArray[np.float64]
 
 
 # --------------------------------------------------------------------------- validation
-
-
-def _short(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 40 else text[:37] + "..."
-
-
-def _scalar(value: Any, where: str) -> float:
-    """A real, finite number as float (frequencies, flags); the exact route uses
-    :func:`verify.passivity.rational.rational`."""
-    q = rational(value, where)
-    x = to_float(q)
-    if not math.isfinite(x):
-        raise VerifyInputError(f"{where}: number too large for a float")
-    return x
-
-
-def _finite(value: NDArray, where: str) -> Array:
-    """A float64 copy of an integer or float array, refusing NaN and Inf (by index)."""
-    arr = np.array(value, dtype=float)
-    bad = np.argwhere(~np.isfinite(arr))
-    if bad.size:
-        index = "".join(f"[{k}]" for k in bad[0])
-        raise VerifyInputError(f"{where}{index}: NaN or Inf is not allowed")
-    return arr
-
-
-def _matrix(value: Any, where: str) -> Array:
-    """A real finite float array of any rank from nested sequences (frequency grids)."""
-    if isinstance(value, np.ndarray) and value.dtype.kind in "iuf":
-        return _finite(value, where)
-    nested, shape = _exact_nested(value, where)
-    return np.array(_map(nested, lambda q: _scalar(q, where)), dtype=float).reshape(shape)
-
-
-def _map(nested: Any, f) -> Any:
-    return [_map(v, f) for v in nested] if isinstance(nested, list) else f(nested)
-
-
-def _exact_nested(value: Any, where: str) -> tuple[Any, tuple[int, ...]]:
-    """Nested lists of exact rationals and their shape (ragged nesting refused).
-
-    Every number is converted by :func:`verify.passivity.rational.rational`: integers
-    exactly, binary floats as the dyadic rationals they store, Fractions as they are.
-    """
-    if isinstance(value, np.ndarray):
-        shape = value.shape
-        if value.dtype.kind in "iuf":
-            bad = np.argwhere(~np.isfinite(value)) if value.dtype.kind == "f" else ()
-            if len(bad):
-                index = "".join(f"[{k}]" for k in bad[0])
-                raise VerifyInputError(f"{where}{index}: NaN or Inf is not allowed")
-            if value.dtype.itemsize <= 8:  # to Python int / float, exactly
-                return _map(value.tolist(), mpq), shape
-            return _map(value.tolist(), lambda x: rational(x, where)), shape
-        nested, inner = _exact_nested(value.tolist(), where)
-        return nested, shape if value.size else inner
-    if isinstance(value, list | tuple):
-        parts = [_exact_nested(v, f"{where}[{i}]") for i, v in enumerate(value)]
-        shapes = {s for _, s in parts}
-        if len(shapes) > 1:
-            raise VerifyInputError(f"{where}: ragged nesting (rows of different lengths)")
-        inner = shapes.pop() if shapes else ()
-        return [x for x, _ in parts], (len(parts), *inner)
-    return rational(value, where), ()
 
 
 def _rows(nested: Any, shape: tuple[int, ...]) -> ex.RationalMatrix:
@@ -122,7 +55,7 @@ def _rows(nested: Any, shape: tuple[int, ...]) -> ex.RationalMatrix:
 def _check_state_space(A: Any, B: Any, C: Any, D: Any, ctx: str) -> ExactModel:
     """Validated exact (A, B, C, D) with consistent shapes and H square."""
     (A, sa), (B, sb), (C, sc), (D, sd) = (
-        _exact_nested(x, f"{ctx}: {k}") for k, x in zip("ABCD", (A, B, C, D), strict=True)
+        exact_array(x, f"{ctx}: {k}") for k, x in zip("ABCD", (A, B, C, D), strict=True)
     )
     if len(sd) != 2 or 0 in sd:
         raise VerifyInputError(f"{ctx}: D: expected an m x m matrix with m >= 1, got shape {sd}")
@@ -174,7 +107,7 @@ class LTIModel:
     *views* of it (rounded to nearest; +-inf where an entry is beyond the float range),
     used only to propose (certificate candidates, witness frequencies) and to simulate.
     Given without ``exact``, the matrices are converted exactly
-    (:mod:`verify.passivity.rational`); given with it, they are ignored and re-derived.
+    (:mod:`verify.inputs.numbers`); given with it, they are ignored and re-derived.
 
     ``source`` is the file the model came from, or ``"python"``; ``meta`` holds the
     optional descriptive fields of a model file (``k_s``, ``units``, ``description``,
@@ -234,7 +167,7 @@ class LTIModel:
         Floating point, from the float view. A frequency where j w is an eigenvalue of A
         (a pole on the imaginary axis) has no value and raises :class:`VerifyInputError`.
         """
-        w = _matrix(omega, f"model {self.name!r}: omega")
+        w = real_array(omega, f"model {self.name!r}: omega")
         if w.ndim == 0:
             w = w.reshape(1)
         if w.ndim != 1:
@@ -281,12 +214,13 @@ def from_state_space(
     given as []); D (m x m, m >= 1) fixes m.
     """
     ctx = f"model {name!r}" if source == "python" else source
-    return _state_space_model(A, B, C, D, ctx, name=name, source=source, meta=meta)
+    return state_space_model(A, B, C, D, ctx, name=name, source=source, meta=meta)
 
 
-def _state_space_model(
+def state_space_model(
     A: Any, B: Any, C: Any, D: Any, ctx: str, *, name: str, source: str, meta: dict | None
 ) -> LTIModel:
+    """:func:`from_state_space` with the error context ``ctx`` given (a model file's table)."""
     em = _check_state_space(A, B, C, D, ctx)
     return LTIModel(name, source=source, meta=dict(meta or {}), exact=em)
 

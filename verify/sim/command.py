@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import positive_real, real
 from verify.sim.energy import energy
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
@@ -48,20 +49,12 @@ class SimulateSettings:
     check: bool = False  # also run the property checks (two more runs, h and h/2)
 
 
-def _finite_positive(value: float, what: str) -> float:
-    if not (np.isfinite(value) and value > 0):
-        raise VerifyInputError(f"{what} must be a positive number, got {value}")
-    return float(value)
-
-
 def build_human(s: SimulateSettings) -> tuple[Human, str]:
     """The human model and one line on its passivity (which decides the storage used)."""
     if s.human == "vr":
         return VROperator(), "VR operator (Section 4 interface); passivity not established"
     if s.human == "static":
-        gain = float(s.gain)
-        if not np.isfinite(gain):
-            raise VerifyInputError(f"--gain must be a number, got {s.gain}")
+        gain = real(s.gain, "--gain")
         verdict = "passive" if gain >= 0 else "NOT passive (K + K^T < 0)"
         return StaticGainHuman(gain * np.eye(2)), f"static gain {gain:g} I: {verdict}"
     if s.human == "model":
@@ -85,7 +78,7 @@ def build_human(s: SimulateSettings) -> tuple[Human, str]:
 
 def build_scenario(s: SimulateSettings, human: Human) -> Scenario:
     rng = np.random.default_rng(s.seed)
-    k_s = _finite_positive(s.k_s, "the coupling gain k_s (--ks)")
+    k_s = positive_real(s.k_s, "the coupling gain k_s (--ks)")
     if s.network is not None:
         from verify.network_file import load_network
 
@@ -145,8 +138,8 @@ class ProgressBar:
 def run_simulate(s: SimulateSettings) -> int:
     if s.fmt not in ("npz", "csv"):
         raise VerifyInputError(f"unknown format {s.fmt!r}; choose npz or csv")
-    seconds = _finite_positive(s.seconds, "--seconds")
-    step = _finite_positive(s.step, "--step")
+    seconds = positive_real(s.seconds, "--seconds")
+    step = positive_real(s.step, "--step")
     steps = step_count(seconds, step)
     if steps > MAX_STEPS:
         raise VerifyInputError(f"{steps} steps asked (--seconds / --step); at most {MAX_STEPS} "

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import positive_real
 from verify.sim.humans import Human
 from verify.sim.inputs import Autonomous, Reference
 from verify.so3 import Array, check_rotations, vee
@@ -50,8 +51,7 @@ class Scenario:
             raise VerifyInputError(f"initial attitudes must have shape (n, 3, 3), got {R0.shape}")
         if R0.shape[0] == 0:
             raise VerifyInputError("the network needs at least one body (n >= 1)")
-        if not (np.isfinite(self.k_s) and self.k_s > 0):
-            raise VerifyInputError(f"the coupling gain k_s must be positive, got {self.k_s}")
+        positive_real(self.k_s, "the coupling gain k_s")
         check_rotations(R0, name="initial attitude")
         check_rotations(np.asarray(self.R_l0, dtype=float)[None], name="leader attitude")
         check_rotations(np.stack(self.reference.rotations), name="reference")

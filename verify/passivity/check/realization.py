@@ -52,9 +52,9 @@ from flint import fmpq, fmpq_mat, fmpq_poly, nmod_mat
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import Rational, rational
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
-from verify.passivity.rational import Rational, rational
 
 # --------------------------------------------------------------------------- conversions
 

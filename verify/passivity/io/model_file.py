@@ -22,7 +22,7 @@ den = [[[1.0, 2.0, 1.5], [1.0]], [[1.0], [1.0, 2.0, 1.5]]]
 Every number denotes its exact value: an integer is that integer (any size), a decimal
 is the exact decimal it spells (``0.1`` is 1/10, ``2.5e-3`` is 1/400; underscores as
 TOML allows; the exponent at most 4300 in size), never a rounded binary float
-(:mod:`verify.passivity.rational`). TOML's ``nan`` and ``inf`` are refused; nothing is
+(:mod:`verify.inputs.numbers`). TOML's ``nan`` and ``inf`` are refused; nothing is
 evaluated. Unknown keys, at the top level or inside a table, are refused by name. A
 transfer function is realised exactly over Q and minimally
 (:mod:`verify.passivity.check.realization`). Every problem is a one-line
@@ -31,15 +31,14 @@ transfer function is realised exactly over Q and minimally
 
 from __future__ import annotations
 
-import math
-from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import rational, real
+from verify.inputs.toml import read_toml
 from verify.passivity.check.realization import transfer_function_model
-from verify.passivity.model import LTIModel, _state_space_model
-from verify.toml_input import read_toml
+from verify.passivity.model import LTIModel, state_space_model
 
 TABLES = {"state_space": ("A", "B", "C", "D"), "transfer_function": ("num", "den")}
 TEXT_KEYS = ("name", "description", "units")
@@ -74,15 +73,11 @@ def _meta(data: dict[str, Any], source: str) -> dict[str, Any]:
         if key in data:
             meta[key] = data[key]
     if "k_s" in data:
-        k = data["k_s"]
-        if isinstance(k, bool) or not isinstance(k, int | float | Fraction):
-            raise VerifyInputError(f"{source}: 'k_s' must be a number, got {type(k).__name__}")
-        if (isinstance(k, float) and not math.isfinite(k)) or k <= 0:
-            raise VerifyInputError(f"{source}: 'k_s' must be a finite number > 0, got {k}")
-        try:
-            meta["k_s"] = float(k)  # descriptive only (no verdict depends on it)
-        except OverflowError:
-            raise VerifyInputError(f"{source}: 'k_s' is beyond the float range") from None
+        where = f"{source}: 'k_s'"
+        if rational(data["k_s"], where) <= 0:
+            raise VerifyInputError(f"{where} must be a number > 0, got {data['k_s']}; give the "
+                                   "coupling gain of Section 4, e.g. k_s = 2.5")
+        meta["k_s"] = real(data["k_s"], where)  # descriptive only (no verdict depends on it)
     if "reconstructed" in data:
         if not isinstance(data["reconstructed"], bool):
             raise VerifyInputError(
@@ -113,7 +108,7 @@ def parse_model(data: dict[str, Any], source: str) -> LTIModel:
     table = _table(data, kind, source)
     ctx = f"{source} [{kind}]"
     if kind == "state_space":
-        return _state_space_model(
+        return state_space_model(
             table["A"], table["B"], table["C"], table["D"], ctx,
             name=name, source=source, meta=meta,
         )  # fmt: skip

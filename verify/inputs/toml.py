@@ -6,13 +6,14 @@ import tomllib
 from pathlib import Path
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import decimal_literal
 
 
 def read_toml(path: str | Path, *, exact: bool = False) -> dict:
     """Parse a TOML input file; unreadable or invalid files are one-line VerifyInputErrors.
 
     With ``exact``, a decimal literal becomes the exact ``Fraction`` it spells
-    (:func:`verify.passivity.rational.decimal_literal`; ``nan``/``inf`` stay floats for the
+    (:func:`verify.inputs.numbers.decimal_literal`; ``nan``/``inf`` stay floats for the
     caller to refuse by location); TOML integers are Python ints either way.
     """
     path = Path(path)
@@ -20,12 +21,7 @@ def read_toml(path: str | Path, *, exact: bool = False) -> dict:
         raw = path.read_bytes()
     except OSError as exc:
         raise VerifyInputError(f"{path}: cannot read ({exc.strerror})") from None
-    if exact:
-        from verify.passivity.rational import decimal_literal
-
-        parse_float = decimal_literal
-    else:
-        parse_float = float
+    parse_float = decimal_literal if exact else float
     try:
         return tomllib.loads(raw.decode("utf-8"), parse_float=parse_float)
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
