@@ -34,6 +34,7 @@ from verify.passivity.decision import (
     INCONCLUSIVE,
     NOT_PASSIVE,
     PASSIVE,
+    GateVerdict,
     decision_json,
     float_views,
     propose,
@@ -74,7 +75,7 @@ class BandDecision:
 
     model: LTIModel
     band: tuple[Fraction, Fraction]
-    verdict: str
+    verdict: GateVerdict
     reason: str
     certificate: BandCertificate | None = None
     witness: Witness | None = None
