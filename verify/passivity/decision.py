@@ -212,6 +212,27 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
 
     The exact model is ``model.exact`` reduced to its exact minimal part (the transfer
     function's realisation); floats are views of it and only propose.
+
+    Parameters
+    ----------
+    model : LTIModel
+        The human model H(s) = C (sI - A)^-1 B + D, with its exact rational data.
+    margin : Fraction, default 0
+        nu0 in nu(w) >= nu0 for every w, decided exactly as passivity of H - nu0 I.
+
+    Returns
+    -------
+    Decision
+        ``verdict`` is :data:`PASSIVE` with an exactly checked KYP or positive-real
+        certificate, :data:`NOT_PASSIVE` with an exactly checked witness, or
+        :data:`INCONCLUSIVE` with the reason; ``nu_min`` is the smallest nu(w) seen
+        (floating point, informative only).
+
+    References
+    ----------
+    The paper, Section 4 (nu(w) and passivity of the human model). KYP (positive real)
+    lemma: B. D. O. Anderson and S. Vongpanitlerd, *Network Analysis and Synthesis*,
+    Prentice-Hall 1973, Ch. 5; H. K. Khalil, *Nonlinear Systems*, 3rd ed., Lemma 6.2.
     """
     start = time.perf_counter()
     part = minimal_part(model.exact)
