@@ -17,21 +17,15 @@ from verify.passivity.check.certificate import check_kyp, exact_model
 from verify.passivity.check.psd import psd_exact
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.model import from_state_space
+from verify.passivity.port_hamiltonian import random_port_hamiltonian
 from verify.passivity.search.reduce import NoCertificate, Reduction, reduce_kyp
 
 
 def port_hamiltonian(n: int, seed: int, flip: bool = False, D=None):
     """x' = (J - R) Q x + G u, y = ±G^T Q x + D u (the benchmark's family, 2 ports)."""
-    rng = np.random.default_rng([seed, n])
-    J = rng.standard_normal((n, n))
-    J = J - J.T
-    L = rng.standard_normal((n, n))
-    R = L @ L.T / n + 0.1 * np.eye(n)
-    Q = np.diag(2.0 ** rng.integers(-2, 3, n))
-    G = rng.standard_normal((n, 2))
-    C = G.T @ Q
-    D = np.zeros((2, 2)) if D is None else np.asarray(D, dtype=float)
-    return from_state_space((J - R) @ Q, G, -C if flip else C, D, name=f"pH n={n}")
+    A, B, C, D0 = random_port_hamiltonian(n, 2, np.random.default_rng([seed, n]), flip)
+    D = D0 if D is None else np.asarray(D, dtype=float)
+    return from_state_space(A, B, C, D, name=f"pH n={n}")
 
 
 def _assert_certified(d) -> None:
