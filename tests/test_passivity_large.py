@@ -124,3 +124,11 @@ def test_transfer_matrix_by_faddeev_leverrier_matches_sympy():
     As, Bs, Cs = (ex.to_sympy(x) for x in (em.A, em.B, em.C))
     ref = Cs * (s * sp.eye(n) - As).inv() * Bs
     assert all(sp.cancel(H[i, j] - ref[i, j]) == 0 for i in range(m) for j in range(m))
+
+
+def test_a_reduction_that_does_not_apply_says_why_in_a_dataclass():
+    from verify.passivity.search.reduce import NotReducible
+
+    em = exact_model(np.array([[-1.0]]), np.zeros((1, 1)), np.zeros((1, 1)), np.zeros((1, 1)))
+    red = reduce_kyp(em)
+    assert isinstance(red, NotReducible) and "D + Dᵀ = 0" in red.reason
