@@ -1,4 +1,4 @@
-"""Passivity verdicts with known answers (issue 4, item 2), certificates and witnesses.
+"""Passivity verdicts with known answers (paper, Section 4), certificates and witnesses.
 
 Every passive verdict must come with a certificate that the exact checker accepts; every
 not-passive verdict with a witness; the tests re-check both independently.

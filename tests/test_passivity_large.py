@@ -1,4 +1,4 @@
-"""The gate at scale (issue 4, performance): random port-Hamiltonian models of 30 and 60
+"""The gate at scale: random port-Hamiltonian models of 30 and 60
 states get a passive verdict with an exactly re-checked certificate, their sign-flipped
 twins a not-passive verdict with an exact witness; plus the pieces that make it fast
 (the exact parametrisation of P B N = C^T N, the dominance certificate, the witness at a
