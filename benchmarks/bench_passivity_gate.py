@@ -56,6 +56,7 @@ from verify.passivity.check.fd_certificate import (  # noqa: E402
 )
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide  # noqa: E402
 from verify.passivity.model import from_state_space  # noqa: E402
+from verify.passivity.port_hamiltonian import random_port_hamiltonian  # noqa: E402
 
 SIZES = (2, 10, 30, 100, 200, 400)
 KINDS = ("passive", "flipped", "resonant")
@@ -67,21 +68,10 @@ FREQUENCY_MAX = 100  # the exact frequency-domain route alone, up to this many s
 ALL_KINDS_UP_TO = 30
 
 
-def port_hamiltonian(n: int, m: int, rng: np.random.Generator, flip: bool = False):
-    J = rng.standard_normal((n, n))
-    J = J - J.T
-    L = rng.standard_normal((n, n))
-    R = L @ L.T / n + 0.1 * np.eye(n)
-    Q = np.diag(2.0 ** rng.integers(-2, 3, n))
-    G = rng.standard_normal((n, m))
-    C = G.T @ Q
-    return (J - R) @ Q, G, -C if flip else C, np.zeros((m, m))
-
-
 def resonant(n: int, m: int, rng: np.random.Generator):
     """Passive port-Hamiltonian (n - 2 states, D = 0.05 I) minus a resonance at w0 = 3."""
     p, d, w0, zeta = max(n - 2, 1), 0.05, 3.0, 0.01
-    A0, G, C0, _ = port_hamiltonian(p, m, rng)
+    A0, G, C0, _ = random_port_hamiltonian(p, m, rng)
     H0 = C0 @ np.linalg.solve(1j * w0 * np.eye(p) - A0, G) + d * np.eye(m)
     k = float(np.linalg.eigvalsh((H0 + H0.conj().T) / 2)[-1]) + 0.3
     v = rng.standard_normal(m)
@@ -97,7 +87,7 @@ def build(kind: str, n: int, m: int):
     rng = np.random.default_rng([SEED, n, KINDS.index(kind)])
     if kind == "resonant":
         return resonant(n, m, rng), NOT_PASSIVE
-    return port_hamiltonian(n, m, rng, flip=kind == "flipped"), (
+    return random_port_hamiltonian(n, m, rng, flip=kind == "flipped"), (
         NOT_PASSIVE if kind == "flipped" else PASSIVE)
 
 

@@ -471,3 +471,23 @@ def test_margin_is_decided_exactly(margin, expected):
     lti = _lti(em([[0, 1], [-1, 0]], [[0], [1]], [[0, 1]], [[1]]))
     d = decide(lti, margin)
     assert d.verdict == expected, d.reason
+
+
+def test_a_sturm_count_certificate_round_trips_as_the_string_sturm(monkeypatch):
+    """Above the SOS degree limit an odd factor is certified by a Sturm count: JSON
+    "sturm", parsed back to a SturmCount that the checker re-decides."""
+    from flint import fmpq_poly
+
+    from verify.passivity.check import univariate_sos as us
+
+    monkeypatch.setattr(us, "SOS_DEGREE_LIMIT", -1)
+    f = fmpq_poly([1, 0, 1]) * fmpq_poly([2, 1]) ** 2  # (x^2 + 1)(x + 2)^2 >= 0
+    cert = us.nonnegativity_certificate(f)
+    assert any(isinstance(s, us.SturmCount) for _, _, s in cert.factors)
+    data = cert.to_json()
+    assert [item["sos"] for item in data["factors"] if item["exponent"] % 2] == ["sturm"]
+    back = us.nonnegativity_from_json(data)
+    assert back == cert and us.check_nonnegativity(f, back) is None
+    bad = us.Nonnegativity(cert.content, [(fmpq_poly([-1, 0, 1]), 1, us.SturmCount()),
+                                          *[x for x in cert.factors if x[1] % 2 == 0]])
+    assert us.check_nonnegativity(fmpq_poly([-1, 0, 1]) * fmpq_poly([2, 1]) ** 2, bad)

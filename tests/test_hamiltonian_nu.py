@@ -1,4 +1,4 @@
-"""nu(w) and its minimum by Hamiltonian level crossings (issue 4, item 5; paper Section 4)."""
+"""nu(w) and its minimum by Hamiltonian level crossings (paper, Section 4)."""
 
 from __future__ import annotations
 

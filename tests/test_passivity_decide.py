@@ -1,4 +1,4 @@
-"""Passivity verdicts with known answers (issue 4, item 2), certificates and witnesses.
+"""Passivity verdicts with known answers (paper, Section 4), certificates and witnesses.
 
 Every passive verdict must come with a certificate that the exact checker accepts; every
 not-passive verdict with a witness; the tests re-check both independently.
@@ -126,3 +126,20 @@ def test_a_hidden_unstable_mode_is_decided_for_the_transfer_function():
     if not isinstance(d.certificate, PrCertificate):  # the KYP route, on the minimal part
         return
     assert check_pr_certificate_data(d.certificate.to_json()).ok
+
+
+def test_verdicts_are_a_closed_set_that_serialises_as_before():
+    """GateVerdict members are the old strings: equal, formatted and JSON-encoded alike."""
+    import json
+
+    from verify.passivity import GateVerdict
+    from verify.passivity.search.tolerance import PASSIVE_WITHIN
+
+    assert [str(v) for v in GateVerdict] == [
+        "passive", "not passive", "inconclusive", "passive within tolerance"]
+    assert PASSIVE is GateVerdict.PASSIVE and PASSIVE_WITHIN is GateVerdict.PASSIVE_WITHIN
+    d = decide(ss([[-1.0]], [[1.0]], [[1.0]], [[0.0]]))
+    assert d.verdict is GateVerdict.PASSIVE
+    assert json.dumps(d.to_json()["verdict"]) == '"passive"' and f"{d.verdict}" == "passive"
+    d = decide(ss([[-1.0]], [[1.0]], [[-1.0]], [[0.0]]))
+    assert d.verdict is NOT_PASSIVE and d.witness is not None

@@ -1,4 +1,4 @@
-"""Passivity indices nu_IFP and rho_OFP with exact bounds (issue 4, item 5; paper Section 4).
+"""Passivity indices nu_IFP and rho_OFP with exact bounds (paper, Section 4).
 
 Known answers, worked by hand:
 - 1/(s+1): Re H = 1/(1+w^2) -> 0 as w -> inf, so nu_IFP = 0; Re(1/H) = 1, so rho_OFP = 1.

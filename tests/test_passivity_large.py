@@ -1,4 +1,4 @@
-"""The gate at scale (issue 4, performance): random port-Hamiltonian models of 30 and 60
+"""The gate at scale: random port-Hamiltonian models of 30 and 60
 states get a passive verdict with an exactly re-checked certificate, their sign-flipped
 twins a not-passive verdict with an exact witness; plus the pieces that make it fast
 (the exact parametrisation of P B N = C^T N, the dominance certificate, the witness at a
@@ -17,21 +17,15 @@ from verify.passivity.check.certificate import check_kyp, exact_model
 from verify.passivity.check.psd import psd_exact
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.model import from_state_space
+from verify.passivity.port_hamiltonian import random_port_hamiltonian
 from verify.passivity.search.reduce import NoCertificate, Reduction, reduce_kyp
 
 
 def port_hamiltonian(n: int, seed: int, flip: bool = False, D=None):
     """x' = (J - R) Q x + G u, y = ±G^T Q x + D u (the benchmark's family, 2 ports)."""
-    rng = np.random.default_rng([seed, n])
-    J = rng.standard_normal((n, n))
-    J = J - J.T
-    L = rng.standard_normal((n, n))
-    R = L @ L.T / n + 0.1 * np.eye(n)
-    Q = np.diag(2.0 ** rng.integers(-2, 3, n))
-    G = rng.standard_normal((n, 2))
-    C = G.T @ Q
-    D = np.zeros((2, 2)) if D is None else np.asarray(D, dtype=float)
-    return from_state_space((J - R) @ Q, G, -C if flip else C, D, name=f"pH n={n}")
+    A, B, C, D0 = random_port_hamiltonian(n, 2, np.random.default_rng([seed, n]), flip)
+    D = D0 if D is None else np.asarray(D, dtype=float)
+    return from_state_space(A, B, C, D, name=f"pH n={n}")
 
 
 def _assert_certified(d) -> None:
@@ -130,3 +124,11 @@ def test_transfer_matrix_by_faddeev_leverrier_matches_sympy():
     As, Bs, Cs = (ex.to_sympy(x) for x in (em.A, em.B, em.C))
     ref = Cs * (s * sp.eye(n) - As).inv() * Bs
     assert all(sp.cancel(H[i, j] - ref[i, j]) == 0 for i in range(m) for j in range(m))
+
+
+def test_a_reduction_that_does_not_apply_says_why_in_a_dataclass():
+    from verify.passivity.search.reduce import NotReducible
+
+    em = exact_model(np.array([[-1.0]]), np.zeros((1, 1)), np.zeros((1, 1)), np.zeros((1, 1)))
+    red = reduce_kyp(em)
+    assert isinstance(red, NotReducible) and "D + Dᵀ = 0" in red.reason

@@ -403,6 +403,10 @@ def test_two_conditions_on_one_variable_hold_together_in_a_counterexample():
     problem = _problem(d, d.steps[0])
     for bad in (2.0, 3.0):
         assert not isinstance(confirm(problem, {x.data.uid: np.array([bad])}), Counterexample)
+    # where the step holds exactly, the violation is rejected, with the rounding it used
+    from verify.proof.falsify import Rejected
+
+    assert confirm(problem, {x.data.uid: np.array([1.0 + 1e-12])}) == Rejected(10**6)
 
 
 def test_a_point_outside_the_assumptions_is_no_counterexample():

@@ -115,7 +115,7 @@ def passive_lti_models(*, max_states: int = 3, ports: int = 2) -> st.SearchStrat
     """Passive LTI models (port-Hamiltonian with a strictly passive feedthrough).
 
     The free matrices are drawn and assembled by
-    :func:`verify.sim.random_scenarios.port_hamiltonian` (x^T Q x / 2 is a storage;
+    :func:`verify.passivity.port_hamiltonian.port_hamiltonian` (x^T Q x / 2 is a storage;
     D + D^T > 0 keeps the KYP LMI strictly feasible after floating-point rounding of the
     entries).
     """
@@ -126,7 +126,7 @@ def passive_lti_models(*, max_states: int = 3, ports: int = 2) -> st.SearchStrat
 
 @st.composite
 def _passive_lti_models(draw, max_states: int, ports: int):
-    from verify.sim.random_scenarios import port_hamiltonian
+    from verify.passivity.port_hamiltonian import port_hamiltonian
 
     n = draw(st.integers(1, max_states))
     J = draw(_matrix((n, n)))

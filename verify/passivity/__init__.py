@@ -7,9 +7,9 @@ scipy.signal object (:func:`from_python`); every number is kept as the exact rat
 it denotes. Out: a :class:`Decision` from :func:`decide` (the whole frequency axis,
 optionally with a margin nu0) or a band decision from :func:`decide_band` (nu(w) >= 0
 on [w1, w2] only), whose verdict is :data:`PASSIVE`, :data:`NOT_PASSIVE` or
-:data:`INCONCLUSIVE` with its reason; a passive verdict carries a certificate and a
-not-passive verdict a witness, both checked in exact arithmetic. A stored certificate
-file is re-checked by :func:`check_stored_certificate`.
+:data:`INCONCLUSIVE` (members of :class:`GateVerdict`) with its reason; a passive
+verdict carries a certificate and a not-passive verdict a witness, both checked in
+exact arithmetic. A stored certificate file is re-checked by :func:`check_stored_certificate`.
 
 Where the code lives, by what a verdict rests on:
 
@@ -43,7 +43,9 @@ if TYPE_CHECKING:
         INCONCLUSIVE,
         NOT_PASSIVE,
         PASSIVE,
+        PASSIVE_WITHIN,
         Decision,
+        GateVerdict,
         decide,
     )
     from verify.passivity.io.model_file import load_model
@@ -54,7 +56,6 @@ if TYPE_CHECKING:
         from_state_space,
         from_transfer_function,
     )
-    from verify.passivity.search.tolerance import PASSIVE_WITHIN
 
 __all__ = [
     "INCONCLUSIVE",
@@ -63,6 +64,7 @@ __all__ = [
     "PASSIVE_WITHIN",
     "BandDecision",
     "Decision",
+    "GateVerdict",
     "LTIModel",
     "check_stored_certificate",
     "decide",
@@ -77,9 +79,10 @@ _HOME = {
     "INCONCLUSIVE": "verify.passivity.decision",
     "NOT_PASSIVE": "verify.passivity.decision",
     "PASSIVE": "verify.passivity.decision",
-    "PASSIVE_WITHIN": "verify.passivity.search.tolerance",
+    "PASSIVE_WITHIN": "verify.passivity.decision",
     "BandDecision": "verify.passivity.band",
     "Decision": "verify.passivity.decision",
+    "GateVerdict": "verify.passivity.decision",
     "LTIModel": "verify.passivity.model",
     "check_stored_certificate": "verify.passivity.io.stored",
     "decide": "verify.passivity.decision",

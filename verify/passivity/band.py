@@ -35,6 +35,7 @@ from verify.passivity.decision import (
     INCONCLUSIVE,
     NOT_PASSIVE,
     PASSIVE,
+    GateVerdict,
     decision_json,
     float_views,
     propose,
@@ -68,7 +69,7 @@ class BandDecision:
 
     model: LTIModel
     band: tuple[Fraction, Fraction]
-    verdict: str
+    verdict: GateVerdict
     reason: str
     certificate: BandCertificate | None = None
     witness: Witness | None = None
@@ -112,7 +113,29 @@ def _poles_in_band(A: np.ndarray, band: tuple[Fraction, Fraction]) -> list[float
 
 def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
                 margin: Fraction = Fraction(0)) -> BandDecision:
-    """Verdict for H(jw) + H(jw)^H >= 2 margin I on w1 <= w <= w2 (paper, Section 4)."""
+    """Verdict for H(jw) + H(jw)^H >= 2 margin I on w1 <= w <= w2 (paper, Section 4).
+
+    Parameters
+    ----------
+    model : LTIModel
+        The human model, with its exact rational data.
+    band : tuple of Fraction
+        ``(w1, w2)`` in rad/s with 0 <= w1 < w2 (as from :func:`parse_band`).
+    margin : Fraction, default 0
+        nu0 in nu(w) >= nu0 on the band.
+
+    Returns
+    -------
+    BandDecision
+        :data:`PASSIVE` on the band with an exactly checked generalized KYP certificate,
+        :data:`NOT_PASSIVE` with an exact witness at a rational frequency inside the band,
+        or :data:`INCONCLUSIVE` with the reason.
+
+    References
+    ----------
+    T. Iwasaki and S. Hara, "Generalized KYP lemma: unified frequency domain inequalities
+    with design applications", IEEE Trans. Automatic Control 50(1), 2005.
+    """
     start = time.perf_counter()
     part = minimal_part(model.exact)  # the exact model, never re-derived from floats
     em = _shifted(part.model, margin)

@@ -24,6 +24,7 @@ rational).
 
 from __future__ import annotations
 
+import enum
 import time
 from dataclasses import dataclass
 from fractions import Fraction
@@ -51,7 +52,26 @@ if TYPE_CHECKING:
     from verify.passivity.check.fd_certificate import PrCertificate
     from verify.passivity.model import LTIModel
 
-PASSIVE, NOT_PASSIVE, INCONCLUSIVE = "passive", "not passive", "inconclusive"
+
+
+class GateVerdict(enum.StrEnum):
+    """Verdicts of the passivity gate, over all frequencies and over a band.
+
+    A StrEnum, as :class:`verify.claims.model.Verdict` and
+    :class:`verify.proof.checker.ProofVerdict`: a member equals, prints and serialises to
+    JSON as its plain string, so the gate's JSON and reports are unchanged. Only
+    ``PASSIVE`` rests on an exactly checked certificate of the model as written;
+    ``PASSIVE_WITHIN`` on one of a perturbed model (:mod:`verify.passivity.search.tolerance`);
+    ``NOT_PASSIVE`` always carries an exactly checked witness.
+    """
+
+    PASSIVE = "passive"
+    NOT_PASSIVE = "not passive"
+    INCONCLUSIVE = "inconclusive"
+    PASSIVE_WITHIN = "passive within tolerance"
+
+
+PASSIVE, NOT_PASSIVE, INCONCLUSIVE, PASSIVE_WITHIN = GateVerdict
 # states up to which the exact frequency-domain decision (verify.passivity.fd_decision)
 # runs when the KYP route and the floating-point witness search both fail
 FREQUENCY_DOMAIN_LIMIT = 60
@@ -60,7 +80,7 @@ FREQUENCY_DOMAIN_LIMIT = 60
 @dataclass
 class Decision:
     model: LTIModel
-    verdict: str
+    verdict: GateVerdict
     reason: str
     certificate: Certificate | PrCertificate | None = None
     witness: Witness | None = None
@@ -192,6 +212,27 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
 
     The exact model is ``model.exact`` reduced to its exact minimal part (the transfer
     function's realisation); floats are views of it and only propose.
+
+    Parameters
+    ----------
+    model : LTIModel
+        The human model H(s) = C (sI - A)^-1 B + D, with its exact rational data.
+    margin : Fraction, default 0
+        nu0 in nu(w) >= nu0 for every w, decided exactly as passivity of H - nu0 I.
+
+    Returns
+    -------
+    Decision
+        ``verdict`` is :data:`PASSIVE` with an exactly checked KYP or positive-real
+        certificate, :data:`NOT_PASSIVE` with an exactly checked witness, or
+        :data:`INCONCLUSIVE` with the reason; ``nu_min`` is the smallest nu(w) seen
+        (floating point, informative only).
+
+    References
+    ----------
+    The paper, Section 4 (nu(w) and passivity of the human model). KYP (positive real)
+    lemma: B. D. O. Anderson and S. Vongpanitlerd, *Network Analysis and Synthesis*,
+    Prentice-Hall 1973, Ch. 5; H. K. Khalil, *Nonlinear Systems*, 3rd ed., Lemma 6.2.
     """
     start = time.perf_counter()
     part = minimal_part(model.exact)

@@ -13,8 +13,9 @@ from verify.passivity.check import qpoly as qp
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.check.fd_certificate import PrCertificate
 from verify.passivity.check.fd_witness import frequency_witness_for, near_axis_pole_witness
-from verify.passivity.check.frequency_domain import NOT_PASSIVE, PASSIVE, analyse, axis_split
+from verify.passivity.check.frequency_domain import analyse, axis_split
 from verify.passivity.check.witness import Witness
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE, GateVerdict
 
 
 def _pole_witness(kind: str, reason: str, fact, extra: dict) -> Witness:
@@ -27,7 +28,7 @@ def _pole_witness(kind: str, reason: str, fact, extra: dict) -> Witness:
 
 def decide_positive_real(model: ExactModel, name: str = "", source: str = "",
                          meta: dict | None = None
-                         ) -> tuple[str, str, PrCertificate | None, Witness | None]:
+                         ) -> tuple[GateVerdict, str, PrCertificate | None, Witness | None]:
     """(verdict, reason, certificate, witness) for positive realness of H, exactly."""
     an = analyse(model)
     if an.verdict == PASSIVE:

@@ -1,4 +1,4 @@
-"""Passivity indices of a human model: IFP nu and OFP rho, with exact bounds (issue 4, item 5).
+"""Passivity indices of a human model: IFP nu and OFP rho, with exact bounds (Khalil, Def. 6.3).
 
 Section 4 of the paper uses nu(w) = lambda_min(H(jw) + H(jw)^H)/2 frequency by frequency.
 The two classical indices summarise it (Khalil, Nonlinear Systems, Def. 6.3; both

@@ -457,7 +457,38 @@ def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
 
 
 def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
-    """Check every step of ``d``, then that its conditions and assumptions can hold together."""
+    """Check every step of ``d``, then that its conditions and assumptions can hold together.
+
+    Parameters
+    ----------
+    d : Derivation
+        A derivation built with :class:`~verify.proof.derivation.Derivation` and the step
+        builders of :mod:`verify.proof`; it is snapshotted before checking, so later
+        changes to it do not affect the result.
+    cfg : SearchSettings, optional
+        Budget and seed of the falsification search beside the exact check (samples,
+        hypothesis examples, IPOPT starts). Never decides a positive verdict.
+
+    Returns
+    -------
+    DerivationResult
+        One :class:`StepResult` per step and the derivation's :class:`ProofVerdict`:
+        verified only when every step passed its exact check and the union of the
+        conditions and assumptions is witnessed; refuted when a counterexample was
+        confirmed exactly; inconclusive otherwise, with the reason.
+
+    Raises
+    ------
+    ProofSyntaxError
+        When ``d`` was not built through the API (a malformed tree, a step that does not
+        start where the previous one ended, an unknown relation).
+
+    References
+    ----------
+    The paper, Section 3 (Lemma 1, Theorem 1). Exact checks of polynomial identities
+    modulo the side conditions' ideal: D. Cox, J. Little, D. O'Shea, *Ideals, Varieties,
+    and Algorithms*, 4th ed., Springer 2015, Ch. 2.
+    """
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, 10 * MAX_DEPTH))  # trees are walked recursively
     try:

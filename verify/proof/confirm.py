@@ -20,7 +20,7 @@ import sympy as sp
 from sympy import QQ
 
 from verify.proof.evaluate import Algebra, to_float
-from verify.proof.falsify import REJECTED, Point, _gen_index, _solve_parameter
+from verify.proof.falsify import Point, Rejected, _gen_index, _solve_parameter
 from verify.proof.problem import StepProblem, flatten, principal_minors
 
 REFINEMENTS = 80
@@ -219,11 +219,11 @@ class Counterexample:
                 "slack_sign": self.slack_sign}
 
 
-def confirm(problem: StepProblem, point: Point) -> Counterexample | str | None:
+def confirm(problem: StepProblem, point: Point) -> Counterexample | Rejected | None:
     """Decide a numerical violation at ``point`` exactly.
 
     Returns an exactly confirmed counterexample (a point meeting every declaration,
-    condition and assumption exactly, where the step fails), :data:`REJECTED` when the
+    condition and assumption exactly, where the step fails), :class:`Rejected` when the
     point rounded to rationals (denominators up to 10^6) meets every declaration and the
     step holds there exactly (the violation was float rounding), or None when neither
     could be decided. Short rationals are tried first, so a reported point is readable.
@@ -236,7 +236,8 @@ def confirm(problem: StepProblem, point: Point) -> Counterexample | str | None:
     return outcome
 
 
-def _confirm_at(problem: StepProblem, point: Point, limit: int) -> Counterexample | str | None:
+def _confirm_at(problem: StepProblem, point: Point, limit: int
+                ) -> Counterexample | Rejected | None:
     xp = exact_point(problem, point, limit)
     if xp is None:
         return None
@@ -253,7 +254,7 @@ def _confirm_at(problem: StepProblem, point: Point, limit: int) -> Counterexampl
         if failing:
             return Counterexample(_describe(problem, xp), sign, entry,
                                   [a.describe() for a in xp.algebraic.values()])
-    return REJECTED if decided else None
+    return Rejected(limit) if decided else None
 
 
 def exact_witness(problem: StepProblem, point: Point) -> bool:

@@ -405,7 +405,7 @@ def search(problem: StepProblem, cfg: SearchSettings, confirm=None):
             continue
         for candidate in report.candidates[tried:]:
             found = confirm(problem, candidate)
-            if found is REJECTED:
+            if isinstance(found, Rejected):
                 report.rejected += 1
             elif found is None:
                 report.undecided += 1
@@ -415,4 +415,10 @@ def search(problem: StepProblem, cfg: SearchSettings, confirm=None):
     return report, None
 
 
-REJECTED = "rejected"  # what ``confirm`` returns for a violation exact arithmetic disproves
+@dataclass(frozen=True)
+class Rejected:
+    """What ``confirm`` returns for a violation exact arithmetic disproves: at the point
+    rounded to rationals with denominators up to ``denominators``, every declaration
+    holds and the step holds exactly (the numerical violation was float rounding)."""
+
+    denominators: int

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from verify.passivity.port_hamiltonian import port_hamiltonian
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman
 from verify.sim.inputs import AUTONOMOUS_KINDS, Reference, autonomous_input
 from verify.sim.scenario import Scenario
@@ -19,22 +20,6 @@ def _within(rng: np.random.Generator, center: Array, max_angle: float, count: in
     axis = rng.standard_normal((count, 3))
     axis /= np.linalg.norm(axis, axis=1, keepdims=True)
     return center @ exp(axis * rng.uniform(0.0, max_angle, (count, 1)))
-
-
-def port_hamiltonian(J: Array, L: Array, M: Array, G: Array, N: Array, s: float):
-    """A passive LTI model built from free matrices (port-Hamiltonian, strict feedthrough).
-
-    x' = (J - J^T - R) Q x + G u, y = G^T Q x + (s I + (N - N^T)/2) u with
-    R = L L^T + 0.3 I > 0 and Q = M M^T + 0.5 I > 0: x^T Q x / 2 is a storage, and
-    D + D^T = 2 s I > 0 (s > 0) keeps the KYP LMI strictly feasible after rounding.
-    """
-    from verify.passivity.model import from_state_space
-
-    n, ports = G.shape
-    Q = M @ M.T + 0.5 * np.eye(n)
-    A = (J - J.T - (L @ L.T + 0.3 * np.eye(n))) @ Q
-    D = s * np.eye(ports) + 0.5 * (N - N.T)
-    return from_state_space(A, G, G.T @ Q, D, name="random port-Hamiltonian")
 
 
 def random_passive_human(rng: np.random.Generator, max_states: int = 3) -> Human:

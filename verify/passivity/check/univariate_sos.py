@@ -129,17 +129,28 @@ def check_sos(p: fmpq_poly, sos: Sos) -> bool:
 
 
 @dataclass(frozen=True)
+class SturmCount:
+    """Positivity of a factor without an SOS: it has no real root by Sturm's theorem and a
+    positive leading coefficient, both re-decided by the checker (JSON: ``"sturm"``)."""
+
+    def to_json(self) -> str:
+        return "sturm"
+
+
+@dataclass(frozen=True)
 class Nonnegativity:
-    """f = content * prod factor^exponent, with an SOS for each odd-exponent factor."""
+    """f = content * prod factor^exponent, with an SOS (or a Sturm count) for each
+    odd-exponent factor."""
 
     content: fmpq
-    factors: list[tuple[fmpq_poly, int, Sos | str | None]]
+    factors: list[tuple[fmpq_poly, int, Sos | SturmCount | None]]
 
     def to_json(self) -> dict:
         return {
             "content": str(self.content),
             "factors": [{"poly": qp.coeff_strings(f), "exponent": e,
-                         "sos": s if s is None or s == "sturm" else [
+                         "sos": None if s is None else s.to_json()
+                         if isinstance(s, SturmCount) else [
                              {"weight": str(w), "poly": qp.coeff_strings(g)} for w, g in s]}
                         for f, e, s in self.factors],
         }
@@ -167,15 +178,15 @@ def nonnegativity_certificate(f: fmpq_poly) -> Nonnegativity | None:
 SOS_DEGREE_LIMIT = 400  # above it, Sturm counts (root approximation gets slow)
 
 
-def _positivity(g: fmpq_poly) -> Sos | str:
-    """An SOS of g > 0, or "sturm" (no real root by Sturm's theorem, re-counted by the
-    checker) when the SOS search gives up or g is of high degree."""
+def _positivity(g: fmpq_poly) -> Sos | SturmCount:
+    """An SOS of g > 0, or a :class:`SturmCount` (no real root by Sturm's theorem,
+    re-counted by the checker) when the SOS search gives up or g is of high degree."""
     if g.degree() <= SOS_DEGREE_LIMIT:
         try:
             return sos_positive(g, max_rounds=6)
         except SosNotFoundError:
             pass
-    return "sturm"
+    return SturmCount()
 
 
 def check_nonnegativity(f: fmpq_poly, cert: Nonnegativity) -> str | None:
@@ -189,7 +200,7 @@ def check_nonnegativity(f: fmpq_poly, cert: Nonnegativity) -> str | None:
         if e < 1:
             return "a factor has exponent < 1"
         if e % 2:
-            if s == "sturm":
+            if isinstance(s, SturmCount):
                 if g.leading_coefficient() <= 0 or qp.count_roots(g) != 0:
                     return "an odd-exponent factor is not positive (Sturm count)"
             elif s is None or not check_sos(g, s):
@@ -213,7 +224,7 @@ def nonnegativity_from_json(data: dict) -> Nonnegativity:
             raise ValueError("a factor exponent is not an integer")
         sos = None
         if item["sos"] == "sturm":
-            sos = "sturm"
+            sos = SturmCount()
         elif item["sos"] is not None:
             if not isinstance(item["sos"], list):
                 raise ValueError("malformed sum of squares")

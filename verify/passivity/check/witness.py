@@ -1,4 +1,4 @@
-"""Witnesses of non-passivity, each checked in exact arithmetic (issue 4, item 4).
+"""Witnesses of non-passivity (paper, Section 4: nu(w) < 0), each checked in exact arithmetic.
 
 - at infinity: a rational v with v^T (D + D^T) v < 0, so H(jw) + H(jw)^H has a negative
   eigenvalue for all large w;

@@ -118,6 +118,23 @@ def parse_model(data: dict[str, Any], source: str) -> LTIModel:
 
 
 def load_model(path: str | Path) -> LTIModel:
-    """Read and validate a model file; every problem is a one-line VerifyInputError."""
+    """Read and validate a model file; every problem is a one-line VerifyInputError.
+
+    Parameters
+    ----------
+    path : str or Path
+        A TOML model file (state space, transfer function or the paper's human model);
+        every number is read as the exact rational it denotes.
+
+    Returns
+    -------
+    LTIModel
+        The model, with its exact data in ``exact`` and floating-point views.
+
+    Raises
+    ------
+    VerifyInputError
+        On an unreadable file, bad TOML, or a missing, unknown or non-finite entry.
+    """
     path = Path(path)
     return parse_model(read_toml(path, exact=True), str(path))

@@ -6,7 +6,8 @@ strictly parsed JSON object and the file's path and returns a
 :class:`~verify.passivity.check.certificate.KypCheck`; it raises
 :class:`~verify.passivity.io.strict_json.CertificateFormatError` for malformed content.
 Every checker re-derives what the certificate claims and decides it in exact arithmetic,
-with no solver (DESIGN.md: a certificate is bound to its claim).
+with no solver: a certificate is bound to its claim and trusted only once re-checked
+(Necula, "Proof-carrying code", POPL 1997: check the proof, not the prover).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The minimum of nu(w) located by Hamiltonian level crossings, not by a grid (issue 4, item 5).
+"""The minimum of nu(w) (paper, Section 4) located by Hamiltonian level crossings, not a grid.
 
 Section 4 of the paper defines nu(w) = lambda_min(H(jw) + H(jw)^H) / 2 and reads
 passivity off nu >= 0. A grid of frequencies can step over a narrow dip (a lightly

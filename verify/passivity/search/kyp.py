@@ -35,7 +35,7 @@ from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, check_kyp
 from verify.passivity.search.reduce import (
     NoCertificate,
-    Reduction,
+    NotReducible,
     equality_directions,
     reduce_kyp,
 )
@@ -214,16 +214,16 @@ def _clearly_not_passive(A, B, C, D) -> str:
 FAST_CANDIDATES = 3  # Riccati margins tried before the fallback
 
 
-def _reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | str:
+def _reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | NotReducible:
     """The fast path: a KypSearch when it decides (certificate, or none can exist), else
     the reason it does not apply."""
     try:
         red = reduce_kyp(_balanced(model, scaling))
     except OverflowError:
-        return "the reduced problem does not fit the floating-point range"
+        return NotReducible("the reduced problem does not fit the floating-point range")
     if isinstance(red, NoCertificate):
         return KypSearch(None, None, "structure", red.reason)
-    if not isinstance(red, Reduction):
+    if isinstance(red, NotReducible):
         return red
     last = "no Riccati solution with a margin"
     for tried, (Y, w) in enumerate(margin_candidates(red.Aa, red.Ba, red.Ca, red.Sa)):
@@ -238,7 +238,7 @@ def _reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | str:
                                  f"{result.reason} (reduced Riccati candidate with margin "
                                  f"w = {w:.3g}, {bits}-bit rounding of Y)")
             last = result.reason
-    return last
+    return NotReducible(last)
 
 
 def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
@@ -254,7 +254,7 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
     negative = _clearly_not_passive(A, B, C, D)
     if negative:  # the fallback cannot succeed; the caller looks for a witness
         return KypSearch(None, None, "float analysis",
-                         f"reduced Riccati search: {fast}; fallback not tried: {negative}")
+                         f"reduced Riccati search: {fast.reason}; fallback not tried: {negative}")
     T, Ti = np.diag(scaling), np.diag(1.0 / scaling)
     Ab, Bb, Cb = Ti @ A @ T, Ti @ B, C @ T
     S = ex.add(model.D, ex.transpose(model.D))
@@ -302,4 +302,4 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
             last = f"{method}: {result.reason}"
     return KypSearch(None, margin, status,
                      f"the rounded numerical solutions fail the exact check: {last}; "
-                     f"reduced Riccati search: {fast}")
+                     f"reduced Riccati search: {fast.reason}")

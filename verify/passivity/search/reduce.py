@@ -82,6 +82,13 @@ class NoCertificate:
     reason: str
 
 
+@dataclass(frozen=True)
+class NotReducible:
+    """The reduction does not apply (``reason``); the caller searches without it."""
+
+    reason: str
+
+
 def _inverse(M: ex.RationalMatrix) -> ex.RationalMatrix:
     return ex.from_sympy(ex.to_sympy(M).inv())
 
@@ -147,9 +154,9 @@ def equality_directions(model: ExactModel) -> ex.RationalMatrix | NoCertificate:
     return ex.matmul(N, W)
 
 
-def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
-    """The exact parametrisation and the auxiliary problem; a string says why the
-    reduction does not apply (the caller then searches without it)."""
+def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | NotReducible:
+    """The exact parametrisation and the auxiliary problem; :class:`NotReducible` says why
+    the reduction does not apply (the caller then searches without it)."""
     n, m = model.n, model.m
     S = ex.add(model.D, ex.transpose(model.D))
     N = equality_directions(model)
@@ -165,7 +172,7 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
         if r == m:  # S > 0: no equality constraint
             return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf, Cf, Sf)
         if r == 0:
-            return "B = 0 on ker(D + Dᵀ) and D + Dᵀ = 0"
+            return NotReducible("B = 0 on ker(D + Dᵀ) and D + Dᵀ = 0")
         # the kernel directions were all dropped: the problem lives on range S
         return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf @ Rf, Rf.T @ Cf,
                          Rf.T @ Sf @ Rf)
@@ -178,10 +185,10 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
         return NoCertificate("Nᵀ C B N is not positive semidefinite, so no P > 0 has "
                              "P B N = Cᵀ N (it would equal (B N)ᵀ P (B N))")
     if not psd_exact(G0, strict=True).ok:
-        return "Nᵀ C B N is singular"
+        return NotReducible("Nᵀ C B N is singular")
     basis = _null_basis_of_transpose(Bp, n, k)
     if basis is None:
-        return "no well-conditioned k x k block of B N"
+        return NotReducible("no well-conditioned k x k block of B N")
     pivots, free, X = basis
     K = _inverse(G0)
     P0 = ex.matmul(ex.matmul(ex.transpose(Cp), K), Cp)
@@ -190,7 +197,7 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
     try:
         Ti = np.linalg.inv(T)
     except np.linalg.LinAlgError:
-        return "the coordinate change [C'; Vᵀ] is numerically singular"
+        return NotReducible("the coordinate change [C'; Vᵀ] is numerically singular")
     Kf = _floats(K, k, k)
     At, Btr, Ctr = T @ Af @ Ti, T @ Bf @ Rf, Rf.T @ Cf @ Ti
     Sr = Rf.T @ Sf @ Rf
@@ -202,7 +209,7 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | str:
     Sa = (Sa + Sa.T) / 2
     w = np.linalg.eigvalsh(Sa)
     if w[0] <= 1e-12 * max(1.0, abs(w[-1])):
-        return "the auxiliary problem is singular (Sa is not positive definite)"
+        return NotReducible("the auxiliary problem is singular (Sa is not positive definite)")
     Ba = np.hstack([A21, B2r])
     Ca = np.vstack([-Kf @ A12, C2r])
     return Reduction(P0, pivots, free, X, A22, Ba, Ca, Sa)

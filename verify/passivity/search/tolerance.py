@@ -43,13 +43,17 @@ import numpy as np
 
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import Certificate, ExactModel, check_kyp
-from verify.passivity.decision import PASSIVE, Decision, decide, decision_json
+from verify.passivity.decision import (
+    PASSIVE,
+    PASSIVE_WITHIN,
+    Decision,
+    decide,
+    decision_json,
+)
 from verify.passivity.model import LTIModel
 from verify.passivity.search.kyp import KypSearch
 from verify.passivity.search.kyp import _balance as kyp_balance
 from verify.passivity.search.kyp import _reduced_search as kyp_reduced_search
-
-PASSIVE_WITHIN = "passive within tolerance"
 
 #: fractions of the budget tried, smallest first (powers of two)
 _LADDER = (-30, -20, -12, -6, -2, 0)
