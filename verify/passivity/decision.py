@@ -34,6 +34,7 @@ import numpy as np
 from gmpy2 import mpq
 from scipy.optimize import minimize_scalar
 
+from verify.inputs.numbers import float_view
 from verify.passivity.check.certificate import Certificate, ExactModel
 from verify.passivity.check.realization import MinimalPart, minimal_part
 from verify.passivity.check.witness import (
@@ -43,7 +44,6 @@ from verify.passivity.check.witness import (
     pole_witness,
     real_axis_witness,
 )
-from verify.passivity.rational import float_view
 from verify.passivity.search.hamiltonian import nu_minimum, nu_values
 from verify.passivity.search.kyp import find_certificate
 from verify.passivity.search.scaling import rescale, restore
