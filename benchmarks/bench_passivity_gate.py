@@ -56,7 +56,10 @@ from verify.passivity.check.fd_certificate import (  # noqa: E402
 )
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide  # noqa: E402
 from verify.passivity.model import from_state_space  # noqa: E402
-from verify.passivity.port_hamiltonian import random_port_hamiltonian  # noqa: E402
+from verify.passivity.port_hamiltonian import (  # noqa: E402
+    random_port_hamiltonian,
+    with_negative_resonance,
+)
 
 SIZES = (2, 10, 30, 100, 200, 400)
 KINDS = ("passive", "flipped", "resonant")
@@ -70,17 +73,8 @@ ALL_KINDS_UP_TO = 30
 
 def resonant(n: int, m: int, rng: np.random.Generator):
     """Passive port-Hamiltonian (n - 2 states, D = 0.05 I) minus a resonance at w0 = 3."""
-    p, d, w0, zeta = max(n - 2, 1), 0.05, 3.0, 0.01
-    A0, G, C0, _ = random_port_hamiltonian(p, m, rng)
-    H0 = C0 @ np.linalg.solve(1j * w0 * np.eye(p) - A0, G) + d * np.eye(m)
-    k = float(np.linalg.eigvalsh((H0 + H0.conj().T) / 2)[-1]) + 0.3
-    v = rng.standard_normal(m)
-    v /= np.linalg.norm(v)
-    Ar = np.array([[0.0, 1.0], [-w0 * w0, -2 * zeta * w0]])
-    A = np.block([[A0, np.zeros((p, 2))], [np.zeros((2, p)), Ar]])
-    B = np.vstack([G, np.outer([0.0, 1.0], v)])
-    C = np.hstack([C0, -k * 2 * zeta * w0 * np.outer(v, [0.0, 1.0])])
-    return A, B, C, d * np.eye(m)
+    A0, G, C0, _ = random_port_hamiltonian(max(n - 2, 1), m, rng)
+    return with_negative_resonance(A0, G, C0, 0.05, rng)
 
 
 def build(kind: str, n: int, m: int):

@@ -22,33 +22,19 @@ from verify.passivity.check.fd_certificate import check_pr_certificate_data
 from verify.passivity.check.witness import response_at
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.model import from_state_space
+from verify.passivity.port_hamiltonian import random_port_hamiltonian, with_negative_resonance
 from verify.passivity.search.scaling import rescale
 
 ROOT = Path(__file__).resolve().parents[1]
 
 
 def resonant(n: int, m: int, seed: int = 1, depth: float = 0.3):
-    """A stable non-passive model that needs a frequency witness: a passive
-    port-Hamiltonian part (D = 0.05 I > 0, so no witness at infinity or on the real axis)
-    plus a negative lightly damped resonance at w0 = 3 deep enough that nu(w0) < 0."""
+    """A stable non-passive model that needs a frequency witness (a passive
+    port-Hamiltonian part of n - 2 states with D = 0.05 I, minus a resonance at w0 = 3)."""
     rng = np.random.default_rng([seed, n, m])
-    p, d, w0, zeta = n - 2, 0.05, 3.0, 0.01
-    J = rng.standard_normal((p, p))
-    J = J - J.T
-    L = rng.standard_normal((p, p))
-    Q = np.diag(2.0 ** rng.integers(-2, 3, p))
-    A0 = (J - L @ L.T / p - 0.1 * np.eye(p)) @ Q
-    G = rng.standard_normal((p, m))
-    C0 = G.T @ Q
-    H0 = C0 @ np.linalg.solve(1j * w0 * np.eye(p) - A0, G) + d * np.eye(m)
-    k = float(np.linalg.eigvalsh((H0 + H0.conj().T) / 2)[-1]) + depth
-    v = rng.standard_normal(m)
-    v /= np.linalg.norm(v)
-    Ar = np.array([[0.0, 1.0], [-w0 * w0, -2 * zeta * w0]])
-    A = np.block([[A0, np.zeros((p, 2))], [np.zeros((2, p)), Ar]])
-    B = np.vstack([G, np.outer([0.0, 1.0], v)])
-    C = np.hstack([C0, -k * 2 * zeta * w0 * np.outer(v, [0.0, 1.0])])
-    return from_state_space(A, B, C, d * np.eye(m), name=f"resonant {n}x{m}")
+    A0, G, C0, _ = random_port_hamiltonian(n - 2, m, rng)
+    A, B, C, D = with_negative_resonance(A0, G, C0, 0.05, rng, depth=depth)
+    return from_state_space(A, B, C, D, name=f"resonant {n}x{m}")
 
 
 def _float_form(model, w):

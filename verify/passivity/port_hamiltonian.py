@@ -61,4 +61,26 @@ def random_port_hamiltonian(n: int, m: int, rng: np.random.Generator, flip: bool
     return (J - R) @ Q, G, -C if flip else C, np.zeros((m, m))
 
 
-__all__ = ["port_hamiltonian", "random_port_hamiltonian"]
+def with_negative_resonance(A0: np.ndarray, G: np.ndarray, C0: np.ndarray, d: float,
+                            rng: np.random.Generator, *, w0: float = 3.0,
+                            zeta: float = 0.01, depth: float = 0.3
+                            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(A, B, C, D) of the passive part (A0, G, C0, d I) minus a lightly damped resonance
+    at ``w0`` deep enough that nu(w0) < 0, along a direction v drawn from ``rng``.
+
+    D = d I > 0 leaves no witness at infinity or on the real axis, so the model is not
+    passive only near w0: a test of frequency witnesses (Section 4's nu(w) dips below 0).
+    """
+    m, p = G.shape[1], A0.shape[0]
+    H0 = C0 @ np.linalg.solve(1j * w0 * np.eye(p) - A0, G) + d * np.eye(m)
+    k = float(np.linalg.eigvalsh((H0 + H0.conj().T) / 2)[-1]) + depth
+    v = rng.standard_normal(m)
+    v /= np.linalg.norm(v)
+    Ar = np.array([[0.0, 1.0], [-w0 * w0, -2 * zeta * w0]])
+    A = np.block([[A0, np.zeros((p, 2))], [np.zeros((2, p)), Ar]])
+    B = np.vstack([G, np.outer([0.0, 1.0], v)])
+    C = np.hstack([C0, -k * 2 * zeta * w0 * np.outer(v, [0.0, 1.0])])
+    return A, B, C, d * np.eye(m)
+
+
+__all__ = ["port_hamiltonian", "random_port_hamiltonian", "with_negative_resonance"]
