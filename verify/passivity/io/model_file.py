@@ -7,6 +7,11 @@ k_s = 2.5                          # optional, a number > 0 (the gain of Section
 units = "optional text"
 reconstructed = true               # optional bool: the model was reconstructed, not measured
 
+[identification]                   # optional: how the model was identified (descriptive)
+method = "refined instrumental variables"
+fit_validation = [69.4, 66.15]
+covariance = [[1e-4, 0.0], [0.0, 2e-4]]
+
 # exactly one of the two tables:
 [state_space]                      # continuous time; A = [] (then B = C = []) for n = 0
 A = [[-1.0, 0.0], [0.0, -2.0]]
@@ -22,15 +27,19 @@ den = [[[1.0, 2.0, 1.5], [1.0]], [[1.0], [1.0, 2.0, 1.5]]]
 Every number denotes its exact value: an integer is that integer (any size), a decimal
 is the exact decimal it spells (``0.1`` is 1/10, ``2.5e-3`` is 1/400; underscores as
 TOML allows; the exponent at most 4300 in size), never a rounded binary float
-(:mod:`verify.inputs.numbers`). TOML's ``nan`` and ``inf`` are refused; nothing is
-evaluated. Unknown keys, at the top level or inside a table, are refused by name. A
-transfer function is realised exactly over Q and minimally
+(:mod:`verify.inputs.numbers`). The optional ``[identification]`` table (written by
+``verify identify``, :mod:`verify.identify.model_writer`) holds strings, booleans, finite
+numbers and arrays of numbers (one or two levels) or of strings, nothing else; it is kept in
+``meta["identification"]`` and no verdict of the gate depends on it. TOML's ``nan`` and
+``inf`` are refused; nothing is evaluated. Unknown keys, at the top level or inside a
+table, are refused by name. A transfer function is realised exactly over Q and minimally
 (:mod:`verify.passivity.check.realization`). Every problem is a one-line
 :class:`~verify.errors.VerifyInputError` starting with the file path.
 """
 
 from __future__ import annotations
 
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -42,7 +51,54 @@ from verify.passivity.model import LTIModel, state_space_model
 
 TABLES = {"state_space": ("A", "B", "C", "D"), "transfer_function": ("num", "den")}
 TEXT_KEYS = ("name", "description", "units")
-ALLOWED_KEYS = {*TABLES, *TEXT_KEYS, "k_s", "reconstructed"}
+ALLOWED_KEYS = {*TABLES, *TEXT_KEYS, "k_s", "reconstructed", "identification"}
+MAX_IDENTIFICATION_KEYS = 200
+MAX_ARRAY_LENGTH = 10_000
+
+
+def _identification_value(value: Any, where: str) -> Any:
+    """A string, bool, finite number, array of numbers (1 or 2 levels) or of strings."""
+    if isinstance(value, str | bool):
+        return value
+    if isinstance(value, int | Fraction | float):
+        rational(value, where)  # refuses nan and inf by location
+        return value
+    if isinstance(value, list):
+        if len(value) > MAX_ARRAY_LENGTH:
+            raise VerifyInputError(f"{where}: more than {MAX_ARRAY_LENGTH} entries")
+        if value and all(isinstance(v, str) for v in value):
+            return list(value)
+        rows = value if value and all(isinstance(v, list) for v in value) else [value]
+        width = {len(r) for r in rows}
+        if len(width) > 1:
+            raise VerifyInputError(f"{where}: rows of different lengths; give a rectangular "
+                                   "array")
+        for i, row in enumerate(rows):
+            if len(row) > MAX_ARRAY_LENGTH:
+                raise VerifyInputError(f"{where}[{i}]: more than {MAX_ARRAY_LENGTH} entries")
+            for j, v in enumerate(row):
+                label = f"{where}[{j}]" if rows is not value else f"{where}[{i}][{j}]"
+                if isinstance(v, list | dict | str) or not isinstance(
+                        v, int | Fraction | float):
+                    raise VerifyInputError(f"{label}: expected a number, got "
+                                           f"{type(v).__name__}; arrays hold numbers (one or "
+                                           "two levels) or strings only")
+                rational(v, label)
+        return value
+    raise VerifyInputError(f"{where}: expected a string, bool, number or array of numbers or "
+                           f"strings, got {type(value).__name__}")
+
+
+def _identification(data: dict[str, Any], source: str) -> dict[str, Any]:
+    """The validated ``[identification]`` table (descriptive: no verdict reads it)."""
+    table = data["identification"]
+    if not isinstance(table, dict):
+        raise VerifyInputError(f"{source}: 'identification' must be a table [identification]")
+    if len(table) > MAX_IDENTIFICATION_KEYS:
+        raise VerifyInputError(f"{source}: [identification] has more than "
+                               f"{MAX_IDENTIFICATION_KEYS} keys")
+    return {key: _identification_value(value, f"{source}: [identification] {key}")
+            for key, value in table.items()}
 
 
 def _table(data: dict[str, Any], key: str, source: str) -> dict[str, Any]:
@@ -85,6 +141,8 @@ def _meta(data: dict[str, Any], source: str) -> dict[str, Any]:
                 f"{type(data['reconstructed']).__name__}"
             )
         meta["reconstructed"] = data["reconstructed"]
+    if "identification" in data:
+        meta["identification"] = _identification(data, source)
     return meta
 
 

@@ -35,7 +35,15 @@ def _check_sos(data: dict[str, Any], path: Path) -> KypCheck:
     return KypCheck(bool(result.ok), result.reason)
 
 
+def _check_robust(data: dict[str, Any], path: Path) -> KypCheck:
+    """Robust band certificates of identified models (:mod:`verify.identify.robust_certificate`)."""
+    from verify.identify.robust_certificate import check_robust_file
+
+    return check_robust_file(data, path)
+
+
 SCHEMAS: dict[str, Checker] = {
+    "verify-robust-band-certificate/1": _check_robust,
     "verify-sos-certificate/1": _check_sos,
     fd_certificate.SCHEMA: fd_certificate.check_pr_file,
     cf.KYP_V1: cf.check_kyp_file,

@@ -1,0 +1,319 @@
+"""The robust verdict: passivity of every model in the identification's confidence region.
+
+For the structures with diagonal rational elements and constant off-diagonal elements
+(the paper's Section 4 class and its P:Z generalisation), passivity on a band is a set of
+polynomial inequalities in (θ, w^2) (:mod:`verify.passivity.check.robust_band`). The
+verdict, for every θ in the region (:mod:`verify.identify.region`):
+
+* **passive** (proved): a branch-and-bound tree over a rational box enclosing the
+  region's image times the frequency piece(s), proposed in floating point
+  (:mod:`verify.identify.robust_search`) and checked leaf by leaf in exact arithmetic
+  (:func:`verify.identify.robust_certificate.check_leaves`); the certificate is written;
+* **not passive** (refuted): a rational θ whose membership in the ellipsoid is checked
+  exactly and a rational w with the gate's exact witness on the exact model at θ
+  (:func:`verify.passivity.band.band_witness`,
+  :func:`verify.passivity.check.witness.frequency_witness`);
+* **inconclusive**, with the reason (box budget reached, structure not supported, ...).
+
+All frequencies: for the paper's class the off-diagonal sum c12 + c21 of an identified
+model is never exactly 0, while Re h_i(jw) -> 0 as w -> infinity, so
+det(H(jw) + H(jw)^H) ~ -(c12 + c21)^2 < 0 at high frequency: almost every identified
+model of that class is not passive over all frequencies, and what can hold is passivity
+on a band [w1, w_max]. :func:`largest_band` finds the largest w_max the prover proves
+(bisection on w_max).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+from gmpy2 import mpq
+
+from verify.identify import robust_certificate as rc
+from verify.identify.model_writer import structure_text
+from verify.identify.region import Region, half_widths
+from verify.identify.robust_search import Ellipsoid, search, short
+from verify.identify.structure import Structure
+from verify.passivity.check import robust_band as rb
+from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, GateVerdict
+
+#: Default number of boxes the search may visit per frequency piece.
+MAX_BOXES = 40_000
+
+
+@dataclass
+class RobustResult:
+    """The robust verdict on ``band`` (None: all frequencies), with its evidence."""
+
+    verdict: GateVerdict
+    band: tuple[Fraction, Fraction] | None
+    reason: str
+    certificate: dict[str, Any] | None = None
+    theta: list[mpq] | None = None  # a refuting parameter vector (exact, in the region)
+    distance: mpq | None = None  # its (θ - θc)^T Σ^-1 (θ - θc), exactly
+    witness: Any = None  # the gate's Witness at θ
+    seconds: float = 0.0
+
+    @property
+    def passed(self) -> bool:
+        return self.verdict == PASSIVE
+
+    def where(self) -> str:
+        return "at all frequencies" if self.band is None else \
+            f"on [{self.band[0]}, {self.band[1]}] rad/s"
+
+    def to_json(self) -> dict[str, Any]:
+        return {"verdict": str(self.verdict), "band": None if self.band is None else
+                [str(self.band[0]), str(self.band[1])], "reason": self.reason,
+                "leaves": None if self.certificate is None else self.certificate["leaves"],
+                "theta": None if self.theta is None else [str(x) for x in self.theta],
+                "distance": None if self.distance is None else str(self.distance),
+                "witness": None if self.witness is None else {
+                    "kind": self.witness.kind, "summary": self.witness.summary,
+                    **self.witness.data},
+                "seconds": round(self.seconds, 4)}
+
+
+def supported(structure: Structure) -> str | None:
+    """None if the prover handles the structure, else why not."""
+    if not structure.diagonal_with_constant_coupling:
+        return (f"structure {structure_text(structure)} not supported: the robust prover "
+                "handles diagonal rational elements with constant off-diagonal elements "
+                "(paper, P:Z)")
+    if structure.poles > 12:
+        return "structure not supported: more than 12 poles per element"
+    return None
+
+
+def _shape(structure: Structure) -> rb.Shape:
+    return rb.Shape(structure.zeros, structure.poles)
+
+
+# ------------------------------------------------------------------ proof
+
+
+def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None,
+          *, name: str, source: str, max_boxes: int = MAX_BOXES
+          ) -> tuple[dict[str, Any] | None, str]:
+    """A checked certificate of robust passivity on ``band``, or (None, why not)."""
+    shape = _shape(structure)
+    phi, cov_phi = rb.reduce_region(region.center, region.covariance)
+    r = half_widths(cov_phi, region.chi2)
+    S = rb.inverse(cov_phi)
+    ellipsoid = Ellipsoid(np.array([float(x) for x in phi]),
+                          np.array([[float(x) for x in row] for row in S]), float(region.chi2))
+    trees = []
+    for variable, t1, t2 in rc.pieces_for(band):
+        root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(t1, t2)]
+        found = search(root, variable, shape, ellipsoid, stability=band is None,
+                       max_boxes=max_boxes)
+        if found.tree is None:
+            what = "w^2" if variable == "x" else "1/w^2"
+            return None, f"{found.reason} ({what} in [{t1}, {t2}])"
+        trees.append(found.tree)
+    data = rc.certificate_json(name, source, structure_text(structure), region, band, r,
+                               trees)
+    refusal = rc.check_leaves(data, shape, region, band)
+    if refusal is not None:
+        return None, f"the proposed tree fails the exact check ({refusal})"
+    return data, f"{data['leaves']} leaves checked exactly"
+
+
+# ------------------------------------------------------------------ refutation
+
+
+def _nu(structure: Structure, theta: np.ndarray, omega: np.ndarray) -> np.ndarray:
+    """Float nu(w) = lambda_min(H(jw) + H(jw)^H)/2 of the model at θ."""
+    per = structure.zeros + 1 + structure.poles
+    s = 1j * omega
+    re = []
+    for i in range(2):
+        block = theta[i * per:(i + 1) * per]
+        num, den = block[: structure.zeros + 1], np.r_[1.0, block[structure.zeros + 1:]]
+        with np.errstate(all="ignore"):
+            re.append((np.polyval(num, s) / np.polyval(den, s)).real)
+    c = theta[-2] + theta[-1]
+    a, d = re
+    return (a + d) / 2 - np.sqrt(((a - d) / 2) ** 2 + (c / 2) ** 2)
+
+
+def _grid(band: tuple[Fraction, Fraction] | None) -> np.ndarray:
+    if band is None:
+        return np.geomspace(1e-3, 1e5, 600)
+    lo, hi = float(band[0]), float(band[1])
+    return np.unique(np.r_[np.linspace(lo, hi, 200), np.geomspace(max(lo, hi * 1e-3), hi, 200)])
+
+
+def candidates(region: Region, structure: Structure,
+               band: tuple[Fraction, Fraction] | None, iterations: int = 8
+               ) -> list[tuple[np.ndarray, float]]:
+    """Float (θ, w) with nu < 0, θ near the ellipsoid's boundary (Frank-Wolfe vertices of
+    the linearised nu; untrusted proposals), best first."""
+    c = region.float_center()
+    cov = region.float_covariance()
+    chi2 = float(region.chi2)
+    grid = _grid(band)
+    theta = c.copy()
+    found: list[tuple[np.ndarray, float, float]] = []
+    for _ in range(iterations):
+        values = _nu(structure, theta, grid)
+        if not np.any(np.isfinite(values)):
+            break
+        k = int(np.nanargmin(values))
+        w, v = float(grid[k]), float(values[k])
+        if v < 0:
+            found.append((theta.copy(), w, v))
+        g = np.zeros_like(theta)
+        for j in range(len(theta)):
+            h = 1e-6 * max(1.0, abs(theta[j]))
+            e = np.zeros_like(theta)
+            e[j] = h
+            g[j] = (_nu(structure, theta + e, np.array([w]))[0]
+                    - _nu(structure, theta - e, np.array([w]))[0]) / (2 * h)
+        norm = math.sqrt(max(float(g @ cov @ g), 0.0))
+        if not math.isfinite(norm) or norm == 0:
+            break
+        theta = c - 0.999 * math.sqrt(chi2) * (cov @ g) / norm
+    found.sort(key=lambda f: f[2])
+    return [(t, w) for t, w, _ in found]
+
+
+def _exact_at(structure: Structure, theta: list[mpq]):
+    from verify.passivity.check.realization import minimal_part
+    from verify.passivity.model import from_transfer_function
+
+    num, den = structure.transfer_matrix(theta)
+    return minimal_part(from_transfer_function(num, den, name="θ").exact).model
+
+
+def refute(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None
+           ) -> tuple[list[mpq], mpq, Any] | None:
+    """(θ, its exact distance, the gate's exact witness) for a non-passive model of the
+    region, or None when the search finds none."""
+    from verify.errors import VerifyInputError
+    from verify.passivity.band import band_witness
+    from verify.passivity.check.witness import frequency_witness, pole_witness
+
+    S = rb.inverse(region.covariance)
+    for theta_f, omega in candidates(region, structure, band):
+        theta = [short(float(x)) for x in theta_f]
+        q = rb.quadratic_form(S, region.center, theta)
+        if q > region.chi2:
+            continue
+        try:
+            em = _exact_at(structure, theta)
+        except VerifyInputError:
+            continue
+        w = band_witness(em, omega, band) if band is not None else \
+            frequency_witness(em, omega) or pole_witness(em)
+        if w is not None:
+            return theta, q, w
+    return None
+
+
+# ------------------------------------------------------------------ verdicts
+
+
+def robust_verdict(region: Region, structure: Structure,
+                   band: tuple[Fraction, Fraction] | None, *, name: str, source: str,
+                   nominal: Any = None, max_boxes: int = MAX_BOXES) -> RobustResult:
+    """The robust verdict on ``band`` (None: all frequencies; module docstring).
+
+    ``nominal`` is the gate's decision on the written model (θ = θc); a not-passive one
+    refutes at once (θc lies in the region).
+    """
+    start = time.perf_counter()
+
+    def done(verdict, reason, **kw) -> RobustResult:
+        return RobustResult(verdict, band, reason, seconds=time.perf_counter() - start, **kw)
+
+    why = supported(structure)
+    if why is not None:
+        return done(INCONCLUSIVE, why)
+    if nominal is not None and nominal.verdict == NOT_PASSIVE and nominal.witness is not None:
+        return done(NOT_PASSIVE, "the nominal model (the region's centre) is not passive: "
+                    f"{nominal.witness.summary}", theta=list(region.center),
+                    distance=mpq(0), witness=nominal.witness)
+    found = refute(region, structure, band)  # cheap: a float search, one exact witness
+    if found is not None:
+        theta, q, w = found
+        return done(NOT_PASSIVE, f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
+                    f"{float(q):.4g} <= chi2 = {float(region.chi2):.4g}, exact) is not "
+                    f"passive: {w.summary}", theta=theta, distance=q, witness=w)
+    cert, reason = prove(region, structure, band, name=name, source=source,
+                         max_boxes=max_boxes)
+    if cert is not None:
+        return done(PASSIVE, f"every model of the region is passive {_where(band)}: "
+                    f"{reason}", certificate=cert)
+    return done(INCONCLUSIVE, f"no proof and no refutation {_where(band)}: {reason}")
+
+
+def _where(band) -> str:
+    return "at all frequencies" if band is None else f"on [{band[0]}, {band[1]}] rad/s"
+
+
+def _three_digits(x: float) -> Fraction:
+    e = math.floor(math.log10(x)) - 2
+    return Fraction(math.floor(x / 10.0**e)) * Fraction(10) ** e
+
+
+def nominal_crossing(region: Region, structure: Structure, w1: float, cap: float
+                     ) -> float:
+    """The first frequency above w1 where the nominal nu is negative (float), or cap."""
+    grid = np.geomspace(max(w1, cap * 1e-4), cap, 2000)
+    values = _nu(structure, region.float_center(), grid)
+    bad = np.nonzero(values < 0)[0]
+    return float(grid[bad[0]]) if bad.size else cap
+
+
+@dataclass
+class BandSearch:
+    """The largest proved band [w1, w_max] and its certificate (or None)."""
+
+    w1: Fraction
+    w_max: Fraction | None
+    certificate: dict[str, Any] | None
+    tried: list[tuple[str, bool]] = field(default_factory=list)
+
+    def to_json(self) -> dict[str, Any]:
+        return {"w1": str(self.w1), "w_max": None if self.w_max is None else str(self.w_max),
+                "tried": [{"w_max": w, "proved": ok} for w, ok in self.tried]}
+
+
+def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float, *,
+                 name: str, source: str, steps: int = 7, max_boxes: int = MAX_BOXES
+                 ) -> BandSearch:
+    """Bisection (in log w) for the largest w_max <= cap with robust passivity proved on
+    [w1, w_max]; w_max is rounded down to 3 significant digits."""
+    out = BandSearch(w1, None, None)
+    if supported(structure) is not None:
+        return out
+    high = min(cap, nominal_crossing(region, structure, float(w1), cap))
+    low = max(float(w1), high * 1e-3)
+    for k in range(steps + 1):
+        trial = high if k == 0 else math.sqrt(low * high)
+        w = _three_digits(trial)
+        if w <= w1 or (out.w_max is not None and w <= out.w_max):
+            break
+        cert, _ = prove(region, structure, (w1, w), name=name, source=source,
+                        max_boxes=max_boxes)
+        out.tried.append((str(w), cert is not None))
+        if cert is not None:
+            out.w_max, out.certificate = w, cert
+            if k == 0:
+                break
+            low = float(w)
+        else:
+            high = float(w)
+        if high / low < 1.02:
+            break
+    return out
+
+
+__all__ = ["MAX_BOXES", "BandSearch", "RobustResult", "candidates", "largest_band",
+           "nominal_crossing", "prove", "refute", "robust_verdict", "supported"]

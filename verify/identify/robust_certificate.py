@@ -1,0 +1,317 @@
+"""Robust band certificates: every model of a confidence region is passive on a band.
+
+Schema ``verify-robust-band-certificate/1`` (registered in
+:data:`verify.passivity.io.stored.SCHEMAS`). A file holds the claim (structure, parameter
+names, region: centre θc, covariance Σ, confidence level and χ² value as exact rationals;
+the band [w1, w2] in rad/s, or null for all frequencies), the statement derived from it,
+a fingerprint of the claim (also in the file name), the half-widths of the box enclosing
+the region's image in φ = (diagonal parameters, c12 + c21), and one tree of midpoint
+splits per frequency piece whose leaves are *positive* (claimed lower bounds of N_1, N_2
+and det, all > 0) or *outside* (a point whose tangent plane shows the box misses the
+ellipsoid). :func:`check_robust_file` re-derives everything and decides it exactly with
+no solver (:mod:`verify.passivity.check.robust_band`):
+
+* Σ symmetric positive definite, χ² the level's quantile (to 1e-9, scipy), the
+  fingerprint, file name and statement derived from the claim;
+* the enclosure r_i^2 >= χ (A Σ A^T)_ii, the pieces the band asks for (x = w^2 in
+  [w1^2, w2^2]; for all frequencies x in [0, 1] and y = 1/w^2 in [0, 1]);
+* every leaf of every tree, re-evaluated exactly (the trees' leaves partition each root
+  box by construction; a missing or extra node is refused);
+* the source model file, when found: its name, structure, written coefficients (= θc),
+  covariance (each decimal's nearest float = Σ's binary value), level and χ².
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+from gmpy2 import mpq
+
+from verify.errors import VerifyInputError
+from verify.identify.region import CHI2_AGREEMENT, Region, chi2_quantile
+from verify.passivity.check import robust_band as rb
+from verify.passivity.check.certificate import KypCheck
+from verify.passivity.io.binding import resolve_source, slug
+from verify.passivity.io.strict_json import (
+    CertificateFormatError,
+    fields,
+    rational,
+    rational_matrix,
+    text_field,
+)
+
+SCHEMA = "verify-robust-band-certificate/1"
+_FIELDS = ("schema", "name", "source", "structure", "parameters", "region", "band",
+           "statement", "fingerprint", "enclosure", "pieces", "leaves")
+
+
+def q_text(x: Any) -> str:
+    """The canonical spelling of a rational ("p" or "p/q")."""
+    return str(mpq(x))
+
+
+def shape_of(structure_text: str) -> rb.Shape:
+    """The diagonal degrees of a structure spelled "paper" or "P:Z"."""
+    if structure_text == "paper":
+        return rb.Shape(1, 2)
+    head, sep, tail = structure_text.partition(":")
+    if sep and head.isdigit() and tail.isdigit():
+        p, z = int(head), int(tail)
+        if 0 <= z <= p and 1 <= p <= 12:
+            return rb.Shape(z, p)
+    raise CertificateFormatError(f"structure {structure_text!r}: expected paper or P:Z "
+                                 "(constant off-diagonal elements, at most 12 poles)")
+
+
+def parameter_names(shape: rb.Shape) -> list[str]:
+    """Names in structure order (as :meth:`verify.identify.structure.Structure.names`)."""
+    out: list[str] = []
+    for i in (1, 2):
+        out += [f"b{k}_{i}" for k in range(shape.zeros, -1, -1)]
+        out += [f"a{k}_{i}" for k in range(shape.poles - 1, -1, -1)]
+    return [*out, "c12", "c21"]
+
+
+def pieces_for(band: tuple[Fraction, Fraction] | None) -> list[tuple[str, mpq, mpq]]:
+    """The frequency pieces a claim needs: (variable, t1, t2)."""
+    if band is None:
+        return [("x", mpq(0), mpq(1)), ("y", mpq(0), mpq(1))]
+    w1, w2 = mpq(band[0]), mpq(band[1])
+    return [("x", w1 * w1, w2 * w2)]
+
+
+def statement(structure_text: str, level: Fraction, band: tuple | None) -> str:
+    """What a certificate proves, derived from its claim."""
+    where = ("at every frequency, and every diagonal denominator is Hurwitz (Kharitonov), "
+             "so H_θ is passive (positive real)") if band is None else \
+        f"for {band[0]} <= w <= {band[1]} rad/s"
+    return (f"for every θ with (θ - θc)^T Σ^-1 (θ - θc) <= chi2 (the {float(level):.4g} "
+            f"confidence region of the identification), the model H_θ of structure "
+            f"{structure_text} (diagonal num_i/den_i, constant off-diagonals) has "
+            f"H_θ(jw) + H_θ(jw)^H > 0 {where}")
+
+
+def fingerprint(structure_text: str, names: list[str], region: dict[str, Any],
+                band: list[str] | None) -> str:
+    """sha256 of the claim (structure, names, region, band) in canonical JSON."""
+    text = json.dumps([structure_text, names, region, band], sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def file_name(name: str, band: tuple | None, fp: str) -> str:
+    """``<name>-robust-band-<w1>-<w2>-<fp12>.json`` or ``<name>-robust-all-<fp12>.json``."""
+    where = "all" if band is None else f"band-{float(band[0]):.6g}-{float(band[1]):.6g}"
+    return f"{slug(name)}-robust-{where}-{fp[:12]}.json"
+
+
+def region_json(region: Region) -> dict[str, Any]:
+    return {"center": [q_text(x) for x in region.center],
+            "covariance": [[q_text(x) for x in row] for row in region.covariance],
+            "level": q_text(region.level), "chi2": q_text(region.chi2)}
+
+
+def certificate_json(name: str, source: str, structure_text: str, region: Region,
+                     band: tuple[Fraction, Fraction] | None, enclosure: list[mpq],
+                     trees: list[list]) -> dict[str, Any]:
+    """The certificate of a proof found by :mod:`verify.identify.robust`."""
+    shape = shape_of(structure_text)
+    names = parameter_names(shape)
+    reg = region_json(region)
+    band_json = None if band is None else [q_text(band[0]), q_text(band[1])]
+    pieces = [{"variable": v, "interval": [q_text(t1), q_text(t2)], "tree": tree}
+              for (v, t1, t2), tree in zip(pieces_for(band), trees, strict=True)]
+    count = sum(1 for tree in trees for node in tree if isinstance(node, list))
+    return {"schema": SCHEMA, "name": name, "source": source, "structure": structure_text,
+            "parameters": names, "region": reg, "band": band_json,
+            "statement": statement(structure_text, region.level, band),
+            "fingerprint": fingerprint(structure_text, names, reg, band_json),
+            "enclosure": [q_text(r) for r in enclosure], "pieces": pieces, "leaves": count}
+
+
+def dumps(data: dict[str, Any]) -> str:
+    """Certificate bytes: compact JSON, a function of the content only."""
+    return json.dumps(data, separators=(",", ":")) + "\n"
+
+
+# ------------------------------------------------------------------ parsing
+
+
+def _region(value: Any, p: int) -> tuple[Region, dict[str, Any]]:
+    if not isinstance(value, dict):
+        raise CertificateFormatError("field 'region' must be an object")
+    fields(value, required=("center", "covariance", "level", "chi2"), where="region")
+    (center,) = rational_matrix([value["center"]], "region.center", 1, p)
+    cov = rational_matrix(value["covariance"], "region.covariance", p, p)
+    level = rational(value["level"], "region.level")
+    chi2 = rational(value["chi2"], "region.chi2")
+    region = Region(tuple(center), tuple(tuple(r) for r in cov),
+                    Fraction(int(level.numerator), int(level.denominator)), chi2)
+    return region, value
+
+
+def _band(value: Any) -> tuple[Fraction, Fraction] | None:
+    if value is None:
+        return None
+    if not isinstance(value, list) or len(value) != 2:
+        raise CertificateFormatError("field 'band' must be [w1, w2] or null")
+    w1, w2 = (rational(v, f"band[{k}]") for k, v in enumerate(value))
+    if not 0 <= w1 < w2:
+        raise CertificateFormatError(f"band [{w1}, {w2}] does not satisfy 0 <= w1 < w2")
+    return Fraction(int(w1.numerator), int(w1.denominator)), \
+        Fraction(int(w2.numerator), int(w2.denominator))
+
+
+def _leaf(node: list, dims: int) -> tuple[str, list[mpq]]:
+    if not node or not isinstance(node[0], str):
+        raise CertificateFormatError("a leaf must start with 'positive' or 'outside'")
+    if node[0] == "positive" and len(node) == 4:
+        return "positive", [rational(v, "leaf bound") for v in node[1:]]
+    if node[0] == "outside" and len(node) == 2 and isinstance(node[1], list) \
+            and len(node[1]) == dims:
+        return "outside", [rational(v, "leaf point") for v in node[1]]
+    raise CertificateFormatError(f"malformed leaf {str(node)[:60]}")
+
+
+# ------------------------------------------------------------------ checking
+
+
+def check_claim(data: dict[str, Any], path: Path) -> tuple[rb.Shape, Region,
+                                                          tuple | None, str | None]:
+    """Parse and check everything but the leaves: (shape, region, band, refusal or None)."""
+    fields(data, required=_FIELDS)
+    name, structure_text = text_field(data, "name"), text_field(data, "structure")
+    text_field(data, "source")
+    shape = shape_of(structure_text)
+    names = parameter_names(shape)
+    if data["parameters"] != names:
+        return shape, None, None, f"parameters {data['parameters']!r} are not the " \
+            f"structure's {names}"  # type: ignore[return-value]
+    region, reg_json = _region(data["region"], shape.parameters)
+    band = _band(data["band"])
+    if not 0 < region.level < 1:
+        return shape, region, band, f"level {region.level} is not in (0, 1)"
+    if not rb.is_positive_definite([list(r) for r in region.covariance]):
+        return shape, region, band, "the covariance is not symmetric positive definite"
+    expected_chi2 = chi2_quantile(region.level, shape.parameters)
+    if abs(float(region.chi2) - expected_chi2) > CHI2_AGREEMENT * expected_chi2:
+        return shape, region, band, (f"chi2 = {float(region.chi2):.12g} is not the "
+                                     f"{float(region.level)} quantile with "
+                                     f"{shape.parameters} degrees of freedom "
+                                     f"({expected_chi2:.12g})")
+    fp = fingerprint(structure_text, names, reg_json, data["band"])
+    if data["fingerprint"] != fp:
+        return shape, region, band, "fingerprint does not match the claim"
+    if Path(path).name != file_name(name, band, fp):
+        return shape, region, band, ("file name does not match the content (expected "
+                                     f"{file_name(name, band, fp)})")
+    if data["statement"] != statement(structure_text, region.level, band):
+        return shape, region, band, "statement is not the one derived from the claim"
+    return shape, region, band, None
+
+
+def check_leaves(data: dict[str, Any], shape: rb.Shape, region: Region,
+                 band: tuple | None) -> str | None:
+    """The enclosure, the pieces and every leaf, exactly; None when all pass."""
+    phi, cov_phi = rb.reduce_region(region.center, region.covariance)
+    dims = len(phi)
+    enclosure = data["enclosure"]
+    if not isinstance(enclosure, list) or len(enclosure) != dims:
+        raise CertificateFormatError(f"field 'enclosure' must list {dims} half-widths")
+    r = [rational(v, f"enclosure[{i}]") for i, v in enumerate(enclosure)]
+    bad = rb.enclosure_ok(cov_phi, region.chi2, r)
+    if bad is not None:
+        return f"the box does not enclose the region: {bad}"
+    S = rb.inverse(cov_phi)
+    pieces = data["pieces"]
+    wanted = pieces_for(band)
+    if not isinstance(pieces, list) or len(pieces) != len(wanted):
+        return f"expected {len(wanted)} frequency piece(s) for this band"
+    count = 0
+    for k, (piece, (variable, t1, t2)) in enumerate(zip(pieces, wanted, strict=True)):
+        if not isinstance(piece, dict):
+            raise CertificateFormatError(f"pieces[{k}] must be an object")
+        fields(piece, required=("variable", "interval", "tree"), where=f"pieces[{k}]")
+        interval = [rational(v, f"pieces[{k}].interval") for v in piece["interval"]] \
+            if isinstance(piece["interval"], list) else None
+        if piece["variable"] != variable or interval != [t1, t2]:
+            return (f"piece {k} covers {piece['variable']} in {piece['interval']}, not "
+                    f"{variable} in [{t1}, {t2}] as the band asks")
+        if not isinstance(piece["tree"], list):
+            raise CertificateFormatError(f"pieces[{k}].tree must be a list")
+        root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(t1, t2)]
+        try:
+            for index, (box, node) in enumerate(rb.leaves(piece["tree"], root)):
+                kind, values = _leaf(node, dims)
+                if kind == "positive":
+                    result = rb.check_positive_leaf(box, variable, shape, values,
+                                                    stability=band is None)
+                else:
+                    result = rb.check_outside_leaf(box, S, phi, region.chi2, values)
+                if not result.ok:
+                    return f"piece {k}, leaf {index} ({kind}): {result.reason}"
+                count += 1
+        except rb.TreeError as exc:
+            return f"piece {k}: {exc}"
+    if count != data["leaves"]:
+        return f"{count} leaves checked, the file says {data['leaves']}"
+    return None
+
+
+def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
+                 path: Path) -> tuple[str | None, str]:
+    """Compare the claim with the source model file when it is found: (refusal, note)."""
+    from verify.identify.model_writer import read_identified, structure_text
+
+    source = data["source"]
+    found = resolve_source(source, path)
+    if found is None and source:
+        sibling = Path(path).parent / Path(source).name
+        found = sibling if sibling.is_file() else None
+    if found is None:
+        return None, f"source {source} not found here: the claim is about the stored region"
+    try:
+        ident = read_identified(found)
+        cov = ident.covariance()
+        chi2 = ident.number("chi2")
+        level = ident.number("confidence_level")
+    except VerifyInputError as exc:
+        return f"source {source} is not an identified model file ({exc})", ""
+    if ident.model.name != data["name"]:
+        return f"name {data['name']!r} is not the source file's {ident.model.name!r}", ""
+    if structure_text(ident.structure) != data["structure"]:
+        return "the source file's structure differs", ""
+    if tuple(ident.center) != tuple(region.center):
+        return ("the region's centre is not the source file's written coefficients "
+                "(exact values differ)"), ""
+    if any(mpq(*float(v).as_integer_ratio()) != region.covariance[i][j]
+           for i, row in enumerate(cov) for j, v in enumerate(row)):
+        return "the covariance differs from the source file's [identification] covariance", ""
+    if mpq(*chi2.as_integer_ratio()) != region.chi2 or Fraction(level).limit_denominator(
+            10**6) != region.level:
+        return "the level or chi2 differ from the source file's", ""
+    return None, f"region bound to {source} (centre = its written coefficients)"
+
+
+def check_robust_file(data: dict[str, Any], path: Path) -> KypCheck:
+    """Checker of :data:`SCHEMA` (registered in :mod:`verify.passivity.io.stored`)."""
+    shape, region, band, refusal = check_claim(data, path)
+    if refusal is not None:
+        return KypCheck(False, refusal)
+    refusal, note = check_source(data, shape, region, path)
+    if refusal is not None:
+        return KypCheck(False, refusal)
+    refusal = check_leaves(data, shape, region, band)
+    if refusal is not None:
+        return KypCheck(False, f"does not prove robust passivity: {refusal}")
+    where = "at all frequencies" if band is None else f"on [{band[0]}, {band[1]}] rad/s"
+    return KypCheck(True, f"every model of the {float(region.level):.4g} confidence region "
+                    f"is passive {where}: {data['leaves']} leaves checked exactly; {note}")
+
+
+__all__ = ["SCHEMA", "certificate_json", "check_claim", "check_leaves", "check_robust_file",
+           "check_source", "dumps", "file_name", "parameter_names", "pieces_for",
+           "shape_of", "statement"]
