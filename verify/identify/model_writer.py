@@ -156,12 +156,59 @@ class IdentifiedFile:
                                    f"be {p} x {p}, got {cov.shape}")
         return cov
 
+    def region(self):
+        """The confidence region of the file: centre = the written coefficients, Σ = the
+        covariance's floats, level and χ² as recorded (:mod:`verify.identify.region`)."""
+        from verify.identify.region import make_region
+
+        level = self.identification.get("confidence_level")
+        if isinstance(level, bool) or not isinstance(level, Fraction | int | float):
+            raise VerifyInputError(f"{self.model.source}: [identification] confidence_level "
+                                   "must be a number")
+        return make_region(self.center, self.covariance(), Fraction(level),
+                           self.number("chi2"))
+
     def number(self, key: str) -> float:
         value = self.identification.get(key)
         if isinstance(value, bool) or not isinstance(value, int | float | Fraction):
             raise VerifyInputError(f"{self.model.source}: [identification] {key} must be a "
                                    "number")
         return float(Fraction(value))
+
+
+def identification_table(structure: Structure, theta: Sequence[float], covariance: Any,
+                         level: Fraction, extra: Mapping[str, Any] | None = None
+                         ) -> dict[str, Any]:
+    """The ``[identification]`` table: ``extra`` (method, rate, split, fit ratios, residual
+    tests, ...) then the parameters, their standard errors, the covariance (symmetrised),
+    the confidence level and its chi-square value."""
+    from verify.identify.region import chi2_quantile
+
+    cov = np.asarray(covariance, dtype=float)
+    cov = (cov + cov.T) / 2
+    p = len(theta)
+    if cov.shape != (p, p) or not np.all(np.isfinite(cov)):
+        raise VerifyInputError(f"covariance: expected a finite {p} x {p} matrix")
+    return {**dict(extra or {}), "structure": structure_text(structure),
+            "parameter_names": list(structure.names()),
+            "parameter_estimates": [float(x) for x in theta],
+            "standard_errors": [float(math.sqrt(max(v, 0.0))) for v in np.diag(cov)],
+            "covariance": cov.tolist(), "confidence_level": float(level),
+            "chi2": chi2_quantile(level, p)}
+
+
+def write_identified_model(path: str | Path, *, name: str, structure: Structure,
+                           theta: Sequence[float], covariance: Any,
+                           level: Fraction = Fraction(19, 20),
+                           extra: Mapping[str, Any] | None = None,
+                           description: str = "") -> IdentifiedFile:
+    """Write the model file atomically and read it back (what the file says is the model)."""
+    from verify.report.atomic import write_atomic
+
+    table = identification_table(structure, theta, covariance, level, extra)
+    text, _ = model_text(name, structure, theta, table, description)
+    write_atomic(Path(path), text)
+    return read_identified(path)
 
 
 def _coefficients(table: dict[str, Any], structure: Structure, source: str) -> list:
@@ -203,5 +250,5 @@ def read_identified(path: str | Path) -> IdentifiedFile:
     return IdentifiedFile(model, structure, center, ident)
 
 
-__all__ = ["DIGITS", "IdentifiedFile", "decimal_text", "model_text", "parse_structure",
-           "read_identified", "structure_text"]
+__all__ = ["DIGITS", "IdentifiedFile", "decimal_text", "identification_table", "model_text",
+           "parse_structure", "read_identified", "structure_text", "write_identified_model"]

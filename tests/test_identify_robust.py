@@ -1,0 +1,144 @@
+"""The robust verdict over a confidence region: interval forms, proofs, refutations."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from gmpy2 import mpq
+from identify_models import biproper_model, paper_model
+
+from verify.identify import robust_certificate as rc
+from verify.identify.robust import largest_band, robust_verdict
+from verify.identify.structure import Structure
+from verify.passivity.check import robust_band as rb
+from verify.passivity.io.stored import check_stored_certificate
+from verify.report.atomic import write_atomic
+
+
+def _direct(theta, shape: rb.Shape, w: float):
+    """N_1, N_2, det by complex floating point at one frequency."""
+    out = []
+    for i in range(2):
+        block = theta[i * shape.per_element:(i + 1) * shape.per_element]
+        num, den = block[: shape.zeros + 1], np.r_[1.0, block[shape.zeros + 1:]]
+        n, d = np.polyval(num, 1j * w), np.polyval(den, 1j * w)
+        out.append(((n * np.conj(d)).real, abs(d) ** 2))
+    c = theta[-2] + theta[-1]
+    return out[0][0], out[1][0], 4 * out[0][0] * out[1][0] - c * c * out[0][1] * out[1][1]
+
+
+@pytest.mark.parametrize("zeros,poles", [(1, 2), (0, 1), (1, 1), (2, 3), (3, 3)])
+def test_interval_forms_enclose_the_conditions(zeros, poles):
+    shape = rb.Shape(zeros, poles)
+    rng = np.random.default_rng(zeros * 10 + poles)
+    for _ in range(20):
+        theta = rng.normal(size=shape.parameters)
+        phi = [*theta[:-2], theta[-2] + theta[-1]]
+        width = rng.uniform(0, 0.1, size=len(phi) + 1)
+        w = abs(rng.normal()) * 3
+        box = [(mpq(float(p)) - mpq(float(h)), mpq(float(p)) + mpq(float(h)))
+               for p, h in zip(phi, width[:-1], strict=True)]
+        x = mpq(float(w * w))
+        t = (x, x + mpq(float(width[-1])))
+        bounds = rb.leaf_bounds(box, t, "x", shape, rb.ExactOps)
+        for _ in range(10):  # random points of the box lie inside the enclosures
+            u = rng.uniform(size=len(phi) + 1)
+            point = [float(lo + (hi - lo) * mpq(float(s))) for (lo, hi), s
+                     in zip([*box, t], u, strict=True)]
+            th = np.array([*point[:-2], point[-2], 0.0])
+            values = _direct(th, shape, np.sqrt(point[-1]))
+            for (lo, hi), v in zip(bounds, values, strict=True):
+                scale = 1e-9 * (1 + abs(v))
+                assert float(lo) - scale <= v <= float(hi) + scale
+
+
+def test_y_piece_is_the_reversed_polynomial():
+    shape = rb.Shape(1, 2)
+    theta = [mpq(6, 5), mpq(4, 5), mpq(2), mpq(3, 2), mpq(11, 10), mpq(9, 10), mpq(21, 10),
+             mpq(7, 5), mpq(1, 50)]
+    box = [(t, t) for t in theta]
+    x = mpq(9, 2)
+    N1, N2, det = rb.leaf_bounds(box, (x, x), "x", shape, rb.ExactOps)
+    M1, M2, dety = rb.leaf_bounds(box, (1 / x, 1 / x), "y", shape, rb.ExactOps)
+    assert M1[0] == N1[0] / x and M2[0] == N2[0] / x  # y^1 N(1/y)
+    assert dety[0] == det[0] / x**4  # y^(2 poles) det(1/y)
+
+
+def test_routh_and_kharitonov():
+    q = [mpq(v) for v in (6, 11, 6, 1)]  # (s+1)(s+2)(s+3)
+    assert rb.hurwitz(q)
+    assert not rb.hurwitz([mpq(v) for v in (1, 1, 1, 1)])  # roots on the axis
+    assert not rb.hurwitz([mpq(v) for v in (-1, 3, 1)])
+    box = [(mpq(1), mpq(2)), (mpq(2), mpq(3)), (mpq(1), mpq(1))]
+    assert rb.kharitonov_stable(box)
+    assert not rb.kharitonov_stable([(mpq(-1, 10), mpq(2)), (mpq(2), mpq(3)), (mpq(1),
+                                                                              mpq(1))])
+
+
+def test_band_proof_writes_a_certificate_that_checks(tmp_path):
+    f = paper_model(tmp_path)
+    band = (Fraction(0), Fraction(5))
+    r = robust_verdict(f.region(), f.structure, band, name=f.model.name,
+                       source=str(tmp_path / "model.toml"))
+    assert r.verdict == "passive" and r.certificate is not None
+    path = tmp_path / rc.file_name(f.model.name, band, r.certificate["fingerprint"])
+    write_atomic(path, rc.dumps(r.certificate))
+    check = check_stored_certificate(path)
+    assert check.ok, check.reason
+    assert "centre = its written coefficients" in check.reason
+    again = robust_verdict(f.region(), f.structure, band, name=f.model.name,
+                           source=str(tmp_path / "model.toml"))
+    assert rc.dumps(again.certificate) == path.read_text()  # byte-reproducible
+
+
+def test_band_beyond_the_nominal_crossing_is_refuted_with_an_exact_witness(tmp_path):
+    f = paper_model(tmp_path)
+    region = f.region()
+    r = robust_verdict(region, f.structure, (Fraction(0), Fraction(20)),
+                       name="m", source="")
+    assert r.verdict == "not passive" and r.witness is not None
+    assert region.contains(r.theta) and r.distance <= region.chi2
+    assert 0 <= Fraction(r.witness.data["omega"]) <= 20
+
+
+def test_all_frequencies_fail_for_the_paper_class_and_a_band_is_given(tmp_path):
+    """c12 + c21 != 0 and Re h_i -> 0: not passive at high frequency, passive on a band."""
+    f = paper_model(tmp_path)
+    region = f.region()
+    r = robust_verdict(region, f.structure, None, name="m", source="")
+    assert r.verdict == "not passive" and region.contains(r.theta)
+    found = largest_band(region, f.structure, Fraction(0), 100.0, name="m", source="",
+                         steps=4)
+    assert found.w_max is not None and 2 < found.w_max < 13
+    assert found.certificate is not None
+    assert found.certificate["band"] == ["0", str(mpq(found.w_max))]
+
+
+def test_all_frequency_proof_with_kharitonov_for_a_biproper_structure(tmp_path):
+    f = biproper_model(tmp_path)
+    r = robust_verdict(f.region(), f.structure, None, name=f.model.name,
+                       source=str(tmp_path / "model.toml"))
+    assert r.verdict == "passive", r.reason
+    pieces = r.certificate["pieces"]
+    assert [p["variable"] for p in pieces] == ["x", "y"]
+    path = tmp_path / rc.file_name(f.model.name, None, r.certificate["fingerprint"])
+    write_atomic(path, rc.dumps(r.certificate))
+    assert check_stored_certificate(path).ok
+
+
+def test_unsupported_structure_is_inconclusive_with_the_reason(tmp_path):
+    f = paper_model(tmp_path)
+    r = robust_verdict(f.region(), Structure.order(3), (Fraction(0), Fraction(1)),
+                       name="m", source="")
+    assert r.verdict == "inconclusive" and "not supported" in r.reason
+
+
+def test_budget_exhaustion_is_inconclusive_not_passive(tmp_path):
+    f = paper_model(tmp_path)
+    r = robust_verdict(f.region(), f.structure, (Fraction(0), Fraction(10)), name="m",
+                       source="", max_boxes=50)
+    assert r.verdict in ("inconclusive", "not passive")
+    if r.verdict == "inconclusive":
+        assert "budget" in r.reason
