@@ -127,7 +127,7 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
 # ------------------------------------------------------------------ refutation
 
 
-def _nu(structure: Structure, theta: np.ndarray, omega: np.ndarray) -> np.ndarray:
+def float_nu(structure: Structure, theta: np.ndarray, omega: np.ndarray) -> np.ndarray:
     """Float nu(w) = lambda_min(H(jw) + H(jw)^H)/2 of the model at θ."""
     per = structure.zeros + 1 + structure.poles
     s = 1j * omega
@@ -161,7 +161,7 @@ def candidates(region: Region, structure: Structure,
     theta = c.copy()
     found: list[tuple[np.ndarray, float, float]] = []
     for _ in range(iterations):
-        values = _nu(structure, theta, grid)
+        values = float_nu(structure, theta, grid)
         if not np.any(np.isfinite(values)):
             break
         k = int(np.nanargmin(values))
@@ -173,8 +173,8 @@ def candidates(region: Region, structure: Structure,
             h = 1e-6 * max(1.0, abs(theta[j]))
             e = np.zeros_like(theta)
             e[j] = h
-            g[j] = (_nu(structure, theta + e, np.array([w]))[0]
-                    - _nu(structure, theta - e, np.array([w]))[0]) / (2 * h)
+            g[j] = (float_nu(structure, theta + e, np.array([w]))[0]
+                    - float_nu(structure, theta - e, np.array([w]))[0]) / (2 * h)
         norm = math.sqrt(max(float(g @ cov @ g), 0.0))
         if not math.isfinite(norm) or norm == 0:
             break
@@ -266,7 +266,7 @@ def nominal_crossing(region: Region, structure: Structure, w1: float, cap: float
                      ) -> float:
     """The first frequency above w1 where the nominal nu is negative (float), or cap."""
     grid = np.geomspace(max(w1, cap * 1e-4), cap, 2000)
-    values = _nu(structure, region.float_center(), grid)
+    values = float_nu(structure, region.float_center(), grid)
     bad = np.nonzero(values < 0)[0]
     return float(grid[bad[0]]) if bad.size else cap
 
@@ -316,4 +316,4 @@ def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float,
 
 
 __all__ = ["MAX_BOXES", "BandSearch", "RobustResult", "candidates", "largest_band",
-           "nominal_crossing", "prove", "refute", "robust_verdict", "supported"]
+           "float_nu", "nominal_crossing", "prove", "refute", "robust_verdict", "supported"]

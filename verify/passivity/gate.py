@@ -166,23 +166,46 @@ def write_json(results: list[GateResult], path: Path) -> None:
     write_atomic(path, json.dumps(data, indent=2) + "\n")
 
 
-def write_junit(results: list[GateResult], path: Path) -> None:
-    failures = sum(not r.passed for r in results)
-    total = sum(r.decision.seconds for r in results)
-    cases = []
-    for r in results:
-        d = r.decision
-        body = "" if r.passed else (
-            f"<failure message={quoteattr(d.verdict + ': ' + d.reason)}>"
-            f"{escape(d.reason)}</failure>"
+@dataclass(frozen=True)
+class JunitCase:
+    """One test case of a JUnit report: a model (or claim) and its outcome."""
+
+    classname: str
+    name: str
+    file: str
+    seconds: float
+    passed: bool
+    verdict: str
+    reason: str
+
+
+def junit_text(cases: list[JunitCase], suite: str = "passivity gate") -> str:
+    """JUnit XML of ``cases`` (one <testcase> each; a failure carries the reason)."""
+    failures = sum(not c.passed for c in cases)
+    total = sum(c.seconds for c in cases)
+    lines = []
+    for c in cases:
+        body = "" if c.passed else (
+            f"<failure message={quoteattr(c.verdict + ': ' + c.reason)}>"
+            f"{escape(c.reason)}</failure>"
         )
-        cases.append(
-            f'  <testcase classname="verify.gate" name={quoteattr(d.model.name)} '
-            f'file={quoteattr(d.model.source)} time="{d.seconds:.4f}">{body}</testcase>'
+        lines.append(
+            f'  <testcase classname="{c.classname}" name={quoteattr(c.name)} '
+            f'file={quoteattr(c.file)} time="{c.seconds:.4f}">{body}</testcase>'
         )
-    xml = (
+    return (
         '<?xml version="1.0" encoding="utf-8"?>\n'
-        f'<testsuite name="passivity gate" tests="{len(results)}" failures="{failures}" '
-        f'errors="0" time="{total:.4f}">\n' + "\n".join(cases) + "\n</testsuite>\n"
+        f'<testsuite name={quoteattr(suite)} tests="{len(cases)}" failures="{failures}" '
+        f'errors="0" time="{total:.4f}">\n' + "\n".join(lines) + "\n</testsuite>\n"
     )
-    write_atomic(path, xml)
+
+
+def gate_cases(results: list[GateResult]) -> list[JunitCase]:
+    """The JUnit cases of gate results (classname ``verify.gate``)."""
+    return [JunitCase("verify.gate", r.decision.model.name, r.decision.model.source,
+                      r.decision.seconds, r.passed, str(r.decision.verdict), r.decision.reason)
+            for r in results]
+
+
+def write_junit(results: list[GateResult], path: Path) -> None:
+    write_atomic(path, junit_text(gate_cases(results)))
