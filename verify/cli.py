@@ -111,6 +111,30 @@ def _build_parser() -> argparse.ArgumentParser:
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
 
+    p_id = sub.add_parser(
+        "identify",
+        help="identify H(s) from experiment logs, decide its passivity nominally and over "
+        "the 95 %% confidence region",
+        description="Exit 0 if every model of the 95 % confidence region is passive (on "
+        "--band, or at all frequencies), with exactly checked certificates; 1 if not or "
+        "inconclusive; 2 on bad input (nothing written).")
+    p_id.add_argument("logs", nargs="+", type=Path, metavar="LOG",
+                      help="experiment log (.csv or .npz)")
+    p_id.add_argument("--structure", default="paper", metavar="S",
+                      help="paper (default), P:Z (poles:zeros per diagonal element) or "
+                      "order:N")
+    p_id.add_argument("--rate", metavar="HZ", help="rate after decimation (default 20)")
+    p_id.add_argument("--split", default="6:6", metavar="A:B",
+                      help="trials for identification and validation (default 6:6)")
+    p_id.add_argument("--band", metavar="W1:W2",
+                      help="robust passivity on W1 <= w <= W2 rad/s (default: all "
+                      "frequencies)")
+    p_id.add_argument("--out", type=Path, default=Path("identified"), metavar="DIR",
+                      help="model file, certificates and figures (default identified)")
+    p_id.add_argument("--name", help="model name (default: the first log's name)")
+    p_id.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
+    p_id.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+
     p_cert = sub.add_parser("certificates", help="certificates/ tools")
     cert_sub = p_cert.add_subparsers(dest="cert_command", metavar="ACTION", required=True)
     p_cc = cert_sub.add_parser(
@@ -296,6 +320,14 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
         plots=not args.no_plots, check=args.check))
 
 
+def _cmd_identify(args: argparse.Namespace) -> int:
+    from verify.identify.command import IdentifySettings, run_identify
+
+    return run_identify(IdentifySettings(
+        logs=tuple(args.logs), structure=args.structure, rate=args.rate, split=args.split,
+        band=args.band, out=args.out, json=args.json, junit=args.junit, name=args.name))
+
+
 def _cmd_list(_: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
 
@@ -361,7 +393,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
                 "network": _cmd_network, "gate": _cmd_gate,
-                "certificates": _cmd_certificates, "simulate": _cmd_simulate}
+                "certificates": _cmd_certificates, "simulate": _cmd_simulate,
+                "identify": _cmd_identify}
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:

@@ -315,5 +315,16 @@ def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float,
     return out
 
 
-__all__ = ["MAX_BOXES", "BandSearch", "RobustResult", "candidates", "largest_band",
-           "float_nu", "nominal_crossing", "prove", "refute", "robust_verdict", "supported"]
+__all__ = [
+    "MAX_BOXES",
+    "BandSearch",
+    "RobustResult",
+    "candidates",
+    "float_nu",
+    "largest_band",
+    "nominal_crossing",
+    "prove",
+    "refute",
+    "robust_verdict",
+    "supported",
+]

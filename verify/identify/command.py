@@ -1,0 +1,427 @@
+"""`verify identify`: experiment logs -> identified H(s) -> nominal and robust verdicts.
+
+The chain of Section 4 ("Human Modeling") as one command a lab runs in CI:
+
+1. read the logs (:mod:`verify.inputs.experiment_log`), apply the protocol (dead time,
+   decimation, split by trial: :mod:`verify.identify.protocol`);
+2. estimate H(s) in the structure (:func:`verify.identify.estimation.estimate_model`),
+   with fit ratios and residual tests (:mod:`verify.identify.quality`);
+3. write the nominal model as a ``verify gate`` model file with an ``[identification]``
+   table (:mod:`verify.identify.model_writer`); the file's decimals are the exact model;
+4. the **nominal verdict**: the gate's exact decision on that file (all frequencies, or
+   ``--band``), with its certificate when passive;
+5. the **robust verdict** over the 95 % confidence region (:mod:`verify.identify.robust`)
+   on the band (or all frequencies), and the largest band [w1, w_max] on which robust
+   passivity is proved, each with a certificate that ``verify certificates check`` re-checks;
+6. figures (:mod:`verify.identify.figures`), a JSON summary and a JUnit file.
+
+Everything is validated and rendered in memory before the first file is written, and each
+file is written atomically (bad input: one line, exit 2, nothing written). Exit 0 only if
+the robust verdict is passive on the requested band (or at all frequencies when no band is
+given); 1 otherwise.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import tempfile
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field, replace
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from verify.errors import VerifyInputError
+from verify.identify import robust_certificate as rc
+from verify.identify.estimate import Estimate
+from verify.identify.model_writer import (
+    IdentifiedFile,
+    identification_table,
+    model_text,
+    parse_structure,
+    read_identified,
+    structure_text,
+)
+from verify.identify.robust import BandSearch, RobustResult, largest_band, robust_verdict
+from verify.identify.structure import Structure
+from verify.inputs.numbers import parse_number
+
+LEVEL = Fraction(19, 20)
+MODEL_FILE = "model.toml"
+
+
+@dataclass(frozen=True)
+class IdentifySettings:
+    """The command line of ``verify identify`` (validated by :func:`validate`)."""
+
+    logs: tuple[Path, ...]
+    structure: str = "paper"
+    rate: str | None = None
+    split: str = "6:6"
+    band: str | None = None
+    out: Path = Path("identified")
+    json: Path | None = None
+    junit: Path | None = None
+    name: str | None = None
+    max_boxes: int = 40_000
+
+
+@dataclass(frozen=True)
+class Plan:
+    """Validated settings."""
+
+    logs: tuple[Path, ...]
+    structure: Structure
+    rate: float | None
+    split: tuple[int, int]
+    band: tuple[Fraction, Fraction] | None
+    out: Path
+    json: Path | None
+    junit: Path | None
+    name: str
+    max_boxes: int
+
+
+def parse_split(text: str) -> tuple[int, int]:
+    """``A:B`` trials for identification and validation, A >= 1, B >= 1."""
+    head, sep, tail = str(text).partition(":")
+    if sep and head.strip().isdigit() and tail.strip().isdigit():
+        a, b = int(head), int(tail)
+        if a >= 1 and b >= 1:
+            return a, b
+    raise VerifyInputError(f"--split {text!r}: expected A:B with A, B >= 1 trials for "
+                           "identification and validation, e.g. --split 6:6")
+
+
+def parse_rate(text: str | None) -> float | None:
+    if text is None:
+        return None
+    value = parse_number(text, "--rate", "--rate 20")
+    if value <= 0:
+        raise VerifyInputError(f"--rate {text!r} must be a positive rate in Hz, e.g. --rate 20")
+    return float(value)
+
+
+def validate(settings: IdentifySettings) -> Plan:
+    """Every flag checked before any work (one-line errors)."""
+    from verify.passivity.band import parse_band
+
+    structure = parse_structure(settings.structure)
+    band = parse_band(settings.band) if settings.band is not None else None
+    if settings.out.exists() and not settings.out.is_dir():
+        raise VerifyInputError(f"--out {settings.out}: exists and is not a directory")
+    for flag, path in (("--json", settings.json), ("--junit", settings.junit)):
+        if path is not None and path.is_dir():
+            raise VerifyInputError(f"{flag} {path}: is a directory; give a file name")
+    if not settings.logs:
+        raise VerifyInputError("no log files given; pass one or more .csv or .npz logs")
+    name = settings.name or f"{Path(settings.logs[0]).stem} identified"
+    return Plan(tuple(Path(p) for p in settings.logs), structure, parse_rate(settings.rate),
+                parse_split(settings.split), band, settings.out, settings.json,
+                settings.junit, name, settings.max_boxes)
+
+
+# ------------------------------------------------------------------ data -> estimate
+
+
+@dataclass
+class Quality:
+    """Fit ratios (%) per output on identification and validation data, residual tests."""
+
+    fit_identification: list[float]
+    fit_validation: list[float]
+    tests: dict[str, Any] = field(default_factory=dict)
+    validation_times: list[np.ndarray] = field(default_factory=list)
+    validation_measured: list[np.ndarray] = field(default_factory=list)
+    validation_predicted: list[np.ndarray] = field(default_factory=list)
+
+
+@dataclass
+class Identified:
+    """What the data gave: the estimate, its quality, the protocol's facts."""
+
+    estimate: Estimate
+    quality: Quality
+    rate: float
+    trials: tuple[list[int], list[int]]
+    notes: tuple[str, ...] = ()
+
+
+def identify_logs(plan: Plan) -> Identified:
+    """Logs -> prepared trials -> estimate and quality (steps 1 and 2)."""
+    from verify.identify.estimation import estimate_model
+    from verify.identify.protocol import prepare
+    from verify.identify.quality import assess
+    from verify.inputs.experiment_log import read_logs
+
+    log = read_logs(plan.logs)
+    prepared = prepare(log, rate=plan.rate, split=plan.split)
+    estimate = estimate_model(prepared.identification, plan.structure)
+    quality = assess(estimate, prepared.identification, prepared.validation)
+    ids = sorted({t.trial for t in prepared.identification})
+    vals = sorted({t.trial for t in prepared.validation})
+    return Identified(estimate, _quality(quality, prepared.validation, estimate),
+                      prepared.rate, (ids, vals), prepared.notes)
+
+
+def _quality(report: Any, validation: Sequence[Any], estimate: Estimate) -> Quality:
+    """Our view of the quality report of :mod:`verify.identify.quality`."""
+    from verify.identify.prediction import predict
+
+    predicted = predict(estimate.structure, estimate.theta, validation)
+    return Quality([float(x) for x in report.fit_identification],
+                   [float(x) for x in report.fit_validation], report.tests(),
+                   [np.asarray(t.t) for t in validation],
+                   [np.asarray(t.u) for t in validation], predicted)
+
+
+# ------------------------------------------------------------------ estimate -> verdicts
+
+
+@dataclass
+class Outcome:
+    """Everything the command prints and writes, rendered in memory."""
+
+    plan: Plan
+    identified: Identified
+    model_path: Path
+    ident: IdentifiedFile
+    nominal: Any  # Decision or BandDecision
+    nominal_certificate: tuple[str, str] | None  # (file name, text)
+    robust: RobustResult
+    band_search: BandSearch
+    files: dict[Path, bytes | str]
+    high_frequency_note: str
+
+    @property
+    def passed(self) -> bool:
+        return self.robust.passed
+
+
+def _high_frequency_note(structure: Structure, center: Sequence[Any]) -> str:
+    c = Fraction(center[-2]) + Fraction(center[-1])
+    if structure.zeros >= structure.poles:
+        return ""
+    if c == 0:
+        return ("c12 + c21 = 0 exactly: the off-diagonal elements do not prevent passivity "
+                "at high frequency")
+    return (f"c12 + c21 = {float(c):.6g} is not 0 while Re h_i(jω) -> 0 as ω -> ∞ (strictly "
+            "proper diagonal elements), so det(H(jω) + H(jω)ᴴ) -> -(c12 + c21)² < 0: this "
+            "model is not passive at all frequencies. For the paper's class an identified "
+            "c12 + c21 is never exactly 0, so this holds for almost every identified model; "
+            "what can hold is passivity on a band [0, w_max]")
+
+
+def _nominal(model, band, certs_dir: Path):
+    from verify.passivity.gate import run_band_gate, run_gate
+
+    if band is None:
+        (result,) = run_gate([model], Fraction(0), certs_dir)
+    else:
+        (result,) = run_band_gate([model], band, Fraction(0), certs_dir)
+    return result
+
+
+def decide_identified(plan: Plan, identified: Identified) -> Outcome:
+    """Steps 3 to 6, in a temporary directory; returns the files to write."""
+    est = identified.estimate
+    q = identified.quality
+    extra = {
+        "method": est.method,
+        "covariance_kind": getattr(est, "covariance_kind", "asymptotic"),
+        "rate": float(identified.rate),
+        "split": f"{plan.split[0]}:{plan.split[1]}",
+        "trials_identification": identified.trials[0],
+        "trials_validation": identified.trials[1],
+        "samples": int(est.samples),
+        "noise_std": [float(x) for x in est.noise_std],
+        "fit_identification": q.fit_identification,
+        "fit_validation": q.fit_validation,
+        **{k: v for k, v in q.tests.items()},
+        "logs": [str(p) for p in plan.logs],
+    }
+    table = identification_table(est.structure, est.theta, est.covariance, LEVEL, extra)
+    text, _ = model_text(plan.name, est.structure, est.theta, table,
+                         description="identified from experiment logs by verify identify")
+    model_path = plan.out / MODEL_FILE
+    files: dict[Path, bytes | str] = {model_path: text}
+    with tempfile.TemporaryDirectory(prefix="verify-identify-") as tmp:
+        tmp_model = Path(tmp) / MODEL_FILE
+        tmp_model.write_text(text)
+        ident = read_identified(tmp_model)
+        model = replace(ident.model, source=str(model_path))
+        ident = replace(ident, model=model)
+        region = ident.region()
+        certs = Path(tmp) / "certificates"
+        nominal = _nominal(model, plan.band, certs)
+        nominal_cert = None
+        if nominal.certificate_path is not None:
+            nominal_cert = (nominal.certificate_path.name, nominal.certificate_path.read_text())
+            files[plan.out / nominal_cert[0]] = nominal_cert[1]
+    source = str(model_path)
+    robust = robust_verdict(region, est.structure, plan.band, name=plan.name, source=source,
+                            nominal=nominal.decision, max_boxes=plan.max_boxes)
+    nyquist = math.pi * float(identified.rate)
+    w1 = plan.band[0] if plan.band is not None else Fraction(0)
+    search = largest_band(region, est.structure, w1, nyquist, name=plan.name, source=source,
+                          max_boxes=plan.max_boxes)
+    for cert in (robust.certificate, search.certificate):
+        if cert is not None:
+            band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
+            files[plan.out / rc.file_name(cert["name"], band, cert["fingerprint"])] = \
+                rc.dumps(cert)
+    files.update(_figures(plan, identified, region, search))
+    return Outcome(plan, identified, model_path, ident, nominal, nominal_cert, robust,
+                   search, files, _high_frequency_note(est.structure, ident.center))
+
+
+def _figures(plan: Plan, identified: Identified, region, search: BandSearch
+             ) -> dict[Path, bytes]:
+    from verify.identify import figures as fg
+
+    structure = identified.estimate.structure
+    out: dict[Path, bytes] = {}
+    q = identified.quality
+    d = plan.out / "figures"
+    if q.validation_times:
+        out[d / "validation.png"] = fg.validation_figure(
+            q.validation_times, q.validation_measured, q.validation_predicted,
+            q.fit_validation)
+    center = region.float_center()
+    top = max(10.0, math.pi * float(identified.rate))
+    omega = np.geomspace(1e-2, top, 400)
+    out[d / "bode.png"] = fg.bode_figure(structure, center, region.float_covariance(),
+                                         float(region.chi2), omega, region.level)
+    proved = None if search.w_max is None else (float(search.w1), float(search.w_max))
+    requested = None if plan.band is None else (float(plan.band[0]), float(plan.band[1]))
+    out[d / "nu.png"] = fg.nu_figure(structure, center, omega, proved, requested)
+    return out
+
+
+# ------------------------------------------------------------------ reporting
+
+
+def summary_json(o: Outcome) -> dict[str, Any]:
+    """The JSON summary (``--json``)."""
+    est = o.identified.estimate
+    q = o.identified.quality
+    nominal = o.nominal.decision.to_json()
+    return {
+        "logs": [str(p) for p in o.plan.logs],
+        "structure": structure_text(est.structure),
+        "rate": o.identified.rate,
+        "split": list(o.plan.split),
+        "trials": {"identification": o.identified.trials[0],
+                   "validation": o.identified.trials[1]},
+        "estimate": {"method": est.method, "names": list(est.names),
+                     "theta": [float(x) for x in est.theta],
+                     "written": [str(x) for x in o.ident.center],
+                     "standard_errors": [float(math.sqrt(max(v, 0.0)))
+                                         for v in np.diag(est.covariance)]},
+        "fit": {"identification": q.fit_identification, "validation": q.fit_validation},
+        "residual_tests": q.tests,
+        "model": str(o.model_path),
+        "nominal": {**nominal, "passed": o.nominal.passed,
+                    "certificate": None if o.nominal_certificate is None else
+                    str(o.plan.out / o.nominal_certificate[0])},
+        "robust": {**o.robust.to_json(), "level": str(LEVEL),
+                   "certificate": _cert_path(o, o.robust.certificate)},
+        "largest_band": {**o.band_search.to_json(),
+                         "certificate": _cert_path(o, o.band_search.certificate)},
+        "high_frequency": o.high_frequency_note,
+        "passed": o.passed,
+    }
+
+
+def _cert_path(o: Outcome, cert: dict | None) -> str | None:
+    if cert is None:
+        return None
+    band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
+    return str(o.plan.out / rc.file_name(cert["name"], band, cert["fingerprint"]))
+
+
+def junit(o: Outcome) -> str:
+    """JUnit XML: the nominal and the robust verdict, one test case each."""
+    from verify.passivity.gate import JunitCase, junit_text
+
+    where = o.robust.where()
+    d = o.nominal.decision
+    return junit_text([
+        JunitCase("verify.identify", f"nominal: {o.plan.name}", str(o.model_path), d.seconds,
+                  o.nominal.passed, str(d.verdict), d.reason),
+        JunitCase("verify.identify", f"robust ({float(LEVEL):.0%} region) {where}: "
+                  f"{o.plan.name}", str(o.model_path), o.robust.seconds, o.robust.passed,
+                  str(o.robust.verdict), o.robust.reason),
+    ], suite="identification")
+
+
+def lines(o: Outcome) -> list[str]:
+    """What the command prints."""
+    est = o.identified.estimate
+    q = o.identified.quality
+    out = [f"identified {o.plan.name}: structure {structure_text(est.structure)}, "
+           f"{est.method}, {o.identified.rate:g} Hz, trials {o.identified.trials[0]} "
+           f"(identification) / {o.identified.trials[1]} (validation)"]
+    out.append("  fit (%): identification " + ", ".join(f"{x:.2f}" for x in
+                                                       q.fit_identification)
+               + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
+    se = np.sqrt(np.clip(np.diag(est.covariance), 0, None))
+    out.append("  parameters: " + ", ".join(
+        f"{n} = {c} ± {s:.2g}" for n, c, s in zip(est.names, o.ident.center, se, strict=True)))
+    out.append(f"  model file: {o.model_path}")
+    d = o.nominal.decision
+    out.append(f"  nominal ({'all frequencies' if o.plan.band is None else o.robust.where()})"
+               f": {d.verdict}: {d.reason}")
+    out.append(f"  robust, every model of the {float(LEVEL):.0%} region "
+               f"{o.robust.where()}: {o.robust.verdict}: {o.robust.reason}")
+    if o.high_frequency_note:
+        out.append(f"  note: {o.high_frequency_note}")
+    b = o.band_search
+    if b.w_max is not None:
+        out.append(f"  robust passivity proved on [{b.w1}, {b.w_max}] rad/s "
+                   f"(≈ [{float(b.w1):.4g}, {float(b.w_max):.4g}]; the largest band the "
+                   "prover reached, bisection on w_max)")
+    else:
+        out.append("  robust passivity proved on no band [w1, w_max] tried")
+    return out
+
+
+def render(plan: Plan) -> Outcome:
+    """All work, no file written."""
+    return decide_identified(plan, identify_logs(plan))
+
+
+def write(o: Outcome) -> None:
+    """Every file, each atomically, after everything is rendered."""
+    from verify.report.atomic import write_all_atomic
+
+    files = dict(o.files)
+    if o.plan.json is not None:
+        files[o.plan.json] = json.dumps(summary_json(o), indent=2) + "\n"
+    if o.plan.junit is not None:
+        files[o.plan.junit] = junit(o)
+    write_all_atomic(files)
+
+
+def run_identify(settings: IdentifySettings) -> int:
+    """The command: 0 if the robust verdict is passive, 1 if not, VerifyInputError on bad
+    input (exit 2, nothing written)."""
+    start = time.perf_counter()
+    plan = validate(settings)
+    outcome = render(plan)
+    write(outcome)
+    for line in lines(outcome):
+        print(line, flush=True)
+    print(f"{'PASS' if outcome.passed else 'FAIL'}: robust verdict {outcome.robust.verdict} "
+          f"{outcome.robust.where()} ({time.perf_counter() - start:.1f} s); files in "
+          f"{plan.out}")
+    return 0 if outcome.passed else 1
+
+
+__all__ = ["IdentifySettings", "Outcome", "Plan", "Quality", "decide_identified",
+           "identify_logs", "junit", "parse_split", "render", "run_identify", "summary_json",
+           "validate"]
