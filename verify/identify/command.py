@@ -114,6 +114,10 @@ def validate(settings: IdentifySettings) -> Plan:
     band = parse_band(settings.band) if settings.band is not None else None
     if settings.out.exists() and not settings.out.is_dir():
         raise VerifyInputError(f"--out {settings.out}: exists and is not a directory")
+    if not _ours(settings.out):
+        raise VerifyInputError(f"--out {settings.out}: a non-empty directory that is not an "
+                               "output of verify identify (it would be replaced); choose a "
+                               "new or empty directory")
     for flag, path in (("--json", settings.json), ("--junit", settings.junit)):
         if path is not None and path.is_dir():
             raise VerifyInputError(f"{flag} {path}: is a directory; give a file name")
@@ -268,7 +272,7 @@ def decide_identified(plan: Plan, identified: Identified) -> Outcome:
     nyquist = math.pi * float(identified.rate)
     w1 = plan.band[0] if plan.band is not None else Fraction(0)
     search = largest_band(region, est.structure, w1, nyquist, name=plan.name, source=source,
-                          max_boxes=plan.max_boxes)
+                          max_boxes=max(1000, plan.max_boxes // 4))
     for cert in (robust.certificate, search.certificate):
         if cert is not None:
             band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
@@ -395,16 +399,72 @@ def render(plan: Plan) -> Outcome:
     return decide_identified(plan, identify_logs(plan))
 
 
+def _ours(directory: Path) -> bool:
+    """True if ``directory`` holds a previous output of this command (or nothing)."""
+    if not directory.exists():
+        return True
+    entries = {p.name for p in directory.iterdir()}
+    if not entries:
+        return True
+    if MODEL_FILE not in entries:
+        return False
+    try:
+        read_identified(directory / MODEL_FILE)
+    except VerifyInputError:
+        return False
+    return True
+
+
 def write(o: Outcome) -> None:
-    """Every file, each atomically, after everything is rendered."""
+    """Every file, after everything is rendered: the output directory is built beside
+    ``--out`` and renamed into place (a previous output there is replaced whole, so no
+    stale certificate survives); the JSON and JUnit files are written atomically."""
+    import os
+    import shutil
+
     from verify.report.atomic import write_all_atomic
 
-    files = dict(o.files)
+    out = o.plan.out
+    bundle: dict[Path, bytes | str] = dict(o.files)
+    others: dict[Path, bytes | str] = {}
     if o.plan.json is not None:
-        files[o.plan.json] = json.dumps(summary_json(o), indent=2) + "\n"
+        others[o.plan.json] = json.dumps(summary_json(o), indent=2) + "\n"
     if o.plan.junit is not None:
-        files[o.plan.junit] = junit(o)
-    write_all_atomic(files)
+        others[o.plan.junit] = junit(o)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+    try:
+        write_all_atomic({staging / p.relative_to(out): data for p, data in bundle.items()})
+        inside = {p: d for p, d in others.items() if _within(p, out)}
+        write_all_atomic({staging / p.relative_to(out): d for p, d in inside.items()})
+        os.chmod(staging, 0o777 & ~_umask())
+        if out.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=out.parent))
+            os.replace(out, old / "previous")
+            os.replace(staging, out)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            os.replace(staging, out)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    write_all_atomic({p: d for p, d in others.items() if not _within(p, out)})
+
+
+def _within(path: Path, directory: Path) -> bool:
+    try:
+        path.resolve().relative_to(directory.resolve())
+    except ValueError:
+        return False
+    return True
+
+
+def _umask() -> int:
+    import os
+
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def run_identify(settings: IdentifySettings) -> int:
