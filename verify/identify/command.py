@@ -49,6 +49,7 @@ from verify.identify.model_writer import (
 from verify.identify.robust import BandSearch, RobustResult, largest_band, robust_verdict
 from verify.identify.structure import Structure
 from verify.inputs.numbers import parse_number
+from verify.passivity.decision import INCONCLUSIVE
 
 LEVEL = Fraction(19, 20)
 MODEL_FILE = "model.toml"
@@ -259,7 +260,10 @@ def decide_identified(plan: Plan, identified: Identified) -> Outcome:
         ident = read_identified(tmp_model)
         model = replace(ident.model, source=str(model_path))
         ident = replace(ident, model=model)
-        region = ident.region()
+        try:
+            region, no_region = ident.region(), ""
+        except VerifyInputError as exc:  # e.g. a singular covariance: no ellipsoid
+            region, no_region = None, str(exc).removeprefix(f"{tmp_model}: ")
         certs = Path(tmp) / "certificates"
         nominal = _nominal(model, plan.band, certs)
         nominal_cert = None
@@ -267,12 +271,18 @@ def decide_identified(plan: Plan, identified: Identified) -> Outcome:
             nominal_cert = (nominal.certificate_path.name, nominal.certificate_path.read_text())
             files[plan.out / nominal_cert[0]] = nominal_cert[1]
     source = str(model_path)
-    robust = robust_verdict(region, est.structure, plan.band, name=plan.name, source=source,
-                            nominal=nominal.decision, max_boxes=plan.max_boxes)
-    nyquist = math.pi * float(identified.rate)
     w1 = plan.band[0] if plan.band is not None else Fraction(0)
-    search = largest_band(region, est.structure, w1, nyquist, name=plan.name, source=source,
-                          max_boxes=max(1000, plan.max_boxes // 4))
+    if region is None:
+        robust = RobustResult(INCONCLUSIVE, plan.band, "no confidence region to decide "
+                              f"over: {no_region}")
+        search = BandSearch(w1, None, None)
+    else:
+        robust = robust_verdict(region, est.structure, plan.band, name=plan.name,
+                                source=source, nominal=nominal.decision,
+                                max_boxes=plan.max_boxes)
+        nyquist = math.pi * float(identified.rate)
+        search = largest_band(region, est.structure, w1, nyquist, name=plan.name,
+                              source=source, max_boxes=max(1000, plan.max_boxes // 4))
     for cert in (robust.certificate, search.certificate):
         if cert is not None:
             band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
@@ -295,11 +305,13 @@ def _figures(plan: Plan, identified: Identified, region, search: BandSearch
         out[d / "validation.png"] = fg.validation_figure(
             q.validation_times, q.validation_measured, q.validation_predicted,
             q.fit_validation)
-    center = region.float_center()
+    est = identified.estimate
+    center = np.asarray(est.theta, dtype=float) if region is None else region.float_center()
     top = max(10.0, math.pi * float(identified.rate))
     omega = np.geomspace(1e-2, top, 400)
-    out[d / "bode.png"] = fg.bode_figure(structure, center, region.float_covariance(),
-                                         float(region.chi2), omega, region.level)
+    out[d / "bode.png"] = fg.bode_figure(
+        structure, center, None if region is None else region.float_covariance(),
+        0.0 if region is None else float(region.chi2), omega, LEVEL)
     proved = None if search.w_max is None else (float(search.w1), float(search.w_max))
     requested = None if plan.band is None else (float(plan.band[0]), float(plan.band[1]))
     out[d / "nu.png"] = fg.nu_figure(structure, center, omega, proved, requested)

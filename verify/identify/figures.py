@@ -75,11 +75,13 @@ def ellipsoid_samples(center: np.ndarray, covariance: np.ndarray, chi2: float,
     return center + np.sqrt(chi2) * z @ L.T
 
 
-def bode_figure(structure: Structure, center: np.ndarray, covariance: np.ndarray,
+def bode_figure(structure: Structure, center: np.ndarray, covariance: np.ndarray | None,
                 chi2: float, omega: np.ndarray, level: Fraction) -> bytes:
-    """Magnitude and phase of h_1, h_2 at the centre, with the envelope over sampled θ."""
+    """Magnitude and phase of h_1, h_2 at the centre, with the envelope over sampled θ
+    (no envelope when ``covariance`` is None: no region)."""
     plt = _pyplot()
-    thetas = ellipsoid_samples(center, covariance, chi2)
+    thetas = center[None, :] if covariance is None else \
+        ellipsoid_samples(center, covariance, chi2)
     nominal = _response(structure, center, omega)
     sampled = np.array([_response(structure, th, omega) for th in thetas])
     fig, axes = plt.subplots(2, 2, figsize=(9, 5.5), sharex=True)

@@ -47,7 +47,7 @@ Interval = tuple[Any, Any]
 
 #: Limits on a certificate's tree (a hostile file must not ask for unbounded work).
 MAX_DEPTH = 400
-MAX_NODES = 2_000_000
+MAX_NODES = 400_000
 
 
 class ExactOps:
