@@ -211,7 +211,7 @@ def write_identified_model(path: str | Path, *, name: str, structure: Structure,
     return read_identified(path)
 
 
-def _coefficients(table: dict[str, Any], structure: Structure, source: str) -> list:
+def structure_coefficients(table: dict[str, Any], structure: Structure, source: str) -> list:
     """θc from the raw [transfer_function] table, in structure order; checks the layout."""
     num, den = table["num"], table["den"]
     try:
@@ -243,7 +243,7 @@ def read_identified(path: str | Path) -> IdentifiedFile:
     structure = parse_structure(ident["structure"], f"{path}: [identification] structure")
     if "transfer_function" not in data:
         raise VerifyInputError(f"{path}: an identified model is a [transfer_function]")
-    theta = _coefficients(data["transfer_function"], structure, str(path))
+    theta = structure_coefficients(data["transfer_function"], structure, str(path))
     from verify.inputs.numbers import rational
 
     center = tuple(rational(x, f"{path}: coefficient") for x in theta)
@@ -251,4 +251,5 @@ def read_identified(path: str | Path) -> IdentifiedFile:
 
 
 __all__ = ["DIGITS", "IdentifiedFile", "decimal_text", "identification_table", "model_text",
-           "parse_structure", "read_identified", "structure_text", "write_identified_model"]
+           "parse_structure", "read_identified", "structure_coefficients", "structure_text",
+           "write_identified_model"]

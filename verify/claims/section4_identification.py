@@ -1,0 +1,147 @@
+"""Section 4's identification, run end to end on the shipped simulated experiment logs.
+
+The paper identifies the operator's H(s) from VR experiment data and then judges its
+passivity; its data and coefficients are not published. The shipped logs
+(:mod:`verify.identify.example_logs`) are simulated experiments in the paper's protocol
+with known operators of the paper's class, one passive and one not. This claim runs the
+``verify identify`` chain on them and checks, exactly where a verdict is given, what the
+chain should find: the true parameters inside the 95 % region (exact membership), the
+passive operator's region proved passive on a band [0, w_max] (a certificate, re-checked
+by ``verify certificates check``), all-frequency passivity refuted for the identified
+model (c12 + c21 != 0), and the non-passive operator refuted with an exact witness.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
+from verify.claims.registry import REGISTRY
+
+SECTION = "4, human passivity"
+LOGS = Path(__file__).resolve().parents[1] / "data" / "logs"
+#: The band on which the non-passive operator (Re h < 0 above 2 rad/s) must be refuted.
+REFUTE_BAND = "0:5"
+
+
+def _run(context: CheckContext, name: str, band: str | None):
+    from verify.identify.command import IdentifySettings, decide_identified, identify_logs
+    from verify.identify.command import validate as plan_of
+
+    out = context.out_dir / "identification" / name
+    plan = plan_of(IdentifySettings(logs=(LOGS / f"{name}.npz",), band=band, out=out,
+                                    name=f"{name} (identified)"))
+    return decide_identified(plan, identify_logs(plan))
+
+
+def _truth(name: str):
+    from verify.identify.model_writer import parse_structure, structure_coefficients
+    from verify.inputs.numbers import rational
+    from verify.inputs.toml import read_toml
+
+    data = read_toml(LOGS / f"{name}.toml", exact=True)
+    theta = structure_coefficients(data["transfer_function"], parse_structure("paper"), name)
+    return [rational(x, name) for x in theta]
+
+
+def _store(context: CheckContext, outcome) -> list[Path]:
+    """Write the run's files (model, figures) and copy its certificates."""
+    from verify.identify.command import write
+    from verify.report.atomic import write_atomic
+
+    write(outcome)
+    stored = []
+    if context.certificates_dir is not None:
+        for path, data in outcome.files.items():
+            if path.suffix == ".json":
+                target = Path(context.certificates_dir) / path.name
+                write_atomic(target, data)
+                stored.append(target)
+    return stored
+
+
+@REGISTRY.claim(
+    id="sec4.identification",
+    section=SECTION,
+    paper_ref="Section 4, Human Modeling (identification from the VR experiment)",
+    paper_says="H(s) is identified from 12 trials of 15 s (first 6 identify, last 6 "
+    "validate), with (b1 s + b0)/(s^2 + a1 s + a0) diagonal and constant off-diagonal "
+    "elements, fit ratios of 51-78 %, and its passivity is then judged from nu(w).",
+    statement="On the shipped simulated logs (known operators of the paper's class, the "
+    "paper's protocol): the true parameters lie in the 95 % confidence region; every model "
+    "of the passive operator's region is passive on a band [0, w_max] with w_max >= 1 "
+    "rad/s, while the identified model is not passive at all frequencies (c12 + c21 != 0); "
+    "the non-passive operator's region is refuted on [0, 5] rad/s with an exact witness.",
+    method="verify identify: protocol (dead time, decimation to 20 Hz, 6:6 split), "
+    "refined IV + prediction-error estimate with asymptotic covariance; region membership "
+    "of the truth in exact arithmetic; robust verdict by exact interval branch and bound "
+    "(certificate re-checked with no solver) or a model of the region with the gate's "
+    "exact witness.",
+    scope="simulated logs of known operators; the paper's data are not published, so its "
+    "own identified models cannot be re-derived",
+)
+def identification(context: CheckContext) -> Outcome:
+    from verify.passivity.check import robust_band as rb
+
+    evidence: list[Evidence] = []
+    ok = True
+    passive_all = _run(context, "passive_human", None)
+    nonpassive = _run(context, "nonpassive_human", REFUTE_BAND)
+    for name, o in (("passive_human", passive_all), ("nonpassive_human", nonpassive)):
+        q = o.identified.quality
+        evidence.append(Evidence(
+            EvidenceKind.NUMERICAL, f"{name}: fit ratios identification "
+            + ", ".join(f"{x:.2f} %" for x in q.fit_identification) + "; validation "
+            + ", ".join(f"{x:.2f} %" for x in q.fit_validation),
+            {"fit_identification": q.fit_identification,
+             "fit_validation": q.fit_validation}))
+        region = o.ident.region()
+        truth = _truth(name)
+        distance = rb.quadratic_form(rb.inverse(region.covariance), region.center, truth)
+        inside = distance <= region.chi2
+        ok &= inside
+        evidence.append(Evidence(
+            EvidenceKind.EXACT_INSTANCE, f"{name}: the true parameters are "
+            f"{'inside' if inside else 'OUTSIDE'} the 95 % region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
+            f"{float(distance):.4g}, chi2 = {float(region.chi2):.4g}, exact)",
+            {"distance": str(distance), "chi2": str(region.chi2)}, passed=bool(inside)))
+    all_refuted = passive_all.robust.verdict == "not passive"
+    search = passive_all.band_search
+    band_ok = search.w_max is not None and search.w_max >= 1
+    refuted = nonpassive.robust.verdict == "not passive" and \
+        nonpassive.robust.witness is not None
+    ok &= all_refuted and band_ok and refuted
+    stored = _store(context, passive_all) + _store(context, nonpassive)
+    robust_paths = [p for p in stored if "-robust-" in p.name]
+    evidence.append(Evidence(
+        EvidenceKind.COUNTEREXAMPLE, f"passive_human, all frequencies: "
+        f"{passive_all.robust.verdict}: {passive_all.robust.reason}", passed=all_refuted))
+    evidence.append(Evidence(
+        EvidenceKind.CERTIFICATE, "passive_human: every model of the 95 % region is passive "
+        + (f"on [0, {search.w_max}] rad/s (≈ {float(search.w_max):.4g})" if band_ok else
+           "on no band [0, w_max >= 1] found"),
+        {"w_max": None if search.w_max is None else str(search.w_max)},
+        path=str(robust_paths[0]) if robust_paths else None, passed=band_ok))
+    evidence.append(Evidence(
+        EvidenceKind.COUNTEREXAMPLE, f"nonpassive_human on [{REFUTE_BAND.replace(':', ', ')}]"
+        f" rad/s: {nonpassive.robust.verdict}: {nonpassive.robust.reason}", passed=refuted))
+    for o in (passive_all, nonpassive):
+        for path in sorted(p for p in o.files if p.suffix == ".png"):
+            rel = path.relative_to(context.out_dir)
+            evidence.append(Evidence(EvidenceKind.FIGURE, f"{o.plan.name}: {path.stem}",
+                                     {"href": str(rel)}, path=str(path)))
+    w = "none" if search.w_max is None else f"{float(search.w_max):.3g} rad/s"
+    return Outcome(
+        Verdict.VERIFIED if ok else Verdict.INCONCLUSIVE,
+        "From the shipped simulated logs, the identification recovers both operators "
+        "(true parameters inside the 95 % region, exactly). For the passive operator, "
+        f"robust passivity of the whole region is proved up to w_max = {w} by an exactly "
+        "checked certificate; at all frequencies it fails, as for almost every identified "
+        "model of the paper's class: an identified c12 + c21 is never exactly 0 while "
+        "Re h_i(jω) -> 0, so H(jω) + H(jω)ᴴ becomes indefinite at high frequency. The "
+        "non-passive operator's region is refuted with an exact witness."
+        + ("" if ok else " Some expected outcome did not hold (see the evidence)."),
+        tuple(evidence),
+    )
+
+
