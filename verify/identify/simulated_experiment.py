@@ -77,6 +77,22 @@ def trajectory_trials(traj: Trajectory, *, until: float | None = None) -> tuple[
     return tuple(trials)
 
 
+def add_measurement_noise(trials: tuple[Trial, ...], std: float, seed: int
+                          ) -> tuple[Trial, ...]:
+    """The trials with seeded white noise of standard deviation ``std`` on e and u.
+
+    The noise of trial k is drawn after that of trials 0..k-1 (e, then u), so the first
+    trials of a longer experiment get the same noise.
+    """
+    meas = np.random.default_rng(np.random.SeedSequence(seed).spawn(4)[3])
+    out = []
+    for tr in trials:
+        e = tr.e + std * meas.standard_normal(tr.e.shape)
+        u = tr.u + std * meas.standard_normal(tr.u.shape)
+        out.append(Trial(tr.trial, tr.t, e, u, reference=tr.reference, start=tr.start))
+    return tuple(out)
+
+
 def _ball(rng: np.random.Generator, count: int, radius: float) -> np.ndarray:
     """Rotation vectors uniform in direction with angle uniform in [0, radius]."""
     v = rng.standard_normal((count, 3))
@@ -171,14 +187,8 @@ def simulate_experiment(
                                    operator_noise=operator_noise, reaction=(lo, hi), seed=seed)
     seconds = trials * trial_seconds
     traj = simulate(scenario, seconds, 1.0 / rate)
-    clean = trajectory_trials(traj, until=seconds)
-    meas = np.random.default_rng(np.random.SeedSequence(seed).spawn(4)[3])
-    out = []
-    for tr in clean:
-        e = tr.e + measurement_noise * meas.standard_normal(tr.e.shape)
-        u = tr.u + measurement_noise * meas.standard_normal(tr.u.shape)
-        out.append(Trial(tr.trial, tr.t, e, u, reference=tr.reference, start=tr.start))
+    out = add_measurement_noise(trajectory_trials(traj, until=seconds), measurement_noise, seed)
     source = (f"simulated experiment: {true_model.name}, k_s = {k_s:g}, n = {n}, {trials} "
               f"trials x {trial_seconds:g} s at {rate:g} Hz, operator noise {operator_noise:g}, "
               f"measurement noise {measurement_noise:g}, reaction {lo:g}-{hi:g} s, seed {seed}")
-    return ExperimentLog(tuple(out), rate, source)
+    return ExperimentLog(out, rate, source)
