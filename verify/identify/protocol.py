@@ -32,7 +32,9 @@ identification and the last 6 for validation. :func:`prepare` does the same:
    the bandwidth of a human operator in this task (the paper's identified models and the
    shipped ones have their poles near 1-2 rad/s, a human tracking loop rarely exceeds a
    few Hz) while cutting the sample count six-fold, which keeps the estimation well
-   conditioned (poles near 1 rad/s sit at z ~ 0.95 rather than 0.99).
+   conditioned (poles near 1 rad/s sit at z ~ 0.95 rather than 0.99). The paper says
+   only that the data were decimated "to 10 rad/s"; pass ``rate`` to follow another
+   reading of it.
 4. **Split.** The first ``split[0]`` trials (in log order) identify, the next ``split[1]``
    validate (Section 4: 6 and 6).
 """
