@@ -1,0 +1,37 @@
+"""Figures of an identification: reproducible bytes, drawn from what they are given."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import numpy as np
+from identify_models import PAPER_THETA, correlated_covariance
+
+from verify.identify import figures as fg
+from verify.identify.structure import Structure
+
+OMEGA = np.geomspace(1e-2, 60, 200)
+
+
+def test_figures_are_reproducible_pngs():
+    theta = np.array(PAPER_THETA)
+    cov = correlated_covariance(PAPER_THETA)
+    t = np.arange(0, 5, 0.05)
+    y = np.column_stack([np.sin(t), np.cos(t)])
+    make = (
+        lambda: fg.validation_figure([t, t], [y, y], [0.9 * y, 0.8 * y], [81.0, 64.0]),
+        lambda: fg.bode_figure(Structure.paper(), theta, cov, 18.3, OMEGA, Fraction(19, 20)),
+        lambda: fg.nu_figure(Structure.paper(), theta, OMEGA, (0.0, 6.7), (0.0, 5.0)),
+    )
+    for draw in make:
+        a, b = draw(), draw()
+        assert a[:8] == b"\x89PNG\r\n\x1a\n" and a == b
+
+
+def test_ellipsoid_samples_lie_in_the_ellipsoid():
+    theta = np.array(PAPER_THETA)
+    cov = correlated_covariance(PAPER_THETA)
+    pts = fg.ellipsoid_samples(theta, cov, 18.3, count=300)
+    d = pts - theta
+    q = np.einsum("ki,ij,kj->k", d, np.linalg.inv(cov), d)
+    assert np.all(q <= 18.3 * (1 + 1e-9)) and q.max() > 0.5 * 18.3
