@@ -98,9 +98,12 @@ def _shape(structure: Structure) -> rb.Shape:
 
 
 def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None,
-          *, name: str, source: str, max_boxes: int = MAX_BOXES
-          ) -> tuple[dict[str, Any] | None, str]:
-    """A checked certificate of robust passivity on ``band``, or (None, why not)."""
+          *, name: str, source: str, max_boxes: int = MAX_BOXES,
+          hints: list | None = None) -> tuple[dict[str, Any] | None, str]:
+    """A checked certificate of robust passivity on ``band``, or (None, why not).
+
+    ``hints``, when given, receives the search's undecided box centres (φ, t) inside the
+    region where a condition is negative in floating point (refutation candidates)."""
     shape = _shape(structure)
     phi, cov_phi = rb.reduce_region(region.center, region.covariance)
     r = half_widths(cov_phi, region.chi2)
@@ -113,6 +116,8 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
         found = search(root, variable, shape, ellipsoid, stability=band is None,
                        max_boxes=max_boxes)
         if found.tree is None:
+            if hints is not None:
+                hints += [(point, variable) for point, _ in found.candidates]
             what = "w^2" if variable == "x" else "1/w^2"
             return None, f"{found.reason} ({what} in [{t1}, {t2}])"
         trees.append(found.tree)
@@ -191,16 +196,39 @@ def _exact_at(structure: Structure, theta: list[mpq]):
     return minimal_part(from_transfer_function(num, den, name="θ").exact).model
 
 
-def refute(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None
-           ) -> tuple[list[mpq], mpq, Any] | None:
+def lift(region: Region, point: np.ndarray, variable: str) -> tuple[np.ndarray, float]:
+    """(θ, w) from a point (φ, t) of the search: c12 + c21 = φ_c split so that θ is
+    nearest the centre in the region's metric (a float proposal)."""
+    c = region.float_center()
+    S = np.linalg.inv(region.float_covariance())
+    theta = np.r_[point[:-2], 0.0, 0.0]
+    total = point[-2]
+    # q(c12) with c21 = total - c12 is quadratic; its minimiser in closed form
+    e = np.zeros_like(c)
+    e[-2], e[-1] = 1.0, -1.0
+    base = theta.copy()
+    base[-1] = total
+    d = base - c
+    c12 = -float(e @ S @ d) / float(e @ S @ e)
+    theta = base + c12 * e
+    t = float(point[-1])
+    omega = math.sqrt(t) if variable == "x" else (1 / math.sqrt(t) if t > 0 else 1e6)
+    return theta, omega
+
+
+def refute(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None,
+           hints: list | None = None) -> tuple[list[mpq], mpq, Any] | None:
     """(θ, its exact distance, the gate's exact witness) for a non-passive model of the
-    region, or None when the search finds none."""
+    region, or None when the search finds none. ``hints`` are (φ, t) points of the
+    branch and bound (:func:`prove`), tried after the Frank-Wolfe candidates."""
     from verify.errors import VerifyInputError
     from verify.passivity.band import band_witness
     from verify.passivity.check.witness import frequency_witness, pole_witness
 
     S = rb.inverse(region.covariance)
-    for theta_f, omega in candidates(region, structure, band):
+    tries = candidates(region, structure, band)
+    tries += [lift(region, np.asarray(p, dtype=float), v) for p, v in hints or ()]
+    for theta_f, omega in tries:
         theta = [short(float(x)) for x in theta_f]
         q = rb.quadratic_form(S, region.center, theta)
         if q > region.chi2:
@@ -245,11 +273,18 @@ def robust_verdict(region: Region, structure: Structure,
         return done(NOT_PASSIVE, f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
                     f"{float(q):.4g} <= chi2 = {float(region.chi2):.4g}, exact) is not "
                     f"passive: {w.summary}", theta=theta, distance=q, witness=w)
+    hints: list = []
     cert, reason = prove(region, structure, band, name=name, source=source,
-                         max_boxes=max_boxes)
+                         max_boxes=max_boxes, hints=hints)
     if cert is not None:
         return done(PASSIVE, f"every model of the region is passive {_where(band)}: "
                     f"{reason}", certificate=cert)
+    found = refute(region, structure, band, hints) if hints else None
+    if found is not None:
+        theta, q, w = found
+        return done(NOT_PASSIVE, f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
+                    f"{float(q):.4g} <= chi2 = {float(region.chi2):.4g}, exact) is not "
+                    f"passive: {w.summary}", theta=theta, distance=q, witness=w)
     return done(INCONCLUSIVE, f"no proof and no refutation {_where(band)}: {reason}")
 
 
@@ -322,6 +357,7 @@ __all__ = [
     "candidates",
     "float_nu",
     "largest_band",
+    "lift",
     "nominal_crossing",
     "prove",
     "refute",
