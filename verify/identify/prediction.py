@@ -44,11 +44,13 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     row = 0
     for k, (own, other) in enumerate(zip(data.own, data.other, strict=True)):
         N = len(own)
-        Z = filt.filtered(own)
+        with np.errstate(over="ignore", invalid="ignore"):  # unstable candidates overflow
+            Z = filt.filtered(own)
+            free = filt.free(N)
         X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
         X[row:row + N, zeros + 1] = other
         col = zeros + 2 + k * n
-        X[row:row + N, col:col + n] = filt.free(N)
+        X[row:row + N, col:col + n] = free
         row += N
     return X
 

@@ -58,6 +58,12 @@ def srivc(data: OutputData, poles: int, zeros: int, *, lam: float, iterations: i
     """
     n, m = poles, zeros
     a = np.real(np.poly(-lam * np.ones(n)))[1:]  # (s + lam)^n
+    with np.errstate(over="ignore", invalid="ignore"):  # an unstable fit is caught below
+        return _iterate(data, n, m, a, iterations, tol)
+
+
+def _iterate(data: OutputData, n: int, m: int, a: np.ndarray, iterations: int, tol: float
+             ) -> np.ndarray:
     prefilter = a.copy()
     T = len(data.y)
     width = n + (m + 1) + (n + 1) + T * n
