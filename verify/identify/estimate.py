@@ -16,7 +16,10 @@ class Estimate:
     ``covariance`` is the (asymptotic or bootstrap) covariance of ``theta``; the 95 %
     confidence region is the ellipsoid (θ - theta)^T covariance^-1 (θ - theta) <= chi2_p(0.95).
     ``noise_std`` is the residual standard deviation per output; ``samples`` the number of
-    samples the estimate used; ``method`` names the estimator.
+    samples the estimate used; ``method`` names the estimator; ``covariance_kind`` says
+    where ``covariance`` comes from: "asymptotic" (the prediction-error formula
+    sigma^2 (J^T J)^-1, :mod:`verify.identify.pem`) or "bootstrap" (over trials,
+    :mod:`verify.identify.bootstrap`).
     """
 
     structure: Structure
@@ -26,3 +29,8 @@ class Estimate:
     method: str
     noise_std: np.ndarray
     samples: int
+    covariance_kind: str = "asymptotic"
+
+    def standard_errors(self) -> np.ndarray:
+        """Square roots of the covariance's diagonal, in ``names`` order."""
+        return np.sqrt(np.clip(np.diag(self.covariance), 0.0, None))

@@ -1,0 +1,107 @@
+"""Continuous-time filters evaluated on uniformly sampled signals (first-order hold).
+
+The estimators of :mod:`verify.identify.estimation` need, for a monic denominator
+A(s) = s^n + a_{n-1} s^{n-1} + ... + a_0 and a sampled signal x, the signals
+s^k / A(s) x for k = 0..n (the "state-variable filter" outputs of continuous-time
+identification, Garnier, Mensler & Richard, Int. J. Control 76(13), 2003) and the free
+responses of A (the transients a trial starts with).
+
+Intersample behaviour: x is taken piecewise linear between samples (first-order hold),
+which is exact for piecewise-linear signals and accurate to O(h^2) for smooth ones. The
+filter's continuous state is zero at the first sample. Discretisation is
+``scipy.signal.cont2discrete(..., method="foh")``; the recursion runs in
+``scipy.signal.lfilter``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy import signal
+
+__all__ = ["Filter", "companion", "filtered", "free_responses"]
+
+
+def companion(a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(Ac, Bc) of 1/A(s) in controllable canonical form, state z = (w, w', ..., w^(n-1)).
+
+    ``a`` holds a_{n-1}, ..., a_0 (descending powers, the leading 1 left out); w = x / A(s)
+    is the filter's output when x drives it.
+    """
+    n = len(a)
+    Ac = np.zeros((n, n))
+    Ac[:-1, 1:] = np.eye(n - 1)
+    Ac[-1, :] = -np.asarray(a, float)[::-1]
+    Bc = np.zeros((n, 1))
+    Bc[-1, 0] = 1.0
+    return Ac, Bc
+
+
+class Filter:
+    """1/A(s) discretised once for a step h (FOH), applied to any number of signals.
+
+    ``a`` holds a_{n-1}, ..., a_0 (the leading 1 of the monic A left out).
+    """
+
+    def __init__(self, a: np.ndarray, h: float) -> None:
+        self.a = np.asarray(a, float)
+        self.h = float(h)
+        n = self.n = len(self.a)
+        Ac, Bc = companion(self.a)
+        Ad, Bd, _, Dd, _ = signal.cont2discrete((Ac, Bc, np.eye(n), np.zeros((n, 1))), h,
+                                                method="foh")
+        # with C = I and D = 0, scipy's FOH feedthrough is the offset M in z_k = xi_k + M x_k,
+        # where xi_{k+1} = Ad xi_k + Bd x_k is the recursion scipy's discrete model runs
+        self.Ad, self.M = Ad, Dd[:, 0]
+        self.num, self.den = signal.ss2tf(Ad, Bd, np.eye(n), np.zeros((n, 1)))
+        self._free = np.zeros((0, n))
+
+    def _powers(self, count: int) -> np.ndarray:
+        """Ad^k for k = 0..count-1, shape (count, n, n) (cached, grown on demand)."""
+        if self._free.shape[0] < count:
+            n = self.n
+            impulse = np.zeros(count + 1)
+            impulse[0] = 1.0
+            out = np.empty((count, n, n))
+            for col in range(n):  # impulse response of (zI - Ad)^-1 e_col: 0, e_col, Ad e_col..
+                b = signal.ss2tf(self.Ad, np.eye(n)[:, col:col + 1], np.eye(n),
+                                 np.zeros((n, 1)))[0]
+                for row in range(n):
+                    out[:, row, col] = signal.lfilter(b[row], self.den, impulse)[1:]
+            self._free = out
+        return self._free[:count]
+
+    def filtered(self, x: np.ndarray) -> np.ndarray:
+        """s^k / A(s) x at the samples, for k = 0..n, shape (N, n + 1).
+
+        Zero continuous state at the first sample, x piecewise linear (module docstring).
+        Column n is s^n / A(s) x = x - sum_k a_k s^k / A(s) x.
+        """
+        x = np.asarray(x, float)
+        n = self.n
+        out = np.empty((x.shape[0], n + 1))
+        for j in range(n):
+            out[:, j] = signal.lfilter(self.num[j], self.den, x)
+        # lfilter starts from xi_0 = 0; a zero continuous state needs xi_0 = -M x_0
+        out[:, :n] -= self._powers(x.shape[0]) @ (self.M * x[0])
+        out[:, :n] += np.outer(x, self.M)
+        out[:, n] = x - out[:, :n] @ self.a[::-1]
+        return out
+
+    def free(self, count: int) -> np.ndarray:
+        """The n free responses of A(s) at t = k h, k = 0..count-1, shape (count, n).
+
+        Column j is the solution w of A(d/dt) w = 0 with w^(i)(0) = 1 if i = j else 0;
+        they span every transient of an element with denominator A, whatever its
+        numerator.
+        """
+        return self._powers(count)[:, 0, :]
+
+
+def filtered(a: np.ndarray, x: np.ndarray, h: float) -> np.ndarray:
+    """s^k / A(s) x for k = 0..n (see :meth:`Filter.filtered`)."""
+    return Filter(a, h).filtered(x)
+
+
+def free_responses(a: np.ndarray, h: float, count: int) -> np.ndarray:
+    """The n free responses of A(s) (see :meth:`Filter.free`)."""
+    return Filter(a, h).free(count)

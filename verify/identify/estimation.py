@@ -1,0 +1,168 @@
+"""Continuous-time estimation of H(s) from closed-loop trials (Section 4, "Human Modeling").
+
+:func:`estimate_model` estimates the structures with constant off-diagonal elements
+(:meth:`Structure.paper`, :meth:`Structure.poles_zeros`) output by output: output i is
+u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. Method ``"riv+pem"`` (the default):
+
+1. starting denominators: SRIVC (:mod:`verify.identify.riv`), a refined
+   instrumental-variable estimate, from a few first prefilters (s + lam)^n, and a grid
+   of stable denominators (:func:`starting_denominators`);
+2. output-error prediction-error refinement (:mod:`verify.identify.pem`) from the
+   starting points of least cost, each trial's initial state estimated; the refinement
+   of least cost is kept (:func:`fit_output` says why the grid is needed).
+
+The covariance held in :attr:`Estimate.covariance` by default is the asymptotic
+prediction-error covariance sigma^2 (J^T J)^-1 per output (outputs independent):
+it is what the theory gives for white output noise, costs one Jacobian, and is exact
+for Gaussian noise up to O(1/N). The bootstrap over trials
+(:func:`verify.identify.bootstrap.bootstrap`) is the alternative when the noise is in
+doubt; it needs many re-estimates and, with the paper's six identification trials, has
+few distinct resamples.
+
+The state-space structure ``order:N`` is not yet supported (one-line error).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from verify.errors import VerifyInputError
+from verify.identify.estimate import Estimate
+from verify.identify.experiment import Trial
+from verify.identify.pem import OutputFit, refine
+from verify.identify.prediction import fit_linear
+from verify.identify.riv import srivc
+from verify.identify.structure import Structure
+from verify.identify.trial_data import OutputData, check_trials, output_data
+
+__all__ = ["METHODS", "estimate_model", "first_prefilters"]
+
+#: Estimation methods: name -> description.
+METHODS = {
+    "riv+pem": "SRIVC initial estimate, then output-error prediction-error refinement",
+    "arx+oe": "baseline: discrete ARX least squares, then output-error least squares "
+              "with zero initial states (verify.identify.baseline)",
+}
+
+
+def first_prefilters(h: float) -> tuple[float, ...]:
+    """The poles lam (rad/s) of the first SRIVC prefilters (s + lam)^n for step h.
+
+    A human operator's bandwidth is a few rad/s; three prefilters a factor 4 apart,
+    below a fifth of the Nyquist frequency pi/h, cover it.
+    """
+    return tuple(lam for lam in (0.5, 2.0, 8.0) if lam < 0.2 * np.pi / h) or (0.1 * np.pi / h,)
+
+
+def starting_denominators(poles: int, h: float) -> list[np.ndarray]:
+    """A grid of stable denominators (a_{n-1}..a_0) to start the refinement from.
+
+    Poles at -w (all n), and for n >= 2 a pair with damping 0.4 at natural frequency w
+    with the other poles at -w, for w from 0.3 rad/s up to a tenth of the Nyquist
+    frequency pi/h, a factor 3 apart.
+    """
+    out = []
+    w = 0.3
+    while w <= max(0.1 * np.pi / h, 0.3):
+        out.append(np.real(np.poly(-w * np.ones(poles)))[1:])
+        if poles >= 2:
+            pair = np.array([1.0, 0.8 * w, w * w])
+            out.append(np.real(np.polymul(pair, np.poly(-w * np.ones(poles - 2))))[1:])
+        w *= 3.0
+    return out
+
+
+def _cost(a: np.ndarray, data: OutputData, zeros: int) -> float:
+    r = fit_linear(a, data, zeros)[1]
+    value = float(r @ r)
+    return value if np.isfinite(value) else np.inf
+
+
+def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3) -> OutputFit:
+    """The output-error estimate of one output, refined from the best starting points.
+
+    Candidates: the SRIVC denominators from each first prefilter and the grid of
+    :func:`starting_denominators`. The ``starts`` candidates of least output-error cost
+    (after eliminating the linear parameters) are refined; the refinement of least cost
+    is kept. The grid is there because in this loop SRIVC can be ill-conditioned: the
+    leader is noise-free, so u_h is close to a deterministic function of the derivative
+    of e and the equation-error regressors of u_h and e are nearly collinear; the
+    output-error criterion, whose predictor is causal, separates H(s) from that inverse
+    relation (the operator noise at a sample is not yet in e).
+    """
+    candidates = []
+    for lam in first_prefilters(data.h):
+        a0 = srivc(data, poles, zeros, lam=lam)
+        if np.all(np.isfinite(a0)):
+            candidates.append(a0)
+    candidates += starting_denominators(poles, data.h)
+    costs = [_cost(a0, data, zeros) for a0 in candidates]
+    order = [k for k in np.argsort(costs, kind="stable") if np.isfinite(costs[k])]
+    best: OutputFit | None = None
+    for k in order[:starts]:
+        try:
+            fit = refine(data, candidates[k], zeros)
+        except (np.linalg.LinAlgError, ValueError):
+            continue
+        if np.isfinite(fit.cost) and (best is None or fit.cost < best.cost):
+            best = fit
+    if best is None:
+        raise VerifyInputError(f"output {data.output + 1}: no starting point of the estimator "
+                               f"gave a finite fit; the data do not fit a {poles}-pole model")
+    return best
+
+
+def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, samples: int,
+             covariance_kind: str = "asymptotic") -> Estimate:
+    """The :class:`Estimate` of two output fits, parameters ordered as ``structure.names()``."""
+    per = structure.zeros + 1 + structure.poles
+    theta = np.empty(2 * per + 2)
+    cov = np.zeros((2 * per + 2, 2 * per + 2))
+    for i, fit in enumerate(fits):
+        idx = [*range(i * per, (i + 1) * per), 2 * per + i]  # b, a, then c_ij
+        theta[idx] = np.concatenate([fit.b, fit.a, [fit.c]])
+        cov[np.ix_(idx, idx)] = fit.covariance
+    cov = 0.5 * (cov + cov.T)
+    return Estimate(structure, theta, cov, structure.names(), method,
+                    np.array([fit.sigma for fit in fits]), samples,
+                    covariance_kind=covariance_kind)
+
+
+def estimate_model(trials: Sequence[Trial], structure: Structure, *,
+                   method: str = "riv+pem") -> Estimate:
+    """Estimate H(s) in ``structure`` from uniformly sampled (closed-loop) trials.
+
+    Parameters
+    ----------
+    trials
+        Trials of the operator's input e (N, 2) and output u (N, 2), one sampling step;
+        each trial starts from its own (estimated) initial state.
+    structure
+        :meth:`Structure.paper` or :meth:`Structure.poles_zeros`.
+    method
+        ``"riv+pem"`` (module docstring) or ``"arx+oe"`` (the baseline of the benchmark).
+
+    Returns
+    -------
+    Estimate
+        Parameters in ``structure.names()`` order with their asymptotic covariance.
+
+    References
+    ----------
+    Young & Jakeman (1980); Garnier, Mensler & Richard (2003); Ljung, System
+    Identification (1999), Sec. 9.3 and 13.4.
+    """
+    if method not in METHODS:
+        raise VerifyInputError(f"unknown estimation method {method!r}; choose one of "
+                               f"{', '.join(METHODS)}")
+    h = check_trials(trials, structure)
+    samples = sum(np.asarray(tr.t).shape[0] for tr in trials)
+    if method == "arx+oe":
+        from verify.identify.baseline import oe_from_arx
+
+        return oe_from_arx(trials, structure, h)
+    fits = [fit_output(output_data(trials, i, h), structure.poles, structure.zeros)
+            for i in (0, 1)]
+    return assemble(structure, fits, method, samples)

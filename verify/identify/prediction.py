@@ -1,0 +1,135 @@
+"""Simulated model output on measured inputs, with the trials' initial states.
+
+For one output of the constant-coupling structures (Section 4, "Human Modeling"),
+
+    yhat_i = B_i(s)/A_i(s) e_i + c_ij e_j + (a free response of A_i per trial),
+
+simulated from the measured inputs (first-order hold, :mod:`verify.identify.ct_filters`).
+For a fixed denominator A_i the output is linear in the numerator, the coupling and the
+initial state of each trial, so those are solved by linear least squares and only A_i is
+searched (variable projection, Golub & Pereyra, SIAM J. Numer. Anal. 10(2), 1973).
+
+The initial state of every trial is *estimated* (a free response of A_i, n numbers per
+trial), on identification and validation data alike: a trial starts when the operator
+starts reacting, with the state the operator is in, so a zero initial state would be a
+model error of the first seconds of each trial, not a property of H(s).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from verify.identify.ct_filters import Filter
+from verify.identify.experiment import Trial
+from verify.identify.structure import Structure
+from verify.identify.trial_data import OutputData, check_trials, output_data
+
+__all__ = ["design", "element_parameters", "fit_linear", "predict", "predict_output"]
+
+
+def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
+    """Regressors of output data for denominator ``a``, shape (N, zeros + 2 + T n).
+
+    Columns: s^k/A e_i for k = zeros..0, then e_j, then per trial the n free responses of
+    A (zero outside that trial).
+    """
+    a = np.asarray(a, float)
+    n = len(a)
+    filt = Filter(a, data.h)
+    T = len(data.y)
+    total = data.samples
+    X = np.zeros((total, zeros + 2 + T * n))
+    row = 0
+    for k, (own, other) in enumerate(zip(data.own, data.other, strict=True)):
+        N = len(own)
+        with np.errstate(over="ignore", invalid="ignore"):  # unstable candidates overflow
+            Z = filt.filtered(own)
+            free = filt.free(N)
+        X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
+        X[row:row + N, zeros + 1] = other
+        col = zeros + 2 + k * n
+        X[row:row + N, col:col + n] = free
+        row += N
+    return X
+
+
+def fit_linear(a: np.ndarray, data: OutputData, zeros: int
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(beta, residual, X): the least-squares numerator, coupling and initial states for
+    denominator ``a`` (columns as :func:`design`), the residual y - X beta, and X.
+
+    The initial states are eliminated trial by trial (projection onto the orthogonal
+    complement of the trial's free responses), so the shared least-squares problem has
+    only zeros + 2 columns.
+    """
+    X = design(a, data, zeros)
+    y = np.concatenate(data.y)
+    p = zeros + 2
+    n = len(a)
+    if not np.all(np.isfinite(X)):
+        return np.full(X.shape[1], np.nan), np.full(y.shape, np.inf), X
+    Xp = X[:, :p].copy()
+    yp = y.copy()
+    bases = []
+    row = 0
+    for k, own in enumerate(data.own):
+        rows = slice(row, row + len(own))
+        Q = np.linalg.qr(X[rows, p + k * n:p + (k + 1) * n])[0]
+        bases.append((rows, Q))
+        Xp[rows] -= Q @ (Q.T @ Xp[rows])
+        yp[rows] -= Q @ (Q.T @ yp[rows])
+        row += len(own)
+    scale = np.linalg.norm(Xp, axis=0)
+    scale[scale == 0] = 1.0
+    shared = np.linalg.lstsq(Xp / scale, yp, rcond=None)[0] / scale
+    beta = np.empty(X.shape[1])
+    beta[:p] = shared
+    for k, (rows, _) in enumerate(bases):
+        F = X[rows, p + k * n:p + (k + 1) * n]
+        beta[p + k * n:p + (k + 1) * n] = np.linalg.lstsq(F, y[rows] - X[rows, :p] @ shared,
+                                                          rcond=None)[0]
+    return beta, yp - Xp @ shared, X
+
+
+def element_parameters(structure: Structure, theta: Sequence[float], i: int
+                       ) -> tuple[np.ndarray, np.ndarray, float]:
+    """(b descending, a descending without the leading 1, c) of output ``i`` from theta."""
+    theta = np.asarray(theta, float)
+    per = structure.zeros + 1 + structure.poles
+    block = theta[i * per:(i + 1) * per]
+    return block[: structure.zeros + 1], block[structure.zeros + 1:], float(theta[-2 + i])
+
+
+def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
+                   initial: str = "estimate") -> np.ndarray:
+    """The model's output i over all trials (concatenated) from the measured inputs.
+
+    ``initial="estimate"``: each trial's initial state by least squares (module
+    docstring); ``"zero"``: zero initial state.
+    """
+    zeros = len(b) - 1
+    X = design(a, data, zeros)
+    forced = X[:, : zeros + 1] @ np.asarray(b, float) + c * X[:, zeros + 1]
+    if initial == "zero":
+        return forced
+    if initial != "estimate":
+        raise ValueError(f"initial must be 'estimate' or 'zero', got {initial!r}")
+    F = X[:, zeros + 2:]
+    y = np.concatenate(data.y)
+    eta = np.linalg.lstsq(F, y - forced, rcond=None)[0]
+    return forced + F @ eta
+
+
+def predict(structure: Structure, theta: Sequence[float], trials: Sequence[Trial], *,
+            initial: str = "estimate") -> list[np.ndarray]:
+    """The model's (N, 2) output per trial, simulated from the trials' measured inputs."""
+    h = check_trials(trials, structure, what="the simulation of a model")
+    sizes = [np.asarray(tr.t).shape[0] for tr in trials]
+    columns = []
+    for i in (0, 1):
+        b, a, c = element_parameters(structure, theta, i)
+        columns.append(predict_output(b, a, c, output_data(trials, i, h), initial=initial))
+    both = np.column_stack(columns)
+    return np.split(both, np.cumsum(sizes)[:-1])

@@ -1,0 +1,105 @@
+"""Checks of the trials an estimator or a quality test receives, and their per-output view.
+
+For the structures with constant off-diagonal elements (Section 4, "Human Modeling") each
+output u_i of H(s) is a separate two-input problem,
+u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise (i != j),
+so the data are handed to the estimators one output at a time (:class:`OutputData`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from verify.errors import VerifyInputError
+from verify.identify.experiment import Trial
+from verify.identify.structure import Structure
+
+__all__ = ["OutputData", "check_trials", "output_data"]
+
+
+@dataclass(frozen=True)
+class OutputData:
+    """The data of output i: per trial the own input e_i, the other input e_j and u_i."""
+
+    output: int
+    own: tuple[np.ndarray, ...]
+    other: tuple[np.ndarray, ...]
+    y: tuple[np.ndarray, ...]
+    h: float
+
+    @property
+    def samples(self) -> int:
+        return sum(len(y) for y in self.y)
+
+
+def check_trials(trials: Sequence[Trial], structure: Structure, *, what: str = "estimation"
+                 ) -> float:
+    """The common sampling period of ``trials``, after checking them for ``structure``.
+
+    One-line :class:`VerifyInputError` for: no trials, arrays of the wrong shape,
+    non-finite samples, a non-uniform or unequal sampling step, a trial too short to
+    hold the structure's transient (more than 2 (poles + 1) samples are needed), or too
+    few samples in all for the parameters and the per-trial initial states.
+    """
+    if not isinstance(structure, Structure):
+        raise VerifyInputError(f"{what} needs a Structure (Structure.paper(), "
+                               f"Structure.poles_zeros(p, z)), got {structure!r}")
+    if not structure.diagonal_with_constant_coupling:
+        raise VerifyInputError(
+            f"{what} does not yet support the state-space structure order:{structure.states}; "
+            f"use --structure paper or poles:zeros (e.g. 2:1)")
+    trials = tuple(trials)
+    if not trials:
+        raise VerifyInputError(f"{what} needs at least one trial, got none")
+    h = None
+    for tr in trials:
+        if not isinstance(tr, Trial):
+            raise VerifyInputError(f"{what} needs Trial records, got {type(tr).__name__}")
+        t = np.asarray(tr.t, float)
+        e = np.asarray(tr.e, float)
+        u = np.asarray(tr.u, float)
+        label = f"trial {tr.trial}"
+        if t.ndim != 1 or e.shape != (t.shape[0], 2) or u.shape != (t.shape[0], 2):
+            raise VerifyInputError(f"{label}: t must be (N,), e and u (N, 2); got t {t.shape}, "
+                                   f"e {e.shape}, u {u.shape}")
+        if tr.valid is not None and not np.all(np.asarray(tr.valid, bool)):
+            raise VerifyInputError(f"{label} has samples marked invalid; remove them with the "
+                                   f"protocol's preprocessing (verify.identify.protocol) first")
+        need = 2 * (structure.poles + 1) + 1
+        if t.shape[0] < need:
+            raise VerifyInputError(f"{label} has {t.shape[0]} samples; a {structure.poles}-pole "
+                                   f"model needs at least {need} per trial")
+        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(e)) and np.all(np.isfinite(u))):
+            raise VerifyInputError(f"{label} has non-finite samples (NaN or Inf)")
+        dt = np.diff(t)
+        step = float(dt.mean())
+        if not (step > 0 and np.all(np.abs(dt - step) <= 1e-6 * step)):
+            raise VerifyInputError(f"{label} is not uniformly sampled (steps from {dt.min():.6g}"
+                                   f" to {dt.max():.6g} s)")
+        if h is None:
+            h = step
+        elif abs(step - h) > 1e-6 * h:
+            raise VerifyInputError(f"{label} has step {step:.6g} s, the first trial {h:.6g} s; "
+                                   f"all trials need one sampling rate")
+    per_output = (structure.zeros + 1) + structure.poles + 1 + len(trials) * structure.poles
+    total = sum(np.asarray(tr.t).shape[0] for tr in trials)
+    if total < 2 * per_output:
+        raise VerifyInputError(f"{len(trials)} trials with {total} samples in all are too few: "
+                               f"{per_output} parameters per output (with the initial states) "
+                               f"need at least {2 * per_output}")
+    return float(h)
+
+
+def output_data(trials: Sequence[Trial], i: int, h: float) -> OutputData:
+    """The view of output ``i`` (0 or 1) of checked trials."""
+    j = 1 - i
+    return OutputData(
+        i,
+        tuple(np.asarray(tr.e, float)[:, i] for tr in trials),
+        tuple(np.asarray(tr.e, float)[:, j] for tr in trials),
+        tuple(np.asarray(tr.u, float)[:, i] for tr in trials),
+        h,
+    )
