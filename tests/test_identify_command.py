@@ -1,7 +1,8 @@
 """`verify identify`: exit codes, files, JSON, JUnit, certificates, bad input.
 
-Logs come from the Section 4 simulator with few, short trials (fast); the shipped logs
-are exercised by the ``sec4.identification`` claim.
+The logs here are fast synthetic open-loop experiments with the shipped operators
+(:func:`identify_models.open_loop_log`, 4 trials); the closed-loop shipped logs are
+exercised by the ``sec4.identification`` claim.
 """
 
 from __future__ import annotations
@@ -12,23 +13,19 @@ from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from identify_models import open_loop_log
 
 from verify.cli import main
 from verify.identify.example_logs import EXAMPLES
-from verify.identify.simulated_experiment import simulate_experiment
 from verify.inputs.experiment_log import write_log
 
 
 @pytest.fixture(scope="module")
 def logs(tmp_path_factory) -> dict[str, Path]:
-    """Short simulated experiments (4 trials of 15 s) with the shipped operators."""
+    """Short synthetic experiments (4 trials of 15 s) with the shipped operators."""
     d = tmp_path_factory.mktemp("logs")
-    out = {}
-    for ex in EXAMPLES:
-        log = simulate_experiment(ex.model(), k_s=ex.k_s, n=4, trials=4, trial_seconds=15.0,
-                                  rate=120.0, seed=ex.seed)
-        out[ex.name] = write_log(log, d / f"{ex.name}.npz")
-    return out
+    return {ex.name: write_log(open_loop_log(ex.model(), trials=4, seed=ex.seed),
+                               d / f"{ex.name}.npz") for ex in EXAMPLES}
 
 
 @pytest.fixture(scope="module")

@@ -159,6 +159,7 @@ class Identified:
 def identify_logs(plan: Plan) -> Identified:
     """Logs -> prepared trials -> estimate and quality (steps 1 and 2)."""
     from verify.identify.estimation import estimate_model
+    from verify.identify.prediction import predict
     from verify.identify.protocol import prepare
     from verify.identify.quality import assess
     from verify.inputs.experiment_log import read_logs
@@ -166,22 +167,35 @@ def identify_logs(plan: Plan) -> Identified:
     log = read_logs(plan.logs)
     prepared = prepare(log, rate=plan.rate, split=plan.split)
     estimate = estimate_model(prepared.identification, plan.structure)
-    quality = assess(estimate, prepared.identification, prepared.validation)
+    on_id = assess(estimate, prepared.identification)
+    on_val = assess(estimate, prepared.validation)
+    predicted = predict(estimate.structure, estimate.theta, prepared.validation,
+                        initial="estimate")
+    quality = Quality(
+        [float(x) for x in on_id.fit], [float(x) for x in on_val.fit], residual_tests(on_val),
+        [np.asarray(t.t) for t in prepared.validation],
+        [np.asarray(t.u) for t in prepared.validation], list(predicted))
     ids = sorted({t.trial for t in prepared.identification})
     vals = sorted({t.trial for t in prepared.validation})
-    return Identified(estimate, _quality(quality, prepared.validation, estimate),
-                      prepared.rate, (ids, vals), prepared.notes)
+    return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes)
 
 
-def _quality(report: Any, validation: Sequence[Any], estimate: Estimate) -> Quality:
-    """Our view of the quality report of :mod:`verify.identify.quality`."""
-    from verify.identify.prediction import predict
-
-    predicted = predict(estimate.structure, estimate.theta, validation)
-    return Quality([float(x) for x in report.fit_identification],
-                   [float(x) for x in report.fit_validation], report.tests(),
-                   [np.asarray(t.t) for t in validation],
-                   [np.asarray(t.u) for t in validation], predicted)
+def residual_tests(q: Any) -> dict[str, Any]:
+    """The residual tests of :func:`verify.identify.quality.assess` on the validation
+    data, as numbers for the model file's [identification] table."""
+    white = sorted(q.whiteness, key=lambda t: t.output)
+    cross = sorted(q.cross_correlation, key=lambda t: (t.output, t.input))
+    return {
+        "residual_tests_data": "validation",
+        "whiteness_statistic": [float(t.statistic) for t in white],
+        "whiteness_threshold": float(white[0].threshold),
+        "whiteness_lags": int(white[0].lags),
+        "cross_correlation_statistic": [[float(t.statistic) for t in cross if t.output == i]
+                                        for i in (1, 2)],
+        "cross_correlation_threshold": float(cross[0].threshold),
+        "residual_tests_level": float(white[0].level),
+        "residual_tests_passed": bool(q.residuals_pass),
+    }
 
 
 # ------------------------------------------------------------------ estimate -> verdicts
@@ -387,7 +401,8 @@ def lines(o: Outcome) -> list[str]:
                + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
     se = np.sqrt(np.clip(np.diag(est.covariance), 0, None))
     out.append("  parameters: " + ", ".join(
-        f"{n} = {c} ± {s:.2g}" for n, c, s in zip(est.names, o.ident.center, se, strict=True)))
+        f"{n} = {float(c):.10g} ± {s:.2g}" for n, c, s in zip(est.names, o.ident.center, se,
+                                                            strict=True)))
     out.append(f"  model file: {o.model_path}")
     d = o.nominal.decision
     out.append(f"  nominal ({'all frequencies' if o.plan.band is None else o.robust.where()})"
