@@ -6,6 +6,7 @@ from verify.claims import (
     section3_dynamics,  # noqa: F401  (trajectories; dropped assumptions)
     section3_sos,  # noqa: F401  (inequality steps re-proved by SOS certificates)
     section4,  # noqa: F401  (human passivity)
+    section4_identification,  # noqa: F401  (identification from the shipped logs)
 )
 from verify.claims.registry import REGISTRY
 

@@ -68,15 +68,15 @@ def _store(context: CheckContext, outcome) -> list[Path]:
     "validate), with (b1 s + b0)/(s^2 + a1 s + a0) diagonal and constant off-diagonal "
     "elements, fit ratios of 51-78 %, and its passivity is then judged from nu(w).",
     statement="On the shipped simulated logs (known operators of the paper's class, the "
-    "paper's protocol): the true parameters lie in the 95 % confidence region; every model "
-    "of the passive operator's region is passive on a band [0, w_max] with w_max >= 1 "
-    "rad/s, while the identified model is not passive at all frequencies (c12 + c21 != 0); "
-    "the non-passive operator's region is refuted on [0, 5] rad/s with an exact witness.",
+    "paper's protocol): every model of the passive operator's 95 % confidence region is "
+    "passive on a band [0, w_max] with w_max >= 1 rad/s, while the identified model is not "
+    "passive at all frequencies (c12 + c21 != 0); the non-passive operator's region is "
+    "refuted on [0, 5] rad/s with an exact witness. Whether the true parameters lie in "
+    "each region is reported (exactly) but is no criterion of one seeded experiment.",
     method="verify identify: protocol (dead time, decimation to 20 Hz, 6:6 split), "
-    "refined IV + prediction-error estimate with asymptotic covariance; region membership "
-    "of the truth in exact arithmetic; robust verdict by exact interval branch and bound "
-    "(certificate re-checked with no solver) or a model of the region with the gate's "
-    "exact witness.",
+    "refined IV + prediction-error estimate with asymptotic covariance; robust verdict "
+    "by exact interval branch and bound (certificate re-checked with no solver) or a "
+    "model of the region with the gate's exact witness.",
     scope="simulated logs of known operators; the paper's data are not published, so its "
     "own identified models cannot be re-derived",
 )
@@ -84,7 +84,7 @@ def identification(context: CheckContext) -> Outcome:
     from verify.passivity.check import robust_band as rb
 
     evidence: list[Evidence] = []
-    ok = True
+    truths: list[tuple[str, bool]] = []
     passive_all = _run(context, "passive_human", None)
     nonpassive = _run(context, "nonpassive_human", REFUTE_BAND)
     for name, o in (("passive_human", passive_all), ("nonpassive_human", nonpassive)):
@@ -99,18 +99,19 @@ def identification(context: CheckContext) -> Outcome:
         truth = _truth(name)
         distance = rb.quadratic_form(rb.inverse(region.covariance), region.center, truth)
         inside = distance <= region.chi2
-        ok &= inside
-        evidence.append(Evidence(
+        evidence.append(Evidence(  # reported, not a criterion: one seeded experiment
             EvidenceKind.EXACT_INSTANCE, f"{name}: the true parameters are "
-            f"{'inside' if inside else 'OUTSIDE'} the 95 % region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
-            f"{float(distance):.4g}, chi2 = {float(region.chi2):.4g}, exact)",
-            {"distance": str(distance), "chi2": str(region.chi2)}, passed=bool(inside)))
+            f"{'inside' if inside else 'outside'} the 95 % region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
+            f"{float(distance):.4g}, chi2 = {float(region.chi2):.4g}, exact; one seeded "
+            "experiment, reported only: coverage over seeds is the estimator's benchmark)",
+            {"distance": str(distance), "chi2": str(region.chi2), "inside": bool(inside)}))
+        truths.append((name, bool(inside)))
     all_refuted = passive_all.robust.verdict == "not passive"
     search = passive_all.band_search
     band_ok = search.w_max is not None and search.w_max >= 1
     refuted = nonpassive.robust.verdict == "not passive" and \
         nonpassive.robust.witness is not None
-    ok &= all_refuted and band_ok and refuted
+    ok = all_refuted and band_ok and refuted
     stored = _store(context, passive_all) + _store(context, nonpassive)
     robust_paths = [p for p in stored if "-robust-" in p.name]
     evidence.append(Evidence(
@@ -131,10 +132,11 @@ def identification(context: CheckContext) -> Outcome:
             evidence.append(Evidence(EvidenceKind.FIGURE, f"{o.plan.name}: {path.stem}",
                                      {"href": str(rel)}, path=str(path)))
     w = "none" if search.w_max is None else f"{float(search.w_max):.3g} rad/s"
+    covered = ", ".join(f"{n}: {'inside' if t else 'outside'}" for n, t in truths)
     return Outcome(
         Verdict.VERIFIED if ok else Verdict.INCONCLUSIVE,
-        "From the shipped simulated logs, the identification recovers both operators "
-        "(true parameters inside the 95 % region, exactly). For the passive operator, "
+        "From the shipped simulated logs (true parameters vs the 95 % region: "
+        f"{covered}). For the passive operator, "
         f"robust passivity of the whole region is proved up to w_max = {w} by an exactly "
         "checked certificate; at all frequencies it fails, as for almost every identified "
         "model of the paper's class: an identified c12 + c21 is never exactly 0 while "
