@@ -245,8 +245,10 @@ def _nominal(model, band, certs_dir: Path):
     return result
 
 
-def decide_identified(plan: Plan, identified: Identified) -> Outcome:
-    """Steps 3 to 6, in a temporary directory; returns the files to write."""
+def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7) -> Outcome:
+    """Steps 3 to 6, in a temporary directory; returns the files to write.
+
+    ``band_steps`` bounds the bisection for the largest proved band."""
     est = identified.estimate
     q = identified.quality
     extra = {
@@ -296,7 +298,8 @@ def decide_identified(plan: Plan, identified: Identified) -> Outcome:
                                 max_boxes=plan.max_boxes)
         nyquist = math.pi * float(identified.rate)
         search = largest_band(region, est.structure, w1, nyquist, name=plan.name,
-                              source=source, max_boxes=max(1000, plan.max_boxes // 4))
+                              source=source, steps=band_steps,
+                              max_boxes=max(1000, plan.max_boxes // 4))
     for cert in (robust.certificate, search.certificate):
         if cert is not None:
             band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
