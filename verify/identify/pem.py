@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import itertools
 from dataclasses import dataclass, field
+from math import comb
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -37,6 +38,8 @@ from verify.identify.trial_data import OutputData
 __all__ = ["OutputFit", "refine"]
 
 _BAD = 1e6
+#: Poles are searched in |s| <= MAX_POLE_FRACTION times the Nyquist frequency pi/h.
+MAX_POLE_FRACTION = 0.5
 #: Residual autocovariance lags the covariance accounts for (0: white residuals assumed).
 COVARIANCE_LAGS = 20  # residual returned for a denominator whose simulation overflows
 
@@ -72,6 +75,20 @@ def _residual(x: np.ndarray, data: OutputData, zeros: int, n: int) -> np.ndarray
     return r
 
 
+def denominator_bounds(n: int, h: float) -> np.ndarray:
+    """Upper bounds binom(n, k) w^(n-k) of a_k (descending order), w = MAX_POLE_FRACTION pi/h.
+
+    Every denominator whose roots lie in |s| <= w has |a_k| below these bounds (the
+    coefficients are elementary symmetric functions of the roots), and every stable one
+    has a_k > 0; the search stays in that box. Without it, on decimated closed-loop data
+    the output-error search can run off to poles far above the Nyquist frequency, where
+    the model imitates the leader's inverse (e is nearly the integral of -u_h) through the
+    look-ahead that the protocol's zero-phase anti-aliasing filter gives e.
+    """
+    w = MAX_POLE_FRACTION * np.pi / h
+    return np.array([comb(n, k) * w ** (n - k) for k in range(n - 1, -1, -1)], float)
+
+
 def ar_start(data: OutputData, a: np.ndarray, zeros: int, order: int) -> np.ndarray:
     """d_1..d_p of an AR(p) model of the output error for denominator ``a`` (least squares),
     the start of the noise model's refinement."""
@@ -96,9 +113,12 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
     n = len(a0)
     d0 = np.zeros(0) if d0 is None else np.asarray(d0, float)
     x0 = np.concatenate([a0, d0])
-    sol = least_squares(_residual, x0, args=(data, zeros, n), jac="3-point", method="lm",
-                        x_scale="jac", xtol=1e-12, ftol=1e-12, gtol=1e-12,
-                        max_nfev=400 * len(x0))
+    upper = np.concatenate([denominator_bounds(n, data.h), np.full(len(d0), np.inf)])
+    lower = np.concatenate([np.zeros(n), np.full(len(d0), -np.inf)])
+    x0 = np.clip(x0, lower, np.where(np.isfinite(upper), upper * (1 - 1e-9), upper))
+    sol = least_squares(_residual, x0, args=(data, zeros, n), jac="3-point", method="trf",
+                        bounds=(lower, upper), x_scale="jac", xtol=1e-12, ftol=1e-12,
+                        gtol=1e-12, max_nfev=400 * len(x0))
     a, d = sol.x[:n], sol.x[n:]
     w = np.concatenate(([1.0], d)) if len(d) else None
     beta, r, X = fit_linear(a, data, zeros, w)
