@@ -52,22 +52,36 @@ class Filter:
         # with C = I and D = 0, scipy's FOH feedthrough is the offset M in z_k = xi_k + M x_k,
         # where xi_{k+1} = Ad xi_k + Bd x_k is the recursion scipy's discrete model runs
         self.Ad, self.M = Ad, Dd[:, 0]
-        self.num, self.den = signal.ss2tf(Ad, Bd, np.eye(n), np.zeros((n, 1)))
-        self._free = np.zeros((0, n))
+        self.den = np.real(np.poly(Ad))
+        # first n + 1 powers of Ad; every later one follows from Cayley-Hamilton
+        first = [np.eye(n)]
+        for _ in range(n):
+            first.append(Ad @ first[-1])
+        self._first = np.array(first)
+        # numerators of xi_j = N_j(z)/den(z) x: the impulse response 0, Bd, Ad Bd, ...
+        # convolved with den and truncated (den(z) times the response is a polynomial)
+        impulse = np.concatenate([np.zeros((1, n)), (self._first[:n] @ Bd)[:, :, 0]])
+        self.num = np.array([np.convolve(self.den, impulse[:, j])[: n + 1] for j in range(n)])
+        self._free = np.zeros((0, n, n))
 
     def _powers(self, count: int) -> np.ndarray:
-        """Ad^k for k = 0..count-1, shape (count, n, n) (cached, grown on demand)."""
+        """Ad^k for k = 0..count-1, shape (count, n, n) (cached, grown on demand).
+
+        Each entry of Ad^k obeys the recursion of the characteristic polynomial den, so
+        all entries are one all-pole impulse response g combined with the first n powers.
+        """
         if self._free.shape[0] < count:
             n = self.n
-            impulse = np.zeros(count + 1)
+            impulse = np.zeros(count)
             impulse[0] = 1.0
-            out = np.empty((count, n, n))
-            for col in range(n):  # impulse response of (zI - Ad)^-1 e_col: 0, e_col, Ad e_col..
-                b = signal.ss2tf(self.Ad, np.eye(n)[:, col:col + 1], np.eye(n),
-                                 np.zeros((n, 1)))[0]
-                for row in range(n):
-                    out[:, row, col] = signal.lfilter(b[row], self.den, impulse)[1:]
-            self._free = out
+            g = signal.lfilter([1.0], self.den, impulse)
+            # entry sequences s_k = sum_m c_m g_{k-m}, with c = (den * s)[:n]
+            coeff = np.array([sum(self.den[j] * self._first[m - j] for j in range(m + 1))
+                              for m in range(n)])  # (n, n, n)
+            shifted = np.zeros((count, n))
+            for m in range(n):
+                shifted[m:, m] = g[: count - m]
+            self._free = (shifted @ coeff.reshape(n, n * n)).reshape(count, n, n)
         return self._free[:count]
 
     def filtered(self, x: np.ndarray) -> np.ndarray:

@@ -19,7 +19,10 @@ class Estimate:
     samples the estimate used; ``method`` names the estimator; ``covariance_kind`` says
     where ``covariance`` comes from: "asymptotic" (the prediction-error formula
     sigma^2 (J^T J)^-1, :mod:`verify.identify.pem`) or "bootstrap" (over trials,
-    :mod:`verify.identify.bootstrap`).
+    :mod:`verify.identify.bootstrap`); ``noise_model`` per output the whitening filter
+    (1, d_1, ..., d_p) at the data's sampling step: the output noise is modelled as
+    white noise through 1/D(q) (Box-Jenkins with AR noise); (1.0,) or empty means white
+    output noise (output error).
     """
 
     structure: Structure
@@ -30,6 +33,7 @@ class Estimate:
     noise_std: np.ndarray
     samples: int
     covariance_kind: str = "asymptotic"
+    noise_model: tuple[tuple[float, ...], ...] = ()
 
     def standard_errors(self) -> np.ndarray:
         """Square roots of the covariance's diagonal, in ``names`` order."""

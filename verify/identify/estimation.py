@@ -12,9 +12,10 @@ u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. Method ``"riv+pem"`` (the default):
    of least cost is kept (:func:`fit_output` says why the grid is needed).
 
 The covariance held in :attr:`Estimate.covariance` by default is the asymptotic
-prediction-error covariance sigma^2 (J^T J)^-1 per output (outputs independent):
-it is what the theory gives for white output noise, costs one Jacobian, and is exact
-for Gaussian noise up to O(1/N). The bootstrap over trials
+prediction-error covariance per output (outputs independent), in its colour-robust
+sandwich form (:mod:`verify.identify.pem`): sigma^2 (J^T J)^-1 for white residuals,
+corrected for the colour the protocol's decimation gives the noise. It costs one
+Jacobian and is what the theory gives to O(1/N). The bootstrap over trials
 (:func:`verify.identify.bootstrap.bootstrap`) is the alternative when the noise is in
 doubt; it needs many re-estimates and, with the paper's six identification trials, has
 few distinct resamples.
@@ -31,17 +32,23 @@ import numpy as np
 from verify.errors import VerifyInputError
 from verify.identify.estimate import Estimate
 from verify.identify.experiment import Trial
-from verify.identify.pem import OutputFit, refine
+from verify.identify.pem import OutputFit, ar_start, refine
 from verify.identify.prediction import fit_linear
+from verify.identify.quality import whiteness
 from verify.identify.riv import srivc
 from verify.identify.structure import Structure
 from verify.identify.trial_data import OutputData, check_trials, output_data
 
 __all__ = ["METHODS", "estimate_model", "first_prefilters"]
 
+#: Highest order p of the AR noise model 1/D(q) tried when the output error is coloured.
+MAX_NOISE_ORDER = 6
+
 #: Estimation methods: name -> description.
 METHODS = {
     "riv+pem": "SRIVC initial estimate, then output-error prediction-error refinement",
+    "riv+bj": "as riv+pem, then an AR noise model (Box-Jenkins) when the output error is "
+              "coloured",
     "arx+oe": "baseline: discrete ARX least squares, then output-error least squares "
               "with zero initial states (verify.identify.baseline)",
 }
@@ -80,17 +87,20 @@ def _cost(a: np.ndarray, data: OutputData, zeros: int) -> float:
     return value if np.isfinite(value) else np.inf
 
 
-def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3) -> OutputFit:
+def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
+               noise: bool = False) -> OutputFit:
     """The output-error estimate of one output, refined from the best starting points.
 
     Candidates: the SRIVC denominators from each first prefilter and the grid of
     :func:`starting_denominators`. The ``starts`` candidates of least output-error cost
     (after eliminating the linear parameters) are refined; the refinement of least cost
-    is kept. The grid is there because in this loop SRIVC can be ill-conditioned: the
-    leader is noise-free, so u_h is close to a deterministic function of the derivative
-    of e and the equation-error regressors of u_h and e are nearly collinear; the
-    output-error criterion, whose predictor is causal, separates H(s) from that inverse
-    relation (the operator noise at a sample is not yet in e).
+    is kept, then given a noise model if its residual is coloured
+    (:func:`with_noise_model`, when ``noise``). The grid is there because in this loop
+    SRIVC can be ill-conditioned: the leader is noise-free, so u_h is close to a
+    deterministic function of the derivative of e and the equation-error regressors of
+    u_h and e are nearly collinear; the output-error criterion, whose predictor is
+    causal, separates H(s) from that inverse relation (the operator noise at a sample
+    is not yet in e).
     """
     candidates = []
     for lam in first_prefilters(data.h):
@@ -111,7 +121,49 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3) -> 
     if best is None:
         raise VerifyInputError(f"output {data.output + 1}: no starting point of the estimator "
                                f"gave a finite fit; the data do not fit a {poles}-pole model")
-    return best
+    return with_noise_model(data, best, zeros) if noise else best
+
+
+def _white(fit: OutputFit, data: OutputData) -> bool:
+    lag = len(fit.noise) - 1
+    parts, start = [], 0
+    for own in data.own:
+        N = len(own) - lag
+        parts.append(fit.residual[start:start + N])
+        start += N
+    try:
+        return whiteness(parts).passed
+    except VerifyInputError:
+        return True  # too short to test: keep the simpler model
+
+
+def with_noise_model(data: OutputData, fit: OutputFit, zeros: int) -> OutputFit:
+    """``fit`` itself if its output error passes the whiteness test, else the Box-Jenkins
+    refinement with AR(p) noise 1/D(q) for the smallest p <= MAX_NOISE_ORDER whose
+    prediction errors pass it (the least BIC among them if none does).
+
+    The protocol's anti-aliasing filter colours the operator noise of the decimated data;
+    in closed loop a wrong noise model biases the direct prediction-error estimate, and
+    the covariance sigma^2 (J^T J)^-1 needs white prediction errors (Ljung 1999, Sec.
+    9.3 and 13.4).
+    """
+    if _white(fit, data):
+        return fit
+    best, best_bic = None, np.inf
+    for order in range(1, MAX_NOISE_ORDER + 1):
+        try:
+            bj = refine(data, fit.a, zeros, ar_start(data, fit.a, zeros, order))
+        except (np.linalg.LinAlgError, ValueError):
+            continue
+        if not np.isfinite(bj.cost):
+            continue
+        if _white(bj, data):
+            return bj
+        N = bj.residual.shape[0]
+        bic = N * np.log(bj.cost / N) + (len(fit.b) + len(fit.a) + 1 + order) * np.log(N)
+        if bic < best_bic:
+            best, best_bic = bj, bic
+    return fit if best is None else best
 
 
 def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, samples: int,
@@ -127,7 +179,8 @@ def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, sampl
     cov = 0.5 * (cov + cov.T)
     return Estimate(structure, theta, cov, structure.names(), method,
                     np.array([fit.sigma for fit in fits]), samples,
-                    covariance_kind=covariance_kind)
+                    covariance_kind=covariance_kind,
+                    noise_model=tuple(tuple(float(v) for v in fit.noise) for fit in fits))
 
 
 def estimate_model(trials: Sequence[Trial], structure: Structure, *,
@@ -142,7 +195,9 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
     structure
         :meth:`Structure.paper` or :meth:`Structure.poles_zeros`.
     method
-        ``"riv+pem"`` (module docstring) or ``"arx+oe"`` (the baseline of the benchmark).
+        ``"riv+pem"`` (module docstring), ``"riv+bj"`` (with an AR noise model when the
+        output error is coloured, :func:`with_noise_model`) or ``"arx+oe"`` (the
+        baseline of the benchmark).
 
     Returns
     -------
@@ -163,6 +218,6 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
         from verify.identify.baseline import oe_from_arx
 
         return oe_from_arx(trials, structure, h)
-    fits = [fit_output(output_data(trials, i, h), structure.poles, structure.zeros)
-            for i in (0, 1)]
+    fits = [fit_output(output_data(trials, i, h), structure.poles, structure.zeros,
+                       noise=method == "riv+bj") for i in (0, 1)]
     return assemble(structure, fits, method, samples)

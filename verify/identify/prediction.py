@@ -20,13 +20,14 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
+from scipy import signal
 
 from verify.identify.ct_filters import Filter
 from verify.identify.experiment import Trial
 from verify.identify.structure import Structure
 from verify.identify.trial_data import OutputData, check_trials, output_data
 
-__all__ = ["design", "element_parameters", "fit_linear", "predict", "predict_output"]
+__all__ = ["design", "element_parameters", "fit_linear", "predict", "predict_output", "whiten"]
 
 
 def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
@@ -55,40 +56,62 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     return X
 
 
-def fit_linear(a: np.ndarray, data: OutputData, zeros: int
+def whiten(M: np.ndarray, data: OutputData, w: np.ndarray | None) -> np.ndarray:
+    """Rows of M (aligned with the samples of ``data``) filtered by the FIR whitening
+    filter D(q) = 1 + w_1 q^-1 + ... + w_p q^-p within each trial, the first p rows of
+    each trial dropped (they would need samples before the trial). ``None``: M as is."""
+    if w is None or len(w) <= 1:
+        return M
+    p = len(w) - 1
+    parts = []
+    row = 0
+    for own in data.own:
+        N = len(own)
+        parts.append(signal.lfilter(w, [1.0], M[row:row + N], axis=0)[p:])
+        row += N
+    return np.concatenate(parts)
+
+
+def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None = None
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(beta, residual, X): the least-squares numerator, coupling and initial states for
-    denominator ``a`` (columns as :func:`design`), the residual y - X beta, and X.
+    denominator ``a`` (columns as :func:`design`), the residual and X.
 
-    The initial states are eliminated trial by trial (projection onto the orthogonal
-    complement of the trial's free responses), so the shared least-squares problem has
-    only zeros + 2 columns.
+    With a whitening filter ``w`` (see :func:`whiten`) the least squares and the
+    returned residual are those of the whitened equations (the prediction errors of a
+    Box-Jenkins model with noise 1/D(q) times white noise); without, the output error
+    y - X beta. The initial states are eliminated trial by trial (projection onto the
+    orthogonal complement of the trial's free responses), so the shared least-squares
+    problem has only zeros + 2 columns.
     """
     X = design(a, data, zeros)
     y = np.concatenate(data.y)
     p = zeros + 2
     n = len(a)
     if not np.all(np.isfinite(X)):
-        return np.full(X.shape[1], np.nan), np.full(y.shape, np.inf), X
-    Xp = X[:, :p].copy()
-    yp = y.copy()
+        return np.full(X.shape[1], np.nan), np.full(whiten(y, data, w).shape, np.inf), X
+    Xw = whiten(X, data, w)
+    yw = whiten(y, data, w)
+    lag = 0 if w is None else len(w) - 1
+    Xp = Xw[:, :p].copy()
+    yp = yw.copy()
     bases = []
     row = 0
     for k, own in enumerate(data.own):
-        rows = slice(row, row + len(own))
-        Q = np.linalg.qr(X[rows, p + k * n:p + (k + 1) * n])[0]
-        bases.append((rows, Q))
+        rows = slice(row, row + len(own) - lag)
+        Q = np.linalg.qr(Xw[rows, p + k * n:p + (k + 1) * n])[0]
+        bases.append(rows)
         Xp[rows] -= Q @ (Q.T @ Xp[rows])
         yp[rows] -= Q @ (Q.T @ yp[rows])
-        row += len(own)
+        row += len(own) - lag
     scale = np.linalg.norm(Xp, axis=0)
     scale[scale == 0] = 1.0
     shared = np.linalg.lstsq(Xp / scale, yp, rcond=None)[0] / scale
     beta = np.empty(X.shape[1])
     beta[:p] = shared
-    for k, (rows, _) in enumerate(bases):
-        F = X[rows, p + k * n:p + (k + 1) * n]
-        beta[p + k * n:p + (k + 1) * n] = np.linalg.lstsq(F, y[rows] - X[rows, :p] @ shared,
+    for k, rows in enumerate(bases):
+        F = Xw[rows, p + k * n:p + (k + 1) * n]
+        beta[p + k * n:p + (k + 1) * n] = np.linalg.lstsq(F, yw[rows] - Xw[rows, :p] @ shared,
                                                           rcond=None)[0]
     return beta, yp - Xp @ shared, X
 

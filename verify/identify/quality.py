@@ -6,6 +6,9 @@
   measured input e with each trial's initial state estimated by least squares
   (:func:`verify.identify.prediction.predict`), on identification and validation data
   alike (a trial starts in the operator's state, not at rest).
+* The residual tests take the model's prediction errors: the output error y - yhat,
+  filtered by the noise model's whitening filter D(q) when the estimate has one
+  (:attr:`Estimate.noise_model`, the first p samples of each trial dropped).
 * Residual whiteness: Ljung-Box statistic Q = N (N + 2) sum_{tau=1..M} rho(tau)^2 /
   (N - tau) of the residual's normalised autocorrelation rho (products within trials),
   compared with the chi-square quantile chi2_M(level) (Ljung & Box, Biometrika 65(2),
@@ -27,6 +30,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import signal
 from scipy.stats import chi2
 
 from verify.errors import VerifyInputError
@@ -161,9 +165,12 @@ def assess(estimate: Estimate, trials: Sequence[Trial], *, lags: int = LAGS,
     white = []
     cross = []
     for i in (0, 1):
-        res = [x[:, i] - p[:, i] for x, p in zip(u, yhat, strict=True)]
+        w = np.asarray(estimate.noise_model[i] if estimate.noise_model else (1.0,), float)
+        lag = len(w) - 1
+        res = [signal.lfilter(w, [1.0], x[:, i] - p[:, i])[lag:]
+               for x, p in zip(u, yhat, strict=True)]
         white.append(whiteness(res, output=i + 1, lags=lags, level=level))
         for j in (0, 1):
-            cross.append(cross_correlation(res, [x[:, j] for x in e], output=i + 1,
+            cross.append(cross_correlation(res, [x[lag:, j] for x in e], output=i + 1,
                                            input=j + 1, lags=lags, level=level))
     return Quality(fits, tuple(white), tuple(cross), sum(len(x) for x in u))
