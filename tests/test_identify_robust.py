@@ -142,3 +142,43 @@ def test_budget_exhaustion_is_inconclusive_not_passive(tmp_path):
     assert r.verdict in ("inconclusive", "not passive")
     if r.verdict == "inconclusive":
         assert "budget" in r.reason
+
+
+def test_first_order_bound_holds_on_the_box_part_of_the_ellipsoid():
+    """Sampled points of (box ∩ ellipsoid) x t never fall below the first-order bound."""
+    shape = rb.Shape(1, 2)
+    theta = np.array([1.2, 0.8, 2.0, 1.5, 1.1, 0.9, 2.1, 1.4, 0.06, -0.04])
+    rng = np.random.default_rng(3)
+    cov = np.diag((0.02 * np.abs(theta)) ** 2)
+    cov[-2:, -2:] = np.diag([0.005**2, 0.005**2])
+    phi_c = [*theta[:-2], theta[-2] + theta[-1]]
+    from verify.identify.region import make_region
+
+    region = make_region([Fraction(str(x)) for x in theta], cov, Fraction(19, 20))
+    pc, cov_phi = rb.reduce_region(region.center, region.covariance)
+    S = np.linalg.inv(np.array([[float(x) for x in row] for row in cov_phi]))
+    chi2 = float(region.chi2)
+    for _ in range(6):
+        offset = rng.normal(size=len(phi_c)) * 0.02 * np.abs(phi_c)
+        half = 0.01 * np.abs(phi_c)
+        box = [(mpq(float(c + o - h)), mpq(float(c + o + h)))
+               for c, o, h in zip(phi_c, offset, half, strict=True)]
+        x0 = float(rng.uniform(0, 30))
+        t = (mpq(x0), mpq(x0 + 1))
+        centre, parts = rb.linear_parts(box, t, "x", shape)
+        lows = []
+        for value, grad in parts:
+            m = rb.gradient_midpoints(grad)
+            quad = sum(m[i] * cov_phi[i][j] * m[j] for i in range(9) for j in range(9))
+            s = mpq(float(np.sqrt(float(region.chi2 * quad)))) * mpq(1001, 1000)
+            lows.append(float(rb.linear_bound(box, centre, value, grad, pc, s)))
+        for _ in range(200):
+            point = np.array([float(lo) + float(hi - lo) * u for (lo, hi), u
+                              in zip(box, rng.uniform(size=9), strict=True)])
+            d = point - np.array([float(x) for x in pc])
+            if d @ S @ d > chi2:
+                continue  # the bound is about the ellipsoid's part of the box only
+            w = np.sqrt(x0 + rng.uniform())
+            values = _direct(np.r_[point[:-1], point[-1], 0.0], shape, w)
+            for low, v in zip(lows, values, strict=True):
+                assert v >= low - 1e-9 * (1 + abs(v))

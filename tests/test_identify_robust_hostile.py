@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from gmpy2 import mpq
-from identify_models import PAPER_THETA, paper_model
+from identify_models import PAPER_THETA, correlated_covariance, paper_model
 
 from verify.identify import robust_certificate as rc
 from verify.identify.model_writer import write_identified_model
@@ -223,3 +223,35 @@ def test_a_region_containing_a_non_passive_model_is_refuted_with_a_witness(tmp_p
     w = Fraction(r.witness.data["omega"])
     assert 0 <= w <= 8 and frequency_witness_at(em, w) is not None
     assert json.dumps(r.to_json())  # the JSON summary is serialisable
+
+
+@pytest.fixture(scope="module")
+def with_linear_leaves(tmp_path_factory):
+    """A proof using first-order leaves (a small region near its largest band)."""
+    d = tmp_path_factory.mktemp("linear")
+    theta = list(PAPER_THETA)
+    cov = correlated_covariance(theta, relative=0.005, coupling=0.005 / 4)
+    f = write_identified_model(d / "model.toml", name="small", structure=Structure.paper(),
+                               theta=theta, covariance=cov)
+    band = (Fraction(0), Fraction(103, 10))
+    r = robust_verdict(f.region(), f.structure, band, name="small", source="")
+    assert r.verdict == "passive"
+    assert any(isinstance(n, list) and n[0] == "linear"
+               for n in r.certificate["pieces"][0]["tree"])
+    return r.certificate
+
+
+@pytest.mark.parametrize("position,factor,needle", [
+    (4, mpq(1, 100), "sqrt(chi2"),  # a square-root bound too small
+    (1, mpq(10**6), "first-order bound"),  # a claimed bound too large
+])
+def test_tampered_first_order_leaves_are_refused(with_linear_leaves, tmp_path, position,
+                                                 factor, needle):
+    good = _detached(with_linear_leaves)
+    assert check_stored_certificate(_write(tmp_path, good)).ok
+    bad = copy.deepcopy(good)
+    tree = bad["pieces"][0]["tree"]
+    k = next(i for i, n in enumerate(tree) if isinstance(n, list) and n[0] == "linear")
+    tree[k][position] = str(mpq(tree[k][position]) * factor)
+    check = check_stored_certificate(_write(tmp_path, bad))
+    assert not check.ok and needle in check.reason

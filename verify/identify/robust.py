@@ -109,12 +109,13 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
     r = half_widths(cov_phi, region.chi2)
     S = rb.inverse(cov_phi)
     ellipsoid = Ellipsoid(np.array([float(x) for x in phi]),
-                          np.array([[float(x) for x in row] for row in S]), float(region.chi2))
+                          np.array([[float(x) for x in row] for row in S]), float(region.chi2),
+                          np.array([[float(x) for x in row] for row in cov_phi]))
     trees = []
     for variable, t1, t2 in rc.pieces_for(band):
         root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(t1, t2)]
         found = search(root, variable, shape, ellipsoid, stability=band is None,
-                       max_boxes=max_boxes)
+                       max_boxes=max_boxes, exact=(cov_phi, phi, region.chi2))
         if found.tree is None:
             if hints is not None:
                 hints += [(point, variable) for point, _ in found.candidates]

@@ -7,9 +7,11 @@ the band [w1, w2] in rad/s, or null for all frequencies), the statement derived 
 a fingerprint of the claim (also in the file name), the half-widths of the box enclosing
 the region's image in φ = (diagonal parameters, c12 + c21), and one tree of midpoint
 splits per frequency piece whose leaves are *positive* (claimed lower bounds of N_1, N_2
-and det, all > 0) or *outside* (a point whose tangent plane shows the box misses the
-ellipsoid). :func:`check_robust_file` re-derives everything and decides it exactly with
-no solver (:mod:`verify.passivity.check.robust_band`):
+and det, all > 0, by interval arithmetic on the box), *linear* (claimed lower bounds and
+square-root bounds of the first-order form on the box's part of the ellipsoid,
+:func:`verify.passivity.check.robust_band.linear_bound`) or *outside* (a point whose
+tangent plane shows the box misses the ellipsoid). :func:`check_robust_file` re-derives
+everything and decides it exactly with no solver (:mod:`verify.passivity.check.robust_band`):
 
 * Σ symmetric positive definite, χ² the level's quantile (to 1e-9, scipy), the
   fingerprint, file name and statement derived from the claim;
@@ -173,6 +175,8 @@ def _leaf(node: list, dims: int) -> tuple[str, list[mpq]]:
     if node[0] == "outside" and len(node) == 2 and isinstance(node[1], list) \
             and len(node[1]) == dims:
         return "outside", [rational(v, "leaf point") for v in node[1]]
+    if node[0] == "linear" and len(node) == 7:
+        return "linear", [rational(v, "leaf bound") for v in node[1:]]
     raise CertificateFormatError(f"malformed leaf {str(node)[:60]}")
 
 
@@ -249,6 +253,10 @@ def check_leaves(data: dict[str, Any], shape: rb.Shape, region: Region,
                 if kind == "positive":
                     result = rb.check_positive_leaf(box, variable, shape, values,
                                                     stability=band is None)
+                elif kind == "linear":
+                    result = rb.check_linear_leaf(box, variable, shape, cov_phi, phi,
+                                                  region.chi2, values[:3], values[3:],
+                                                  stability=band is None)
                 else:
                     result = rb.check_outside_leaf(box, S, phi, region.chi2, values)
                 if not result.ok:

@@ -105,6 +105,7 @@ class Ellipsoid:
     center: np.ndarray
     S: np.ndarray  # inverse covariance
     chi2: float
+    covariance: np.ndarray | None = None  # Σ of φ (for the first-order leaves)
 
     def q(self, theta: np.ndarray) -> np.ndarray:
         d = theta - self.center
@@ -130,6 +131,58 @@ class Ellipsoid:
 def short(x: float, digits: int = 12) -> mpq:
     """A short decimal rational near x."""
     return mpq(Fraction(f"{x:.{digits}g}"))
+
+
+def float_linear(LO: np.ndarray, HI: np.ndarray, variable: str, shape: rb.Shape,
+                 ellipsoid: Ellipsoid) -> np.ndarray:
+    """Float first-order bounds (:func:`verify.passivity.check.robust_band.linear_bound`)
+    of the three conditions, the worst relative to its size, per box (proposals)."""
+    dims = LO.shape[1] - 1
+    ops = rb.GradOps(FloatOps, dims)
+    t = (LO[:, -1], HI[:, -1])
+    centre = (LO[:, :-1] + HI[:, :-1]) / 2
+    with np.errstate(all="ignore"):
+        at = rb.leaf_bounds([ops.variable((centre[:, k], centre[:, k]), k)
+                             for k in range(dims)], t, variable, shape, ops)
+        over = rb.leaf_bounds([ops.variable((LO[:, k], HI[:, k]), k) for k in range(dims)],
+                              t, variable, shape, ops)
+        worst = None
+        for (value, _), (_, grad) in zip(at, over, strict=True):
+            m = np.column_stack([(g[0] + g[1]) / 2 for g in grad])
+            rho = np.column_stack([(g[1] - g[0]) / 2 for g in grad])
+            quad = np.einsum("ki,ij,kj->k", m, ellipsoid.covariance, m)
+            bound = (value[0] - np.sqrt(np.maximum(ellipsoid.chi2 * quad, 0))
+                     + np.sum(m * (ellipsoid.center - centre), axis=1)
+                     - np.sum(rho * (HI[:, :-1] - LO[:, :-1]) / 2, axis=1))
+            size = np.abs(value[0]) + np.abs(value[1]) + 1e-300
+            rel = np.nan_to_num(bound / size, nan=-np.inf)
+            worst = rel if worst is None else np.minimum(worst, rel)
+    return worst
+
+
+def exact_linear_leaf(box: list[rb.Interval], variable: str, shape: rb.Shape, cov_phi,
+                      phi_c, chi2: mpq, stability: bool) -> list | None:
+    """A first-order leaf checked exactly, or None."""
+    phi, t = box[:-1], box[-1]
+    centre, parts = rb.linear_parts(phi, t, variable, shape)
+    n = len(phi)
+    claimed, roots = [], []
+    for value, grad in parts:
+        m = rb.gradient_midpoints(grad)
+        need = chi2 * sum((m[i] * cov_phi[i][j] * m[j] for i in range(n) for j in range(n)),
+                          mpq(0))
+        root = short(math.sqrt(max(float(need), 0.0)) * (1 + 1e-9) + 1e-300, 10)
+        while root * root < need:
+            root = short(float(root) * (1 + 1e-6), 10)
+        low = rb.linear_bound(phi, centre, value, grad, phi_c, root)
+        if not low > 0:
+            return None
+        claimed.append(floor_short(low))
+        roots.append(root)
+    if not rb.check_linear_leaf(box, variable, shape, cov_phi, phi_c, chi2, claimed, roots,
+                                stability).ok:
+        return None
+    return ["linear", *[str(c) for c in claimed], *[str(r) for r in roots]]
 
 
 def floor_short(q: mpq) -> mpq:
@@ -158,11 +211,14 @@ class SearchResult:
 
 
 def search(root: list[rb.Interval], variable: str, shape: rb.Shape, ellipsoid: Ellipsoid,
-           *, stability: bool, max_boxes: int = 60_000) -> SearchResult:
+           *, stability: bool, max_boxes: int = 60_000, exact: tuple | None = None
+           ) -> SearchResult:
     """Branch and bound over ``root`` (φ then t): a proposed tree or the reason for none.
 
     Leaves are proposals: the caller checks the whole tree exactly
-    (:func:`verify.identify.robust_certificate.check_leaves`).
+    (:func:`verify.identify.robust_certificate.check_leaves`). With ``exact`` =
+    (Σ of φ, φc, χ) exact, boxes neither positive nor outside may become first-order
+    leaves (checked exactly here, as they are costlier to propose).
     """
     nodes: list[Node] = [Node()]
     boxes: dict[int, list[rb.Interval]] = {0: root}
@@ -200,6 +256,21 @@ def search(root: list[rb.Interval], variable: str, shape: rb.Shape, ellipsoid: E
                 del boxes[node_id]
             else:
                 split_needed.append(row)
+        if split_needed and exact is not None and ellipsoid.covariance is not None:
+            rows = np.array(split_needed)
+            linear = float_linear(LO[rows], HI[rows], variable, shape, ellipsoid)
+            keep = []
+            for j, row in enumerate(split_needed):
+                leaf = None
+                if linear[j] > FLOAT_MARGIN:
+                    leaf = exact_linear_leaf(boxes[active[row]], variable, shape, *exact,
+                                             stability)
+                if leaf is None:
+                    keep.append(row)
+                else:
+                    nodes[active[row]].leaf = leaf
+                    del boxes[active[row]]
+            split_needed = keep
         if split_needed:
             rows = np.array(split_needed)
             best = _choose_splits(LO[rows], HI[rows], variable, shape)

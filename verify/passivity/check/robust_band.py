@@ -192,6 +192,120 @@ def leaf_bounds(box: Sequence[Interval], t: Interval, variable: str, shape: Shap
     return Ns[0], Ns[1], det
 
 
+# ------------------------------------------------------------------ first-order form
+
+
+class GradOps:
+    """Interval arithmetic carrying enclosures of the gradient in φ (forward mode).
+
+    A value is (interval, gradient intervals); ``base`` is the interval arithmetic
+    (:class:`ExactOps`, or a float one for proposals). Frequency powers carry no gradient.
+    """
+
+    def __init__(self, base, dims: int) -> None:
+        self.base, self.dims = base, dims
+
+    def _zero(self):
+        return [self.base.const(0)] * self.dims
+
+    def variable(self, interval: Interval, k: int):
+        grad = self._zero()
+        grad[k] = self.base.const(1)
+        return interval, grad
+
+    def const(self, v: Any):
+        return self.base.const(v), self._zero()
+
+    def add(self, a, b):
+        B = self.base
+        return B.add(a[0], b[0]), [B.add(x, y) for x, y in zip(a[1], b[1], strict=True)]
+
+    def sub(self, a, b):
+        B = self.base
+        return B.sub(a[0], b[0]), [B.sub(x, y) for x, y in zip(a[1], b[1], strict=True)]
+
+    def scale(self, k: int, a):
+        B = self.base
+        return B.scale(k, a[0]), [B.scale(k, x) for x in a[1]]
+
+    def mul(self, a, b):
+        B = self.base
+        return B.mul(a[0], b[0]), [B.add(B.mul(a[0], y), B.mul(b[0], x))
+                                   for x, y in zip(a[1], b[1], strict=True)]
+
+    def sqr(self, a):
+        B = self.base
+        return B.sqr(a[0]), [B.scale(2, B.mul(a[0], x)) for x in a[1]]
+
+    def power(self, t: Interval, m: int):
+        return self.base.power(t, m), self._zero()
+
+
+def linear_parts(box: Sequence[Interval], t: Interval, variable: str, shape: Shape
+                 ) -> tuple[list[mpq], list[tuple[Interval, list[Interval]]]]:
+    """The box centre φ0, and per condition (N_1, N_2, det): the enclosure of its value at
+    (φ0, t) and of its gradient in φ over (box, t), exactly."""
+    dims = len(box)
+    ops = GradOps(ExactOps, dims)
+    centre = [(lo + hi) / 2 for lo, hi in box]
+    at_centre = leaf_bounds([ops.variable((c, c), k) for k, c in enumerate(centre)], t,
+                            variable, shape, ops)
+    over_box = leaf_bounds([ops.variable(iv, k) for k, iv in enumerate(box)], t, variable,
+                           shape, ops)
+    return centre, [(v[0], g[1]) for v, g in zip(at_centre, over_box, strict=True)]
+
+
+def linear_bound(box: Sequence[Interval], centre: Sequence[mpq], value: Interval,
+                 grad: Sequence[Interval], phi_c: Sequence[mpq], sqrt_bound: mpq) -> mpq:
+    """A lower bound of a condition f over (box ∩ ellipsoid) x t (first-order form).
+
+    With φ0 the box centre, m the midpoint of the gradient enclosure G over the box and
+    ρ its radius: for φ in the box, f(φ) = f(φ0) + g(ξ)·(φ - φ0) with g(ξ) in G (mean
+    value theorem on the segment, inside the box), and
+    g(ξ)·(φ - φ0) >= m·(φ - θc) + m·(θc - φ0) - Σ ρ_k |φ_k - φ0_k|; over the ellipsoid
+    m·(φ - θc) >= -sqrt(χ m^T Σ m) >= -``sqrt_bound``.
+    """
+    bound = value[0] - sqrt_bound
+    for (lo, hi), c, pc, (glo, ghi) in zip(box, centre, phi_c, grad, strict=True):
+        m, rho = (glo + ghi) / 2, (ghi - glo) / 2
+        bound += m * (pc - c) - rho * (hi - lo) / 2
+    return bound
+
+
+def gradient_midpoints(grad: Sequence[Interval]) -> list[mpq]:
+    return [(lo + hi) / 2 for lo, hi in grad]
+
+
+def check_linear_leaf(box: list[Interval], variable: str, shape: Shape, covariance,
+                      phi_c: Sequence[mpq], chi2: mpq, claimed: Sequence[mpq],
+                      sqrt_bounds: Sequence[mpq], stability: bool) -> LeafResult:
+    """The first-order form (:func:`linear_bound`) shows N_1, N_2 and det >= the claimed
+    bounds > 0 on the box's part of the ellipsoid; ``sqrt_bounds`` s_j must satisfy
+    s_j >= 0 and s_j^2 >= χ m_j^T Σ m_j."""
+    phi, t = box[:-1], box[-1]
+    centre, parts = linear_parts(phi, t, variable, shape)
+    n = len(phi)
+    for name, (value, grad), c, s in zip(("N_1", "N_2", "det"), parts, claimed, sqrt_bounds,
+                                         strict=True):
+        if not c > 0:
+            return LeafResult(False, f"claimed lower bound of {name} {c} is not > 0")
+        m = gradient_midpoints(grad)
+        quad = sum((m[i] * covariance[i][j] * m[j] for i in range(n) for j in range(n)),
+                   mpq(0))
+        if s < 0 or s * s < chi2 * quad:
+            return LeafResult(False, f"{name}: {s} is not >= sqrt(chi2 m^T Σ m)")
+        low = linear_bound(phi, centre, value, grad, phi_c, s)
+        if low < c:
+            return LeafResult(False, f"first-order bound of {name} is {low}, below the "
+                              f"claimed {c}")
+    if stability:
+        for i in range(2):
+            _, a = element(phi, i, shape, ExactOps)
+            if not kharitonov_stable(a):
+                return LeafResult(False, f"denominator {i + 1} fails Kharitonov's test")
+    return LeafResult(True, "")
+
+
 # ------------------------------------------------------------------ stability (Kharitonov)
 
 
@@ -384,8 +498,34 @@ def is_positive_definite(covariance: Sequence[Sequence[mpq]]) -> bool:
     return ex.pd_ldl([list(r) for r in covariance]).ok
 
 
-__all__ = ["MAX_DEPTH", "MAX_NODES", "ExactOps", "Interval", "LeafResult", "Shape",
-           "TreeError", "check_outside_leaf", "check_positive_leaf", "d_coefficients",
-           "element", "enclosure_ok", "hurwitz", "inverse", "is_positive_definite",
-           "kharitonov_stable", "leaf_bounds", "leaves", "midpoint_split", "n_coefficients",
-           "outside_bound", "polynomial", "quadratic_form", "reduce_region"]
+__all__ = [
+    "MAX_DEPTH",
+    "MAX_NODES",
+    "ExactOps",
+    "GradOps",
+    "Interval",
+    "LeafResult",
+    "Shape",
+    "TreeError",
+    "check_linear_leaf",
+    "check_outside_leaf",
+    "check_positive_leaf",
+    "d_coefficients",
+    "element",
+    "enclosure_ok",
+    "gradient_midpoints",
+    "hurwitz",
+    "inverse",
+    "is_positive_definite",
+    "kharitonov_stable",
+    "leaf_bounds",
+    "leaves",
+    "linear_bound",
+    "linear_parts",
+    "midpoint_split",
+    "n_coefficients",
+    "outside_bound",
+    "polynomial",
+    "quadratic_form",
+    "reduce_region",
+]
