@@ -221,6 +221,13 @@ class Outcome:
         return self.robust.passed
 
 
+def _sha256(path: Path) -> str:
+    """The log's SHA-256 (provenance in the model file, independent of where it lies)."""
+    import hashlib
+
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
 def _high_frequency_note(structure: Structure, center: Sequence[Any]) -> str:
     c = Fraction(center[-2]) + Fraction(center[-1])
     if structure.zeros >= structure.poles:
@@ -263,7 +270,8 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
         "fit_identification": q.fit_identification,
         "fit_validation": q.fit_validation,
         **{k: v for k, v in q.tests.items()},
-        "logs": [str(p) for p in plan.logs],
+        "logs": [p.name for p in plan.logs],
+        "logs_sha256": [_sha256(p) for p in plan.logs],
     }
     table = identification_table(est.structure, est.theta, est.covariance, LEVEL, extra)
     text, _ = model_text(plan.name, est.structure, est.theta, table,
