@@ -16,7 +16,8 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
-from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
+from verify.claims.evidence import certificate, counterexample, figure, instances, numeric
+from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 
 SECTION = "4, human passivity"
@@ -107,22 +108,21 @@ def identification(context: CheckContext) -> Outcome:
     nonpassive = _run(context, "nonpassive_human", REFUTE_BAND)
     for name, o in (("passive_human", passive_all), ("nonpassive_human", nonpassive)):
         q = o.identified.quality
-        evidence.append(Evidence(
-            EvidenceKind.NUMERICAL, f"{name}: fit ratios identification "
+        evidence.append(numeric(
+            f"{name}: fit ratios identification "
             + ", ".join(f"{x:.2f} %" for x in q.fit_identification) + "; validation "
-            + ", ".join(f"{x:.2f} %" for x in q.fit_validation),
-            {"fit_identification": q.fit_identification,
-             "fit_validation": q.fit_validation}))
+            + ", ".join(f"{x:.2f} %" for x in q.fit_validation), True,
+            fit_identification=q.fit_identification, fit_validation=q.fit_validation))
         region = o.ident.region()
         truth = _truth(name)
         distance = rb.quadratic_form(rb.inverse(region.covariance), region.center, truth)
         inside = distance <= region.chi2
-        evidence.append(Evidence(  # reported, not a criterion: one seeded experiment
-            EvidenceKind.EXACT_INSTANCE, f"{name}: the true parameters are "
+        evidence.append(instances(  # reported, not a criterion: one seeded experiment
+            f"{name}: the true parameters are "
             f"{'inside' if inside else 'outside'} the 95 % region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
             f"{float(distance):.4g}, chi2 = {float(region.chi2):.4g}, exact; one seeded "
             "experiment, reported only: coverage over seeds is the estimator's benchmark)",
-            {"distance": str(distance), "chi2": str(region.chi2), "inside": bool(inside)}))
+            True, distance=str(distance), chi2=str(region.chi2), inside=bool(inside)))
         truths.append((name, bool(inside)))
     all_refuted = passive_all.robust.verdict == "not passive"
     search = passive_all.band_search
@@ -132,23 +132,23 @@ def identification(context: CheckContext) -> Outcome:
     ok = all_refuted and band_ok and refuted
     stored = _store(context, passive_all) + _store(context, nonpassive)
     robust_paths = [p for p in stored if "-robust-" in p.name]
-    evidence.append(Evidence(
-        EvidenceKind.COUNTEREXAMPLE, f"passive_human, all frequencies: "
-        f"{passive_all.robust.verdict}: {passive_all.robust.reason}", passed=all_refuted))
-    evidence.append(Evidence(
-        EvidenceKind.CERTIFICATE, "passive_human: every model of the 95 % region is passive "
+    evidence.append(counterexample(
+        f"passive_human, all frequencies: {passive_all.robust.verdict}: "
+        f"{passive_all.robust.reason}", all_refuted))
+    evidence.append(certificate(
+        "passive_human: every model of the 95 % region is passive "
         + (f"on [0, {search.w_max}] rad/s (≈ {float(search.w_max):.4g})" if band_ok else
-           "on no band [0, w_max >= 1] found"),
-        {"w_max": None if search.w_max is None else str(search.w_max)},
-        path=str(robust_paths[0]) if robust_paths else None, passed=band_ok))
-    evidence.append(Evidence(
-        EvidenceKind.COUNTEREXAMPLE, f"nonpassive_human on [{REFUTE_BAND.replace(':', ', ')}]"
-        f" rad/s: {nonpassive.robust.verdict}: {nonpassive.robust.reason}", passed=refuted))
+           "on no band [0, w_max >= 1] found"), band_ok,
+        path=str(robust_paths[0]) if robust_paths else None,
+        data={"w_max": None if search.w_max is None else str(search.w_max)}))
+    evidence.append(counterexample(
+        f"nonpassive_human on [{REFUTE_BAND.replace(':', ', ')}] rad/s: "
+        f"{nonpassive.robust.verdict}: {nonpassive.robust.reason}", refuted))
     for o in (passive_all, nonpassive):
         for path in sorted(p for p in o.files if p.suffix == ".png"):
             rel = path.relative_to(context.out_dir)
-            evidence.append(Evidence(EvidenceKind.FIGURE, f"{o.plan.name}: {path.stem}",
-                                     {"href": str(rel)}, path=str(path)))
+            evidence.append(figure(f"{o.plan.name}: {path.stem}", path=str(path),
+                                   data={"href": str(rel)}))
     w = "none" if search.w_max is None else f"{float(search.w_max):.3g} rad/s"
     covered = ", ".join(f"{n}: {'inside' if t else 'outside'}" for n, t in truths)
     return Outcome(

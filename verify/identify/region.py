@@ -90,14 +90,14 @@ def make_region(center: Sequence[object], covariance: np.ndarray, level: Fractio
     if cov.shape != (p, p) or not np.all(np.isfinite(cov)):
         raise VerifyInputError(f"covariance: expected a finite {p} x {p} matrix, got shape "
                                f"{cov.shape}")
-    S = tuple(tuple(mpq(*float(v).as_integer_ratio()) for v in row) for row in cov)
+    S = tuple(tuple(mpq(float(v)) for v in row) for row in cov)  # the binary values
     if not rb.is_positive_definite([list(r) for r in S]):
         raise VerifyInputError("covariance: not symmetric positive definite (exact LDL^T); "
                                "the confidence ellipsoid is undefined")
     if not 0 < level < 1:
         raise VerifyInputError(f"confidence level {level} must lie in (0, 1)")
     value = chi2_quantile(level, p) if chi2 is None else float(chi2)
-    return Region(c, S, Fraction(level), mpq(*value.as_integer_ratio()))
+    return Region(c, S, Fraction(level), mpq(value))
 
 
 __all__ = ["CHI2_AGREEMENT", "Region", "chi2_quantile", "half_widths", "make_region"]

@@ -35,6 +35,7 @@ from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
 from verify.identify.region import CHI2_AGREEMENT, Region, chi2_quantile
+from verify.inputs.numbers import fraction
 from verify.passivity.check import robust_band as rb
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io.binding import resolve_source, slug
@@ -151,7 +152,7 @@ def _region(value: Any, p: int) -> tuple[Region, dict[str, Any]]:
     level = rational(value["level"], "region.level")
     chi2 = rational(value["chi2"], "region.chi2")
     region = Region(tuple(center), tuple(tuple(r) for r in cov),
-                    Fraction(int(level.numerator), int(level.denominator)), chi2)
+                    fraction(level), chi2)
     return region, value
 
 
@@ -163,8 +164,7 @@ def _band(value: Any) -> tuple[Fraction, Fraction] | None:
     w1, w2 = (rational(v, f"band[{k}]") for k, v in enumerate(value))
     if not 0 <= w1 < w2:
         raise CertificateFormatError(f"band [{w1}, {w2}] does not satisfy 0 <= w1 < w2")
-    return Fraction(int(w1.numerator), int(w1.denominator)), \
-        Fraction(int(w2.numerator), int(w2.denominator))
+    return fraction(w1), fraction(w2)
 
 
 def _leaf(node: list, dims: int) -> tuple[str, list[mpq]]:
@@ -295,10 +295,10 @@ def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
     if tuple(ident.center) != tuple(region.center):
         return ("the region's centre is not the source file's written coefficients "
                 "(exact values differ)"), ""
-    if any(mpq(*float(v).as_integer_ratio()) != region.covariance[i][j]
+    if any(mpq(float(v)) != region.covariance[i][j]
            for i, row in enumerate(cov) for j, v in enumerate(row)):
         return "the covariance differs from the source file's [identification] covariance", ""
-    if mpq(*chi2.as_integer_ratio()) != region.chi2 or Fraction(level).limit_denominator(
+    if mpq(chi2) != region.chi2 or Fraction(level).limit_denominator(
             10**6) != region.level:
         return "the level or chi2 differ from the source file's", ""
     return None, f"region bound to {source} (centre = its written coefficients)"
