@@ -22,6 +22,12 @@ from verify.claims.registry import REGISTRY
 
 SECTION = "4, human passivity"
 LOGS = Path(__file__).resolve().parents[1] / "data" / "logs"
+FIGURES = {
+    "validation": "validation trials, measured u_h and the model's simulated output",
+    "bode": "Bode diagrams of the diagonal elements with the range over sampled models "
+            "of the 95 % region (illustration)",
+    "nu": "ν(ω) of the identified model with the robustly proved band shaded",
+}
 #: The band on which the non-passive operator (Re h < 0 above 2 rad/s) must be refuted.
 REFUTE_BAND = "0:5"
 
@@ -93,7 +99,7 @@ def _store(context: CheckContext, outcome) -> list[Path]:
     "refuted on [0, 5] rad/s with an exact witness. Whether the true parameters lie in "
     "each region is reported (exactly) but is no criterion of one seeded experiment.",
     method="verify identify: protocol (dead time, decimation to 20 Hz, 6:6 split), "
-    "refined IV + prediction-error estimate with asymptotic covariance; robust verdict "
+    "refined IV + prediction-error estimate with its parameter covariance; robust verdict "
     "by exact interval branch and bound (certificate re-checked with no solver) or a "
     "model of the region with the gate's exact witness.",
     scope="simulated logs of known operators; the paper's data are not published, so its "
@@ -147,8 +153,8 @@ def identification(context: CheckContext) -> Outcome:
     for o in (passive_all, nonpassive):
         for path in sorted(p for p in o.files if p.suffix == ".png"):
             rel = path.relative_to(context.out_dir)
-            evidence.append(figure(f"{o.plan.name}: {path.stem}", path=str(path),
-                                   data={"href": str(rel)}))
+            evidence.append(figure(f"{o.plan.name}: {FIGURES.get(path.stem, path.stem)}",
+                                   path=str(path), data={"href": str(rel)}))
     w = "none" if search.w_max is None else f"{float(search.w_max):.3g} rad/s"
     covered = ", ".join(f"{n}: {'inside' if t else 'outside'}" for n, t in truths)
     return Outcome(
