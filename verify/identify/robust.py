@@ -120,7 +120,7 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
             if hints is not None:
                 hints += [(point, variable) for point, _ in found.candidates]
             what = "w^2" if variable == "x" else "1/w^2"
-            return None, f"{found.reason} ({what} in [{t1}, {t2}])"
+            return None, f"{found.reason} ({what} in [{t1}, {t2}]){_width_note(phi, r)}"
         trees.append(found.tree)
     data = rc.certificate_json(name, source, structure_text(structure), region, band, r,
                                trees)
@@ -128,6 +128,17 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
     if refusal is not None:
         return None, f"the proposed tree fails the exact check ({refusal})"
     return data, f"{data['leaves']} leaves checked exactly"
+
+
+def _width_note(phi, r) -> str:
+    """Say how wide the enclosing box is when it is wide (the usual cause of a failed
+    proof: interval bounds over a large box are coarse)."""
+    rel = max((float(h) / abs(float(c)) for c, h in zip(phi, r, strict=True) if c != 0),
+              default=0.0)
+    if rel < 0.25:
+        return ""
+    return (f"; the box enclosing the region is coarse: half-widths up to {rel:.0%} of the "
+            "parameter values (a wide region: more data or fewer parameters)")
 
 
 # ------------------------------------------------------------------ refutation
