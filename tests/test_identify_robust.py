@@ -110,7 +110,7 @@ def test_all_frequencies_fail_for_the_paper_class_and_a_band_is_given(tmp_path):
     r = robust_verdict(region, f.structure, None, name="m", source="")
     assert r.verdict == "not passive" and region.contains(r.theta)
     found = largest_band(region, f.structure, Fraction(0), 100.0, name="m", source="",
-                         steps=4)
+                         steps=4, max_boxes=8000)
     assert found.w_max is not None and 2 < found.w_max < 13
     assert found.certificate is not None
     assert found.certificate["band"] == ["0", str(mpq(found.w_max))]
