@@ -44,6 +44,8 @@ from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, GateVe
 
 #: Default number of boxes the search may visit per frequency piece.
 MAX_BOXES = 40_000
+#: Largest certificate (leaves) the band search keeps.
+MAX_BAND_LEAVES = 2_000
 
 
 @dataclass
@@ -99,7 +101,8 @@ def _shape(structure: Structure) -> rb.Shape:
 
 def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None,
           *, name: str, source: str, max_boxes: int = MAX_BOXES,
-          hints: list | None = None) -> tuple[dict[str, Any] | None, str]:
+          hints: list | None = None, max_leaves: int | None = None
+          ) -> tuple[dict[str, Any] | None, str]:
     """A checked certificate of robust passivity on ``band``, or (None, why not).
 
     ``hints``, when given, receives the search's undecided box centres (φ, t) inside the
@@ -124,6 +127,8 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
         trees.append(found.tree)
     data = rc.certificate_json(name, source, structure_text(structure), region, band, r,
                                trees)
+    if max_leaves is not None and data["leaves"] > max_leaves:
+        return None, f"a proof with {data['leaves']} leaves (more than {max_leaves} asked)"
     refusal = rc.check_leaves(data, shape, region, band)
     if refusal is not None:
         return None, f"the proposed tree fails the exact check ({refusal})"
@@ -333,10 +338,12 @@ class BandSearch:
 
 
 def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float, *,
-                 name: str, source: str, steps: int = 7, max_boxes: int = MAX_BOXES
-                 ) -> BandSearch:
+                 name: str, source: str, steps: int = 7, max_boxes: int = MAX_BOXES,
+                 max_leaves: int | None = MAX_BAND_LEAVES) -> BandSearch:
     """Bisection (in log w) for the largest w_max <= cap with robust passivity proved on
-    [w1, w_max]; w_max is rounded down to 3 significant digits."""
+    [w1, w_max] by a certificate of at most ``max_leaves`` leaves (near the limit the
+    trees grow fast; a slightly smaller band keeps the file small); w_max is rounded down
+    to 3 significant digits."""
     out = BandSearch(w1, None, None)
     if supported(structure) is not None:
         return out
@@ -348,7 +355,7 @@ def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float,
         if w <= w1 or (out.w_max is not None and w <= out.w_max):
             break
         cert, _ = prove(region, structure, (w1, w), name=name, source=source,
-                        max_boxes=max_boxes)
+                        max_boxes=max_boxes, max_leaves=max_leaves)
         out.tried.append((str(w), cert is not None))
         if cert is not None:
             out.w_max, out.certificate = w, cert
@@ -363,6 +370,7 @@ def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float,
 
 
 __all__ = [
+    "MAX_BAND_LEAVES",
     "MAX_BOXES",
     "BandSearch",
     "RobustResult",

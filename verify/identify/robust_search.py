@@ -171,9 +171,9 @@ def exact_linear_leaf(box: list[rb.Interval], variable: str, shape: rb.Shape, co
         m = rb.gradient_midpoints(grad)
         need = chi2 * sum((m[i] * cov_phi[i][j] * m[j] for i in range(n) for j in range(n)),
                           mpq(0))
-        root = short(math.sqrt(max(float(need), 0.0)) * (1 + 1e-9) + 1e-300, 10)
+        root = short(math.sqrt(max(float(need), 0.0)) * (1 + 1e-6) + 1e-300, 6)
         while root * root < need:
-            root = short(float(root) * (1 + 1e-6), 10)
+            root = short(float(root) * (1 + 1e-5), 6)
         low = rb.linear_bound(phi, centre, value, grad, phi_c, root)
         if not low > 0:
             return None
@@ -186,8 +186,9 @@ def exact_linear_leaf(box: list[rb.Interval], variable: str, shape: rb.Shape, co
 
 
 def floor_short(q: mpq) -> mpq:
-    """A rational <= q > 0 with 8 significant digits (the stored claimed bound)."""
-    e = math.floor(math.log10(float(q))) - 7
+    """A rational <= q > 0 with 3 significant digits (the stored claimed bound: any
+    positive number below the exact bound proves the leaf; short keeps files small)."""
+    e = math.floor(math.log10(float(q))) - 2
     scale = mpq(10) ** e
     return mpq(int(q / scale)) * scale
 
@@ -250,7 +251,7 @@ def search(root: list[rb.Interval], variable: str, shape: rb.Shape, ellipsoid: E
                 leaf = ["positive", *[str(floor_short(mpq(float(lo[row]) / 2)))
                                       for lo, _ in bounds]]
             elif outside[row]:
-                leaf = ["outside", [str(short(v)) for v in p[row]]]
+                leaf = ["outside", [str(short(v, 8)) for v in p[row]]]
             if leaf is not None:
                 nodes[node_id].leaf = leaf
                 del boxes[node_id]
