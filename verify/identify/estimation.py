@@ -8,8 +8,9 @@ u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. Method ``"riv+pem"`` (the default):
    instrumental-variable estimate, from a few first prefilters (s + lam)^n, and a grid
    of stable denominators (:func:`starting_denominators`);
 2. output-error prediction-error refinement (:mod:`verify.identify.pem`) from the
-   starting points of least cost, each trial's initial state estimated; the refinement
-   of least cost is kept (:func:`fit_output` says why the grid is needed).
+   starting points of least cost, poles kept below half the Nyquist frequency, each
+   trial started as described below; the refinement of least cost is kept
+   (:func:`fit_output` says why the grid is needed).
 
 The covariance held in :attr:`Estimate.covariance` by default is the asymptotic
 prediction-error covariance per output (outputs independent), in its colour-robust

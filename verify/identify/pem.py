@@ -1,13 +1,15 @@
 """Output-error prediction-error refinement and its asymptotic covariance.
 
-The criterion is the output-error one, sum over all samples of (u_i - yhat_i)^2 with
-yhat_i the model output simulated from the measured inputs with estimated initial states
-(:mod:`verify.identify.prediction`). For white noise on the output this is the
+The criterion is the output-error one, sum over the used samples of (u_i - yhat_i)^2
+with yhat_i the model output simulated from the measured inputs, each trial from rest or
+from an estimated initial state, the first ``OutputData.skip`` samples of each trial
+left out (:mod:`verify.identify.prediction`). For white noise on the output this is the
 prediction-error (maximum-likelihood for Gaussian noise) criterion, which stays
 consistent in closed loop because the noise model (white) is right (Ljung, System
 Identification, 2nd ed., 1999, Sec. 13.4, "direct approach"). The numerator, coupling
-and initial states are eliminated by linear least squares (variable projection); the
-denominator is searched by ``scipy.optimize.least_squares``.
+(and initial states) are eliminated by linear least squares (variable projection); the
+denominator is searched by ``scipy.optimize.least_squares`` in a box of stable
+denominators with poles below half the Nyquist frequency (:func:`denominator_bounds`).
 
 Covariance. For white prediction errors the asymptotic covariance is
 sigma^2 (J^T J)^-1 (Ljung 1999, Sec. 9.3, eq. (9.18)), J the Jacobian of the prediction
