@@ -4,8 +4,8 @@ Run: ``python benchmarks/bench_identify_methods.py [--seeds 20] [--n 8]``.
 
 On the same seeded closed-loop experiments (as ``bench_identify_coverage.py``: the
 paper's protocol with a known operator in the paper's class), two estimators:
-``riv+pem`` (SRIVC and a grid of starting denominators, output-error refinement with
-each trial's initial state estimated, :mod:`verify.identify.estimation`) and ``arx+oe``
+``riv+pem`` (SRIVC and a grid of starting denominators, bounded output-error refinement,
+each trial started at rest with a 1 s burn-in, :mod:`verify.identify.estimation`) and ``arx+oe``
 (discrete ARX least squares converted to continuous time, then output-error least
 squares with zero initial states, :mod:`verify.identify.baseline`). Printed per
 parameter: bias (mean minus true), standard deviation and root-mean-square error over

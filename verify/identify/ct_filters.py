@@ -52,7 +52,9 @@ class Filter:
         # with C = I and D = 0, scipy's FOH feedthrough is the offset M in z_k = xi_k + M x_k,
         # where xi_{k+1} = Ad xi_k + Bd x_k is the recursion scipy's discrete model runs
         self.Ad, self.M = Ad, Dd[:, 0]
-        self.den = np.real(np.poly(Ad))
+        # an overflowing discretisation (a wildly unstable candidate) gives NaN outputs
+        self.den = (np.real(np.poly(Ad)) if np.all(np.isfinite(Ad))
+                    else np.full(n + 1, np.nan))
         # first n + 1 powers of Ad; every later one follows from Cayley-Hamilton
         first = [np.eye(n)]
         for _ in range(n):

@@ -8,8 +8,9 @@ u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. Method ``"riv+pem"`` (the default):
    instrumental-variable estimate, from a few first prefilters (s + lam)^n, and a grid
    of stable denominators (:func:`starting_denominators`);
 2. output-error prediction-error refinement (:mod:`verify.identify.pem`) from the
-   starting points of least cost, each trial's initial state estimated; the refinement
-   of least cost is kept (:func:`fit_output` says why the grid is needed).
+   starting points of least cost, poles kept below half the Nyquist frequency, each
+   trial started as described below; the refinement of least cost is kept
+   (:func:`fit_output` says why the grid is needed).
 
 The covariance held in :attr:`Estimate.covariance` by default is the asymptotic
 prediction-error covariance per output (outputs independent), in its colour-robust
@@ -19,6 +20,19 @@ Jacobian and is what the theory gives to O(1/N). The bootstrap over trials
 (:func:`verify.identify.bootstrap.bootstrap`) is the alternative when the noise is in
 doubt; it needs many re-estimates and, with the paper's six identification trials, has
 few distinct resamples.
+
+Start of each trial (default ``initial="zero"``, ``burn_in=1.0`` s): the model is
+simulated from rest at the trial's first sample and the first second of each trial is
+left out of the criterion. In the protocol of Section 4 a trial starts when the operator
+presses start after a reference change, i.e. after the previous trial has converged and
+the reaction time has passed, so the operator is close to rest; the burn-in absorbs what
+is left, and the edge transient of the protocol's zero-phase anti-aliasing filter.
+Estimating each trial's initial state instead (``initial="estimate"``) is exact for
+open-loop data but biased in closed loop: the initial state is fitted from the same first
+seconds that carry the step response, and in the loop the input there already depends
+on the noise, so the projection that eliminates the initial state correlates the
+regressors with the noise (an incidental-parameter bias that does not shrink with more
+trials). Measured on simulated experiments (benchmarks/bench_identify_coverage.py).
 
 The state-space structure ``order:N`` is not yet supported (one-line error).
 """
@@ -33,7 +47,7 @@ from verify.errors import VerifyInputError
 from verify.identify.estimate import Estimate
 from verify.identify.experiment import Trial
 from verify.identify.pem import OutputFit, ar_start, refine
-from verify.identify.prediction import fit_linear
+from verify.identify.prediction import fit_linear, lengths
 from verify.identify.quality import whiteness
 from verify.identify.riv import srivc
 from verify.identify.structure import Structure
@@ -43,6 +57,10 @@ __all__ = ["METHODS", "estimate_model", "first_prefilters"]
 
 #: Highest order p of the AR noise model 1/D(q) tried when the output error is coloured.
 MAX_NOISE_ORDER = 6
+
+#: How the estimator treats the start of a trial, see :func:`estimate_model`.
+INITIAL = "zero"
+BURN_IN = 1.0  # seconds
 
 #: Estimation methods: name -> description.
 METHODS = {
@@ -125,10 +143,8 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
 
 
 def _white(fit: OutputFit, data: OutputData) -> bool:
-    lag = len(fit.noise) - 1
     parts, start = [], 0
-    for own in data.own:
-        N = len(own) - lag
+    for N in lengths(data, fit.noise if len(fit.noise) > 1 else None):
         parts.append(fit.residual[start:start + N])
         start += N
     try:
@@ -184,7 +200,8 @@ def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, sampl
 
 
 def estimate_model(trials: Sequence[Trial], structure: Structure, *,
-                   method: str = "riv+pem") -> Estimate:
+                   method: str = "riv+pem", initial: str = INITIAL,
+                   burn_in: float = BURN_IN) -> Estimate:
     """Estimate H(s) in ``structure`` from uniformly sampled (closed-loop) trials.
 
     Parameters
@@ -194,6 +211,11 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
         each trial starts from its own (estimated) initial state.
     structure
         :meth:`Structure.paper` or :meth:`Structure.poles_zeros`.
+    initial, burn_in
+        How the start of each trial is treated (module docstring): ``initial`` "zero"
+        (the model starts at rest) or "estimate" (each trial's initial state is
+        estimated); the first ``burn_in`` seconds of each trial are simulated but left
+        out of the criterion.
     method
         ``"riv+pem"`` (module docstring), ``"riv+bj"`` (with an AR noise model when the
         output error is coloured, :func:`with_noise_model`) or ``"arx+oe"`` (the
@@ -212,12 +234,20 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
     if method not in METHODS:
         raise VerifyInputError(f"unknown estimation method {method!r}; choose one of "
                                f"{', '.join(METHODS)}")
+    if initial not in ("zero", "estimate"):
+        raise VerifyInputError(f"initial must be 'zero' or 'estimate', got {initial!r}")
     h = check_trials(trials, structure)
+    ok = isinstance(burn_in, int | float) and np.isfinite(burn_in) and burn_in >= 0
+    skip = round(float(burn_in) / h) if ok else -1
+    if skip < 0 or any(np.asarray(tr.t).shape[0] <= skip + 2 * (structure.poles + 1)
+                       for tr in trials):
+        raise VerifyInputError(f"burn_in = {burn_in!r} s leaves too few samples in some trial; "
+                               f"use a shorter burn-in or longer trials")
     samples = sum(np.asarray(tr.t).shape[0] for tr in trials)
     if method == "arx+oe":
         from verify.identify.baseline import oe_from_arx
 
         return oe_from_arx(trials, structure, h)
-    fits = [fit_output(output_data(trials, i, h), structure.poles, structure.zeros,
-                       noise=method == "riv+bj") for i in (0, 1)]
+    fits = [fit_output(output_data(trials, i, h, initial=initial, skip=skip), structure.poles,
+                       structure.zeros, noise=method == "riv+bj") for i in (0, 1)]
     return assemble(structure, fits, method, samples)

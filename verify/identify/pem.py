@@ -1,13 +1,15 @@
 """Output-error prediction-error refinement and its asymptotic covariance.
 
-The criterion is the output-error one, sum over all samples of (u_i - yhat_i)^2 with
-yhat_i the model output simulated from the measured inputs with estimated initial states
-(:mod:`verify.identify.prediction`). For white noise on the output this is the
+The criterion is the output-error one, sum over the used samples of (u_i - yhat_i)^2
+with yhat_i the model output simulated from the measured inputs, each trial from rest or
+from an estimated initial state, the first ``OutputData.skip`` samples of each trial
+left out (:mod:`verify.identify.prediction`). For white noise on the output this is the
 prediction-error (maximum-likelihood for Gaussian noise) criterion, which stays
 consistent in closed loop because the noise model (white) is right (Ljung, System
 Identification, 2nd ed., 1999, Sec. 13.4, "direct approach"). The numerator, coupling
-and initial states are eliminated by linear least squares (variable projection); the
-denominator is searched by ``scipy.optimize.least_squares``.
+(and initial states) are eliminated by linear least squares (variable projection); the
+denominator is searched by ``scipy.optimize.least_squares`` in a box of stable
+denominators with poles below half the Nyquist frequency (:func:`denominator_bounds`).
 
 Covariance. For white prediction errors the asymptotic covariance is
 sigma^2 (J^T J)^-1 (Ljung 1999, Sec. 9.3, eq. (9.18)), J the Jacobian of the prediction
@@ -32,7 +34,7 @@ from math import comb
 import numpy as np
 from scipy.optimize import least_squares
 
-from verify.identify.prediction import design, fit_linear, whiten
+from verify.identify.prediction import design, fit_linear, lengths, used
 from verify.identify.trial_data import OutputData
 
 __all__ = ["OutputFit", "refine"]
@@ -134,10 +136,11 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
         hi, lo = a.copy(), a.copy()
         hi[k] += step
         lo[k] -= step
-        Ja[:, k] = whiten((design(hi, data, zeros) - design(lo, data, zeros)) @ beta, data, w
-                          ) / (2 * step)
-    Xw = whiten(X, data, w)
-    columns = [Xw[:, : zeros + 1], Ja, Xw[:, zeros + 1:]]
+        Ja[:, k] = used((design(hi, data, zeros) - design(lo, data, zeros)) @ beta, data, w
+                        ) / (2 * step)
+    Xw = used(X, data, w)
+    tail = Xw[:, zeros + 1:] if data.initial == "estimate" else Xw[:, zeros + 1:zeros + 2]
+    columns = [Xw[:, : zeros + 1], Ja, tail]
     if len(d):
         raw = np.concatenate(data.y) - X @ beta
         lagged = np.zeros((raw.shape[0], len(d)))
@@ -147,7 +150,7 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
             for k in range(1, len(d) + 1):
                 lagged[start + k:start + N, k - 1] = raw[start:start + N - k]
             start += N
-        columns.append(whiten(lagged, data, np.concatenate(([1.0], np.zeros(len(d))))))
+        columns.append(used(lagged, data, np.concatenate(([1.0], np.zeros(len(d))))))
     J = np.column_stack(columns)
     dof = r.shape[0] - J.shape[1]
     rss = float(r @ r)
@@ -156,13 +159,13 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
     scale[scale == 0] = 1.0
     Js = J / scale
     inv = np.linalg.pinv(Js.T @ Js)
-    lengths = [len(own) - (len(w) - 1 if w is not None else 0) for own in data.own]
-    middle = _noise_weighted(Js, r, lengths, lags, r.shape[0] / max(dof, 1))
+    middle = _noise_weighted(Js, r, lengths(data, w), lags, r.shape[0] / max(dof, 1))
     full = (inv @ middle @ inv) / np.outer(scale, scale)
     p = zeros + 1 + n + 1
     cov = full[:p, :p]
     noise = np.concatenate(([1.0], d))
-    return OutputFit(b, a, c, eta.reshape(-1, n), r, rss, cov, float(np.sqrt(sigma2)), noise)
+    initial = eta.reshape(-1, n) if data.initial == "estimate" else np.zeros((len(data.y), n))
+    return OutputFit(b, a, c, initial, r, rss, cov, float(np.sqrt(sigma2)), noise)
 
 
 def _noise_weighted(J: np.ndarray, r: np.ndarray, lengths: list[int], lags: int,

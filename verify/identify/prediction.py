@@ -27,7 +27,8 @@ from verify.identify.experiment import Trial
 from verify.identify.structure import Structure
 from verify.identify.trial_data import OutputData, check_trials, output_data
 
-__all__ = ["design", "element_parameters", "fit_linear", "predict", "predict_output", "whiten"]
+__all__ = ["design", "element_parameters", "fit_linear", "lengths", "predict", "predict_output",
+           "used", "whiten"]
 
 
 def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
@@ -72,6 +73,28 @@ def whiten(M: np.ndarray, data: OutputData, w: np.ndarray | None) -> np.ndarray:
     return np.concatenate(parts)
 
 
+def used(M: np.ndarray, data: OutputData, w: np.ndarray | None) -> np.ndarray:
+    """:func:`whiten`, then the first ``data.skip`` samples of each trial left out."""
+    Mw = whiten(M, data, w)
+    lag = 0 if w is None else len(w) - 1
+    drop = max(data.skip - lag, 0)
+    if drop == 0:
+        return Mw
+    keep = []
+    row = 0
+    for own in data.own:
+        N = len(own) - lag
+        keep.append(np.arange(row + drop, row + N))
+        row += N
+    return Mw[np.concatenate(keep)]
+
+
+def lengths(data: OutputData, w: np.ndarray | None) -> list[int]:
+    """Rows per trial of :func:`used`."""
+    lag = 0 if w is None else len(w) - 1
+    return [len(own) - max(lag, data.skip) for own in data.own]
+
+
 def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None = None
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(beta, residual, X): the least-squares numerator, coupling and initial states for
@@ -89,26 +112,29 @@ def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None
     p = zeros + 2
     n = len(a)
     if not np.all(np.isfinite(X)):
-        return np.full(X.shape[1], np.nan), np.full(whiten(y, data, w).shape, np.inf), X
-    Xw = whiten(X, data, w)
-    yw = whiten(y, data, w)
-    lag = 0 if w is None else len(w) - 1
+        return np.full(X.shape[1], np.nan), np.full(used(y, data, w).shape, np.inf), X
+    Xw = used(X, data, w)
+    yw = used(y, data, w)
     Xp = Xw[:, :p].copy()
     yp = yw.copy()
     bases = []
     row = 0
-    for k, own in enumerate(data.own):
-        rows = slice(row, row + len(own) - lag)
-        Q = np.linalg.qr(Xw[rows, p + k * n:p + (k + 1) * n])[0]
+    for k, count in enumerate(lengths(data, w)):
+        rows = slice(row, row + count)
         bases.append(rows)
+        row += count
+        if data.initial == "zero":
+            continue
+        Q = np.linalg.qr(Xw[rows, p + k * n:p + (k + 1) * n])[0]
         Xp[rows] -= Q @ (Q.T @ Xp[rows])
         yp[rows] -= Q @ (Q.T @ yp[rows])
-        row += len(own) - lag
     scale = np.linalg.norm(Xp, axis=0)
     scale[scale == 0] = 1.0
     shared = np.linalg.lstsq(Xp / scale, yp, rcond=None)[0] / scale
-    beta = np.empty(X.shape[1])
+    beta = np.zeros(X.shape[1])
     beta[:p] = shared
+    if data.initial == "zero":
+        return beta, yp - Xp @ shared, X
     for k, rows in enumerate(bases):
         F = Xw[rows, p + k * n:p + (k + 1) * n]
         beta[p + k * n:p + (k + 1) * n] = np.linalg.lstsq(F, yw[rows] - Xw[rows, :p] @ shared,

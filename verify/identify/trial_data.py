@@ -22,13 +22,21 @@ __all__ = ["OutputData", "check_trials", "output_data"]
 
 @dataclass(frozen=True)
 class OutputData:
-    """The data of output i: per trial the own input e_i, the other input e_j and u_i."""
+    """The data of output i: per trial the own input e_i, the other input e_j and u_i.
+
+    ``initial`` says how the estimators treat the start of each trial: "estimate" (the
+    initial state is estimated with the other parameters) or "zero" (the model starts
+    at rest); ``skip`` samples at the start of each trial are left out of the criterion
+    (the model is still simulated over them).
+    """
 
     output: int
     own: tuple[np.ndarray, ...]
     other: tuple[np.ndarray, ...]
     y: tuple[np.ndarray, ...]
     h: float
+    initial: str = "estimate"
+    skip: int = 0
 
     @property
     def samples(self) -> int:
@@ -93,7 +101,8 @@ def check_trials(trials: Sequence[Trial], structure: Structure, *, what: str = "
     return float(h)
 
 
-def output_data(trials: Sequence[Trial], i: int, h: float) -> OutputData:
+def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "estimate",
+                skip: int = 0) -> OutputData:
     """The view of output ``i`` (0 or 1) of checked trials."""
     j = 1 - i
     return OutputData(
@@ -102,4 +111,6 @@ def output_data(trials: Sequence[Trial], i: int, h: float) -> OutputData:
         tuple(np.asarray(tr.e, float)[:, j] for tr in trials),
         tuple(np.asarray(tr.u, float)[:, i] for tr in trials),
         h,
+        initial,
+        skip,
     )
