@@ -7,14 +7,15 @@ every 15 s falls on a step boundary.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
 from verify.errors import DbarUndefinedError, VerifyInputError
-from verify.sim.lie_group import cf4_mixed_step
-from verify.sim.scenario import LOOP_RATE, ClosedLoop, Scenario
+from verify.sim.fused import stepper as make_stepper
+from verify.sim.scenario import LOOP_RATE, Scenario
 from verify.so3 import Array
 from verify.system.stealthy import direction_sum, directions
 
@@ -69,6 +70,9 @@ def step_count(seconds: float, h: float) -> int:
     return max(1, int(np.ceil(seconds / h - 1e-9)))
 
 
+ENGINES = ("auto", "compiled", "python")
+
+
 def simulate(
     scenario: Scenario,
     seconds: float,
@@ -76,20 +80,29 @@ def simulate(
     *,
     direction_every: int = 0,
     progress: Progress | None = None,
+    engine: str = "auto",
 ) -> Trajectory:
     """Integrate ``scenario`` over [0, seconds] with step ``h`` (rounded to divide it).
 
     ``direction_every`` > 0 stores every body's direction d_i each that many steps (memory
     n * T / direction_every * 3 floats); 0 stores none.
+
+    ``engine`` chooses how the CF4 stages are evaluated: ``"python"`` is the field of
+    :class:`~verify.sim.scenario.ClosedLoop` (the definition), ``"compiled"`` the fused
+    kernels of :mod:`verify.sim.kernels` (same method and stages, rounding-level
+    differences; an error when the scenario has a part they do not model), ``"auto"``
+    the kernels when they apply and the Python field otherwise.
     """
     scenario.validate()
     if not (np.isfinite(seconds) and seconds > 0):
         raise VerifyInputError(f"the simulated time must be positive, got {seconds}")
     if not (np.isfinite(h) and h > 0):
         raise VerifyInputError(f"the step must be positive, got {h}")
+    if engine not in ENGINES:
+        raise VerifyInputError(f"unknown engine {engine!r}; choose from {', '.join(ENGINES)}")
     steps = step_count(seconds, h)
     dt = seconds / steps
-    loop = ClosedLoop(scenario)
+    stepper = make_stepper(scenario, engine)
     n = scenario.n
     Y, x = scenario.initial_state()
 
@@ -103,17 +116,17 @@ def simulate(
     def record(k: int, Y: Array, x: Array, held_R_r: Array) -> None:
         R_bar[k], R_l[k], R_r[k], xs[k] = Y[n], Y[n + 1], held_R_r, x
         s = direction_sum(Y[:n])
-        norm = float(np.linalg.norm(s))
+        norm = math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2])
         coherence[k] = norm / n
         dbars[k] = s / norm if norm > 0 else np.nan
         if d is not None and k % direction_every == 0:
             d[k // direction_every] = directions(Y[:n])
 
     for k in range(steps):
-        held = loop.hold(k * dt, Y)
+        held = stepper.hold(k * dt, Y)
         record(k, Y, x, held.R_r)
         try:
-            Y, x = cf4_mixed_step(loop.field(held), k * dt, Y, x, dt)
+            Y, x = stepper.step(k * dt, Y, x, dt, held)
         except DbarUndefinedError as exc:
             raise DbarUndefinedError(
                 f"at t = {k * dt:.4g} s the bodies' directions cancel, so dbar and A(d) are "
@@ -121,6 +134,6 @@ def simulate(
                 f"|sum d_i| away from 0): {exc}") from None
         if progress is not None:
             progress(k + 1, steps)
-    record(steps, Y, x, loop.hold(steps * dt, Y).R_r)
+    record(steps, Y, x, stepper.hold(steps * dt, Y).R_r)
     return Trajectory(scenario, dt, t, R_bar, R_l, R_r, xs, dbars, coherence, t[keep], d,
                       Y[:n].copy())
