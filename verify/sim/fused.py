@@ -79,9 +79,18 @@ class Stepper:
         """The reference and the human's held command for the period starting at t."""
         return self.loop.hold(t, Y)
 
+    @property
+    def holds_commands(self) -> bool:
+        """Whether the human samples and holds its command each loop period."""
+        return type(self.loop.s.human).hold is not Human.hold
+
     def step(self, t: float, Y: Array, x: Array, h: float, held: Held) -> tuple[Array, Array]:
         """(Y, x) after one CF4 step of ``ClosedLoop.field`` (the definition)."""
         return cf4_mixed_step(self.loop.field(held), t, Y, x, h)
+
+    def field(self, t: float, Y: Array, x: Array, held: Held) -> tuple[Array, Array]:
+        """(F, g) of the closed loop at one state."""
+        return self.loop.field(held)(t, Y, x)
 
 
 class CompiledStepper(Stepper):
@@ -113,30 +122,48 @@ class CompiledStepper(Stepper):
             return Held(R_r, out)
         return Held(R_r, h.hold(t, Y[self.n + 1], R_r))
 
-    def step(self, t: float, Y: Array, x: Array, h: float, held: Held) -> tuple[Array, Array]:
+    def _inputs(self, times: tuple[float, ...], held: Held) -> tuple[Array, Array]:
+        """The human's spatial command and the given autonomous input at stage times."""
         c_stage = self.zero_command
         if self.command == "held":
             c_stage = np.empty((4, 3))
             c_stage[:] = held.human
         elif self.command == "signal":
             c_stage = np.empty((4, 3))
-            for j, s in enumerate((t, t + 0.5 * h, t + h)):
+            for j, s in enumerate(times):
                 c_stage[j + (j > 1)] = self.human.signal(s)
             c_stage[2] = c_stage[1]
         Oa = self.no_input
         if self.auto == kernels.AUTO_GIVEN:
             Oa = np.empty((4, self.n, 3))
-            for j, s in enumerate((t, t + 0.5 * h, t + h)):
+            for j, s in enumerate(times):
                 Oa[j + (j > 1)] = self.autonomous(s, None)
             Oa[2] = Oa[1]
+        return c_stage, Oa
+
+    def _undefined(self) -> DbarUndefinedError:
+        return DbarUndefinedError(
+            f"dbar is undefined: |sum d_i| <= {self.tol:g} * n (n = {self.n}); the bodies' "
+            "directions cancel out")
+
+    def field(self, t: float, Y: Array, x: Array, held: Held) -> tuple[Array, Array]:
+        c_stage, Oa = self._inputs((t,), held)
+        F, g = np.empty((Y.shape[0], 3)), np.empty(x.shape[0])
+        Om, work = self.workspace[3], self.workspace[4]
+        if kernels.closed_loop_field(Y, x, self.k_s, held.R_r, c_stage[0], self.hA, self.hB,
+                                     self.hC, self.hD, self.auto, self.gain, Oa[0], self.tol,
+                                     F, g, Om, work) != kernels.OK:
+            raise self._undefined()
+        return F, g
+
+    def step(self, t: float, Y: Array, x: Array, h: float, held: Held) -> tuple[Array, Array]:
+        c_stage, Oa = self._inputs((t, t + 0.5 * h, t + h), held)
         Y_out, x_out = np.empty_like(Y), np.empty_like(x)
         status = kernels.cf4_step(Y, x, h, self.k_s, held.R_r, c_stage, self.hA, self.hB,
                                   self.hC, self.hD, self.auto, self.gain, Oa, self.tol,
                                   Y_out, x_out, *self.workspace)
         if status != kernels.OK:
-            raise DbarUndefinedError(
-                f"dbar is undefined: |sum d_i| <= {self.tol:g} * n (n = {self.n}); the "
-                "bodies' directions cancel out")
+            raise self._undefined()
         return Y_out, x_out
 
 

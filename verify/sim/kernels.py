@@ -321,3 +321,62 @@ def vr_command(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: 
         v0, v1, v2 = v0 * r, v1 * r, v2 * r
     out[0], out[1], out[2] = v0, v1, v2
     return True
+
+
+@njit(cache=True)
+def rotate_vectors(P: Array, V: Array, out: Array) -> None:
+    """out[i] = exp(hat(P[i])) V[i] for a batch of vectors (Rodrigues, as :func:`exp_mul`)."""
+    for i in range(P.shape[0]):
+        w0, w1, w2 = P[i, 0], P[i, 1], P[i, 2]
+        t2 = w0 * w0 + w1 * w1 + w2 * w2
+        a, b = _rodrigues_coefficients(t2)
+        c = 1.0 - b * t2
+        v0, v1, v2 = V[i, 0], V[i, 1], V[i, 2]
+        wv = b * (w0 * v0 + w1 * v1 + w2 * v2)
+        out[i, 0] = c * v0 + a * (w1 * v2 - w2 * v1) + wv * w0
+        out[i, 1] = c * v1 + a * (w2 * v0 - w0 * v2) + wv * w1
+        out[i, 2] = c * v2 + a * (w0 * v1 - w1 * v0) + wv * w2
+
+
+@njit(cache=True, inline="always")
+def _mm(A: Array, B: Array, r: int, c: int) -> float:
+    """(A B^T)[r, c] for 3 x 3 matrices."""
+    return A[r, 0] * B[c, 0] + A[r, 1] * B[c, 1] + A[r, 2] * B[c, 2]
+
+
+@njit(cache=True)
+def log_dexpinv(Y1: Array, Y0: Array, F: Array, scale: float, P: Array, D: Array) -> bool:
+    """P[i] = log(Y1[i] Y0[i]^T) and D[i] = scale * dexp^{-1}_{P[i]}(F[i]).
+
+    For Y(s) = exp(hat(p(s))) Y0 with spatial velocity F (Y' = hat(F) Y), the chart's
+    velocity is p' = dexp^{-1}_p(F) = F - p x F / 2 + alpha(|p|) p x (p x F), with
+    alpha(t) = (1 - (t/2) cot(t/2)) / t^2 (Iserles, Munthe-Kaas, Norsett and Zanna,
+    Acta Numerica 2000, Section 2.4). Returns False when some angle exceeds 2 rad (the
+    caller then shortens the step).
+    """
+    for i in range(Y1.shape[0]):
+        A, B = Y1[i], Y0[i]
+        s0 = 0.5 * (_mm(A, B, 2, 1) - _mm(A, B, 1, 2))
+        s1 = 0.5 * (_mm(A, B, 0, 2) - _mm(A, B, 2, 0))
+        s2 = 0.5 * (_mm(A, B, 1, 0) - _mm(A, B, 0, 1))
+        cs = 0.5 * (_mm(A, B, 0, 0) + _mm(A, B, 1, 1) + _mm(A, B, 2, 2) - 1.0)
+        sn = math.sqrt(s0 * s0 + s1 * s1 + s2 * s2)
+        t = math.atan2(sn, cs)
+        if t > 2.0:
+            return False
+        t2 = t * t
+        # t / sin t and alpha(t) by series for small t (next terms below 1e-16 relative)
+        f = 1.0 + t2 * (1.0 / 6.0 + t2 * (7.0 / 360.0)) if t2 < 1e-6 else t / math.sin(t)
+        if t2 < 1e-2:
+            alpha = 1.0 / 12.0 + t2 * (1.0 / 720.0 + t2 * (1.0 / 30240.0 + t2 / 1209600.0))
+        else:
+            alpha = (1.0 - 0.5 * t / math.tan(0.5 * t)) / t2
+        p0, p1, p2 = f * s0, f * s1, f * s2
+        P[i, 0], P[i, 1], P[i, 2] = p0, p1, p2
+        v0, v1, v2 = F[i, 0], F[i, 1], F[i, 2]
+        c0, c1, c2 = p1 * v2 - p2 * v1, p2 * v0 - p0 * v2, p0 * v1 - p1 * v0
+        cc0, cc1, cc2 = p1 * c2 - p2 * c1, p2 * c0 - p0 * c2, p0 * c1 - p1 * c0
+        D[i, 0] = scale * (v0 - 0.5 * c0 + alpha * cc0)
+        D[i, 1] = scale * (v1 - 0.5 * c1 + alpha * cc1)
+        D[i, 2] = scale * (v2 - 0.5 * c2 + alpha * cc2)
+    return True

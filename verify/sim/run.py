@@ -7,7 +7,6 @@ every 15 s falls on a step boundary.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -38,6 +37,8 @@ class Trajectory:
     direction_times: Array  # (T_d,)
     d: Array | None  # (T_d, n, 3), the bodies' directions d_i
     final_bodies: Array  # (n, 3, 3)
+    steps: int = 0  # integration steps taken (accepted ones when adaptive)
+    rejected_steps: int = 0  # steps the error control rejected (adaptive only)
 
     @property
     def weakest_coherence(self) -> float:
@@ -73,6 +74,52 @@ def step_count(seconds: float, h: float) -> int:
 ENGINES = ("auto", "compiled", "python")
 
 
+class Recorder:
+    """The sample arrays of a :class:`Trajectory` at times k dt, k = 0 .. steps."""
+
+    def __init__(self, scenario: Scenario, steps: int, dt: float, x_size: int,
+                 direction_every: int) -> None:
+        T = steps + 1
+        self.scenario, self.n, self.dt, self.every = scenario, scenario.n, dt, direction_every
+        self.t = np.arange(T) * dt
+        self.R_bar, self.R_l, self.R_r = (np.empty((T, 3, 3)) for _ in range(3))
+        self.x, self.dbar, self.coherence = np.empty((T, x_size)), np.empty((T, 3)), np.empty(T)
+        self.keep = (np.arange(0, T, direction_every) if direction_every > 0
+                     else np.zeros(0, int))
+        self.d = (np.empty((self.keep.shape[0], self.n, 3)) if direction_every > 0 else None)
+
+    def wants_directions(self, k: int) -> bool:
+        return self.d is not None and k % self.every == 0
+
+    def record(self, k: int, Y: Array, x: Array, held_R_r: Array) -> None:
+        """Sample k from the full state (rotations Y, Euclidean x)."""
+        n = self.n
+        d = directions(Y[:n]) if self.wants_directions(k) else None
+        self.record_parts(k, Y[n], Y[n + 1], x, held_R_r, direction_sum(Y[:n]), d)
+
+    def record_parts(self, k: int, R_bar: Array, R_l: Array, x: Array, R_r: Array, s: Array,
+                     d: Array | None) -> None:
+        """Sample k from R-bar, R_l, x, R_r, s = sum d_i and (when kept) the d_i."""
+        self.R_bar[k], self.R_l[k], self.R_r[k], self.x[k] = R_bar, R_l, R_r, x
+        norm = float(np.linalg.norm(s))
+        self.coherence[k] = norm / self.n
+        self.dbar[k] = s / norm if norm > 0 else np.nan
+        if d is not None:
+            self.d[k // self.every] = d
+
+    def trajectory(self, final_bodies: Array, **stats: int) -> Trajectory:
+        return Trajectory(self.scenario, self.dt, self.t, self.R_bar, self.R_l, self.R_r,
+                          self.x, self.dbar, self.coherence, self.t[self.keep], self.d,
+                          final_bodies.copy(), **stats)
+
+
+def dbar_lost(t: float, exc: Exception) -> DbarUndefinedError:
+    return DbarUndefinedError(
+        f"at t = {t:.4g} s the bodies' directions cancel, so dbar and A(d) are undefined "
+        f"(claim sec2.dbar-stays-defined: the autonomous input must keep |sum d_i| away "
+        f"from 0): {exc}")
+
+
 def simulate(
     scenario: Scenario,
     seconds: float,
@@ -81,17 +128,27 @@ def simulate(
     direction_every: int = 0,
     progress: Progress | None = None,
     engine: str = "auto",
+    adaptive: bool = False,
+    rtol: float = 1e-8,
+    atol: float = 1e-10,
 ) -> Trajectory:
-    """Integrate ``scenario`` over [0, seconds] with step ``h`` (rounded to divide it).
+    """Integrate ``scenario`` over [0, seconds]; samples every ``h`` (rounded to divide it).
 
-    ``direction_every`` > 0 stores every body's direction d_i each that many steps (memory
-    n * T / direction_every * 3 floats); 0 stores none.
+    By default the step is ``h``, the loop period (fixed-step CF4, inputs held per step).
+    ``direction_every`` > 0 stores every body's direction d_i each that many samples
+    (memory n * T / direction_every * 3 floats); 0 stores none.
 
     ``engine`` chooses how the CF4 stages are evaluated: ``"python"`` is the field of
     :class:`~verify.sim.scenario.ClosedLoop` (the definition), ``"compiled"`` the fused
     kernels of :mod:`verify.sim.kernels` (same method and stages, rounding-level
     differences; an error when the scenario has a part they do not model), ``"auto"``
     the kernels when they apply and the Python field otherwise.
+
+    ``adaptive=True`` chooses the steps by error control instead
+    (:mod:`verify.sim.adaptive`: step doubling of CF4 with tolerances ``rtol`` and
+    ``atol``, steps ending exactly on reference switches and, for a human that holds
+    its command, on every loop period); the samples every ``h`` then come from a dense
+    output of order 5.
     """
     scenario.validate()
     if not (np.isfinite(seconds) and seconds > 0):
@@ -103,37 +160,22 @@ def simulate(
     steps = step_count(seconds, h)
     dt = seconds / steps
     stepper = make_stepper(scenario, engine)
-    n = scenario.n
     Y, x = scenario.initial_state()
+    rec = Recorder(scenario, steps, dt, x.shape[0], direction_every)
+    if adaptive:
+        from verify.sim.adaptive import integrate_adaptive
 
-    T = steps + 1
-    t = np.arange(T) * dt
-    R_bar, R_l, R_r = np.empty((T, 3, 3)), np.empty((T, 3, 3)), np.empty((T, 3, 3))
-    xs, dbars, coherence = np.empty((T, x.shape[0])), np.empty((T, 3)), np.empty(T)
-    keep = np.arange(0, T, direction_every) if direction_every > 0 else np.zeros(0, int)
-    d = np.empty((keep.shape[0], n, 3)) if direction_every > 0 else None
-
-    def record(k: int, Y: Array, x: Array, held_R_r: Array) -> None:
-        R_bar[k], R_l[k], R_r[k], xs[k] = Y[n], Y[n + 1], held_R_r, x
-        s = direction_sum(Y[:n])
-        norm = math.sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2])
-        coherence[k] = norm / n
-        dbars[k] = s / norm if norm > 0 else np.nan
-        if d is not None and k % direction_every == 0:
-            d[k // direction_every] = directions(Y[:n])
+        return integrate_adaptive(stepper, rec, Y, x, seconds, rtol=rtol, atol=atol,
+                                  progress=progress)
 
     for k in range(steps):
         held = stepper.hold(k * dt, Y)
-        record(k, Y, x, held.R_r)
+        rec.record(k, Y, x, held.R_r)
         try:
             Y, x = stepper.step(k * dt, Y, x, dt, held)
         except DbarUndefinedError as exc:
-            raise DbarUndefinedError(
-                f"at t = {k * dt:.4g} s the bodies' directions cancel, so dbar and A(d) are "
-                f"undefined (claim sec2.dbar-stays-defined: the autonomous input must keep "
-                f"|sum d_i| away from 0): {exc}") from None
+            raise dbar_lost(k * dt, exc) from None
         if progress is not None:
             progress(k + 1, steps)
-    record(steps, Y, x, stepper.hold(steps * dt, Y).R_r)
-    return Trajectory(scenario, dt, t, R_bar, R_l, R_r, xs, dbars, coherence, t[keep], d,
-                      Y[:n].copy())
+    rec.record(steps, Y, x, stepper.hold(steps * dt, Y).R_r)
+    return rec.trajectory(Y[:scenario.n], steps=steps)
