@@ -53,9 +53,9 @@ def _hermite_matrix() -> Array:
 _HERMITE = _hermite_matrix()
 
 
-def hermite_weights(s: float) -> Array:
-    """Weights of (v0, vm, v1, d0, dm, d1) in the quintic interpolant at s in [0, 1]."""
-    return _HERMITE @ (s ** np.arange(6))
+def hermite_weights(s: Array) -> Array:
+    """Weights (S, 6) of (v0, vm, v1, d0, dm, d1) in the quintic interpolant at s in [0, 1]."""
+    return (np.asarray(s, dtype=float)[:, None] ** np.arange(6)) @ _HERMITE.T
 
 
 def _validate(rtol: float, atol: float) -> None:
@@ -95,17 +95,34 @@ class _Interval:
         self.x = (x0, xm, x1, H * g0, H * gm, H * g1)
         self.Y0, self.t0, self.H = Y0, t0, H
 
-    def at(self, t: float) -> tuple[Array, Array]:
-        """(p, x) at time t: the chart coordinates of every rotation and the state."""
-        w = hermite_weights((t - self.t0) / self.H)
-        p = w[1] * self.Pm + w[2] * self.P1 + w[3] * self.D0 + w[4] * self.Dm + w[5] * self.D1
-        x = sum(wj * xj for wj, xj in zip(w, self.x, strict=True))
-        return p, x
+    def samples(self, times: Array, n: int, want_directions: bool
+                ) -> tuple[Array, Array, Array, Array | None]:
+        """(R-bar and R_l (S, 2, 3, 3), x (S, q), sum d_i (S, 3), d_i or None) at times."""
+        W = hermite_weights((np.asarray(times) - self.t0) / self.H)  # (S, 6)
+        S = W.shape[0]
+        small, sums = np.empty((S, 2, 3, 3)), np.empty((S, 3))
+        dirs = np.empty((S if want_directions else 0, n, 3))
+        kernels.dense_samples(np.ascontiguousarray(W[:, 1:]), self.Pm, self.P1, self.D0,
+                              self.Dm, self.D1, self.Y0, n, small, sums, dirs)
+        x = W @ np.stack(self.x)
+        return small, x, sums, (dirs if want_directions else None)
+
+
+def _extrapolated(Y2: Array, x2: Array, Yf: Array, xf: Array) -> tuple[Array, Array]:
+    """Richardson's order-5 value from the halves and the full step, on the group:
+    exp(log(Y2 Yf^T) / 15) Y2 for the rotations, x2 + (x2 - xf) / 15 for x."""
+    N = Y2.shape[0]
+    P, unused = np.empty((N, 3)), np.empty((N, 3))
+    if not kernels.log_dexpinv(Y2, Yf, unused, 0.0, P, unused):
+        return Y2, x2
+    Y = np.empty_like(Y2)
+    kernels.exp_mul(P, 1.0 / 15.0, Y2, Y)
+    return Y, x2 + (x2 - xf) / 15.0
 
 
 def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seconds: float,
-                       *, rtol: float, atol: float, progress: Progress | None = None
-                       ) -> Trajectory:
+                       *, rtol: float, atol: float, progress: Progress | None = None,
+                       extrapolate: bool = True) -> Trajectory:
     """Fill ``rec`` from (Y, x) at t = 0 to ``seconds`` with error-controlled steps."""
     _validate(rtol, atol)
     n = rec.n
@@ -118,7 +135,6 @@ def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seco
     t, H = 0.0, float(rec.dt)
     b = 0  # index of the next boundary
     accepted = rejected = rejects_in_row = 0
-    d_cols = np.empty((n, 3))
     while b < stops.shape[0]:
         stop = float(stops[b])
         landing = t + H >= stop - 1e-12 * max(1.0, stop)
@@ -143,6 +159,8 @@ def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seco
             continue
         rejects_in_row = 0
         accepted += 1
+        if extrapolate:
+            Y2, x2 = _extrapolated(Y2, x2, Yf, xf)
         t_end = stop if landing else t + step
         # samples strictly inside (t, t_end), then one on t_end itself
         tol_t = 1e-9 * rec.dt
@@ -152,13 +170,10 @@ def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seco
             k_next += 1
         if inner:
             dense = _Interval(stepper, t, step, held, Y, x, Yh, xh, Y2, x2)
-            for k in inner:
-                p, xk = dense.at(samples[k])
-                kernels.rotate_vectors(p[:n], Y[:n, :, 2], d_cols)
-                small = np.empty((2, 3, 3))
-                kernels.exp_mul(p[n:], 1.0, Y[n:], small)
-                rec.record_parts(k, small[0], small[1], xk, held.R_r, d_cols.sum(axis=0),
-                                 d_cols.copy() if rec.wants_directions(k) else None)
+            want = any(rec.wants_directions(k) for k in inner)
+            small, xs, sums, dirs = dense.samples(samples[inner], n, want)
+            rec.record_block(slice(inner[0], inner[-1] + 1), small[:, 0], small[:, 1], xs,
+                             held.R_r, sums, dirs)
         Y, x, t = Y2, x2, t_end
         if landing:
             b += 1

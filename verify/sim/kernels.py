@@ -380,3 +380,46 @@ def log_dexpinv(Y1: Array, Y0: Array, F: Array, scale: float, P: Array, D: Array
         D[i, 1] = scale * (v1 - 0.5 * c1 + alpha * cc1)
         D[i, 2] = scale * (v2 - 0.5 * c2 + alpha * cc2)
     return True
+
+
+@njit(cache=True)
+def dense_samples(Wt: Array, Pm: Array, P1: Array, D0: Array, Dm: Array, D1: Array,
+                  Y0: Array, n: int, small: Array, sums: Array, dirs: Array) -> None:
+    """The samples of a quintic Hermite dense output (see :mod:`verify.sim.adaptive`).
+
+    For sample s with weights Wt[s] of (value at 1/2, value at 1, velocity at 0, 1/2, 1),
+    p_i = sum of the weighted data and Y_i = exp(hat(p_i)) Y0[i]. Writes the rotations
+    n and n + 1 (R-bar, R_l) to small[s], the sum of the bodies' d_i = Y_i e3 to sums[s],
+    and, when ``dirs`` has S rows, the d_i themselves.
+    """
+    N = Y0.shape[0]
+    keep = dirs.shape[0] == Wt.shape[0]
+    for s in range(Wt.shape[0]):
+        a, b, c, d, e = Wt[s, 0], Wt[s, 1], Wt[s, 2], Wt[s, 3], Wt[s, 4]
+        s0 = s1 = s2 = 0.0
+        for i in range(N):
+            w0 = a * Pm[i, 0] + b * P1[i, 0] + c * D0[i, 0] + d * Dm[i, 0] + e * D1[i, 0]
+            w1 = a * Pm[i, 1] + b * P1[i, 1] + c * D0[i, 1] + d * Dm[i, 1] + e * D1[i, 1]
+            w2 = a * Pm[i, 2] + b * P1[i, 2] + c * D0[i, 2] + d * Dm[i, 2] + e * D1[i, 2]
+            t2 = w0 * w0 + w1 * w1 + w2 * w2
+            ca, cb = _rodrigues_coefficients(t2)
+            cc = 1.0 - cb * t2
+            if i < n:
+                v0, v1, v2 = Y0[i, 0, 2], Y0[i, 1, 2], Y0[i, 2, 2]
+                wv = cb * (w0 * v0 + w1 * v1 + w2 * v2)
+                r0 = cc * v0 + ca * (w1 * v2 - w2 * v1) + wv * w0
+                r1 = cc * v1 + ca * (w2 * v0 - w0 * v2) + wv * w1
+                r2 = cc * v2 + ca * (w0 * v1 - w1 * v0) + wv * w2
+                s0 += r0
+                s1 += r1
+                s2 += r2
+                if keep:
+                    dirs[s, i, 0], dirs[s, i, 1], dirs[s, i, 2] = r0, r1, r2
+            else:
+                for col in range(3):
+                    v0, v1, v2 = Y0[i, 0, col], Y0[i, 1, col], Y0[i, 2, col]
+                    wv = cb * (w0 * v0 + w1 * v1 + w2 * v2)
+                    small[s, i - n, 0, col] = cc * v0 + ca * (w1 * v2 - w2 * v1) + wv * w0
+                    small[s, i - n, 1, col] = cc * v1 + ca * (w2 * v0 - w0 * v2) + wv * w1
+                    small[s, i - n, 2, col] = cc * v2 + ca * (w0 * v1 - w1 * v0) + wv * w2
+        sums[s, 0], sums[s, 1], sums[s, 2] = s0, s1, s2

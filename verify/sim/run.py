@@ -107,6 +107,19 @@ class Recorder:
         if d is not None:
             self.d[k // self.every] = d
 
+    def record_block(self, ks: slice, R_bar: Array, R_l: Array, x: Array, R_r: Array,
+                     s: Array, d: Array | None) -> None:
+        """Samples ks (consecutive) at once, as :meth:`record_parts` (d: one row per sample)."""
+        self.R_bar[ks], self.R_l[ks], self.R_r[ks], self.x[ks] = R_bar, R_l, R_r, x
+        norm = np.linalg.norm(s, axis=1)
+        self.coherence[ks] = norm / self.n
+        with np.errstate(invalid="ignore", divide="ignore"):
+            self.dbar[ks] = np.where(norm[:, None] > 0, s / norm[:, None], np.nan)
+        if d is not None:
+            for j, k in enumerate(range(ks.start, ks.stop)):
+                if self.wants_directions(k):
+                    self.d[k // self.every] = d[j]
+
     def trajectory(self, final_bodies: Array, **stats: int) -> Trajectory:
         return Trajectory(self.scenario, self.dt, self.t, self.R_bar, self.R_l, self.R_r,
                           self.x, self.dbar, self.coherence, self.t[self.keep], self.d,
