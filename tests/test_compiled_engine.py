@@ -158,3 +158,23 @@ def test_compiled_long_run_keeps_rotations_in_so3():
     R = np.concatenate([run.R_bar, run.R_l, run.final_bodies])
     assert so3.orthogonality_error(R).max() < 1e-12
     assert np.abs(np.linalg.det(R) - 1).max() < 1e-12
+
+
+@pytest.mark.parametrize("which", ["lti", "storage", "static", "vr", "signal"])
+def test_batched_energy_equals_the_per_sample_definition(which):
+    from verify.sim.energy import energy
+
+    rng = np.random.default_rng(4)
+    humans = _humans(rng)
+    humans["storage"] = LTIHuman(-np.eye(2), np.eye(2), np.eye(2), np.zeros((2, 2)),
+                                 P=np.eye(2))  # 1/(s+1) I with its KYP storage |x|^2/2
+    refs = Reference.switching([so3.exp(v) for v in 0.8 * rng.standard_normal((3, 3))], 0.6)
+    run = simulate(_scenario(humans[which], "consensus", reference=refs), 1.5)
+    for prefer in (True, False):
+        fast, slow = energy(run, prefer), energy(run, prefer, batched=False)
+        assert fast.uses_storage == slow.uses_storage == (prefer and which in ("storage",
+                                                                               "static"))
+        assert np.abs(fast.V_dot - slow.V_dot).max() < 1e-13 * (1 + np.abs(slow.V).max())
+        if slow.uses_storage:
+            assert np.abs(fast.S_h_storage - slow.S_h_storage).max() < 1e-15
+        assert np.array_equal(fast.V_dot_bound, slow.V_dot_bound)

@@ -28,7 +28,7 @@ from verify.system import laws, stealthy
 _EMPTY2 = np.zeros((0, 0))
 
 
-def _laws_unmodified() -> bool:
+def laws_unmodified() -> bool:
     """True while ClosedLoop evaluates the paper's laws (nothing patched at run time)."""
     cl = ClosedLoop
     return (scenario_module.stealthy_input is stealthy.stealthy_input
@@ -39,7 +39,7 @@ def _laws_unmodified() -> bool:
                     for name in ("field", "signals", "leader_velocity", "hold")))
 
 
-def _human_form(human: Human) -> tuple[Array, Array, Array, Array, str] | None:
+def human_form(human: Human) -> tuple[Array, Array, Array, Array, str] | None:
     """(A, B, C, D, command kind) of omega_h^b = pad(C x + D e[:k]) + R_l^T c_s."""
     t = type(human)
     if t is LTIHuman:
@@ -96,12 +96,12 @@ class Stepper:
 class CompiledStepper(Stepper):
     """The same step through :func:`verify.sim.kernels.cf4_step` (see the module)."""
 
-    def __init__(self, loop: ClosedLoop, human_form: tuple, auto_form: tuple[int, float]
+    def __init__(self, loop: ClosedLoop, h_form: tuple, auto_form: tuple[int, float]
                  ) -> None:
         super().__init__(loop)
         s = loop.s
-        self.hA, self.hB, self.hC, self.hD = (_c(M) for M in human_form[:4])
-        self.command = human_form[4]
+        self.hA, self.hB, self.hC, self.hD = (_c(M) for M in h_form[:4])
+        self.command = h_form[4]
         self.auto, self.gain = auto_form
         self.n, self.k_s = s.n, float(s.k_s)
         self.human, self.autonomous, self.reference = s.human, s.autonomous, s.reference
@@ -173,10 +173,10 @@ def stepper(scenario: Scenario, engine: str = "auto") -> Stepper:
     loop = ClosedLoop(scenario)
     if engine == "python":
         return Stepper(loop)
-    human_form = _human_form(scenario.human)
+    h_form = human_form(scenario.human)
     auto_form = _autonomous_form(scenario.autonomous)
-    if _laws_unmodified() and human_form is not None and auto_form is not None:
-        return CompiledStepper(loop, human_form, auto_form)
+    if laws_unmodified() and h_form is not None and auto_form is not None:
+        return CompiledStepper(loop, h_form, auto_form)
     if engine == "compiled":
         raise VerifyInputError(
             "the compiled engine does not model this scenario's human or autonomous input "

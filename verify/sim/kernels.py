@@ -423,3 +423,13 @@ def dense_samples(Wt: Array, Pm: Array, P1: Array, D0: Array, Dm: Array, D1: Arr
                     small[s, i - n, 1, col] = cc * v1 + ca * (w2 * v0 - w0 * v2) + wv * w1
                     small[s, i - n, 2, col] = cc * v2 + ca * (w0 * v1 - w1 * v0) + wv * w2
         sums[s, 0], sums[s, 1], sums[s, 2] = s0, s1, s2
+
+
+@njit(cache=True)
+def vr_commands(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: float,
+                out: Array) -> Array:
+    """:func:`vr_command` for a batch (T, 3, 3); returns a mask of the rows it filled."""
+    done = np.empty(R_l.shape[0], dtype=np.bool_)
+    for k in range(R_l.shape[0]):
+        done[k] = vr_command(R_l[k], R_r[k], k_omega, saturation, tilt, out[k])
+    return done

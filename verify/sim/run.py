@@ -1,8 +1,9 @@
-"""Run a scenario: fixed-step CF4 on SO(3)^(n+2) x R^k, inputs held per loop period.
+"""Run a scenario: CF4 on SO(3)^(n+2) x R^k, inputs held per loop period.
 
 The loop period is the step (1/120 s by default, Section 4); the reference and a sampled
 human command are read at the start of each step and held over it, so a switch of R_r
-every 15 s falls on a step boundary.
+every 15 s falls on a step boundary. With ``adaptive=True`` the steps are chosen by error
+control (:mod:`verify.sim.adaptive`) and the trajectory is still sampled every loop period.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ Progress = Callable[[int, int], None]
 
 @dataclass
 class Trajectory:
-    """Samples of a run at every step (bodies' directions every ``direction_every`` steps)."""
+    """Samples of a run every loop period (bodies' directions every ``direction_every``)."""
 
     scenario: Scenario
     h: float
