@@ -31,6 +31,7 @@ import numpy as np
 from quaternion_reference import QuaternionLoop
 
 from verify import so3
+from verify.sim import properties as props
 from verify.sim.humans import LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
 from verify.sim.run import simulate
@@ -96,6 +97,10 @@ def paper_section(args) -> None:
         print(f"   VR operator, {label} ({engine:>6}): {wall:7.2f} s wall, "
               f"{wall / 180:.4f} s per simulated second; drift max|R^T R - I| = "
               f"{orth:.1e}, max|det R - 1| = {det:.1e}")
+    pair, wall = _timed(props.RunPair.of, paper_scenario(), 180.0)
+    result, wall_check = _timed(props.lyapunov_decrease, pair)
+    print(f"   VR operator, new, with the property check (runs at h and h/2, Lyapunov terms "
+          f"of both): {wall:.2f} s + {wall_check:.2f} s ({result.line().split(';')[0]})")
     lti = paper_scenario(human=_lti_human())
     for label, kw in (("new fixed step", {}),
                       ("new adaptive rtol 1e-8", {"adaptive": True, "rtol": 1e-8})):
