@@ -140,10 +140,13 @@ def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seco
         stop = float(stops[b])
         landing = t + H >= stop - 1e-12 * max(1.0, stop)
         step = stop - t if landing else H
+        t_end = stop if landing else t + step
+        mid = t + 0.5 * step
         try:
             Yf, xf = stepper.step(t, Y, x, step, held)
-            Yh, xh = stepper.step(t, Y, x, 0.5 * step, held)
-            Y2, x2 = stepper.step(t + 0.5 * step, Yh, xh, 0.5 * step, held)
+            Yh, xh = stepper.step(t, Y, x, mid - t, held)
+            # t_end - mid is exact (Sterbenz: mid >= t_end / 2), so the halves end on t_end
+            Y2, x2 = stepper.step(mid, Yh, xh, t_end - mid, held)
         except DbarUndefinedError as exc:
             raise dbar_lost(t, exc) from None
         scale_x = atol + rtol * np.maximum(np.abs(x), np.abs(x2))
@@ -160,7 +163,6 @@ def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seco
             continue
         if extrapolate:
             Y2, x2 = _extrapolated(Y2, x2, Yf, xf)
-        t_end = stop if landing else t + step
         # samples strictly inside (t, t_end), then one on t_end itself
         tol_t = 1e-9 * rec.dt
         k_stop = k_next

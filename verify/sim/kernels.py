@@ -23,6 +23,10 @@ from numba import njit
 
 from verify.so3 import Array
 
+#: LLVM may fuse a * b + c into one rounding (FMA); no other fast-math licence, so NaN
+#: and infinity keep their IEEE meaning
+_CONTRACT = {"contract"}
+
 #: autonomous input kinds the kernel knows (Section 2, eq. (3))
 AUTO_ZERO, AUTO_CONSENSUS, AUTO_GIVEN = 0, 1, 2
 #: status codes of a step
@@ -34,7 +38,7 @@ _A1, _A2, _A3, _A4, _A5 = (-1 / 6, 1 / 120, -1 / 5040, 1 / 362880, -1 / 39916800
 _B1, _B2, _B3, _B4, _B5 = (-1 / 24, 1 / 720, -1 / 40320, 1 / 3628800, -1 / 479001600)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", fastmath=_CONTRACT)
 def _rodrigues_coefficients(t2: float) -> tuple[float, float]:
     """(sin t / t, (1 - cos t) / t^2) for t^2 = |w|^2, accurate at every angle.
 
@@ -51,7 +55,7 @@ def _rodrigues_coefficients(t2: float) -> tuple[float, float]:
     return math.sin(t) / t, 2.0 * s * s
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def exp_mul(W: Array, scale: float, Y: Array, out: Array) -> None:
     """out[i] = exp(scale * hat(W[i])) @ Y[i] for a batch (W (m, 3), Y and out (m, 3, 3)).
 
@@ -76,7 +80,7 @@ def exp_mul(W: Array, scale: float, Y: Array, out: Array) -> None:
             out[i, 2, col] = e20 * y0 + e21 * y1 + e22 * y2
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", fastmath=_CONTRACT)
 def _vee_at_b(P: Array, Q: Array) -> tuple[float, float, float]:
     """sk(P^T Q)^vee for two 3 x 3 matrices."""
     m01 = P[0, 0] * Q[0, 1] + P[1, 0] * Q[1, 1] + P[2, 0] * Q[2, 1]
@@ -88,7 +92,7 @@ def _vee_at_b(P: Array, Q: Array) -> tuple[float, float, float]:
     return 0.5 * (m21 - m12), 0.5 * (m02 - m20), 0.5 * (m10 - m01)
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def stealthy_body_field(R: Array, Omega: Array, omega_tilde: Array, F: Array,
                         work: Array, tol: float) -> int:
     """F[i] = omega~ + R_i (A(d) Omega)_i (spatial); A(d) = I - Q Q^T as in
@@ -160,7 +164,7 @@ def stealthy_body_field(R: Array, Omega: Array, omega_tilde: Array, F: Array,
     return OK
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def consensus(R: Array, gain: float, out: Array) -> None:
     """Ring synchronisation omega_i = gain (sk(R_i^T R_(i+1))^vee - sk(R_(i-1)^T R_i)^vee)."""
     n = R.shape[0]
@@ -180,7 +184,7 @@ def consensus(R: Array, gain: float, out: Array) -> None:
         p0, p1, p2 = v0, v1, v2
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def closed_loop_field(Y: Array, x: Array, k_s: float, R_r: Array, c_s: Array,
                       hA: Array, hB: Array, hC: Array, hD: Array, auto: int, gain: float,
                       Oa: Array, tol: float, F: Array, g: Array, Omega: Array,
@@ -237,7 +241,7 @@ def workspace(n: int, q: int) -> tuple[Array, Array, Array, Array, Array]:
             np.empty((n, 4)))
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def cf4_step(Y: Array, x: Array, h: float, k_s: float, R_r: Array, c_stage: Array,
              hA: Array, hB: Array, hC: Array, hD: Array, auto: int, gain: float,
              Oa_stage: Array, tol: float, Y_out: Array, x_out: Array, Ys: Array, Fs: Array,
@@ -293,7 +297,7 @@ def cf4_step(Y: Array, x: Array, h: float, k_s: float, R_r: Array, c_stage: Arra
     return OK
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def vr_command(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: float,
                out: Array) -> bool:
     """The held spatial command of the VR operator (:class:`verify.sim.humans.VROperator`).
@@ -323,7 +327,7 @@ def vr_command(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: 
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def rotate_vectors(P: Array, V: Array, out: Array) -> None:
     """out[i] = exp(hat(P[i])) V[i] for a batch of vectors (Rodrigues, as :func:`exp_mul`)."""
     for i in range(P.shape[0]):
@@ -338,13 +342,13 @@ def rotate_vectors(P: Array, V: Array, out: Array) -> None:
         out[i, 2] = c * v2 + a * (w0 * v1 - w1 * v0) + wv * w2
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", fastmath=_CONTRACT)
 def _mm(A: Array, B: Array, r: int, c: int) -> float:
     """(A B^T)[r, c] for 3 x 3 matrices."""
     return A[r, 0] * B[c, 0] + A[r, 1] * B[c, 1] + A[r, 2] * B[c, 2]
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def log_dexpinv(Y1: Array, Y0: Array, F: Array, scale: float, P: Array, D: Array) -> bool:
     """P[i] = log(Y1[i] Y0[i]^T) and D[i] = scale * dexp^{-1}_{P[i]}(F[i]).
 
@@ -382,7 +386,7 @@ def log_dexpinv(Y1: Array, Y0: Array, F: Array, scale: float, P: Array, D: Array
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def dense_samples(Wt: Array, Pm: Array, P1: Array, D0: Array, Dm: Array, D1: Array,
                   Y0: Array, n: int, small: Array, sums: Array, dirs: Array) -> None:
     """The samples of a quintic Hermite dense output (see :mod:`verify.sim.adaptive`).
@@ -425,7 +429,7 @@ def dense_samples(Wt: Array, Pm: Array, P1: Array, D0: Array, Dm: Array, D1: Arr
         sums[s, 0], sums[s, 1], sums[s, 2] = s0, s1, s2
 
 
-@njit(cache=True)
+@njit(cache=True, fastmath=_CONTRACT)
 def vr_commands(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: float,
                 out: Array) -> Array:
     """:func:`vr_command` for a batch (T, 3, 3); returns a mask of the rows it filled."""
