@@ -147,7 +147,8 @@ def test_hermite_weights_reproduce_quintics():
 
 
 @pytest.mark.parametrize("rtol, atol", [(-1e-8, 1e-10), (np.nan, 1e-10), (1e-8, np.inf),
-                                        (0.0, 0.0), (1e-17, 1e-18)])
+                                        (0.0, 0.0), (1e-17, 1e-18), ("1e-8", 1e-10),
+                                        (None, 1e-10), (1e-8, [1e-10])])
 def test_bad_tolerances_are_rejected(rtol, atol):
     with pytest.raises(VerifyInputError):
         simulate(_lti(n=2), 0.1, adaptive=True, rtol=rtol, atol=atol)

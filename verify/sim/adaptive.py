@@ -30,6 +30,7 @@ from __future__ import annotations
 import numpy as np
 
 from verify.errors import DbarUndefinedError, VerifyInputError
+from verify.inputs.numbers import real
 from verify.sim import kernels
 from verify.sim.fused import Stepper
 from verify.sim.run import Progress, Recorder, Trajectory, dbar_lost
@@ -61,13 +62,15 @@ def hermite_weights(s: Array) -> Array:
     return (np.asarray(s, dtype=float)[:, None] ** np.arange(6)) @ _HERMITE.T
 
 
-def _validate(rtol: float, atol: float) -> None:
+def _validate(rtol: float, atol: float) -> tuple[float, float]:
+    rtol, atol = real(rtol, "rtol"), real(atol, "atol")
     for name, v in (("rtol", rtol), ("atol", atol)):
-        if not (np.isfinite(v) and v >= 0):
-            raise VerifyInputError(f"{name} must be a finite number >= 0, got {v}")
+        if v < 0:
+            raise VerifyInputError(f"{name} must be >= 0, got {v}")
     if rtol < 1e-14 and atol < 1e-14:
         raise VerifyInputError(f"rtol = {rtol} and atol = {atol} ask for more than double "
                                "precision; give rtol or atol >= 1e-14")
+    return rtol, atol
 
 
 def _boundaries(stepper: Stepper, rec: Recorder, seconds: float) -> Array:
@@ -125,7 +128,7 @@ def integrate_adaptive(stepper: Stepper, rec: Recorder, Y: Array, x: Array, seco
                        *, rtol: float, atol: float, progress: Progress | None = None,
                        extrapolate: bool = True) -> Trajectory:
     """Fill ``rec`` from (Y, x) at t = 0 to ``seconds`` with error-controlled steps."""
-    _validate(rtol, atol)
+    rtol, atol = _validate(rtol, atol)
     n = rec.n
     stops = _boundaries(stepper, rec, seconds)
     samples = rec.t

@@ -327,21 +327,6 @@ def vr_command(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: 
     return True
 
 
-@njit(cache=True, fastmath=_CONTRACT)
-def rotate_vectors(P: Array, V: Array, out: Array) -> None:
-    """out[i] = exp(hat(P[i])) V[i] for a batch of vectors (Rodrigues, as :func:`exp_mul`)."""
-    for i in range(P.shape[0]):
-        w0, w1, w2 = P[i, 0], P[i, 1], P[i, 2]
-        t2 = w0 * w0 + w1 * w1 + w2 * w2
-        a, b = _rodrigues_coefficients(t2)
-        c = 1.0 - b * t2
-        v0, v1, v2 = V[i, 0], V[i, 1], V[i, 2]
-        wv = b * (w0 * v0 + w1 * v1 + w2 * v2)
-        out[i, 0] = c * v0 + a * (w1 * v2 - w2 * v1) + wv * w0
-        out[i, 1] = c * v1 + a * (w2 * v0 - w0 * v2) + wv * w1
-        out[i, 2] = c * v2 + a * (w0 * v1 - w1 * v0) + wv * w2
-
-
 @njit(cache=True, inline="always", fastmath=_CONTRACT)
 def _mm(A: Array, B: Array, r: int, c: int) -> float:
     """(A B^T)[r, c] for 3 x 3 matrices."""
