@@ -15,9 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from verify.sim import fused, kernels
+from verify.sim.humans import LTIHuman
 from verify.sim.run import Trajectory
 from verify.sim.scenario import ClosedLoop
-from verify.so3 import Array, hat, transpose
+from verify.so3 import Array, hat, transpose, vee
 
 
 def phi(R: Array) -> Array:
@@ -50,22 +52,76 @@ class Energy:
         return self.S_r + self.S_rl + S_h
 
 
-def energy(traj: Trajectory, prefer_storage: bool = True) -> Energy:
+def _batched(traj: Trajectory, uses: bool) -> tuple[Array, Array | None] | None:
+    """(V', storage) for all samples at once, for the humans the compiled field models.
+
+    The same terms as the per-sample loop of :func:`energy`, with the laws written out
+    as in :mod:`verify.sim.kernels` (omega_l = k_s sk(R_l^T R-bar)^vee + omega_h^b,
+    omega_h^b = pad(C x + D e) + R_l^T c_s); None when ClosedLoop's laws were replaced or
+    the human is of another kind (the loop is then the definition used).
+    """
+    s = traj.scenario
+    human = s.human
+    form = fused.human_form(human)
+    if form is None or not fused.laws_unmodified():
+        return None
+    A, B, C, D, command = form
+    Rb, Rl, Rr, x = traj.R_bar, traj.R_l, traj.R_r, traj.human_state
+    T, k = traj.t.shape[0], D.shape[0]
+    omega_t = s.k_s * np.einsum("tij,tj->ti", Rb, vee(transpose(Rb) @ Rl))  # eq. (6a)
+    e = vee(transpose(Rl) @ Rr)
+    omega_b = np.zeros((T, 3))
+    if k:
+        omega_b[:, :k] = x @ C.T + e[:, :k] @ D.T
+    if command != "none":
+        if command == "held":  # the VR command held at each sample time
+            c_s = np.empty((T, 3))
+            done = kernels.vr_commands(np.ascontiguousarray(Rl), np.ascontiguousarray(Rr),
+                                       float(human.k_omega), float(human.saturation),
+                                       float(human.tilt), c_s)
+            for j in np.flatnonzero(~done):
+                c_s[j] = human.hold(traj.t[j], Rl[j], Rr[j])
+        else:
+            c_s = np.array([human.signal(t) for t in traj.t]).reshape(T, 3)
+        omega_b += np.einsum("tji,tj->ti", Rl, c_s)
+    omega_l = s.k_s * vee(transpose(Rl) @ Rb) + omega_b  # eq. (6b)
+    dS_r = -0.5 * np.einsum("tij,tij->t", Rr, hat(omega_t) @ Rb)  # eq. (4)
+    dS_rl = -0.5 * np.einsum("tij,tij->t", Rr, Rl @ hat(omega_l))
+    storage = None
+    if uses:
+        if type(human) is LTIHuman:
+            P = human.P
+            storage = 0.5 * np.einsum("ti,ij,tj->t", x, P, x)
+            dS_h = np.einsum("ti,ij,tj->t", x, P, x @ A.T + e[:, :k] @ B.T)
+        else:  # a passive static gain: no state, zero storage
+            storage, dS_h = np.zeros(T), np.zeros(T)
+    else:
+        dS_h = np.einsum("ti,ti->t", e, omega_b)
+    return dS_r + dS_rl + dS_h, storage
+
+
+def energy(traj: Trajectory, prefer_storage: bool = True, *, batched: bool = True
+           ) -> Energy:
     """Evaluate every Lyapunov term along ``traj``.
 
     With ``prefer_storage`` and a human that has a storage function, S_h is that storage
     (needed for LaSalle, finding ``thm1.storage-function``); otherwise the running supply.
+    ``batched`` evaluates V' for all samples at once when the human is one the compiled
+    field models (rounding-level differences from the per-sample loop, which is used
+    otherwise and with ``batched=False``).
     """
     s = traj.scenario
-    human, k_s, n = s.human, s.k_s, s.n
+    human, n = s.human, s.n
     Rr_T = transpose(traj.R_r)
     Rbar_r = Rr_T @ traj.R_bar
     R_rl = Rr_T @ traj.R_l
     x_h = traj.human_state
-    storage = None
-    if prefer_storage and human.storage(x_h[0]) is not None:
-        storage = np.array([human.storage(x) for x in x_h])
-    uses = storage is not None
+    uses = prefer_storage and human.storage(x_h[0]) is not None
+    fast = _batched(traj, uses) if batched else None
+    if fast is not None:
+        V_dot, storage = fast
+        return _energy(traj, Rbar_r, R_rl, storage, V_dot, uses)
+    storage = np.array([human.storage(x) for x in x_h]) if uses else None
 
     loop = ClosedLoop(s)
     T = traj.t.shape[0]
@@ -87,7 +143,12 @@ def energy(traj: Trajectory, prefer_storage: bool = True) -> Energy:
         else:
             dS_h = float(e @ omega_b)
         V_dot[k] = dS_r + dS_rl + dS_h
+    return _energy(traj, Rbar_r, R_rl, storage, V_dot, uses)
 
+
+def _energy(traj: Trajectory, Rbar_r: Array, R_rl: Array, storage: Array | None,
+            V_dot: Array, uses: bool) -> Energy:
+    k_s = traj.scenario.k_s
     bound = -0.5 * k_s * (lambda_min_sym2(Rbar_r) + lambda_min_sym2(R_rl)) * phi(
         transpose(traj.R_l) @ traj.R_bar)
     return Energy(
