@@ -135,10 +135,21 @@ def _humans(entry: HumanEntry) -> list[Human]:
     return [Human(entry.kind, entry.label, gain=entry.gain)]
 
 
+def _distinct_labels(humans: list[Human]) -> list[Human]:
+    """Humans with one label per identity (two files named alike get their hash added)."""
+    from dataclasses import replace
+
+    identities: dict[str, set[tuple[object, ...]]] = {}
+    for h in humans:
+        identities.setdefault(h.label, set()).add(tuple(h.identity().items()))
+    return [replace(h, label=f"{h.label} [{h.sha256[:8]}]")
+            if len(identities[h.label]) > 1 and h.sha256 else h for h in humans]
+
+
 def expand(spec: CampaignSpec) -> list[Run]:
     """Every run of ``spec``, in a fixed order (humans, k_s, n, autonomous, reference,
     seconds, step, seeds), runs with equal keys merged."""
-    humans = [h for entry in spec.humans for h in _humans(entry)]
+    humans = _distinct_labels([h for entry in spec.humans for h in _humans(entry)])
     runs: dict[str, Run] = {}
     for human, k_s, n, auto, ref, T, h, seed in itertools.product(
             humans, spec.k_s, spec.n, spec.autonomous, spec.reference, spec.seconds,
