@@ -33,6 +33,7 @@ from verify.campaign.store import ResultStore
 from verify.errors import VerifyInputError
 
 TASK_PREFIX = "verify-run-"
+CONNECT_TIMEOUT = "15s"  # to reach an existing scheduler
 
 
 @dataclass
@@ -73,7 +74,7 @@ def connect(scheduler: str | None = None, workers: int = 2) -> Iterator[Any]:
 
     if scheduler is not None:
         try:
-            client = Client(scheduler, timeout="15s", set_as_default=False)
+            client = Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False)
         except (OSError, TimeoutError, ValueError) as exc:
             raise VerifyInputError(f"--scheduler {scheduler}: cannot connect to a Dask "
                                    f"scheduler ({' '.join(str(exc).split())}); start one with "
