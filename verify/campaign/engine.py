@@ -87,7 +87,7 @@ def connect(scheduler: str | None = None, workers: int = 2) -> Iterator[Any]:
     if workers < 1:
         raise VerifyInputError(f"--workers must be at least 1, got {workers}")
     cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=logging.CRITICAL)
+                           dashboard_address=":0", silence_logs=logging.CRITICAL)
     client = Client(cluster, set_as_default=False)
     try:
         yield client

@@ -34,6 +34,13 @@ from verify.inputs.campaign_spec import PROPERTIES
 HELD, FAILED, ASSUMPTION, NOT_CHECKED, NOT_APPLICABLE = (
     "held", "failed", "assumption-failed", "not-checked", "n/a")
 
+#: Columns of a row besides the parameters (None until known; a run that raised keeps them so).
+OUTCOME_COLUMNS = ("human_gate", *[c for p in PROPERTIES for c in (
+    p.replace("-", "_"), f"{p.replace('-', '_')}_violation",
+    f"{p.replace('-', '_')}_tolerance")], "convergence_time", "dbar_error_end",
+    "min_tr_Rbar_r", "max_V_rise", "supply_end", "uses_storage", "error", "wall_time",
+    "worker")
+
 _HUMANS: dict[tuple[object, ...], tuple[Any, str]] = {}  # per process: gating costs ~1 s
 
 
@@ -157,6 +164,7 @@ def execute_run(run: Run) -> dict[str, Any]:
     """
     start = time.perf_counter()
     row = parameters(run)
+    row.update(dict.fromkeys(OUTCOME_COLUMNS))
     try:
         row.update(simulate_run(run))
         row["error"] = None
@@ -167,5 +175,6 @@ def execute_run(run: Run) -> dict[str, Any]:
     return row
 
 
-__all__ = ["ASSUMPTION", "FAILED", "HELD", "NOT_APPLICABLE", "NOT_CHECKED", "build_human",
+__all__ = ["ASSUMPTION", "FAILED", "HELD", "NOT_APPLICABLE", "NOT_CHECKED", "OUTCOME_COLUMNS",
+           "build_human",
            "column", "convergence_time", "execute_run", "parameters", "simulate_run"]

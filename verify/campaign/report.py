@@ -299,8 +299,7 @@ def property_figure(c: Campaign) -> bytes:
                 label = "n/a" if not pairs else (
                     f"{counts[HELD]}/{len(pairs)}" + ("*" if counts[ASSUMPTION] else ""))
                 ax.text(j, i, label, ha="center", va="center", fontsize=7)
-        cmap = plt.get_cmap("RdYlGn").copy()
-        cmap.set_bad("0.85")
+        cmap = plt.get_cmap("RdYlGn").with_extremes(bad="0.85")
         ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
         ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
         ax.set_yticks(range(len(settings)), settings if ax is axes[0][0] else [""] *
