@@ -128,3 +128,39 @@ def test_rows_have_the_store_schema():
               ("lemma1",), 0.05)
     columns = [*parameters(run), *OUTCOME_COLUMNS]
     assert sorted(columns) == sorted(SCHEMA.names) and len(set(columns)) == len(columns)
+
+
+class _Stream:
+    def __init__(self, tty: bool) -> None:
+        self.tty, self.text = tty, ""
+
+    def isatty(self) -> bool:
+        return self.tty
+
+    def write(self, s: str) -> int:
+        self.text += s
+        return len(s)
+
+    def flush(self) -> None:
+        pass
+
+
+def test_progress_line():
+    from verify.campaign.progress import CampaignProgress, clock
+
+    assert (clock(7.4), clock(123), clock(3723)) == ("7s", "2m03s", "1h02m03s")
+    tty = _Stream(True)
+    bar = CampaignProgress(48, 8, stream=tty)
+    assert "estimating" in bar.line(bar.start)
+    bar.update(4, 1, force=True)
+    line = bar.line(bar.start + 40.0)  # 4 runs in 40 s: 36 left, 10 s each
+    assert line.startswith("campaign: 12/48 runs, 8 stored earlier, 1 raised, 40s elapsed")
+    assert line.endswith("~6m00s left")
+    bar.close()
+    assert tty.text.startswith("\r") and tty.text.endswith("\n")
+    quiet, piped = _Stream(True), _Stream(False)
+    for stream, enabled in ((quiet, False), (piped, True)):
+        bar = CampaignProgress(5, 0, stream=stream, enabled=enabled)
+        bar.update(5, force=True)
+        bar.close()
+        assert stream.text == ""

@@ -9,8 +9,12 @@ or was lost (its row is missing: ``--resume`` runs it again); 2 on bad input.
 
 from __future__ import annotations
 
+import contextlib
 import os
+import signal
 import sys
+import threading
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -41,6 +45,24 @@ def _check_address(address: str) -> str:
         raise VerifyInputError(f"--scheduler {address!r}: expected an address such as "
                                "tcp://127.0.0.1:8786 (from 'dask scheduler')")
     return text
+
+
+@contextlib.contextmanager
+def _terminate_as_interrupt() -> Iterator[None]:
+    """SIGTERM (a batch system's stop) ends the campaign as Ctrl-C does: the rows in hand
+    are stored before the process exits."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def run_campaign_command(s: CampaignSettings) -> int:
@@ -79,8 +101,9 @@ def run_campaign_command(s: CampaignSettings) -> int:
         print(f"  resuming: {done_before} of {len(runs)} runs already stored in "
               f"{store.folder}")
     try:
-        outcome = run_campaign(runs, store, scheduler=scheduler, workers=workers,
-                               progress=not s.quiet, stream=sys.stderr)
+        with _terminate_as_interrupt():
+            outcome = run_campaign(runs, store, scheduler=scheduler, workers=workers,
+                                   progress=not s.quiet, stream=sys.stderr)
     except KeyboardInterrupt:
         have = len(store.keys() & keys)
         print(f"verify campaign: interrupted; {have} of {len(runs)} rows stored in "
