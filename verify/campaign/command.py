@@ -67,6 +67,7 @@ def _terminate_as_interrupt() -> Iterator[None]:
 
 def run_campaign_command(s: CampaignSettings) -> int:
     from verify.campaign.engine import run_campaign
+    from verify.campaign.execute import FAILED, column
     from verify.campaign.progress import clock
     from verify.campaign.report import Campaign, write_report
     from verify.campaign.runs import expand, write_family_files
@@ -120,7 +121,7 @@ def run_campaign_command(s: CampaignSettings) -> int:
     }
     paths = write_report(Campaign(spec, runs, rows), out, session)
     failed = sum(1 for row in rows.values() if any(
-        row.get(p.replace("-", "_")) == "failed" for p in spec.properties))
+        row.get(column(p)) == FAILED for p in spec.properties))
     print(f"  {len(rows)} of {len(runs)} runs stored ({ran} this session in "
           f"{clock(outcome.seconds)}); {failed} failed a property; {outcome.raised} raised"
           + (f"; {len(outcome.lost)} lost" if outcome.lost else ""))

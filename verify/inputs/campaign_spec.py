@@ -293,14 +293,12 @@ def _name(choices: tuple[str, ...]) -> Callable[[Any, str], str]:
 
 def load_human_model(path: Path, where: str) -> tuple[bytes, Any]:
     """Read a human model file and validate it (a 2- or 3-port LTI model, Section 4)."""
-    from verify.passivity.io.model_file import parse_model
-
     try:
         raw = path.read_bytes()
     except OSError as exc:
         raise VerifyInputError(f"{where}: cannot read model file {path} ({exc.strerror})"
                                ) from None
-    model = parse_model_bytes(raw, str(path), parse_model)
+    model = parse_model_bytes(raw, str(path))
     if model.m not in (2, 3):
         raise VerifyInputError(f"{where}: {path}: the human model needs 2 or 3 ports "
                                f"(inputs = outputs), got {model.m}")
@@ -310,10 +308,11 @@ def load_human_model(path: Path, where: str) -> tuple[bytes, Any]:
     return raw, model
 
 
-def parse_model_bytes(raw: bytes, source: str, parse_model=None):
-    """A model file's bytes as an :class:`~verify.passivity.model.LTIModel` (numbers exact)."""
-    if parse_model is None:
-        from verify.passivity.io.model_file import parse_model
+def parse_model_bytes(raw: bytes, source: str):
+    """A model file's bytes as an :class:`~verify.passivity.model.LTIModel`, read as
+    :func:`verify.passivity.io.model_file.load_model` reads a file (numbers exact)."""
+    from verify.passivity.io.model_file import parse_model
+
     try:
         data = tomllib.loads(raw.decode("utf-8"), parse_float=decimal_literal)
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
