@@ -168,14 +168,18 @@ def run_campaign(
 
         outcome.engine = str(getattr(dask.scheduler, "address", "") or "")
         outcome.workers = len(dask.scheduler_info().get("workers", {}))
-        futures = [dask.submit(function, run, key=TASK_PREFIX + run.key, pure=False)
-                   for run in pending]
-        done = as_completed(futures, loop=dask.loop, with_results=True, raise_errors=False)
+        futures = dask.map(function, pending, key=[TASK_PREFIX + r.key for r in pending],
+                           pure=False)
+        live = {f.key: f for f in futures}  # a consumed future is dropped (its result freed)
+        del futures
+        done = as_completed(list(live.values()), loop=dask.loop, with_results=True,
+                            raise_errors=False)
         try:
             bar.update(force=True)
             while not done.is_empty():
                 batch = done.next_batch(block=False)
                 for future, result in batch:
+                    live.pop(future.key, None)
                     if future.status != "finished" or not isinstance(result, dict):
                         outcome.lost.append((str(future.key)[len(TASK_PREFIX):],
                                              _why(future, result)))
@@ -196,7 +200,7 @@ def run_campaign(
             try:
                 flush(dask)  # rows in hand are results: keep them even when interrupted
             finally:
-                dask.cancel(futures)
+                dask.cancel(list(live.values()))
                 bar.close()
                 outcome.seconds = time.perf_counter() - start
     return outcome
