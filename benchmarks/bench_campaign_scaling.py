@@ -1,8 +1,10 @@
 """Campaign scaling: the same 48-run campaign on a LocalCluster of 1 and of 2 workers.
 
 Run: ``python benchmarks/bench_campaign_scaling.py [--seconds 30] [--workers 1 2]
-[--spec verify/data/campaigns/small.toml]``. ``--seconds`` shortens every run (the
-default is the spec's 30 s); each session gets a fresh store in a temporary folder.
+[--spec verify/data/campaigns/small.toml] [--sample N]``. ``--seconds`` shortens every
+run (the default is the spec's 30 s); ``--sample N`` times N runs spread evenly over a
+large campaign (``--spec verify/data/campaigns/paper.toml --sample 16``); each session
+gets a fresh store in a temporary folder.
 
 Prints, per worker count: the wall time of the session with and without starting (and
 warming up) the cluster, runs per second, and the speed-up over one worker. The runs are
@@ -52,6 +54,8 @@ def main() -> None:
     parser.add_argument("--spec", type=Path, default=SMALL)
     parser.add_argument("--seconds", type=float, help="override the run length")
     parser.add_argument("--workers", type=int, nargs="+", default=[1, 2])
+    parser.add_argument("--sample", type=int, metavar="N",
+                        help="time N runs evenly spread over the campaign (for paper.toml)")
     parser.add_argument("--no-warm-up", action="store_true",
                         help="time the first run of each worker with its start-up costs")
     args = parser.parse_args()
@@ -59,6 +63,9 @@ def main() -> None:
     if args.seconds is not None:
         spec = dataclasses.replace(spec, seconds=(args.seconds,))
     runs = expand(spec)
+    if args.sample is not None and args.sample < len(runs):
+        stride = len(runs) / args.sample
+        runs = [runs[int(i * stride)] for i in range(args.sample)]
     print(f"campaign {spec.name}: {len(runs)} runs of {spec.seconds[0]:g} s, properties "
           f"{', '.join(spec.properties) or 'none'}")
     print(f"{'workers':>7} {'wall [s]':>9} {'runs [s]':>9} {'runs/s':>8} {'speed-up':>8}")
