@@ -1,4 +1,4 @@
-"""Dropping an assumption of Lemma 1 or Theorem 1 breaks its conclusion (issue 5, item 5)."""
+"""Dropping an assumption of Lemma 1 or Theorem 1 breaks its conclusion (Assumption 1, 2 and 5)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Model input for the passivity gate (issue 4, item 1): files, Python objects, realisation."""
+"""Model input for the passivity gate (Section 4 human models): files, objects, realisation."""
 
 from __future__ import annotations
 

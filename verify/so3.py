@@ -198,15 +198,11 @@ def check_rotations(
     entries and :class:`~verify.errors.NotARotationError` when max |R^T R - I| or
     |det R - 1| exceeds ``tolerance``; the message names the first offending index.
     """
-    try:
-        arr = np.asarray(R, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise VerifyInputError(f"{name}: not an array of numbers ({exc})") from None
+    from verify.inputs.numbers import real_array
+
+    arr = real_array(R, name)  # finite real numbers, or one line naming the entry
     if arr.ndim < 2 or arr.shape[-2:] != (3, 3):
         raise VerifyInputError(f"{name}: expected shape (..., 3, 3), got {arr.shape}")
-    if not np.all(np.isfinite(arr)):
-        bad = np.argwhere(~np.isfinite(arr).all(axis=(-2, -1)))
-        raise VerifyInputError(f"{name} {_index(bad)} contains NaN or Inf")
     orth = orthogonality_error(arr)
     det_err = np.abs(np.linalg.det(arr) - 1.0)
     bad_mask = (orth > tolerance) | (det_err > tolerance)

@@ -34,8 +34,26 @@ def numeric(summary: str, ok: bool, data: dict[str, Any] | None = None, **fields
 
 
 def argument(summary: str) -> Evidence:
-    """A reduction that extends exact checks to every n."""
+    """A reduction or a pointer to the claims and facts a verdict rests on."""
     return Evidence(EvidenceKind.ARGUMENT, summary)
+
+
+def certificate(summary: str, ok: bool = True, *, path: str | None = None,
+                data: dict[str, Any] | None = None) -> Evidence:
+    """A certificate checked exactly (its file, when one was written, at ``path``)."""
+    return Evidence(EvidenceKind.CERTIFICATE, summary, data or {}, path=path, passed=ok)
+
+
+def counterexample(summary: str, ok: bool = True, *, path: str | None = None,
+                   data: dict[str, Any] | None = None) -> Evidence:
+    """A witness against a statement, checked exactly (or a run re-checked)."""
+    return Evidence(EvidenceKind.COUNTEREXAMPLE, summary, data or {}, path=path, passed=ok)
+
+
+def figure(summary: str, *, path: str | None, data: dict[str, Any] | None = None,
+           ok: bool = True) -> Evidence:
+    """A figure written to ``path`` (an illustration, not a proof)."""
+    return Evidence(EvidenceKind.FIGURE, summary, data or {}, path=path, passed=ok)
 
 
 def verdict_from(

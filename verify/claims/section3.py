@@ -9,7 +9,8 @@ small trusted kernel (:data:`verify.proof.KERNEL`).
 
 from __future__ import annotations
 
-from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
+from verify.claims.evidence import argument
+from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.proofs import check_all, outcome_from
 from verify.claims.registry import REGISTRY
 from verify.paper_proofs import lemma1, theorem1
@@ -25,10 +26,7 @@ EXACT = (
 
 
 def _kernel_evidence() -> Evidence:
-    return Evidence(
-        EvidenceKind.ARGUMENT,
-        "Trusted kernel behind inequality steps: " + "; ".join(KERNEL.values()),
-    )
+    return argument("Trusted kernel behind inequality steps: " + "; ".join(KERNEL.values()))
 
 
 @REGISTRY.claim(
@@ -175,7 +173,7 @@ def invariance(context: CheckContext) -> Outcome:
         "command ω_h^s must be regular enough (e.g. locally Lipschitz in the state, "
         "piecewise continuous in time). And item 2 (sym(R_rl) ≻ 0 for all t) is a "
         "requirement on the operator's behaviour in closed loop, not a property of H(s).",
-        (Evidence(EvidenceKind.ARGUMENT, "Uses lemma1.boundary and lemma1.nagumo-gradient."),),
+        (argument("Uses lemma1.boundary and lemma1.nagumo-gradient."),),
     ), trajectory_evidence(context, "lemma1"))
 
 
@@ -288,5 +286,5 @@ def lasalle_storage(context: CheckContext) -> Outcome:
         "x ᵀPx/2 from a KYP certificate, as `verify gate` produces), and if trajectories "
         "stay bounded (item 4). Item 3 (ω_h^s ≡ 0 only if d_l ≡ d_r) then closes the "
         "argument. These are assumptions the report lists; they are not checked here.",
-        (Evidence(EvidenceKind.ARGUMENT, "Uses thm1.v-dot and thm1.lasalle-derivative."),),
+        (argument("Uses thm1.v-dot and thm1.lasalle-derivative."),),
     ), trajectory_evidence(context, "lasalle"))

@@ -17,7 +17,8 @@ from __future__ import annotations
 from dataclasses import replace
 from pathlib import Path
 
-from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
+from verify.claims.evidence import figure, instances, numeric
+from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 from verify.report.atomic import write_atomic
 from verify.sim import counterexamples as cx
@@ -66,10 +67,9 @@ def trajectory_evidence(ctx: CheckContext, which: str) -> Evidence:
     summary = (f"{len(results)} seeded closed-loop runs, {label}: {len(applicable)} met the "
                f"assumptions along the run, {len(contradicted)} contradicted it{closest}; "
                "tolerances come from the integrator's error (step doubling)")
-    return Evidence(EvidenceKind.NUMERICAL, summary, {
+    return numeric(summary, not contradicted, {
         "runs": [{"n": s.n, "k_s": s.k_s, "human": s.human.name,
-                  "autonomous": s.autonomous.name, "result": r.line()} for s, r in results]},
-        passed=not contradicted)
+                  "autonomous": s.autonomous.name, "result": r.line()} for s, r in results]})
 
 
 def cross_checked(outcome: Outcome, evidence: Evidence) -> Outcome:
@@ -106,22 +106,20 @@ def premise_needed(ctx: CheckContext) -> Outcome:
     witness = cx.lemma1_boundary_witness()
     exact_ok = (witness is not None and witness.h == 0 and witness.h_dot < 0
                 and witness.lambda_min_sym_rl <= 0)
-    evidence = [Evidence(
-        EvidenceKind.EXACT_INSTANCE,
+    evidence = [instances(
         "exact: R-bar a quarter turn about e1 (tr = 1), R_l a half turn about (1,1,1) "
         f"(lambda_min(sym R_rl) = {witness.lambda_min_sym_rl}); h' = {witness.h_dot} "
         "for k_s = 1" if witness else "no exact boundary state with h' < 0 was found",
-        witness.to_json() if witness else {}, passed=exact_ok)]
+        exact_ok, witness.to_json() if witness else {})]
     found = cx.lemma1_counterexample(budget=40 if ctx.quick else 150)
     if found is not None:
         path = _figure(ctx, "lemma1-without-item2.png", found,
                        "Lemma 1 without item 2: tr(R-bar_r) leaves [1, 3]")
-        evidence.append(Evidence(
-            EvidenceKind.FIGURE,
+        evidence.append(figure(
             f"simulated run (shrunk by hypothesis, {found.evaluations} runs): "
             f"min tr(R-bar_r) = {1 - found.measure:.4g} < 1, integration error "
-            f"{found.error_estimate:.2g}", {k: str(v) for k, v in found.parameters.items()},
-            path=path, passed=found.confirmed))
+            f"{found.error_estimate:.2g}", data={k: str(v) for k, v in found.parameters.items()},
+            path=path, ok=found.confirmed))
     return Outcome(
         Verdict.VERIFIED if exact_ok else Verdict.INCONCLUSIVE,
         "Item 2 of Assumption 1 is needed by Lemma 1: at an exact boundary state where "
@@ -154,8 +152,7 @@ def passivity_needed(ctx: CheckContext) -> Outcome:
     if lag is not None:
         path = _figure(ctx, "theorem1-non-passive-human.png", lag,
                        "Theorem 1 with a non-passive human: no convergence")
-        evidence.append(Evidence(
-            EvidenceKind.FIGURE,
+        evidence.append(figure(
             f"human {cx.lagging_human().name}: |dbar - d_r| starts at "
             f"{lag.parameters['|dbar - d_r| at 0']:.3g} and averages "
             f"{lag.parameters['mean |dbar - d_r| over the last third']:.3g} over the last "
@@ -163,20 +160,18 @@ def passivity_needed(ctx: CheckContext) -> Outcome:
             f"int e^T omega_h^b reaches {lag.parameters['min supply int e^T omega_h^b']:.3g} "
             f"(unbounded below: no beta); item 2 held throughout: "
             f"{lag.parameters['sym(R_rl) > 0 throughout']}",
-            {k: str(v) for k, v in lag.parameters.items()}, path=path, passed=lag.confirmed))
+            data={k: str(v) for k, v in lag.parameters.items()}, path=path, ok=lag.confirmed))
     model_path = Path(__file__).resolve().parents[1] / "data" / "models" / \
         "reconstructed_ks2p5.toml"
     model = load_model(model_path)
     budget = 10 if ctx.quick else 20
     recon = cx.passivity_counterexample(LTIHuman.from_model(model), budget=budget,
                                         examples=budget)
-    evidence.append(Evidence(
-        EvidenceKind.NUMERICAL,
+    evidence.append(numeric(
         "reconstructed k_s = 2.5 model (not passive): "
         + ("a run without convergence was found" if recon is not None else
            f"no run without convergence in {budget} searched scenarios"),
-        {} if recon is None else {k: str(v) for k, v in recon.parameters.items()},
-        passed=True))
+        True, {} if recon is None else {k: str(v) for k, v in recon.parameters.items()}))
     confirmed = lag is not None and lag.confirmed
     return Outcome(
         Verdict.ASSUMPTION,

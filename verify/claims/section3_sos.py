@@ -10,7 +10,8 @@ second run (and ``verify certificates check``) needs no solver.
 
 from __future__ import annotations
 
-from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome
+from verify.claims.evidence import argument
+from verify.claims.model import CheckContext, Outcome
 from verify.claims.proofs import check_all, outcome_from
 from verify.claims.registry import REGISTRY
 from verify.claims.section3 import LEMMA, THEOREM
@@ -42,7 +43,7 @@ def _run(prefix: str, context: CheckContext, salt: int) -> Outcome:
             f"{r.original} step {r.step} ({OUT_OF_REACH[r.derivation.name]})" for r in skipped
         ) + "."
     extra = tuple(
-        Evidence(EvidenceKind.ARGUMENT, f"{r.original} step {r.step}: not attempted by SOS "
+        argument(f"{r.original} step {r.step}: not attempted by SOS "
                  f"({OUT_OF_REACH[r.derivation.name]}); the hand proof stands.")
         for r in skipped
     )

@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 import sympy as sp
 
-from verify.claims.evidence import exact, instances
-from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
+from verify.claims.evidence import certificate, counterexample, exact, figure, instances, numeric
+from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 from verify.passivity.band import decide_band
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
@@ -127,9 +127,8 @@ def nu_criterion(context: CheckContext) -> Outcome:
         good = d.verdict == expected
         ok &= good
         detail = d.witness.summary if d.witness else d.reason
-        evidence.append(Evidence(
-            EvidenceKind.COUNTEREXAMPLE if expected == NOT_PASSIVE else EvidenceKind.CERTIFICATE,
-            f"{model.name}: {d.verdict} — {detail}", passed=good))
+        kind = counterexample if expected == NOT_PASSIVE else certificate
+        evidence.append(kind(f"{model.name}: {d.verdict} — {detail}", good))
     return Outcome(
         Verdict.REPAIRED if ok else Verdict.INCONCLUSIVE,
         "As written the criterion is incomplete: s/(s-1) has nu(w) = w²/(1+w²) ≥ 0 for all "
@@ -170,9 +169,9 @@ def reconstructed_models(context: CheckContext) -> Outcome:
     ok = d25.verdict == NOT_PASSIVE and above_two and d30.verdict == PASSIVE
     path = results[1].certificate_path if results else None
     evidence = (
-        Evidence(EvidenceKind.COUNTEREXAMPLE, f"{m25.name}: {d25.reason}", passed=above_two),
-        Evidence(EvidenceKind.CERTIFICATE, f"{m30.name}: {d30.reason}",
-                 path=str(path) if path else None, passed=d30.verdict == PASSIVE),
+        counterexample(f"{m25.name}: {d25.reason}", above_two),
+        certificate(f"{m30.name}: {d30.reason}", d30.verdict == PASSIVE,
+                    path=str(path) if path else None),
     )
     return Outcome(
         Verdict.VERIFIED if ok else Verdict.INCONCLUSIVE,
@@ -208,10 +207,10 @@ def nu_curves_indices(context: CheckContext) -> Outcome:
     lows = [(m, nu_minimum(m.A, m.B, m.C, m.D)) for m in (m25, m30)]
     for m, low in lows:
         where = "ω → ∞" if low.at_infinity else f"ω ≈ {low.omega:.6g} rad/s"
-        evidence.append(Evidence(
-            EvidenceKind.NUMERICAL, f"{m.name}: min ν = {low.value:.6g} at {where} "
+        evidence.append(numeric(
+            f"{m.name}: min ν = {low.value:.6g} at {where} "
             "(Hamiltonian level crossings, floating point)",
-            {"omega": str(low.omega), "nu": low.value}))
+            True, {"omega": str(low.omega), "nu": low.value}))
     index_ok = True
     for m in (m25, m30):
         for index in indices(m):
@@ -229,17 +228,15 @@ def nu_curves_indices(context: CheckContext) -> Outcome:
             d, path = decide_band(m25, band), None
         good = d.verdict == expected
         band_ok &= good
-        evidence.append(Evidence(
-            EvidenceKind.CERTIFICATE if expected == PASSIVE else EvidenceKind.COUNTEREXAMPLE,
-            f"{m25.name} on [{band[0]}, {band[1]}] rad/s: {d.verdict}; {d.reason}",
-            path=str(path) if path else None, passed=good))
+        kind = certificate if expected == PASSIVE else counterexample
+        evidence.append(kind(f"{m25.name} on [{band[0]}, {band[1]}] rad/s: {d.verdict}; "
+                             f"{d.reason}", good, path=str(path) if path else None))
     figures = context.out_dir / "figures"
     nu_path = nu_figure(lows, figures / "nu_reconstructed.png")
     bode_path = bode_figure([m25, m30], figures / "bode_reconstructed.png")
     for p, what in ((nu_path, "ν(ω) of both reconstructions, minimum marked"),
                     (bode_path, "Bode magnitude and phase of both reconstructions")):
-        evidence.append(Evidence(EvidenceKind.FIGURE, what,
-                                 {"href": f"figures/{p.name}"}, path=str(p)))
+        evidence.append(figure(what, data={"href": f"figures/{p.name}"}, path=str(p)))
     low25, low30 = lows[0][1], lows[1][1]
     ok = index_ok and band_ok and low25.value < 0 and low30.value >= -1e-12
     return Outcome(

@@ -136,6 +136,21 @@ def parse_number(text: str, where: str, example: str) -> Fraction:
     return value
 
 
+def fraction(q: Any) -> Fraction:
+    """``q`` as a ``fractions.Fraction``, exactly: the one conversion to the standard type.
+
+    Accepts any rational with integer ``numerator`` and ``denominator`` (gmpy2 ``mpq``,
+    python-flint ``fmpq``, sympy ``Rational`` and its polynomial domain ``QQ``), ints,
+    Fractions, and a binary float as the dyadic rational it stores. For code that needs
+    ``Fraction``'s methods (``limit_denominator``) or hands values to sympy.
+    """
+    if isinstance(q, Fraction):
+        return q
+    if isinstance(q, float):
+        return Fraction(q)
+    return Fraction(int(q.numerator), int(q.denominator))
+
+
 def to_float(q: Rational) -> float:
     """Nearest float to q (correctly rounded), +-inf beyond the float range; never raises."""
     try:
@@ -219,4 +234,5 @@ def real_array(value: Any, where: str, shape: tuple[int | None, ...] | None = No
 
 
 __all__ = ["MAX_DECIMAL_EXPONENT", "Rational", "decimal_literal", "exact_array", "float_view",
-           "parse_number", "positive_real", "rational", "real", "real_array", "to_float"]
+           "fraction", "parse_number", "positive_real", "rational", "real", "real_array",
+           "to_float"]

@@ -80,24 +80,19 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
     already holds a valid certificate of the same model and claim is kept."""
     from verify.passivity.check import fd_certificate as fd
     from verify.passivity.io.binding import file_name
-    from verify.passivity.io.certificate_files import dumps
+    from verify.passivity.io.certificate_files import dumps, keep_or_write
 
     data = dict(cert.to_json(), meta={"margin": str(Fraction(margin))})
     given = shifted(cert.model, -Fraction(margin))
     path = Path(certificates_dir) / file_name(cert.name, Claim(Fraction(margin)),
                                               given.fingerprint())
-    text = dumps(data)
-    if path.is_file():
-        try:
-            old = path.read_text()
-            stored = fd.parse_json_text(old)
-            if old == text or (stored.get("fingerprint") == data["fingerprint"]
-                               and fd.check_pr_file(stored, path).ok):
-                return path, True
-        except (OSError, ValueError):
-            pass  # unreadable or not ours: replaced below
-    write_atomic(path, text)
-    return path, False
+
+    def still_valid(old: Path) -> bool:
+        stored = fd.parse_json_text(old.read_text())
+        return (stored.get("fingerprint") == data["fingerprint"]
+                and fd.check_pr_file(stored, old).ok)
+
+    return keep_or_write(path, dumps(data), still_valid)
 
 
 def run_gate(models, margin: Fraction, certificates_dir: Path,

@@ -19,8 +19,9 @@ import numpy as np
 import sympy as sp
 from sympy import QQ
 
+from verify.inputs.numbers import fraction
 from verify.proof.evaluate import Algebra, to_float
-from verify.proof.falsify import Point, Rejected, _gen_index, _solve_parameter
+from verify.proof.falsify import Point, Rejected, gen_index, solve_parameter
 from verify.proof.problem import StepProblem, flatten, principal_minors
 
 REFINEMENTS = 80
@@ -62,7 +63,7 @@ def _isolated_roots(poly: sp.Poly) -> list[Algebraic]:
     poly = sp.Poly(sp.sqf_part(poly.as_expr()), *poly.gens)
     out = []
     for (lo, hi), _ in poly.intervals():
-        a = Algebraic(poly, Fraction(int(lo.p), int(lo.q)), Fraction(int(hi.p), int(hi.q)))
+        a = Algebraic(poly, fraction(lo), fraction(hi))
         if a.lo != a.hi and (a._sign(a.lo) == 0 or a._sign(a.hi) == 0):
             root = a.lo if a._sign(a.lo) == 0 else a.hi
             a.lo = a.hi = root
@@ -74,7 +75,7 @@ def _interval_poly(poly, values: dict) -> tuple[Fraction, Fraction]:
     """Range of a polynomial over intervals {ring generator index: (lo, hi)} (exact)."""
     lo_sum, hi_sum = Fraction(0), Fraction(0)
     for monom, c in poly.terms():
-        c = Fraction(int(c.numerator), int(c.denominator))
+        c = fraction(c)
         lo, hi = c, c
         for k, e in enumerate(monom):
             if not e:
@@ -107,7 +108,7 @@ def _to_qq(x: Fraction):
 
 def exact_point(problem: StepProblem, point: Point, limit: int = 10**6) -> ExactPoint | None:
     """Rational parameters near ``point`` (denominators <= limit); conditions solved exactly."""
-    index = _gen_index(problem)
+    index = gen_index(problem)
     rationals = {}
     for gen, (uid, i) in index.items():
         x = float(point[uid][i])
@@ -117,9 +118,9 @@ def exact_point(problem: StepProblem, point: Point, limit: int = 10**6) -> Exact
     algebraic: dict = {}
     solved: set = set()
     for poly in problem.condition_polynomials:
-        choice = _solve_parameter(problem, poly, solved)
+        choice = solve_parameter(problem, poly, solved)
         if choice is None:
-            if solved and _solve_parameter(problem, poly) is not None:
+            if solved and solve_parameter(problem, poly) is not None:
                 continue  # fixed by earlier conditions; declarations_hold decides
             return None
         gen = choice[0]
@@ -168,7 +169,7 @@ def _lambda_min_roots(problem: StepProblem, xp: ExactPoint) -> dict | None:
 
 
 def _rational(c) -> sp.Rational:
-    f = Fraction(int(QQ(c).numerator), int(QQ(c).denominator))
+    f = fraction(QQ(c))
     return sp.Rational(f.numerator, f.denominator)
 
 

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from fractions import Fraction
 
 import casadi as ca
 import numpy as np
@@ -102,7 +101,7 @@ def sample_parameters(variables: list[Variable], n: int, rng: np.random.Generato
     return out
 
 
-def _gen_index(problem: StepProblem) -> dict:
+def gen_index(problem: StepProblem) -> dict:
     """ring generator -> (variable uid, parameter index)."""
     index = {}
     for v in problem.variables:
@@ -111,13 +110,13 @@ def _gen_index(problem: StepProblem) -> dict:
     return index
 
 
-def _solve_parameter(problem: StepProblem, poly, exclude=()) -> tuple | None:
+def solve_parameter(problem: StepProblem, poly, exclude=()) -> tuple | None:
     """Choose the parameter to solve a condition for: lowest positive degree, angles first.
 
     None when the condition involves a lambda_min atom (not a polynomial in the
     parameters) or only parameters in ``exclude`` (already fixed by another condition).
     """
-    index = _gen_index(problem)
+    index = gen_index(problem)
     if any(poly.degree(g) > 0 for g in poly.ring.gens if g not in index):
         return None
     kinds = {v.uid: v.kind for v in problem.variables}
@@ -138,7 +137,7 @@ def _univariate_coefficients(poly, gen, params: dict, index: dict, n: int) -> np
     deg = poly.degree(gen)
     coeffs = np.zeros((n, deg + 1))
     for monom, c in poly.terms():
-        term = np.full(n, to_float(Fraction(int(c.numerator), int(c.denominator))))
+        term = np.full(n, to_float(c))
         for k, e in enumerate(monom):
             if e and k != j:
                 uid, i = index[poly.ring.gens[k]]
@@ -155,14 +154,14 @@ def apply_conditions(problem: StepProblem, params: dict, rng) -> np.ndarray:
     """
     n = next(iter(params.values())).shape[0] if params else 1
     ok = np.ones(n, dtype=bool)
-    index = _gen_index(problem)
+    index = gen_index(problem)
     positive = {uid for uid, v in ((v.uid, v) for v in problem.variables)
                 if v.kind == "scalar" and v.positive}
     solved: set = set()
     for poly in problem.condition_polynomials:
-        choice = _solve_parameter(problem, poly, solved)
+        choice = solve_parameter(problem, poly, solved)
         if choice is None:
-            if solved and _solve_parameter(problem, poly) is not None:
+            if solved and solve_parameter(problem, poly) is not None:
                 continue  # fixed by earlier conditions; the joint check below decides
             return np.zeros(n, dtype=bool)
         gen, uid, i = choice

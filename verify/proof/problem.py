@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import cached_property
 
+from verify.inputs.numbers import fraction
 from verify.proof.algebras import ExactAlgebra, ExactSpace
 from verify.proof.derivation import Assumption, Condition
 from verify.proof.evaluate import evaluate
@@ -189,8 +190,7 @@ def _definite(poly) -> bool:
 def _fraction(c) -> Fraction:
     from sympy import QQ
 
-    q = QQ(c)
-    return Fraction(int(q.numerator), int(q.denominator))
+    return fraction(QQ(c))
 
 
 def _constant_holds(kind: str, x: list[Fraction]) -> bool:

@@ -27,6 +27,7 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
+from verify.inputs.numbers import fraction
 from verify.proof.evaluate import to_float
 from verify.proof.exact import KnownFraction, constant
 
@@ -75,7 +76,7 @@ def _float_value(x: KnownFraction, point: list[float]) -> float:
     def ev(poly) -> float:
         total = 0.0
         for monom, c in poly.terms():
-            term = to_float(Fraction(int(c.numerator), int(c.denominator)))
+            term = to_float(c)
             for k, e in enumerate(monom):
                 if e:
                     term *= point[k] ** e
@@ -110,7 +111,7 @@ def _constant_lambda_min(entries: list[KnownFraction]) -> Fraction | None:
     smallest = roots[0]
     if not smallest.is_Rational:
         return None
-    return Fraction(int(smallest.p), int(smallest.q))
+    return fraction(smallest)
 
 
 def _affine_fit(x: np.ndarray | None, y: np.ndarray | None):

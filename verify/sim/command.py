@@ -47,6 +47,9 @@ class SimulateSettings:
     fmt: str = "npz"
     plots: bool = True
     check: bool = False  # also run the property checks (two more runs, h and h/2)
+    log: Path | None = None  # also write the run's trials as an experiment log (.csv/.npz)
+    operator_noise: float = 0.0  # std of white noise on u_h, held per loop period (model)
+    measurement_noise: float = 0.0  # std of white noise on the logged e and u
 
 
 def build_human(s: SimulateSettings) -> tuple[Human, str]:
@@ -146,8 +149,12 @@ def run_simulate(s: SimulateSettings) -> int:
                                "are stored in memory: shorten the run or enlarge the step")
     if s.network is None and s.n > MAX_BODIES:
         raise VerifyInputError(f"--n {s.n}: at most {MAX_BODIES} bodies fit in memory here")
+    noises = _check_log_settings(s)
     human, human_line = build_human(s)
     scenario = build_scenario(s, human)
+    if noises[0] > 0:
+        scenario.human = _noisy(scenario, seconds / steps, steps, noises[0], s.seed)
+        human_line += f"; operator noise {noises[0]:g} rad/s (S_h = running supply)"
     print(f"verify simulate: n = {scenario.n}, k_s = {scenario.k_s:g}, {seconds:g} s in "
           f"{steps} steps of {seconds / steps:.4g} s, autonomous input {s.autonomous}, "
           f"reference {s.reference}")
@@ -163,8 +170,56 @@ def run_simulate(s: SimulateSettings) -> int:
         _check_properties(scenario, seconds, step)
     title = f"n={scenario.n}, k_s={scenario.k_s:g}"
     paths = write_outputs(s.out, traj, E, s.fmt, title, with_plots=s.plots)
+    if s.log is not None:
+        paths.append(_write_log(s, traj, noises[1]))
     print("  wrote: " + ", ".join(str(p) for p in paths))
     return 0
+
+
+def _check_log_settings(s: SimulateSettings) -> tuple[float, float]:
+    """(operator noise, measurement noise), refused before the run when they cannot apply."""
+    if s.log is not None and Path(s.log).suffix.lower() not in (".csv", ".npz"):
+        raise VerifyInputError(f"--log {s.log}: name the log .csv or .npz (the experiment log "
+                               "format of verify.inputs.experiment_log)")
+    operator = real(s.operator_noise, "--operator-noise")
+    measurement = real(s.measurement_noise, "--measurement-noise")
+    if operator < 0 or measurement < 0:
+        raise VerifyInputError("--operator-noise and --measurement-noise are standard "
+                               "deviations: give numbers >= 0")
+    if operator > 0 and s.human != "model":
+        raise VerifyInputError("--operator-noise needs an LTI human (--model FILE): the noise is "
+                               "added to the model's output")
+    if measurement > 0 and s.log is None:
+        raise VerifyInputError("--measurement-noise applies to the logged signals: give --log")
+    return operator, measurement
+
+
+def _noisy(scenario: Scenario, h: float, steps: int, std: float, seed: int) -> Human:
+    """The scenario's LTI human with held operator noise of standard deviation ``std``."""
+    from verify.sim.noisy_humans import ReactingNoisyHuman
+
+    base = scenario.human
+    noise = std * np.random.default_rng([seed, 1]).standard_normal((steps + 1, base.ports))
+    return ReactingNoisyHuman(base.A, base.B, base.C, base.D, name=base.name, noise=noise,
+                              reference=scenario.reference, h=h)
+
+
+def _write_log(s: SimulateSettings, traj, measurement: float) -> Path:
+    """The run's trials (one per reference segment) as an experiment log."""
+    from verify.identify.experiment import ExperimentLog, Trial
+    from verify.identify.simulated_experiment import trajectory_trials
+    from verify.inputs.experiment_log import write_log
+
+    rng = np.random.default_rng([s.seed, 2])
+    trials = []
+    for tr in trajectory_trials(traj):
+        e = tr.e + measurement * rng.standard_normal(tr.e.shape) if measurement else tr.e
+        u = tr.u + measurement * rng.standard_normal(tr.u.shape) if measurement else tr.u
+        trials.append(Trial(tr.trial, tr.t, e, u, reference=tr.reference, start=tr.start))
+    source = (f"verify simulate: n = {traj.scenario.n}, k_s = {traj.scenario.k_s:g}, human "
+              f"{traj.scenario.human.name}, reference {s.reference}, seed {s.seed}, operator "
+              f"noise {s.operator_noise:g}, measurement noise {measurement:g}")
+    return write_log(ExperimentLog(tuple(trials), 1.0 / traj.h, source), s.log)
 
 
 def _summary(traj, E, wall: float) -> None:

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import real_array
 from verify.so3 import E3, Array, exp, log, transpose
 
 if TYPE_CHECKING:
@@ -99,17 +100,15 @@ class LTIHuman(Human):
     x0: Array | None = None
 
     def __post_init__(self) -> None:
-        self.A, self.B, self.C, self.D = (np.asarray(M, dtype=float) for M in (self.A, self.B,
-                                                                               self.C, self.D))
+        self.A, self.B, self.C, self.D = (
+            real_array(M, f"the human model's {label}")
+            for label, M in (("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D)))
         p, m = self.D.shape
         if p != m:
             raise VerifyInputError(f"the human model must be square, got {p} outputs and "
                                    f"{m} inputs")
         self.ports = _ports(m, "the human model")
         self.state_size = self.A.shape[0]
-        for label, M in (("A", self.A), ("B", self.B), ("C", self.C), ("D", self.D)):
-            if not np.all(np.isfinite(M)):
-                raise VerifyInputError(f"the human model's {label} has non-finite entries")
 
     @classmethod
     def from_model(cls, model, P: Array | None = None, x0: Array | None = None) -> LTIHuman:
@@ -161,11 +160,9 @@ class StaticGainHuman(Human):
     name: str = "static gain"
 
     def __post_init__(self) -> None:
-        K = np.atleast_2d(np.asarray(self.K, dtype=float))
-        if K.shape[0] != K.shape[1]:
+        K = np.atleast_2d(real_array(self.K, "the static gain K"))
+        if K.ndim != 2 or K.shape[0] != K.shape[1]:
             raise VerifyInputError(f"the static gain must be square, got shape {K.shape}")
-        if not np.all(np.isfinite(K)):
-            raise VerifyInputError("the static gain has non-finite entries")
         self.K = K
         self.ports = _ports(K.shape[0], "the static gain")
         self.passive = bool(np.linalg.eigvalsh(K + K.T)[0] >= 0)

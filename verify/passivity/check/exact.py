@@ -31,7 +31,7 @@ def to_rational(a: np.ndarray | Sequence) -> RationalMatrix:
         raise ValueError("to_rational expects a 2-D array")
     if not np.all(np.isfinite(arr)):
         raise ValueError("a matrix entry is not finite")
-    return [[mpq(Fraction(float(x))) for x in row] for row in arr]
+    return [[mpq(float(x)) for x in row] for row in arr]
 
 
 def rationalize(a: np.ndarray, bits: int = 40) -> RationalMatrix:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check import qpoly as qp
 from verify.passivity.check.certificate import ExactModel, KypCheck
@@ -162,7 +163,6 @@ def check_pr_file(data: dict[str, Any], path: Path) -> KypCheck:
     as given, H, must match the file name's fingerprint and, when the ``source`` file is
     found, be exactly the model that file denotes, under the same name.
     """
-    from fractions import Fraction
 
     from verify.passivity.io.binding import Claim, bind_source, file_name, shifted
     from verify.passivity.io.strict_json import CertificateFormatError, rational
@@ -179,7 +179,7 @@ def check_pr_file(data: dict[str, Any], path: Path) -> KypCheck:
         raise CertificateFormatError(str(exc).removeprefix(f"{path}: ")) from None
     if not result.ok:
         return result
-    margin = Fraction(int(q.numerator), int(q.denominator))
+    margin = fraction(q)
     given = shifted(_model(data), -margin)  # H, the model as given
     expected = file_name(data["name"], Claim(margin), given.fingerprint())
     if Path(path).name != expected:

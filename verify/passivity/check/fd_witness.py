@@ -14,15 +14,19 @@ instead (an entry with a pole in Re s > 0, a repeated axis pole, a residue's sig
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 from flint import fmpq, fmpq_poly
 from gmpy2 import mpq
 
+from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check import qpoly as qp
 from verify.passivity.check.certificate import ExactModel
-from verify.passivity.check.witness import Witness, _negative_direction, hermitian_part_at
+from verify.passivity.check.witness import (
+    Witness,
+    hermitian_part_at,
+    negative_direction,
+    vector_witness,
+)
 
 
 def exact_negative_vector(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
@@ -97,21 +101,15 @@ def frequency_vector_witness(model: ExactModel, w: fmpq, note: str, tm=None
     if tm is not None and model.n > STATE_SPACE_CHECK_LIMIT:
         M = hermitian_part_from(tm, w)
     else:
-        M = hermitian_part_at(model, Fraction(int(w.p), int(w.q)))
+        M = hermitian_part_at(model, fraction(w))
     if M is None:
         return None
-    found = _negative_direction(M) or exact_negative_vector(M)
+    found = negative_direction(M) or exact_negative_vector(M)
     if found is None:
         return None
     v, value = found
-    m = model.m
-    return Witness(
-        "frequency",
-        f"at ω* = {w} (≈ {float(w.p) / float(w.q):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
-        f"{float(value):.3g} < 0 for an exact rational vector v = a + jb ({note})",
-        {"omega": str(w), "a": [str(x) for x in v[:m]], "b": [str(x) for x in v[m:]],
-         "value": str(value)},
-    )
+    return vector_witness(w, float(w.p) / float(w.q), f"{float(value):.3g}", v, value,
+                          model.m, note)
 
 
 def negative_points(Q: fmpq_poly, avoid: fmpq_poly):

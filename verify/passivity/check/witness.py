@@ -52,7 +52,7 @@ def _quadratic(M: ex.RationalMatrix, v: list[mpq]) -> mpq:
     return sum((v[i] * M[i][j] * v[j] for i in range(len(v)) for j in range(len(v))), mpq(0))
 
 
-def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
+def negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     """A rational v with v^T M v < 0 (exact), from the float eigenvector; None if none found."""
     # a float copy of c M (c a power of two, same signs) proposes v, whatever the entries
     F = intmat.to_float(intmat.normalised(intmat.from_rational(M)))
@@ -72,7 +72,7 @@ def _negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
 
 def infinity_witness(model: ExactModel) -> Witness | None:
     S = ex.add(model.D, ex.transpose(model.D))
-    found = _negative_direction(S)
+    found = negative_direction(S)
     if found is None:
         return None
     v, value = found
@@ -180,15 +180,25 @@ def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
     M = hermitian_part_at(model, w)
     if M is None:
         return None
-    found = _negative_direction(M)
+    found = negative_direction(M)
     if found is None:
         return None
     v, value = found
-    m = model.m
+    return vector_witness(w, float(w), f"{gmpy2.mpfr(value):.3g}", v, value, model.m)
+
+
+def vector_witness(w: object, approx: float, shown_value: str, v: list, value: object,
+                   m: int, note: str = "") -> Witness:
+    """The frequency witness record: v = a + jb with vᴴ(H(jω*) + H(jω*)ᴴ)v = value < 0.
+
+    ``w`` and ``value`` are exact rationals (printed as they print), ``approx`` and
+    ``shown_value`` their readable forms; ``note`` says how ω* was found.
+    """
+    how = f" ({note})" if note else ""
     return Witness(
         "frequency",
-        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
-        f"{gmpy2.mpfr(value):.3g} < 0 for an exact rational vector v = a + jb",
+        f"at ω* = {w} (≈ {approx:.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
+        f"{shown_value} < 0 for an exact rational vector v = a + jb{how}",
         {"omega": str(w), "a": [str(x) for x in v[:m]],
          "b": [str(x) for x in v[m:]], "value": str(value)},
     )
@@ -229,7 +239,7 @@ def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
         return None
     CB = ex.matmul(model.C, model.B)
     G0 = ex.matmul(ex.matmul(ex.transpose(N), CB), N)
-    found = _negative_direction(ex.scale(mpq(1, 2), ex.add(G0, ex.transpose(G0))))
+    found = negative_direction(ex.scale(mpq(1, 2), ex.add(G0, ex.transpose(G0))))
     if found is None:
         return None
     z, g = found  # z^T G0 z = g < 0

@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
+from verify.inputs.numbers import fraction
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.io.strict_json import (
     CertificateFormatError,
@@ -146,16 +147,12 @@ def model_from_json(data: Any) -> ExactModel:
 
 def claim_from_fields(margin: Any, band: Any) -> Claim:
     """The claim of a stored certificate from its ``margin`` and ``band`` fields."""
-    def fraction(value: Any, where: str) -> Fraction:
-        x = rational(value, where)
-        return Fraction(int(x.numerator), int(x.denominator))
-
-    nu = fraction(margin, "margin")
+    nu = fraction(rational(margin, "margin"))
     if band is None:
         return Claim(nu)
     if not isinstance(band, list) or len(band) != 2:
         raise CertificateFormatError("field 'band' must be [w1, w2]")
-    w1, w2 = (fraction(w, f"band[{k}]") for k, w in enumerate(band))
+    w1, w2 = (fraction(rational(w, f"band[{k}]")) for k, w in enumerate(band))
     if not 0 <= w1 < w2:
         raise CertificateFormatError(f"band [{w1}, {w2}] does not satisfy 0 <= w1 < w2")
     return Claim(nu, (w1, w2))

@@ -18,6 +18,7 @@ another name, and matrices that fail the exact check of
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -114,20 +115,35 @@ def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool
     the existing file was kept.
     """
     from verify.passivity.io.stored import check_stored_certificate
-    from verify.report.atomic import write_atomic
 
     fresh = PARSERS[data["schema"]](data)
     path = Path(directory) / file_name(fresh.name, fresh.claim, fresh.fingerprint)
+
+    def still_valid(old: Path) -> bool:
+        old_data = read_strict(old)
+        parse = PARSERS.get(old_data.get("schema"))  # type: ignore[arg-type]
+        return (parse is not None and parse(old_data).same_claim(fresh)
+                and check_stored_certificate(old).ok)
+
+    return keep_or_write(path, dumps(data), still_valid)
+
+
+def keep_or_write(path: Path, text: str, still_valid: Callable[[Path], bool]
+                  ) -> tuple[Path, bool]:
+    """Keep ``path`` if it holds ``text`` or ``still_valid(path)`` (a valid certificate of
+    the same model and claim), else write ``text`` atomically; returns (path, kept).
+
+    A file that cannot be read or parsed is not ours and is replaced.
+    """
+    from verify.report.atomic import write_atomic
+
     if path.is_file():
         try:
-            old_data = read_strict(path)
-            parse = PARSERS.get(old_data.get("schema"))  # type: ignore[arg-type]
-            if (parse is not None and parse(old_data).same_claim(fresh)
-                    and check_stored_certificate(path).ok):
+            if path.read_text() == text or still_valid(path):
                 return path, True
-        except CertificateFormatError:
+        except (OSError, ValueError, CertificateFormatError):
             pass  # not a certificate of ours: replaced below
-    write_atomic(path, dumps(data))
+    write_atomic(path, text)
     return path, False
 
 

@@ -82,7 +82,7 @@ def band_certificate(em: ExactModel, A: np.ndarray, B: np.ndarray, C: np.ndarray
     if found is None:
         return None
     Pf, Qf, margin = found
-    t_exact = [mpq(Fraction(float(x))) for x in t]
+    t_exact = [mpq(float(x)) for x in t]
     scale = max(1.0, float(np.max(np.abs(np.concatenate([Pf.ravel(), Qf.ravel()])))))
     for bits in (16, 24, 36, 48, 60):
         step = max(bits - int(np.ceil(np.log2(scale))), 8)

@@ -24,13 +24,13 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass
-from fractions import Fraction
 
 import cvxpy as cp
 import numpy as np
 import scipy.linalg as sla
 from gmpy2 import mpq
 
+from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, check_kyp
 from verify.passivity.search.reduce import (
@@ -151,13 +151,13 @@ def _roundings(P_float: np.ndarray):
         yield f"{bits}-bit", ex.rationalize(P_float, step_bits)
     for limit in (16, 1000, 10**6):
         yield f"continued-fraction (denominators <= {limit})", [
-            [mpq(Fraction(float(x)).limit_denominator(limit)) for x in row] for row in P_float
+            [mpq(fraction(float(x)).limit_denominator(limit)) for x in row] for row in P_float
         ]
 
 
 def _balanced(model: ExactModel, scaling: np.ndarray) -> ExactModel:
     """The exact model in coordinates x = T x_b, T = diag(scaling) (powers of two)."""
-    t = [mpq(Fraction(float(x))) for x in scaling]
+    t = [mpq(float(x)) for x in scaling]
     n, m = model.n, model.m
     A = [[model.A[i][j] * t[j] / t[i] for j in range(n)] for i in range(n)]
     B = [[model.B[i][j] / t[i] for j in range(m)] for i in range(n)]
@@ -167,7 +167,7 @@ def _balanced(model: ExactModel, scaling: np.ndarray) -> ExactModel:
 
 def _unbalance(P_b: ex.RationalMatrix, scaling: np.ndarray) -> ex.RationalMatrix:
     """P = T^-1 P_b T^-1: the same storage function x_b^T P_b x_b in the model's states."""
-    t = [mpq(Fraction(float(x))) for x in scaling]
+    t = [mpq(float(x)) for x in scaling]
     return [[x / (t[i] * t[j]) for j, x in enumerate(row)] for i, row in enumerate(P_b)]
 
 
@@ -214,7 +214,7 @@ def _clearly_not_passive(A, B, C, D) -> str:
 FAST_CANDIDATES = 3  # Riccati margins tried before the fallback
 
 
-def _reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | NotReducible:
+def reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | NotReducible:
     """The fast path: a KypSearch when it decides (certificate, or none can exist), else
     the reason it does not apply."""
     try:
@@ -248,7 +248,7 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
         ok = check_kyp(model, [])
         return KypSearch([] if ok.ok else None, None, "static", ok.reason)
     scaling = _balance(A)
-    fast = _reduced_search(model, scaling)
+    fast = reduced_search(model, scaling)
     if isinstance(fast, KypSearch):
         return fast
     negative = _clearly_not_passive(A, B, C, D)

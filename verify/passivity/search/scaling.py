@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
 
@@ -69,13 +70,13 @@ class Rescaling:
 
 def _exponent(m: ex.RationalMatrix) -> int | None:
     """About log2 of the largest |entry| (within one), exactly; None for a zero matrix."""
-    es = [_fraction_exponent(Fraction(int(x.numerator), int(x.denominator)))
+    es = [_fraction_exponent(fraction(x))
           for row in m for x in row if x]
     return max(es) if es else None
 
 
 def _smallest_exponent(m: ex.RationalMatrix) -> int | None:
-    es = [_fraction_exponent(Fraction(int(x.numerator), int(x.denominator)))
+    es = [_fraction_exponent(fraction(x))
           for row in m for x in row if x]
     return min(es) if es else None
 

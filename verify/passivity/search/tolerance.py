@@ -41,6 +41,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import Certificate, ExactModel, check_kyp
 from verify.passivity.decision import (
@@ -53,7 +54,7 @@ from verify.passivity.decision import (
 from verify.passivity.model import LTIModel
 from verify.passivity.search.kyp import KypSearch
 from verify.passivity.search.kyp import _balance as kyp_balance
-from verify.passivity.search.kyp import _reduced_search as kyp_reduced_search
+from verify.passivity.search.kyp import reduced_search as kyp_reduced_search
 
 #: fractions of the budget tried, smallest first (powers of two)
 _LADDER = (-30, -20, -12, -6, -2, 0)
@@ -61,7 +62,7 @@ _LADDER = (-30, -20, -12, -6, -2, 0)
 
 def _inf_norm(M: ex.RationalMatrix) -> Fraction:
     """Largest absolute row sum, exactly."""
-    sums = [sum((abs(Fraction(int(x.numerator), int(x.denominator))) for x in row),
+    sums = [sum((abs(fraction(x)) for x in row),
                 Fraction(0)) for row in M]
     return max(sums, default=Fraction(0))
 

@@ -1,0 +1,286 @@
+"""Experiment logs: round trips, and every defect the format names gives one line."""
+
+import io
+import zipfile
+
+import numpy as np
+import pytest
+
+from verify.errors import VerifyInputError
+from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.experiment_log import read_log, read_logs, write_log
+
+RATE = 120.0
+
+
+def _log(trials=3, n=40, *, reference=True, valid=True, start=True, seed=0) -> ExperimentLog:
+    rng = np.random.default_rng(seed)
+    out = []
+    for k in range(trials):
+        t = (np.arange(n) + k * n) / RATE
+        ref = rng.standard_normal((n, 3)) if reference else None
+        ok = rng.random(n) > 0.1 if valid else None
+        out.append(Trial(k, t, rng.standard_normal((n, 2)) * 1e-3 ** rng.random((n, 2)),
+                         rng.standard_normal((n, 2)), ref, ok,
+                         float(t[5 + k]) if start else None))
+    return ExperimentLog(tuple(out), RATE, "test log")
+
+
+def _same(a: ExperimentLog, b: ExperimentLog) -> None:
+    assert a.rate == b.rate and len(a.trials) == len(b.trials)
+    for x, y in zip(a.trials, b.trials, strict=True):
+        assert x.trial == y.trial and x.start == y.start
+        for name in ("t", "e", "u", "reference", "valid"):
+            p, q = getattr(x, name), getattr(y, name)
+            assert (p is None) == (q is None)
+            if p is not None:
+                assert p.dtype == q.dtype and np.array_equal(p, q)  # bit exact
+
+
+@pytest.mark.parametrize("suffix", [".csv", ".npz"])
+@pytest.mark.parametrize("full", [True, False])
+def test_round_trip_is_bit_exact(tmp_path, suffix, full):
+    log = _log(reference=full, valid=full, start=full)
+    path = write_log(log, tmp_path / f"log{suffix}")
+    back = read_log(path)
+    _same(log, back)
+    assert back.source == str(path)
+    again = tmp_path / f"again{suffix}"
+    write_log(back, again)
+    if suffix == ".npz":  # fixed zip timestamps: equal logs give equal bytes
+        assert path.read_bytes() == again.read_bytes()
+
+
+def test_csv_round_trip_keeps_awkward_floats(tmp_path):
+    values = np.array([[5e-324, -0.0], [1.7976931348623157e308, 0.1], [1 / 3, -2.5e-17]])
+    tr = Trial(0, np.arange(3) / RATE, values, values[::-1].copy())
+    path = write_log(ExperimentLog((tr,), RATE, ""), tmp_path / "x.csv")
+    back = read_log(path).trials[0]
+    assert np.array_equal(back.e, values) and np.signbit(back.e[0, 1])
+
+
+def test_read_logs_combines_and_renumbers(tmp_path):
+    a = write_log(_log(2, seed=1), tmp_path / "a.csv")
+    b = write_log(_log(3, seed=2), tmp_path / "b.npz")
+    both = read_logs([a, b])
+    assert [tr.trial for tr in both.trials] == [0, 1, 2, 3, 4]  # ids collided: renumbered
+    np.testing.assert_array_equal(both.trials[2].u, read_log(b).trials[0].u)
+    log = _log(2, seed=3)
+    shifted = ExperimentLog(tuple(Trial(tr.trial + 10, tr.t, tr.e, tr.u) for tr in log.trials),
+                            RATE, "")
+    c = write_log(shifted, tmp_path / "c.csv")
+    assert [tr.trial for tr in read_logs([a, c]).trials] == [0, 1, 10, 11]  # kept
+    slow = ExperimentLog(tuple(Trial(tr.trial, tr.t * 2, tr.e, tr.u) for tr in log.trials),
+                         RATE / 2, "")
+    d = write_log(slow, tmp_path / "d.csv")
+    with pytest.raises(VerifyInputError, match=r"d\.csv: rate 60 Hz differs"):
+        read_logs([a, d])
+    with pytest.raises(VerifyInputError, match="no log files"):
+        read_logs([])
+
+
+# ------------------------------------------------------------------ hostile CSV
+
+HEADER = "time,trial,e1,e2,u1,u2"
+
+
+def _rows(n=5, trial=0, t0=0.0, step=0.01):
+    return [f"{t0 + k * step!r},{trial},0.1,0.2,0.3,0.4" for k in range(n)]
+
+
+def _csv(tmp_path, lines, name="bad.csv"):
+    path = tmp_path / name
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+CSV_CASES = {
+    "missing column": ([HEADER.replace(",u2", ""), *[r.rsplit(",", 1)[0] for r in _rows()]],
+                       r"line 1 \(header\): missing column u2"),
+    "unknown column": ([HEADER + ",speed", *[r + ",1" for r in _rows()]],
+                       r"unknown column 'speed'"),
+    "duplicate column": ([HEADER + ",e1", *[r + ",1" for r in _rows()]],
+                         r"column 'e1' appears twice"),
+    "partial reference": ([HEADER + ",r1", *[r + ",1" for r in _rows()]],
+                          r"reference columns r1 without the others"),
+    "nan": ([HEADER, *_rows(2), "0.02,0,nan,0.2,0.3,0.4"], r"line 4, column 'e1': NaN or Inf"),
+    "inf": ([HEADER, *_rows(2), "0.02,0,0.1,0.2,-inf,0.4"], r"line 4, column 'u1': NaN or Inf"),
+    "overflow": ([HEADER, *_rows(2), "0.02,0,0.1,1e999,0.3,0.4"],
+                 r"line 4, column 'e2': '1e999' is beyond the float range"),
+    "text": ([HEADER, *_rows(2), "0.02,0,0.1,abc,0.3,0.4"],
+             r"line 4, column 'e2': 'abc' is not a number"),
+    "underscore": ([HEADER, *_rows(2), "0.02,0,1_0,0.2,0.3,0.4"],
+                   r"line 4, column 'e1': '1_0' is not a number"),
+    "empty cell": ([HEADER, *_rows(2), "0.02,0,,0.2,0.3,0.4"], r"line 4, column 'e1': empty"),
+    "row length": ([HEADER, *_rows(2), "0.02,0,0.1,0.2,0.3"], r"line 4: 5 cells, the header"),
+    "time back": ([HEADER, "0.0,0,1,1,1,1", "0.02,0,1,1,1,1", "0.01,0,1,1,1,1"],
+                  r"line 4, column 'time': time 0.01 goes back within trial 0"),
+    "time repeats": ([HEADER, "0.0,0,1,1,1,1", "0.01,0,1,1,1,1", "0.01,0,1,1,1,1"],
+                     r"line 4, column 'time': time 0.01 repeats within trial 0"),
+    "unequal": ([HEADER, "0.0,0,1,1,1,1", "0.01,0,1,1,1,1", "0.0201,0,1,1,1,1",
+                 "0.03,0,1,1,1,1"], r"column 'time': unequal sampling in trial 0.*relative 1e-06"),
+    "steps differ": ([HEADER, *_rows(4), *_rows(4, trial=1, step=0.02)],
+                     r"line 6, trial 1: trial 1 has step 0.02 s, the first trial 0.01 s"),
+    "short trial": ([HEADER, *_rows(5), *_rows(1, trial=1, t0=1.0)],
+                    r"line 7, trial 1: trial 1 has 1 sample; at least 2"),
+    "header only": ([HEADER], r"header but no samples"),
+    "comments only": (["# rate = 120", "# nothing"], r"empty log \(no header line\)"),
+    "valid not 0/1": ([HEADER + ",valid", *[r + ",1" for r in _rows(2)], "0.02,0,1,1,1,1,2"],
+                      r"line 4, column 'valid': 2 is not 0 or 1"),
+    "start text": ([HEADER + ",start", *[r + ",0" for r in _rows(2)], "0.02,0,1,1,1,1,yes"],
+                   r"line 4, column 'start': 'yes' is not an integer"),
+    "trial float": ([HEADER, *_rows(2), "0.02,0.5,1,1,1,1"],
+                    r"line 4, column 'trial': '0.5' is not an integer"),
+    "trial 1.0": ([HEADER, *_rows(2), "0.02,1.0,1,1,1,1"],
+                  r"line 4, column 'trial': '1.0' is not an integer.*decimal point"),
+    "two starts": ([HEADER + ",start", "0.0,0,1,1,1,1,1", "0.01,0,1,1,1,1,0",
+                    "0.02,0,1,1,1,1,1"], r"line 4, column 'start': a second start event"),
+    "trial split": ([HEADER, *_rows(3), *_rows(3, trial=1, t0=1.0), *_rows(3, t0=2.0)],
+                    r"line 8, trial 0: trial 0 appears again after other trials \(first at "
+                    r"line 2\)"),
+    "bad rate": (["# rate = fast", HEADER, *_rows(3)], r"line 1: rate 'fast' is not a positive"),
+    "rate disagrees": (["# rate = 120", HEADER, *_rows(3)],
+                       r"the rate metadata says 120 Hz but the time step is 0.01"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CSV_CASES))
+def test_bad_csv_is_one_line(tmp_path, case):
+    lines, pattern = CSV_CASES[case]
+    path = _csv(tmp_path, lines)
+    with pytest.raises(VerifyInputError, match=pattern) as info:
+        read_log(path)
+    text = str(info.value)
+    assert "\n" not in text and str(path) in text
+
+
+def test_short_trial_against_min_samples(tmp_path):
+    path = _csv(tmp_path, [HEADER, *_rows(5)])
+    assert len(read_log(path, min_samples=5).trials[0].t) == 5
+    with pytest.raises(VerifyInputError, match=r"trial 0 has 5 samples; at least 6 are needed"):
+        read_log(path, min_samples=6)
+    with pytest.raises(VerifyInputError, match="min_samples must be an integer >= 2"):
+        read_log(path, min_samples=1)
+
+
+def test_comments_and_spaces_are_allowed(tmp_path):
+    lines = ["# a comment", "# rate = 100", " time , trial,e1,e2,u1,u2", "", *_rows(2),
+             "  # between rows", *_rows(2, t0=0.02)]
+    log = read_log(_csv(tmp_path, lines))
+    assert log.rate == 100.0 and log.trials[0].t.shape == (4,)
+
+
+def test_not_utf8_and_missing_file_and_suffix(tmp_path):
+    path = tmp_path / "bin.csv"
+    path.write_bytes(b"\xff\xfe\x00time")
+    with pytest.raises(VerifyInputError, match="not UTF-8"):
+        read_log(path)
+    with pytest.raises(VerifyInputError, match="no such log file"):
+        read_log(tmp_path / "none.csv")
+    with pytest.raises(VerifyInputError, match=r"unknown log format '\.txt'"):
+        read_log(tmp_path / "log.txt")
+    empty = tmp_path / "empty.csv"
+    empty.write_text("")
+    with pytest.raises(VerifyInputError, match="empty log"):
+        read_log(empty)
+
+
+# ------------------------------------------------------------------ hostile NPZ
+
+
+def _good_arrays(n=6):
+    t = np.arange(n) * 0.01
+    return dict(time=t, trial=np.zeros(n, np.int64), e1=t, e2=t, u1=t, u2=t)
+
+
+def _npz(tmp_path, arrays, name="bad.npz"):
+    path = tmp_path / name
+    np.savez(path, **arrays)
+    return path
+
+
+NPZ_CASES = {
+    "missing": (lambda a: {k: v for k, v in a.items() if k != "u1"}, r"missing column u1"),
+    "unknown": (lambda a: {**a, "extra": a["time"]}, r"unknown column 'extra'"),
+    "nan": (lambda a: {**a, "e2": np.where(a["time"] > 0.02, np.nan, 0.0)},
+            r"array 'e2'\[3\]: NaN or Inf"),
+    "2-d": (lambda a: {**a, "e1": np.zeros((6, 2))}, r"array 'e1': must be 1-D"),
+    "lengths": (lambda a: {**a, "u2": np.zeros(5)}, r"arrays of different lengths"),
+    "float trial": (lambda a: {**a, "trial": np.zeros(6)}, r"array 'trial': dtype float64 is not"),
+    "text column": (lambda a: {**a, "e1": np.array(["a"] * 6)}, r"array 'e1': dtype <U1 is not"),
+    "complex": (lambda a: {**a, "u1": np.zeros(6, complex)}, r"array 'u1': dtype complex128"),
+    "valid 2": (lambda a: {**a, "valid": np.full(6, 2)}, r"entry 0, column 'valid': 2 is not 0"),
+    "time back": (lambda a: {**a, "time": a["time"][[0, 1, 3, 2, 4, 5]]},
+                  r"entry 3, column 'time': time 0.02 goes back"),
+    "rate shape": (lambda a: {**a, "rate": np.array([120.0, 60.0])}, r"array 'rate': must be one"),
+    "empty": (lambda a: {k: v[:0] for k, v in a.items()}, r"the log has no samples"),
+    "no arrays": (lambda a: {}, r"empty archive"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(NPZ_CASES))
+def test_bad_npz_is_one_line(tmp_path, case):
+    make, pattern = NPZ_CASES[case]
+    path = _npz(tmp_path, make(_good_arrays()))
+    with pytest.raises(VerifyInputError, match=pattern) as info:
+        read_log(path)
+    assert "\n" not in str(info.value) and str(path) in str(info.value)
+
+
+def test_npz_with_object_arrays_is_refused_without_unpickling(tmp_path):
+    arrays = {**_good_arrays(), "e1": np.array([object()] * 6, dtype=object)}
+    path = tmp_path / "obj.npz"
+    np.savez(path, **{k: v for k, v in arrays.items() if k != "e1"},
+             e1=np.array([{"a": 1}] * 6, dtype=object))
+    with pytest.raises(VerifyInputError, match=r"array 'e1' holds Python objects"):
+        read_log(path)
+
+
+def test_npz_bool_flags_and_not_a_zip(tmp_path):
+    arrays = {**_good_arrays(), "valid": np.ones(6, bool), "start": np.arange(6) == 2}
+    tr = read_log(_npz(tmp_path, arrays, "ok.npz")).trials[0]
+    assert tr.valid.all() and tr.start == 0.02
+    junk = tmp_path / "junk.npz"
+    junk.write_bytes(b"not a zip at all")
+    with pytest.raises(VerifyInputError, match=r"not a readable \.npz archive"):
+        read_log(junk)
+    one = tmp_path / "one.npz"
+    with open(one, "wb") as handle:
+        np.save(handle, np.zeros(3))
+    with pytest.raises(VerifyInputError, match=r"a single \.npy array"):
+        read_log(one)
+    broken = tmp_path / "broken.npz"
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w") as z:
+        z.writestr("time.npy", b"\x93NUMPY garbage")
+    broken.write_bytes(buf.getvalue())
+    with pytest.raises(VerifyInputError, match=r"broken\.npz"):
+        read_log(broken)
+
+
+# ------------------------------------------------------------------ writing
+
+
+def test_failed_write_leaves_nothing(tmp_path):
+    bad = ExperimentLog((Trial(0, np.arange(3) / RATE, np.full((3, 2), np.nan),
+                               np.zeros((3, 2))),), RATE, "")
+    for suffix in (".csv", ".npz"):
+        with pytest.raises(VerifyInputError, match="column 'e1' has NaN or Inf"):
+            write_log(bad, tmp_path / f"out{suffix}")
+    off = ExperimentLog((Trial(0, np.arange(3) / RATE, np.zeros((3, 2)), np.zeros((3, 2)),
+                               start=0.001),), RATE, "")
+    with pytest.raises(VerifyInputError, match=r"start time 0\.001 is not a sample time"):
+        write_log(off, tmp_path / "out.csv")
+    with pytest.raises(VerifyInputError, match="unknown log format"):
+        write_log(_log(1), tmp_path / "out.json")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_existing_file_survives_a_failed_write(tmp_path):
+    path = write_log(_log(1), tmp_path / "keep.csv")
+    before = path.read_bytes()
+    bad = ExperimentLog((Trial(0, np.arange(3) / RATE, np.full((3, 2), np.inf),
+                               np.zeros((3, 2))),), RATE, "")
+    with pytest.raises(VerifyInputError):
+        write_log(bad, path)
+    assert path.read_bytes() == before and list(tmp_path.iterdir()) == [path]
