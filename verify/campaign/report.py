@@ -284,10 +284,14 @@ def property_figure(c: Campaign) -> bytes:
     props = list(c.spec.properties)
     settings, ks = c.settings(), c.k_values()
     cells = c.cells()
-    fig, axes = plt.subplots(1, len(props), figsize=(2.2 + 1.0 * len(ks) * len(props),
-                                                     1.2 + 0.45 * len(settings)),
-                             squeeze=False)
-    for ax, prop in zip(axes[0], props, strict=True):
+    cols = min(3, len(props))
+    rows = -(-len(props) // cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(2.0 + (0.8 + 0.45 * len(ks)) * cols,
+                                                  (0.9 + 0.3 * len(settings)) * rows + 0.4),
+                             squeeze=False, layout="constrained")
+    for ax in axes.flat[len(props):]:
+        ax.set_visible(False)
+    for ax, prop in zip(axes.flat, props, strict=False):
         grid = np.full((len(settings), len(ks)), np.nan)
         for i, s in enumerate(settings):
             for j, k in enumerate(ks):
@@ -302,12 +306,13 @@ def property_figure(c: Campaign) -> bytes:
         cmap = plt.get_cmap("RdYlGn").with_extremes(bad="0.85")
         ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
         ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
-        ax.set_yticks(range(len(settings)), settings if ax is axes[0][0] else [""] *
-                      len(settings), fontsize=7)
+        first = ax in axes[:, 0]
+        ax.set_yticks(range(len(settings)), settings if first else [""] * len(settings),
+                      fontsize=7)
         ax.set_xlabel("k_s", fontsize=8)
         ax.set_title(prop, fontsize=9)
     fig.suptitle("runs held / runs (* some had an assumption fail; grey: none judged)",
-                 fontsize=8, y=1.04)
+                 fontsize=8)
     return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
 
 
