@@ -164,3 +164,18 @@ def test_progress_line():
         bar.update(5, force=True)
         bar.close()
         assert stream.text == ""
+
+
+def test_a_damaged_store_is_one_line(tmp_path):
+    from verify.errors import VerifyInputError
+
+    store = ResultStore(tmp_path / "results")
+    store.append([{"key": "a"}])
+    (store.folder / ".part-0-x.parquet.tmp").write_bytes(b"half a file")  # a crashed write
+    assert ResultStore(store.folder).keys() == {"a"}  # temporary files are not parts
+    (store.folder / "part-9-broken.parquet").write_bytes(b"not parquet")
+    with pytest.raises(VerifyInputError, match="not a readable part of a campaign store"):
+        ResultStore(store.folder).keys()
+    (tmp_path / "file").write_text("")
+    with pytest.raises(VerifyInputError, match="must be a folder"):
+        ResultStore(tmp_path / "file")
