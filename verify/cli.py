@@ -184,7 +184,27 @@ def _build_parser() -> argparse.ArgumentParser:
                        help="white noise on the model human's output, in the loop (default 0)")
     p_sim.add_argument("--measurement-noise", type=float, default=0.0, metavar="STD",
                        help="white noise on the logged e and u (default 0)")
+    _add_campaign_parser(sub)
     return parser
+
+
+def _add_campaign_parser(sub) -> None:
+    p = sub.add_parser(
+        "campaign", help="sweep closed-loop runs with property checks on Dask",
+        description="Expand a campaign spec (TOML) into runs, simulate and check each on a "
+        "Dask LocalCluster (default) or an existing scheduler, store one row per run in a "
+        "Parquet dataset as runs finish, and write a report. Exit 0 when every run has a "
+        "row and none raised, 1 otherwise, 2 on bad input (before any run starts).")
+    p.add_argument("spec", type=Path, metavar="SPEC.toml", help="the campaign spec")
+    p.add_argument("--out", type=Path, metavar="DIR",
+                   help="output folder (default reports/campaigns/<spec name>)")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on an existing Dask scheduler, e.g. tcp://127.0.0.1:8786")
+    p.add_argument("--workers", type=int, metavar="N",
+                   help="worker processes of the embedded LocalCluster (default: the cores)")
+    p.add_argument("--resume", action="store_true",
+                   help="continue a campaign in DIR: runs already stored are skipped")
+    p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
 
 
 def _cmd_all(args: argparse.Namespace) -> int:
@@ -335,6 +355,14 @@ def _cmd_identify(args: argparse.Namespace) -> int:
         band=args.band, out=args.out, json=args.json, junit=args.junit, name=args.name))
 
 
+def _cmd_campaign(args: argparse.Namespace) -> int:
+    from verify.campaign.command import CampaignSettings, run_campaign_command
+
+    return run_campaign_command(CampaignSettings(
+        spec=args.spec, out=args.out, scheduler=args.scheduler, workers=args.workers,
+        resume=args.resume, quiet=args.quiet))
+
+
 def _cmd_list(_: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
 
@@ -401,7 +429,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
-                "identify": _cmd_identify}
+                "identify": _cmd_identify, "campaign": _cmd_campaign}
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:

@@ -10,10 +10,11 @@ they spell) or finite floats for simulation and numerical proposals (:func:`real
 naming the argument, the value and the fix; nothing is ever evaluated.
 
 Modules: :mod:`verify.inputs.numbers` (numbers and numeric arrays, both flavours, and
-command-line numbers), :mod:`verify.inputs.toml` (reading a TOML file) and
-:mod:`verify.inputs.experiment_log` (operator experiment logs, CSV and NPZ). New input
-kinds, such as experiment logs and campaign specifications, belong in this package and
-use these validators rather than their own.
+command-line numbers), :mod:`verify.inputs.toml` (reading a TOML file),
+:mod:`verify.inputs.experiment_log` (operator experiment logs, CSV and NPZ) and
+:mod:`verify.inputs.campaign_spec` (campaign specs for ``verify campaign``, imported on
+use). New input kinds belong in this package and use these validators rather than
+their own.
 """
 
 from verify.inputs.numbers import (

@@ -1,0 +1,135 @@
+"""``verify campaign SPEC.toml``: validate, expand, run on Dask, store, report.
+
+Everything the spec names is checked before the first run starts (bad input: one line,
+exit 2). The output folder holds ``results/`` (the Parquet store), ``humans/`` (model
+files of drawn family members), ``campaign.md``, ``campaign.html``, ``figures/`` and
+``commands.txt``. Exit 0 when every run has a row and none raised; 1 when a run raised
+or was lost (its row is missing: ``--resume`` runs it again); 2 on bad input.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import signal
+import sys
+import threading
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+from verify.errors import VerifyInputError
+
+
+@dataclass
+class CampaignSettings:
+    spec: Path
+    out: Path | None = None
+    scheduler: str | None = None
+    workers: int | None = None
+    resume: bool = False
+    quiet: bool = False
+
+
+def default_workers() -> int:
+    """Worker processes of the embedded LocalCluster: the cores, at most 8."""
+    return max(1, min(os.cpu_count() or 1, 8))
+
+
+def _check_address(address: str) -> str:
+    text = address.strip()
+    scheme, sep, rest = text.partition("://")
+    host, colon, port = (rest if sep else text).rpartition(":")
+    if (sep and scheme not in ("tcp", "tls", "ucx", "inproc", "ws", "wss")) or not colon \
+            or not host or not port.isdigit():
+        raise VerifyInputError(f"--scheduler {address!r}: expected an address such as "
+                               "tcp://127.0.0.1:8786 (from 'dask scheduler')")
+    return text
+
+
+@contextlib.contextmanager
+def _terminate_as_interrupt() -> Iterator[None]:
+    """SIGTERM (a batch system's stop) ends the campaign as Ctrl-C does: the rows in hand
+    are stored before the process exits."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def run_campaign_command(s: CampaignSettings) -> int:
+    from verify.campaign.engine import run_campaign
+    from verify.campaign.execute import FAILED, column
+    from verify.campaign.progress import clock
+    from verify.campaign.report import Campaign, write_report
+    from verify.campaign.runs import expand, write_family_files
+    from verify.campaign.store import ResultStore
+    from verify.inputs.campaign_spec import load_campaign_spec
+
+    scheduler = _check_address(s.scheduler) if s.scheduler is not None else None
+    workers = default_workers() if s.workers is None else s.workers
+    if scheduler is None and workers < 1:
+        raise VerifyInputError(f"--workers must be at least 1, got {workers}")
+    if scheduler is not None and s.workers is not None:
+        raise VerifyInputError("--workers sizes the embedded LocalCluster; with --scheduler "
+                               "the cluster's own workers run the campaign (drop --workers)")
+    spec = load_campaign_spec(s.spec)
+    out = s.out if s.out is not None else Path("reports/campaigns") / s.spec.stem
+    store = ResultStore(out / "results")
+    runs = expand(spec)
+    keys = {r.key for r in runs}
+    stored = store.keys()
+    if stored and not s.resume:
+        mine = len(stored & keys)
+        raise VerifyInputError(
+            f"{store.folder} already holds {len(stored)} rows ({mine} of this campaign); "
+            "pass --resume to continue without repeating them, or choose another --out")
+    runs = write_family_files(runs, out / "humans")
+    engine = (f"the Dask scheduler at {scheduler}" if scheduler
+              else f"a LocalCluster of {workers} worker process(es), 1 thread each")
+    print(f"verify campaign: {spec.name}: {len(runs)} runs; properties "
+          f"{', '.join(spec.properties) or 'none'}; on {engine}")
+    done_before = len(stored & keys)
+    if done_before:
+        print(f"  resuming: {done_before} of {len(runs)} runs already stored in "
+              f"{store.folder}")
+    try:
+        with _terminate_as_interrupt():
+            outcome = run_campaign(runs, store, scheduler=scheduler, workers=workers,
+                                   progress=not s.quiet, stream=sys.stderr)
+    except KeyboardInterrupt:
+        have = len(store.keys() & keys)
+        print(f"verify campaign: interrupted; {have} of {len(runs)} rows stored in "
+              f"{store.folder}; rerun with --resume to continue", file=sys.stderr)
+        raise
+    rows = {row["key"]: row for row in store.rows([r.key for r in runs])}
+    ran = outcome.written
+    session = {
+        "engine": engine,
+        "workers": str(outcome.workers or "-"),
+        "runs this session": str(ran),
+        "wall time of this session": f"{outcome.seconds:.1f} s",
+        "runs per second": f"{ran / outcome.seconds:.3g}" if outcome.seconds and ran else "-",
+    }
+    paths = write_report(Campaign(spec, runs, rows), out, session)
+    failed = sum(1 for row in rows.values() if any(
+        row.get(column(p)) == FAILED for p in spec.properties))
+    print(f"  {len(rows)} of {len(runs)} runs stored ({ran} this session in "
+          f"{clock(outcome.seconds)}); {failed} failed a property; {outcome.raised} raised"
+          + (f"; {len(outcome.lost)} lost" if outcome.lost else ""))
+    for key, why in outcome.lost[:5]:
+        print(f"  lost {key}: {why}", file=sys.stderr)
+    print(f"  store: {store.folder}; report: {paths[-2]}, {paths[-1]}")
+    errors = sum(1 for row in rows.values() if row.get("error"))
+    return 0 if len(rows) == len(runs) and not errors else 1
+
+
+__all__ = ["CampaignSettings", "default_workers", "run_campaign_command"]

@@ -1,0 +1,209 @@
+"""Run a campaign on Dask ``distributed``: one task per run, rows stored as they finish.
+
+Default engine: a :class:`distributed.LocalCluster` on this machine (worker processes
+with one thread each, since a run is single-threaded NumPy). With an address the same
+tasks go to an existing scheduler (``dask scheduler`` and ``dask worker`` processes on
+any machines that can import ``verify``); a run carries its model file's bytes, so
+workers need no shared file system.
+
+Each run is a task whose key is derived from the run key, so the scheduler sees one task
+per run. Results are collected with ``as_completed`` and appended to the
+:class:`~verify.campaign.store.ResultStore` in small batches (a part file at least every
+``flush_seconds``), so an interruption loses only the rows of the current batch, and
+runs already stored are skipped on the next invocation. When a worker dies the scheduler
+runs its tasks again elsewhere (up to its ``allowed-failures``); the store drops a second
+row of a key, so nothing is stored twice. A task that the scheduler gives up on (a
+worker killed repeatedly while running it) gets no row: it is reported as lost and runs
+again on ``--resume``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import time
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from typing import Any, TextIO
+
+from verify.campaign.execute import execute_run
+from verify.campaign.progress import CampaignProgress
+from verify.campaign.runs import Run
+from verify.campaign.store import ResultStore
+from verify.errors import VerifyInputError
+
+TASK_PREFIX = "verify-run-"
+CONNECT_TIMEOUT = "15s"  # to reach an existing scheduler
+
+
+@dataclass
+class CampaignOutcome:
+    """What a session of a campaign did."""
+
+    total: int  # runs of the campaign
+    stored_before: int  # of them, found in the store and skipped
+    written: int = 0  # rows appended by this session
+    raised: int = 0  # of them, runs whose simulation raised (the row holds the error)
+    lost: list[tuple[str, str]] = field(default_factory=list)  # (key, why): no row
+    seconds: float = 0.0
+    workers: int = 0
+    engine: str = ""
+
+    @property
+    def complete(self) -> bool:
+        return self.stored_before + self.written == self.total
+
+
+@contextlib.contextmanager
+def _quiet_distributed() -> Iterator[None]:
+    """Keep distributed's own log lines (worker restarts, closing) off the terminal."""
+    logger = logging.getLogger("distributed")
+    level = logger.level
+    logger.setLevel(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
+
+
+@contextlib.contextmanager
+def connect(scheduler: str | None = None, workers: int = 2) -> Iterator[Any]:
+    """A Dask client: on the scheduler at ``scheduler``, or on a new LocalCluster of
+    ``workers`` processes (closed on exit)."""
+    from distributed import Client, LocalCluster
+
+    if scheduler is not None:
+        try:
+            client = Client(scheduler, timeout=CONNECT_TIMEOUT, set_as_default=False)
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise VerifyInputError(f"--scheduler {scheduler}: cannot connect to a Dask "
+                                   f"scheduler ({' '.join(str(exc).split())}); start one with "
+                                   "'dask scheduler' and give its tcp://HOST:PORT") from None
+        try:
+            yield client
+        finally:
+            client.close()
+        return
+    if workers < 1:
+        raise VerifyInputError(f"--workers must be at least 1, got {workers}")
+    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                           dashboard_address=":0", silence_logs=logging.CRITICAL)
+    client = Client(cluster, set_as_default=False)
+    try:
+        yield client
+    finally:
+        client.close()
+        cluster.close()
+
+
+def _why(future: Any, result: Any) -> str:
+    exc = result[1] if isinstance(result, tuple) and len(result) == 3 else result
+    if not isinstance(exc, BaseException):
+        with contextlib.suppress(Exception):
+            exc = future.exception(timeout=1)
+    return f"{type(exc).__name__}: {' '.join(str(exc).split())}"[:500]
+
+
+def run_campaign(
+    runs: Sequence[Run],
+    store: ResultStore,
+    *,
+    client: Any = None,
+    scheduler: str | None = None,
+    workers: int = 2,
+    progress: bool = True,
+    stream: TextIO | None = None,
+    function: Callable[[Run], dict[str, Any]] = execute_run,
+    on_rows: Callable[[list[dict[str, Any]], Any], None] | None = None,
+    batch_rows: int = 64,
+    flush_seconds: float = 2.0,
+) -> CampaignOutcome:
+    """Run every run whose key is not in ``store`` and append its row as it finishes.
+
+    Parameters
+    ----------
+    runs : sequence of Run
+        The campaign (keys distinct: :func:`verify.campaign.runs.expand`).
+    store : ResultStore
+        Where rows go; its keys are skipped (resuming is the default behaviour).
+    client : distributed.Client, optional
+        Use this client (not closed here); else ``scheduler`` or a new LocalCluster.
+    scheduler : str, optional
+        Address of an existing scheduler, ``tcp://HOST:PORT``.
+    workers : int
+        Worker processes of the LocalCluster (one thread each).
+    progress : bool
+        Show the one-line progress on ``stream`` (stderr) when it is a terminal.
+    function : callable
+        The task (default :func:`verify.campaign.execute.execute_run`).
+    on_rows : callable, optional
+        Called with each batch of rows after it is stored, and the client.
+
+    Returns
+    -------
+    CampaignOutcome
+    """
+    start = time.perf_counter()
+    stored = store.keys()
+    pending = [r for r in runs if r.key not in stored]
+    outcome = CampaignOutcome(total=len(runs), stored_before=len(runs) - len(pending))
+    bar = CampaignProgress(len(runs), outcome.stored_before, stream=stream, enabled=progress)
+    if not pending:
+        return outcome
+    owned = connect(scheduler, workers) if client is None else contextlib.nullcontext(client)
+    buffer: list[dict[str, Any]] = []
+    first = 0.0
+
+    def flush(client: Any) -> None:
+        nonlocal buffer
+        if not buffer:
+            return
+        rows, buffer = buffer, []
+        outcome.written += store.append(rows)
+        if on_rows is not None:
+            on_rows(rows, client)
+
+    with _quiet_distributed(), owned as dask:
+        from distributed import as_completed
+
+        outcome.engine = str(getattr(dask.scheduler, "address", "") or "")
+        outcome.workers = len(dask.scheduler_info().get("workers", {}))
+        futures = dask.map(function, pending, key=[TASK_PREFIX + r.key for r in pending],
+                           pure=False)
+        live = {f.key: f for f in futures}  # a consumed future is dropped (its result freed)
+        del futures
+        done = as_completed(list(live.values()), loop=dask.loop, with_results=True,
+                            raise_errors=False)
+        try:
+            bar.update(force=True)
+            while not done.is_empty():
+                batch = done.next_batch(block=False)
+                for future, result in batch:
+                    live.pop(future.key, None)
+                    if future.status != "finished" or not isinstance(result, dict):
+                        outcome.lost.append((str(future.key)[len(TASK_PREFIX):],
+                                             _why(future, result)))
+                        continue
+                    if not buffer:
+                        first = time.perf_counter()
+                    buffer.append(result)
+                    outcome.raised += result.get("error") is not None
+                    bar.update(1, result.get("error") is not None)
+                if buffer and (len(buffer) >= batch_rows
+                               or time.perf_counter() - first >= flush_seconds):
+                    flush(dask)
+                bar.update()
+                if not batch:
+                    time.sleep(0.05)
+            flush(dask)
+        finally:
+            try:
+                flush(dask)  # rows in hand are results: keep them even when interrupted
+            finally:
+                dask.cancel(list(live.values()))
+                bar.close()
+                outcome.seconds = time.perf_counter() - start
+    return outcome
+
+
+__all__ = ["CampaignOutcome", "connect", "run_campaign"]

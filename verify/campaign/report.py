@@ -1,0 +1,495 @@
+"""The campaign report: where the properties held over the swept parameters, and why not.
+
+In: the campaign's runs (in spec order) and their stored rows. Out: Markdown and HTML
+with figures (PNG bytes that depend only on the data, :mod:`verify.report.figure_bytes`)
+and ``commands.txt`` (one ``verify simulate`` line per run). Sections:
+
+* the humans, each with the passivity gate's verdict on its model file
+  (:func:`verify.passivity.decide`, exact; computed once per file content). Theorem 1
+  assumes a passive human (Assumption 1, item 5), so a run with a human that is not
+  passive is outside the theorem whatever its outcome;
+* per property, a map over k_s and the other swept parameters: how many runs held,
+  failed, or had an assumption fail along the trajectory (Lemma 1 needs sym(R_rl) > 0;
+  Theorem 1's convergence a constant reference and a storage function);
+* the convergence time of |dbar - d_r| against k_s per human (median and range over
+  seeds; the first time after which it stays below the threshold);
+* the runs that failed a property or raised, with parameters and the command that
+  reproduces each.
+
+The text is a function of the spec and the rows, except the final "Timings" block
+(wall times, workers), kept last so that two reports of the same campaign differ only
+there.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+import statistics
+from collections import defaultdict
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from verify.campaign.execute import (
+    ASSUMPTION,
+    FAILED,
+    HELD,
+    NOT_APPLICABLE,
+    NOT_CHECKED,
+    column,
+)
+from verify.campaign.reproduce import simulate_command
+from verify.campaign.runs import Human, Run
+from verify.inputs.campaign_spec import CampaignSpec
+
+TIMINGS_HEADING = "Timings (not reproducible)"
+MAX_LISTED = 200  # failing runs listed in the report text (all are in commands.txt)
+
+PROPERTY_TITLE = {
+    "stealthiness": "stealthiness (Section 2: dbar unchanged by the autonomous input)",
+    "quasi-average": "R-bar e3 = dbar (Section 3)",
+    "lemma1": "Lemma 1 (tr(R-bar_r) >= 1 while sym(R_rl) > 0)",
+    "lyapunov": "Theorem 1: V non-increasing, V' below eq. (9)",
+    "lasalle": "Theorem 1: convergence (|dbar - d_r| to 10% of its peak by T)",
+}
+
+
+# ---------------------------------------------------------------- gate verdicts
+
+
+_GATE_CACHE: dict[tuple[object, ...], tuple[str, str]] = {}
+
+
+def gate_verdict(human: Human) -> tuple[str, str]:
+    """(verdict, reason) of the passivity gate for a human, once per file content."""
+    key = tuple(human.identity().items())
+    if key in _GATE_CACHE:
+        return _GATE_CACHE[key]
+    if human.kind == "model":
+        from verify.inputs.campaign_spec import parse_model_bytes
+        from verify.passivity import decide
+
+        decision = decide(parse_model_bytes(human.text or b"", human.label))
+        found = (str(decision.verdict), " ".join(decision.reason.split()))
+    elif human.kind == "static":
+        gain = float(human.gain or 0.0)
+        found = (("passive", "K + K^T = 2 gain I >= 0") if gain >= 0
+                 else ("not passive", "K + K^T = 2 gain I < 0"))
+    else:
+        found = ("not established", "the VR operator is not an LTI model; the gate does not "
+                 "apply")
+    _GATE_CACHE[key] = found
+    return found
+
+
+# ---------------------------------------------------------------- a tiny document model
+
+
+@dataclass
+class Table:
+    header: list[str]
+    rows: list[list[str]]
+
+
+@dataclass
+class Figure:
+    path: str  # relative to the report
+    alt: str
+
+
+@dataclass
+class Code:
+    text: str
+
+
+Block = tuple[str, Any]  # ("h1" | "h2" | "p", text) or ("table" | "figure" | "code", obj)
+
+
+def _md_cell(text: str) -> str:
+    return text.replace("|", "\\|").replace("\n", " ")
+
+
+def render_markdown(blocks: Sequence[Block]) -> str:
+    out: list[str] = []
+    for kind, item in blocks:
+        if kind == "h1":
+            out += [f"# {item}", ""]
+        elif kind == "h2":
+            out += [f"## {item}", ""]
+        elif kind == "p":
+            out += [item, ""]
+        elif kind == "table":
+            out.append("| " + " | ".join(_md_cell(h) for h in item.header) + " |")
+            out.append("|" + "---|" * len(item.header))
+            out += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in item.rows]
+            out.append("")
+        elif kind == "figure":
+            out += [f"![{item.alt}]({item.path})", ""]
+        elif kind == "code":
+            out += ["```", item.text.rstrip("\n"), "```", ""]
+    return "\n".join(out).rstrip("\n") + "\n"
+
+
+def render_html(blocks: Sequence[Block], title: str) -> str:
+    e = html.escape
+    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
+           f"<title>{e(title)}</title>",
+           "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;}"
+           "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;"
+           "padding:2px 6px;text-align:left}pre{background:#f4f4f4;padding:0.6em;"
+           "overflow-x:auto}img{max-width:100%}</style>", "</head><body>"]
+    for kind, item in blocks:
+        if kind in ("h1", "h2"):
+            out.append(f"<{kind}>{e(item)}</{kind}>")
+        elif kind == "p":
+            out.append(f"<p>{e(item)}</p>")
+        elif kind == "table":
+            out.append("<table><thead><tr>" + "".join(f"<th>{e(h)}</th>" for h in item.header)
+                       + "</tr></thead><tbody>")
+            out += ["<tr>" + "".join(f"<td>{e(c)}</td>" for c in row) + "</tr>"
+                    for row in item.rows]
+            out.append("</tbody></table>")
+        elif kind == "figure":
+            out.append(f'<figure><img src="{e(item.path)}" alt="{e(item.alt)}"></figure>')
+        elif kind == "code":
+            out.append(f"<pre>{e(item.text)}</pre>")
+    out.append("</body></html>")
+    return "\n".join(out) + "\n"
+
+
+# ---------------------------------------------------------------- aggregation
+
+
+def _num(x: float | None, digits: int = 4) -> str:
+    if x is None or (isinstance(x, float) and math.isnan(x)):
+        return "-"
+    return f"{x:.{digits}g}"
+
+
+def varying(runs: Sequence[Run]) -> list[str]:
+    """The swept parameters other than the human, k_s and the seed that take > 1 value."""
+    names = ("n", "autonomous", "reference", "seconds", "step")
+    return [p for p in names if len({getattr(r, p) for r in runs}) > 1]
+
+
+def setting(run: Run, axes: Sequence[str]) -> str:
+    """The label of a run's row in the maps: its human and the other varying parameters."""
+    def shown(value: object) -> str:
+        return _num(value) if isinstance(value, float) else str(value)
+
+    extra = ", ".join(f"{a} = {shown(getattr(run, a))}" for a in axes)
+    return run.human.label + (f" ({extra})" if extra else "")
+
+
+@dataclass
+class Campaign:
+    """Runs and rows of a campaign, and the aggregates the report shows."""
+
+    spec: CampaignSpec
+    runs: list[Run]
+    rows: dict[str, dict[str, Any]]
+
+    @property
+    def axes(self) -> list[str]:
+        return varying(self.runs)
+
+    def settings(self) -> list[str]:
+        seen: dict[str, None] = {}
+        for r in self.runs:
+            seen.setdefault(setting(r, self.axes), None)
+        return list(seen)
+
+    def k_values(self) -> list[float]:
+        return sorted({r.k_s for r in self.runs})
+
+    def cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
+        out: dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]] = defaultdict(list)
+        for r in self.runs:
+            if r.key in self.rows:
+                out[setting(r, self.axes), r.k_s].append((r, self.rows[r.key]))
+        return out
+
+    def humans(self) -> list[Human]:
+        seen: dict[tuple[object, ...], Human] = {}
+        for r in self.runs:
+            seen.setdefault(tuple(r.human.identity().items()), r.human)
+        return list(seen.values())
+
+
+def _counts(pairs: Sequence[tuple[Run, dict[str, Any]]], prop: str) -> dict[str, int]:
+    counts = {HELD: 0, FAILED: 0, ASSUMPTION: 0, "error": 0, NOT_APPLICABLE: 0}
+    for _, row in pairs:
+        if row.get("error"):
+            counts["error"] += 1
+        else:
+            status = row.get(column(prop)) or NOT_CHECKED
+            if status in counts:
+                counts[status] += 1
+    return counts
+
+
+def _cell_text(counts: dict[str, int], total: int) -> str:
+    if counts[NOT_APPLICABLE] == total:
+        return "n/a"
+    text = f"{counts[HELD]}/{total} held"
+    notes = [f"{counts[FAILED]} FAILED"] if counts[FAILED] else []
+    if counts[ASSUMPTION]:
+        notes.append(f"{counts[ASSUMPTION]} assumption failed")
+    if counts["error"]:
+        notes.append(f"{counts['error']} raised")
+    if counts[NOT_APPLICABLE]:
+        notes.append(f"{counts[NOT_APPLICABLE]} n/a")
+    return text + (f" ({', '.join(notes)})" if notes else "")
+
+
+def convergence_summary(pairs: Sequence[tuple[Run, dict[str, Any]]]) -> tuple[
+        list[float], int]:
+    """Convergence times of the runs that converged, and how many did not."""
+    times = [row["convergence_time"] for _, row in pairs
+             if not row.get("error") and row.get("convergence_time") is not None]
+    return times, len(pairs) - len(times)
+
+
+def _convergence_text(pairs) -> str:
+    times, never = convergence_summary(pairs)
+    if not times:
+        return f"none of {len(pairs)} converged"
+    text = f"{statistics.median(times):.3g} s"
+    if min(times) != max(times):
+        text += f" [{min(times):.3g}, {max(times):.3g}]"
+    return text + (f" ({never} of {len(pairs)} not converged)" if never else "")
+
+
+# ---------------------------------------------------------------- figures
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def property_figure(c: Campaign) -> bytes:
+    """One panel per checked property: the fraction of runs that held, setting x k_s."""
+    import numpy as np
+
+    from verify.report.figure_bytes import figure_bytes
+
+    plt = _pyplot()
+    props = list(c.spec.properties)
+    settings, ks = c.settings(), c.k_values()
+    cells = c.cells()
+    cols = min(3, len(props))
+    rows = -(-len(props) // cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(2.0 + (0.8 + 0.45 * len(ks)) * cols,
+                                                  (0.9 + 0.3 * len(settings)) * rows + 0.4),
+                             squeeze=False, layout="constrained")
+    for ax in axes.flat[len(props):]:
+        ax.set_visible(False)
+    for ax, prop in zip(axes.flat, props, strict=False):
+        grid = np.full((len(settings), len(ks)), np.nan)
+        for i, s in enumerate(settings):
+            for j, k in enumerate(ks):
+                pairs = cells.get((s, k), [])
+                counts = _counts(pairs, prop)
+                judged = counts[HELD] + counts[FAILED]
+                if judged:
+                    grid[i, j] = counts[HELD] / judged
+                label = "n/a" if not pairs else (
+                    f"{counts[HELD]}/{len(pairs)}" + ("*" if counts[ASSUMPTION] else ""))
+                ax.text(j, i, label, ha="center", va="center", fontsize=7)
+        cmap = plt.get_cmap("RdYlGn").with_extremes(bad="0.85")
+        ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
+        ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
+        first = ax in axes[:, 0]
+        ax.set_yticks(range(len(settings)), settings if first else [""] * len(settings),
+                      fontsize=7)
+        ax.set_xlabel("k_s", fontsize=8)
+        ax.set_title(prop, fontsize=9)
+    fig.suptitle("runs held / runs (* some had an assumption fail; grey: none judged)",
+                 fontsize=8)
+    return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
+
+
+def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
+    """Convergence time of |dbar - d_r| against k_s per setting (median, range, misses)."""
+    from verify.report.figure_bytes import figure_bytes
+
+    plt = _pyplot()
+    cells = c.cells()
+    fig, ax = plt.subplots(figsize=(6.4, 3.8))
+    top = max(r.seconds for r in c.runs)
+    for i, s in enumerate(c.settings()):
+        xs, med, lo, hi, miss = [], [], [], [], []
+        for k in c.k_values():
+            times, never = convergence_summary(cells.get((s, k), []))
+            if times:
+                xs.append(k)
+                med.append(statistics.median(times))
+                lo.append(med[-1] - min(times))
+                hi.append(max(times) - med[-1])
+            if never:
+                miss.append(k)
+        color = f"C{i % 10}"
+        ax.errorbar(xs, med, yerr=[lo, hi], color=color, marker="o", capsize=3,
+                    label=f"{s} [{gates.get(s, '')}]")
+        if miss:
+            ax.plot(miss, [top * (1.03 + 0.02 * i)] * len(miss), "x", color=color)
+    ax.axhline(top, color="k", lw=0.5, ls="--")
+    ax.set_xlabel("k_s")
+    ax.set_ylabel("convergence time [s]")
+    ax.set_title(f"|dbar - d_r| < {c.spec.convergence_threshold:g} from then on "
+                 "(x: not converged by T)", fontsize=9)
+    ax.legend(fontsize=7)
+    return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
+
+
+# ---------------------------------------------------------------- the report
+
+
+def _human_path(human: Human, cwd: Path | None) -> str:
+    from verify.campaign.reproduce import shown_path
+
+    return "-" if human.path is None else shown_path(human.path, cwd)
+
+
+def _parameters(run: Run) -> list[str]:
+    return [run.key[:12], run.human.label, f"{run.k_s:g}", str(run.n), str(run.seed),
+            run.autonomous, run.reference, f"{run.seconds:g}", f"{run.step:.4g}"]
+
+
+PARAMETER_HEADER = ["key", "human", "k_s", "n", "seed", "autonomous", "reference",
+                    "T [s]", "step [s]"]
+
+
+def build_blocks(c: Campaign, *, cwd: Path | None = None
+                 ) -> tuple[list[Block], dict[str, bytes], str]:
+    """The report's blocks (reproducible part), its figures and commands.txt."""
+    spec = c.spec
+    blocks: list[Block] = [("h1", f"Campaign: {spec.name}")]
+    if spec.description:
+        blocks.append(("p", spec.description))
+    stored = [r for r in c.runs if r.key in c.rows]
+    raised = [r for r in stored if c.rows[r.key].get("error")]
+    axes = ", ".join(f"{len(v)} {name}" for name, v in (
+        ("humans", c.humans()), ("k_s", spec.k_s), ("n", spec.n), ("seeds", spec.seeds),
+        ("autonomous inputs", spec.autonomous), ("references", spec.reference),
+        ("run lengths", spec.seconds), ("steps", spec.step)) if len(v) > 1)
+    blocks.append(("p", f"{len(c.runs)} runs ({axes or 'one setting'}); {len(stored)} stored, "
+                   f"{len(raised)} raised. Properties checked: "
+                   f"{', '.join(spec.properties) or 'none'}, each with runs at steps h and "
+                   "h/2 (the step-doubling tolerance of verify.sim.properties). Spec "
+                   f"sha256 {spec.source_sha256[:16] or '-'}."))
+
+    gates = {}
+    human_rows = []
+    for h in c.humans():
+        verdict, reason = gate_verdict(h)
+        short = reason if len(reason) <= 160 else reason[:157] + "..."
+        human_rows.append([h.label, _human_path(h, cwd), h.sha256[:12] or "-", verdict, short])
+        gates[h.label] = verdict
+    blocks += [("h2", "Humans and their passivity verdicts"),
+               ("p", "Theorem 1 assumes a passive human (Assumption 1, item 5); the verdict "
+                "is the exact gate's (verify gate) on the model file as written."),
+               ("table", Table(["human", "file", "sha256", "gate", "reason"], human_rows))]
+
+    settings, ks, cells = c.settings(), c.k_values(), c.cells()
+    gate_of = {setting(r, c.axes): gates.get(r.human.label, "") for r in c.runs}
+    header = ["setting [gate]", *[f"k_s = {k:g}" for k in ks]]
+    blocks.append(("h2", "Properties over the swept parameters"))
+    if c.axes:
+        blocks.append(("p", f"Settings differ in the human and in {', '.join(c.axes)}; each "
+                       "cell counts the runs over seeds."))
+    for prop in spec.properties:
+        rows = [[f"{s} [{gate_of[s]}]", *[_cell_text(_counts(cells.get((s, k), []), prop),
+                                                    len(cells.get((s, k), [])))
+                                         if cells.get((s, k)) else "-" for k in ks]]
+                for s in settings]
+        blocks += [("p", PROPERTY_TITLE[prop]), ("table", Table(header, rows))]
+    figures: dict[str, bytes] = {}
+    if spec.properties and stored:
+        figures["figures/properties.png"] = property_figure(c)
+        blocks.append(("figure", Figure("figures/properties.png", "property map")))
+
+    blocks.append(("h2", "Convergence time of |dbar - d_r|"))
+    blocks.append(("p", "The first sample time after which |dbar - d_r| stays below "
+                   f"{spec.convergence_threshold:g} until the end of the run; median "
+                   "[min, max] over the runs of a cell that converged."))
+    rows = [[f"{s} [{gate_of[s]}]", *[_convergence_text(cells[(s, k)]) if cells.get((s, k))
+                                     else "-" for k in ks]] for s in settings]
+    blocks.append(("table", Table(header, rows)))
+    if stored:
+        figures["figures/convergence.png"] = convergence_figure(c, gate_of)
+        blocks.append(("figure", Figure("figures/convergence.png", "convergence time")))
+
+    failing = [(r, [p for p in spec.properties if c.rows[r.key].get(column(p)) == FAILED])
+               for r in stored]
+    failing = [(r, ps) for r, ps in failing if ps]
+    blocks.append(("h2", f"Runs that failed a property ({len(failing)})"))
+    if failing:
+        rows = []
+        for r, ps in failing[:MAX_LISTED]:
+            row = c.rows[r.key]
+            why = "; ".join(f"{p}: {_num(row[f'{column(p)}_violation'], 3)} > "
+                            f"{_num(row[f'{column(p)}_tolerance'], 3)}" for p in ps)
+            rows.append([*_parameters(r), why])
+        blocks.append(("table", Table([*PARAMETER_HEADER, "failed (violation > tolerance)"],
+                                      rows)))
+        if len(failing) > MAX_LISTED:
+            blocks.append(("p", f"... and {len(failing) - MAX_LISTED} more (the store has "
+                           "them all)."))
+        blocks.append(("p", "Reproduce one of them (the same scenario, seed and human; "
+                       "--check repeats the property checks):"))
+        blocks.append(("code", Code("\n".join(simulate_command(r, cwd=cwd)
+                                              for r, _ in failing[:10]))))
+    else:
+        blocks.append(("p", "None."))
+    if raised:
+        blocks.append(("h2", f"Runs that raised ({len(raised)})"))
+        blocks.append(("table", Table([*PARAMETER_HEADER, "error"], [
+            [*_parameters(r), c.rows[r.key]["error"]] for r in raised[:MAX_LISTED]])))
+    missing = [r for r in c.runs if r.key not in c.rows]
+    if missing:
+        blocks.append(("p", f"{len(missing)} runs have no row yet (interrupted or lost); "
+                       "rerun the campaign with --resume."))
+    blocks.append(("h2", "Reproducing a run"))
+    blocks.append(("p", "Every run is rebuilt by verify simulate with the same settings "
+                   "(commands.txt has one line per run, keyed by the run key), e.g.:"))
+    if c.runs:
+        blocks.append(("code", Code(simulate_command(c.runs[0], cwd=cwd))))
+    commands = "".join(f"{r.key}  {simulate_command(r, cwd=cwd)}\n" for r in c.runs)
+    return blocks, figures, commands
+
+
+def timing_blocks(c: Campaign, session: dict[str, str]) -> list[Block]:
+    """The final block: wall times of the stored runs and of this session."""
+    walls = [row["wall_time"] for row in c.rows.values() if row.get("wall_time") is not None]
+    rows = [[k, v] for k, v in session.items()]
+    if walls:
+        rows += [["wall time per run (mean, max)", f"{statistics.mean(walls):.3g} s, "
+                  f"{max(walls):.3g} s"], ["wall time of all runs", f"{sum(walls):.4g} s"]]
+    return [("h2", TIMINGS_HEADING), ("table", Table(["", "value"], rows))]
+
+
+def write_report(c: Campaign, out: Path, session: dict[str, str], *,
+                 cwd: Path | None = None) -> list[Path]:
+    """Write campaign.md, campaign.html, figures and commands.txt into ``out``."""
+    from verify.report.atomic import write_all_atomic
+
+    blocks, figures, commands = build_blocks(c, cwd=cwd)
+    blocks = blocks + timing_blocks(c, session)
+    files: dict[Path, bytes | str] = {out / name: data for name, data in figures.items()}
+    files[out / "commands.txt"] = commands
+    files[out / "campaign.md"] = render_markdown(blocks)
+    files[out / "campaign.html"] = render_html(blocks, f"Campaign: {c.spec.name}")
+    write_all_atomic(files)
+    return list(files)
+
+
+__all__ = ["TIMINGS_HEADING", "Campaign", "build_blocks", "gate_verdict", "render_html",
+           "render_markdown", "write_report"]

@@ -1,0 +1,188 @@
+"""A campaign spec expanded into runs, each keyed by a hash of what determines its result.
+
+A run is one closed-loop scenario of Sections 2-3 (the ``verify simulate`` scenario for
+its n, k_s, seed, autonomous input and reference) with one human operator, integrated
+for ``seconds`` with ``step`` and checked for the chosen properties. Its key is a
+SHA-256 of every parameter that can change its row: the numbers (by their exact float
+value), the names, the property list, the convergence threshold, and for a model-file
+human the hash of the file's bytes (not its path: a renamed file keeps its runs, an
+edited one gets new ones). Runs with equal keys are merged.
+
+Members of a human family are drawn here (seeded) and turned into model files whose
+numbers are the exact decimal expansions of the drawn floats, so that a member's file
+denotes exactly the model that was drawn and ``verify simulate --model`` rebuilds it.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+from dataclasses import dataclass
+from decimal import Decimal
+from pathlib import Path
+
+import numpy as np
+
+from verify.inputs.campaign_spec import CampaignSpec, HumanEntry
+from verify.so3 import Array
+
+KEY_VERSION = 1  # bump when the meaning of a row's columns changes
+
+
+@dataclass(frozen=True)
+class Human:
+    """The human of a run: ``kind`` model (``text`` a model file's bytes), vr or static."""
+
+    kind: str
+    label: str
+    text: bytes | None = None
+    sha256: str = ""
+    gain: float | None = None
+    path: Path | None = None  # where the model file lives (for the reproducing command)
+
+    def identity(self) -> dict[str, object]:
+        """What of the human enters the run key (never the path or the label)."""
+        if self.kind == "model":
+            return {"kind": "model", "sha256": self.sha256}
+        if self.kind == "static":
+            return {"kind": "static", "gain": float(self.gain).hex()}
+        return {"kind": self.kind}
+
+
+@dataclass(frozen=True)
+class Run:
+    """One run of a campaign; :attr:`key` identifies its row in the store."""
+
+    key: str
+    human: Human
+    k_s: float
+    n: int
+    seed: int
+    autonomous: str
+    reference: str
+    seconds: float
+    step: float
+    properties: tuple[str, ...]
+    convergence_threshold: float
+
+
+def run_key(human: Human, k_s: float, n: int, seed: int, autonomous: str, reference: str,
+            seconds: float, step: float, properties: tuple[str, ...], threshold: float) -> str:
+    """A stable hash of the run's parameters (floats by their exact binary value)."""
+    payload = {
+        "version": KEY_VERSION, "human": human.identity(), "k_s": float(k_s).hex(), "n": n,
+        "seed": seed, "autonomous": autonomous, "reference": reference,
+        "seconds": float(seconds).hex(), "step": float(step).hex(),
+        "properties": list(properties), "convergence_threshold": float(threshold).hex(),
+    }
+    text = json.dumps(payload, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()[:24]
+
+
+def exact_decimal(x: float) -> str:
+    """The exact decimal expansion of a float, as a TOML number (it reads back exactly)."""
+    if not np.isfinite(x):
+        raise ValueError(f"not a finite number: {x}")
+    text = format(Decimal(float(x)), "f")
+    return text if "." in text else text + ".0"
+
+
+def _matrix(M: Array) -> str:
+    M = np.atleast_2d(np.asarray(M, dtype=float))
+    if M.size == 0:
+        return "[]"
+    rows = (", ".join(exact_decimal(v) for v in row) for row in M)
+    return "[" + ", ".join(f"[{r}]" for r in rows) + "]"
+
+
+def model_file_text(name: str, A: Array, B: Array, C: Array, D: Array, note: str) -> bytes:
+    """A state-space model file (``verify gate`` format) holding exactly these floats."""
+    A = np.asarray(A, dtype=float)
+    lines = [f"# {note}", f"name = {json.dumps(name)}", "", "[state_space]"]
+    if A.size == 0:
+        lines += ["A = []", "B = []", "C = []"]
+    else:
+        lines += [f"A = {_matrix(A)}", f"B = {_matrix(B)}", f"C = {_matrix(C)}"]
+    lines.append(f"D = {_matrix(D)}")
+    return ("\n".join(lines) + "\n").encode()
+
+
+def family_member(family: str, seed: int) -> Human:
+    """Member ``seed`` of a human family, as a model file (module docstring)."""
+    from verify.sim.humans import StaticGainHuman
+    from verify.sim.random_scenarios import random_passive_human
+
+    if family != "random-passive":
+        raise ValueError(f"unknown family {family!r}")
+    drawn = random_passive_human(np.random.default_rng(seed))
+    name = f"random-passive seed {seed}"
+    note = ("drawn by verify.sim.random_scenarios.random_passive_human(default_rng("
+            f"{seed})); numbers are the exact values of the drawn floats")
+    if isinstance(drawn, StaticGainHuman):
+        text = model_file_text(name, np.zeros((0, 0)), None, None, drawn.K, note)
+    else:
+        text = model_file_text(name, drawn.A, drawn.B, drawn.C, drawn.D, note)
+    return Human("model", name, text=text, sha256=hashlib.sha256(text).hexdigest())
+
+
+def _humans(entry: HumanEntry) -> list[Human]:
+    if entry.kind == "model":
+        return [Human("model", entry.label, text=entry.text, sha256=entry.sha256 or "",
+                      path=entry.path)]
+    if entry.kind == "family":
+        return [family_member(entry.family or "", entry.seed + i) for i in range(entry.count)]
+    return [Human(entry.kind, entry.label, gain=entry.gain)]
+
+
+def _distinct_labels(humans: list[Human]) -> list[Human]:
+    """Humans with one label per identity (two files named alike get their hash added)."""
+    from dataclasses import replace
+
+    identities: dict[str, set[tuple[object, ...]]] = {}
+    for h in humans:
+        identities.setdefault(h.label, set()).add(tuple(h.identity().items()))
+    return [replace(h, label=f"{h.label} [{h.sha256[:8]}]")
+            if len(identities[h.label]) > 1 and h.sha256 else h for h in humans]
+
+
+def expand(spec: CampaignSpec) -> list[Run]:
+    """Every run of ``spec``, in a fixed order (humans, k_s, n, autonomous, reference,
+    seconds, step, seeds), runs with equal keys merged."""
+    humans = _distinct_labels([h for entry in spec.humans for h in _humans(entry)])
+    runs: dict[str, Run] = {}
+    for human, k_s, n, auto, ref, T, h, seed in itertools.product(
+            humans, spec.k_s, spec.n, spec.autonomous, spec.reference, spec.seconds,
+            spec.step, spec.seeds):
+        key = run_key(human, k_s, n, seed, auto, ref, T, h, spec.properties,
+                      spec.convergence_threshold)
+        runs.setdefault(key, Run(key, human, k_s, n, seed, auto, ref, T, h, spec.properties,
+                                 spec.convergence_threshold))
+    return list(runs.values())
+
+
+def write_family_files(runs: list[Run], folder: Path) -> list[Run]:
+    """Write the model files of drawn humans into ``folder`` (atomically) and return the
+    runs with those paths set, so that their reproducing commands can name a file."""
+    from dataclasses import replace
+
+    from verify.report.atomic import write_atomic
+
+    placed: dict[str, Path] = {}
+    out = []
+    for run in runs:
+        human = run.human
+        if human.kind == "model" and human.path is None and human.text is not None:
+            if human.sha256 not in placed:
+                stem = human.label.replace(" ", "-")
+                path = folder / f"{stem}-{human.sha256[:12]}.toml"
+                if not (path.is_file() and path.read_bytes() == human.text):
+                    write_atomic(path, human.text)
+                placed[human.sha256] = path
+            run = replace(run, human=replace(human, path=placed[human.sha256]))
+        out.append(run)
+    return out
+
+
+__all__ = ["Human", "Run", "exact_decimal", "expand", "family_member", "model_file_text",
+           "run_key", "write_family_files"]
