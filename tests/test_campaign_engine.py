@@ -95,8 +95,8 @@ def test_interrupted_campaign_resumes_without_repeating_runs(tmp_path, runs, clu
 
     with pytest.raises(KeyboardInterrupt):
         run_campaign(runs, store, client=cluster, progress=False,
-                     function=functools.partial(marked_run, markers=str(first)),
-                     on_rows=interrupt, batch_rows=1)
+                     function=functools.partial(marked_run, markers=str(first), pause=0.5),
+                     on_rows=interrupt, batch_rows=1)  # paused runs: the interrupt lands
     stored = store.keys()
     assert stop_after <= len(stored) < len(runs)
     parts_before = {p: p.read_bytes() for p in store.parts()}

@@ -74,6 +74,17 @@ def test_every_parameter_enters_the_key(tmp_path, extra, checks):
     assert not base & other
 
 
+def test_the_simulator_code_enters_the_key(tmp_path, monkeypatch):
+    """Rows computed by other simulator code are not resumed as if they were this code's."""
+    import verify.campaign.runs as runs
+
+    before = keys(spec_at(tmp_path / "a", KS3, KS25))
+    assert runs.code_fingerprint() == runs.code_fingerprint.__wrapped__()
+    monkeypatch.setattr(runs, "code_fingerprint", lambda: "another version")
+    after = keys(spec_at(tmp_path / "b", KS3, KS25))
+    assert not set(before) & set(after)
+
+
 def test_family_members_are_exact_model_files():
     from verify.sim.random_scenarios import random_passive_human
 

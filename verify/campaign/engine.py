@@ -22,6 +22,7 @@ from __future__ import annotations
 import contextlib
 import logging
 import time
+import uuid
 from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any, TextIO
@@ -168,8 +169,12 @@ def run_campaign(
 
         outcome.engine = str(getattr(dask.scheduler, "address", "") or "")
         outcome.workers = len(dask.scheduler_info().get("workers", {}))
-        futures = dask.map(function, pending, key=[TASK_PREFIX + r.key for r in pending],
-                           pure=False)
+        # Task keys name the run and this session: a session interrupted on a long-lived
+        # cluster may leave its cancelled tasks there for a while, and a resumed session
+        # must not be handed their cancellation.
+        session = uuid.uuid4().hex[:8]
+        run_of = {f"{TASK_PREFIX}{r.key}-{session}": r.key for r in pending}
+        futures = dask.map(function, pending, key=list(run_of), pure=False)
         live = {f.key: f for f in futures}  # a consumed future is dropped (its result freed)
         del futures
         done = as_completed(list(live.values()), loop=dask.loop, with_results=True,
@@ -181,8 +186,7 @@ def run_campaign(
                 for future, result in batch:
                     live.pop(future.key, None)
                     if future.status != "finished" or not isinstance(result, dict):
-                        outcome.lost.append((str(future.key)[len(TASK_PREFIX):],
-                                             _why(future, result)))
+                        outcome.lost.append((run_of[future.key], _why(future, result)))
                         continue
                     if not buffer:
                         first = time.perf_counter()

@@ -15,6 +15,7 @@ denotes exactly the model that was drawn and ``verify simulate --model`` rebuild
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import itertools
 import json
@@ -28,6 +29,25 @@ from verify.inputs.campaign_spec import CampaignSpec, HumanEntry
 from verify.so3 import Array
 
 KEY_VERSION = 1  # bump when the meaning of a row's columns changes
+
+#: The code a row's figures depend on: the simulator, the paper's system, SO(3) maps and
+#: the per-run checks. Their bytes enter every run key, so ``--resume`` after a change of
+#: this code runs everything again instead of mixing rows of two versions in one store.
+_CODE = ("verify/sim", "verify/system", "verify/so3.py", "verify/campaign/execute.py")
+
+
+@functools.cache
+def code_fingerprint() -> str:
+    """SHA-256 (24 hex digits) of the source files in :data:`_CODE`, in path order."""
+    root = Path(__file__).resolve().parents[2]
+    digest = hashlib.sha256()
+    for entry in _CODE:
+        path = root / entry
+        files = sorted(path.rglob("*.py")) if path.is_dir() else [path]
+        for f in files:
+            digest.update(f.relative_to(root).as_posix().encode() + b"\0")
+            digest.update(f.read_bytes() + b"\0")
+    return digest.hexdigest()[:24]
 
 
 @dataclass(frozen=True)
@@ -71,7 +91,8 @@ def run_key(human: Human, k_s: float, n: int, seed: int, autonomous: str, refere
             seconds: float, step: float, properties: tuple[str, ...], threshold: float) -> str:
     """A stable hash of the run's parameters (floats by their exact binary value)."""
     payload = {
-        "version": KEY_VERSION, "human": human.identity(), "k_s": float(k_s).hex(), "n": n,
+        "version": KEY_VERSION, "code": code_fingerprint(), "human": human.identity(),
+        "k_s": float(k_s).hex(), "n": n,
         "seed": seed, "autonomous": autonomous, "reference": reference,
         "seconds": float(seconds).hex(), "step": float(step).hex(),
         "properties": list(properties), "convergence_threshold": float(threshold).hex(),
