@@ -15,6 +15,14 @@ vector, and the fit ratios (%) on the noisy identification data and on clean dat
 true operator's noise-free response to the same inputs; target > 90 %). ``--compare``
 also runs the ARX-started output-error baseline on the same data (the table of
 ``bench_identify_methods.py``). BLAS threads are pinned to 1 unless set.
+
+Measured with the defaults (50 seeds from 1000, n = 8, 6 trials, 20 Hz; about 7 min on
+a shared 2-core machine): per-parameter coverage 88-96 % (b1_1 94, b0_1 88, a1_1 96,
+a0_1 88, b1_2 94, b0_2 96, a1_2 92, a0_2 94, c12 90, c21 88), joint ellipsoid 76 %, no
+estimate far off; fit ratio on clean data mean 98.2 % / 98.5 % (min 94.2 % / 95.3 %), on
+the noisy identification data mean 74.6 % / 77.4 %. The standard errors are 10-50 %
+below the spread over seeds (the decimated closed-loop data are not fully covered by the
+asymptotic theory), which the joint ellipsoid shows most.
 """
 
 from __future__ import annotations

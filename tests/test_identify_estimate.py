@@ -10,6 +10,8 @@ proper and the operator noise v, held per sample, acts inside it).
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from scipy import signal
@@ -349,3 +351,27 @@ def test_coverage_study_on_simulated_so3_experiments_prints_its_numbers():
     assert est.shape == (3, 10) and np.all(np.isfinite(est))
     print("coverage:", np.round(study.coverage("riv+pem"), 2))
     print("fit on clean data:", [np.round(r.fit_clean["riv+pem"], 2) for r in study.repetitions])
+
+
+def test_refinements_on_the_search_bound_are_set_aside(monkeypatch):
+    """A refinement that ends on the box of denominators (poles at half the Nyquist
+    frequency) is never returned; when all do, the error says so in one line."""
+    import verify.identify.estimation as estimation
+    from verify.identify.pem import denominator_bounds
+
+    trials = closed_loop(5, trials=2, seconds=6.0)
+    real_refine = estimation.refine
+    calls = []
+
+    def on_bound(data, a0, zeros, d0=None):
+        fit = real_refine(data, a0, zeros, d0)
+        calls.append(1)
+        return replace(fit, a=denominator_bounds(len(fit.a), data.h))
+
+    monkeypatch.setattr(estimation, "refine", on_bound)
+    with pytest.raises(VerifyInputError) as err:
+        estimate_model(trials, Structure.paper())
+    assert "bound" in _one_line(err)
+    assert len(calls) == estimation.MAX_STARTS  # it looked further before giving up
+    h = trials[0].step
+    assert np.allclose(denominator_bounds(2, h), [2 * 0.5 * np.pi / h, (0.5 * np.pi / h) ** 2])

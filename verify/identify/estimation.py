@@ -46,7 +46,7 @@ import numpy as np
 from verify.errors import VerifyInputError
 from verify.identify.estimate import Estimate
 from verify.identify.experiment import Trial
-from verify.identify.pem import OutputFit, ar_start, refine
+from verify.identify.pem import OutputFit, ar_start, denominator_bounds, refine
 from verify.identify.prediction import fit_linear, lengths
 from verify.identify.quality import whiteness
 from verify.identify.riv import srivc
@@ -57,6 +57,9 @@ __all__ = ["METHODS", "estimate_model", "first_prefilters"]
 
 #: Highest order p of the AR noise model 1/D(q) tried when the output error is coloured.
 MAX_NOISE_ORDER = 6
+
+#: Most starting points refined per output (when the first ones end on the search bound).
+MAX_STARTS = 8
 
 #: How the estimator treats the start of a trial, see :func:`estimate_model`.
 INITIAL = "zero"
@@ -112,13 +115,18 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
     Candidates: the SRIVC denominators from each first prefilter and the grid of
     :func:`starting_denominators`. The ``starts`` candidates of least output-error cost
     (after eliminating the linear parameters) are refined; the refinement of least cost
-    is kept, then given a noise model if its residual is coloured
+    that ends inside the search box is kept (further candidates are refined, up to
+    MAX_STARTS, until one does), then given a noise model if its residual is coloured
     (:func:`with_noise_model`, when ``noise``). The grid is there because in this loop
     SRIVC can be ill-conditioned: the leader is noise-free, so u_h is close to a
     deterministic function of the derivative of e and the equation-error regressors of
     u_h and e are nearly collinear; the output-error criterion, whose predictor is
     causal, separates H(s) from that inverse relation (the operator noise at a sample
-    is not yet in e).
+    is not yet in e). On decimated data that separation weakens (the protocol's
+    zero-phase anti-aliasing filter lets e look slightly ahead), and a refinement can run
+    to the bound of the search box (:func:`verify.identify.pem.denominator_bounds`),
+    where the model imitates the leader's inverse; such a refinement is not a minimum
+    of the criterion inside the model class and is set aside.
     """
     candidates = []
     for lam in first_prefilters(data.h):
@@ -128,17 +136,26 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
     candidates += starting_denominators(poles, data.h)
     costs = [_cost(a0, data, zeros) for a0 in candidates]
     order = [k for k in np.argsort(costs, kind="stable") if np.isfinite(costs[k])]
+    upper = denominator_bounds(poles, data.h)
     best: OutputFit | None = None
-    for k in order[:starts]:
+    tried = 0
+    for k in order:
+        if tried >= MAX_STARTS or (tried >= starts and best is not None):
+            break
+        tried += 1
         try:
             fit = refine(data, candidates[k], zeros)
         except (np.linalg.LinAlgError, ValueError):
             continue
-        if np.isfinite(fit.cost) and (best is None or fit.cost < best.cost):
+        if not np.isfinite(fit.cost) or np.any(fit.a >= (1 - 1e-6) * upper):
+            continue  # on the search bound: the leader's inverse, not the operator
+        if best is None or fit.cost < best.cost:
             best = fit
     if best is None:
-        raise VerifyInputError(f"output {data.output + 1}: no starting point of the estimator "
-                               f"gave a finite fit; the data do not fit a {poles}-pole model")
+        raise VerifyInputError(
+            f"output {data.output + 1}: every refinement ran to the bound of the search "
+            f"(poles at half the Nyquist frequency) or failed; the data do not determine a "
+            f"{poles}-pole model (try a higher --rate or more trials)")
     return with_noise_model(data, best, zeros) if noise else best
 
 
