@@ -55,3 +55,23 @@ def test_lemma1_property_is_checked_until_the_premise_is_lost():
                         R_l0=so3.exp(np.array([0.0, 1.4, 0.0])))
     result = props.lemma1_invariance(props.RunPair.of(scenario, 2.0, 1 / 60))
     assert result.holds is True, result.line()
+
+
+def test_search_budget_never_makes_hypothesis_replay_flaky():
+    """Past its budget the search answers 'no' for new parameters only: the example it
+    found still fails when hypothesis replays it (a changed answer raised FlakyFailure)."""
+    from hypothesis import strategies as st
+
+    from verify.sim.counterexamples import _search
+
+    runs = []
+
+    def fails(x: int) -> bool:
+        runs.append(x)
+        return x > 10
+
+    for budget in (1, 3, 8, 40):
+        runs.clear()
+        found, calls = _search(st.integers(0, 10_000), fails, budget, 60)
+        assert calls == len(runs) <= budget
+        assert found is None or found > 10
