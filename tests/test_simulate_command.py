@@ -94,3 +94,28 @@ def test_bad_input_one_line_exit_2_and_nothing_written(tmp_path, case):
     assert expected in out.stderr
     assert len(out.stderr.strip().splitlines()) == 1 and "Traceback" not in out.stderr
     assert not out_dir.exists()
+
+
+def test_adaptive_flag_runs_error_controlled_steps(tmp_path, capsys):
+    """--adaptive RTOL takes far fewer steps than samples and keeps the sampled output."""
+
+    from verify.cli import main
+
+    model = Path(__file__).resolve().parents[1] / "verify/data/models/reconstructed_ks3p0.toml"
+    code = main(["simulate", "--model", str(model), "--seconds", "5", "--adaptive", "1e-8",
+                 "--no-plots", "--out", str(tmp_path / "a")])
+    out = capsys.readouterr().out
+    assert code == 0 and "adaptive steps (rtol 1e-08" in out
+    accepted = int(out.split("adaptive steps")[1].split("):")[1].split("accepted")[0])
+    assert 0 < accepted < 600  # 600 samples at 120 Hz
+    with np.load(tmp_path / "a" / "trajectory.npz") as data:
+        assert data["t"].shape == (601,)
+
+
+def test_adaptive_flag_refuses_a_bad_tolerance_before_running(tmp_path, capsys):
+    from verify.cli import main
+
+    assert main(["simulate", "--adaptive", "-1", "--out", str(tmp_path / "b")]) == 2
+    captured = capsys.readouterr()
+    assert "--adaptive must be a positive number" in captured.err
+    assert captured.out == "" and not (tmp_path / "b").exists()

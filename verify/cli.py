@@ -178,6 +178,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_sim.add_argument("--check", action="store_true",
                        help="also check stealthiness, R-bar e3 = dbar, Lemma 1, V decrease and "
                        "LaSalle on this run, within the integrator's error (3 more runs)")
+    p_sim.add_argument("--adaptive", type=float, metavar="RTOL", default=None,
+                       help="error-controlled steps (step doubling of CF4, atol = RTOL/100), "
+                       "still sampled every --step; default: fixed steps of --step")
     p_sim.add_argument("--log", type=Path, metavar="PATH", help="also write the trials (one per "
                        "reference segment) as an experiment log, .csv or .npz, for 'identify'")
     p_sim.add_argument("--operator-noise", type=float, default=0.0, metavar="STD",
@@ -343,7 +346,7 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
         n=args.n, k_s=args.ks, human=human, model=args.model, gain=args.gain,
         seconds=args.seconds, step=args.step, seed=args.seed, autonomous=args.autonomous,
         reference=args.reference, network=args.network, out=args.out, fmt=args.fmt,
-        plots=not args.no_plots, check=args.check, log=args.log,
+        plots=not args.no_plots, check=args.check, log=args.log, adaptive=args.adaptive,
         operator_noise=args.operator_noise, measurement_noise=args.measurement_noise))
 
 

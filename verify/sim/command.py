@@ -50,6 +50,7 @@ class SimulateSettings:
     log: Path | None = None  # also write the run's trials as an experiment log (.csv/.npz)
     operator_noise: float = 0.0  # std of white noise on u_h, held per loop period (model)
     measurement_noise: float = 0.0  # std of white noise on the logged e and u
+    adaptive: float | None = None  # rtol of error-controlled steps (None: fixed step)
 
 
 def build_human(s: SimulateSettings) -> tuple[Human, str]:
@@ -150,6 +151,7 @@ def run_simulate(s: SimulateSettings) -> int:
     if s.network is None and s.n > MAX_BODIES:
         raise VerifyInputError(f"--n {s.n}: at most {MAX_BODIES} bodies fit in memory here")
     noises = _check_log_settings(s)
+    rtol = None if s.adaptive is None else positive_real(s.adaptive, "--adaptive")
     human, human_line = build_human(s)
     scenario = build_scenario(s, human)
     if noises[0] > 0:
@@ -162,7 +164,13 @@ def run_simulate(s: SimulateSettings) -> int:
     progress = ProgressBar(seconds) if steps >= 600 else None
     every = max(1, round(0.1 / (seconds / steps)))  # bodies' directions at 10 Hz
     start = time.perf_counter()
-    traj = simulate(scenario, seconds, step, direction_every=every, progress=progress)
+    if rtol is None:
+        traj = simulate(scenario, seconds, step, direction_every=every, progress=progress)
+    else:
+        traj = simulate(scenario, seconds, step, direction_every=every, progress=progress,
+                        adaptive=True, rtol=rtol, atol=rtol / 100)
+        print(f"  adaptive steps (rtol {rtol:g}, atol {rtol / 100:g}): {traj.steps} accepted, "
+              f"{traj.rejected_steps} rejected; samples every {seconds / steps:.4g} s")
     wall = time.perf_counter() - start
     E = energy(traj)
     _summary(traj, E, wall)
