@@ -58,7 +58,7 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
-from verify.inputs.numbers import decimal_literal, parse_number, rational, real
+from verify.inputs.numbers import decimal_literal, parse_number, positive_real, rational, real
 from verify.inputs.toml import read_toml
 from verify.validation import shown
 
@@ -246,25 +246,14 @@ def _axis(data: dict[str, Any], key: str, where: str, convert: Callable[[Any, st
 
 
 def _gain(value: Any, where: str) -> float:
-    x = real(value, where)
-    if not x > 0:
-        raise VerifyInputError(f"{where} must be a positive number, got {shown(value)}; the "
-                               "coupling gain k_s of eq. (6) is > 0")
-    return x
-
-
-def _positive(value: Any, where: str) -> float:
-    x = real(value, where)
-    if not x > 0:
-        raise VerifyInputError(f"{where} must be a positive number, got {shown(value)}")
-    return x
+    return positive_real(value, where, "the coupling gain k_s of eq. (6) is > 0")
 
 
 def _step(value: Any, where: str) -> float:
     """A step: a number, or a fraction in quotes such as "1/120" (read, not evaluated)."""
     if isinstance(value, str):
         value = parse_number(value, where, '"1/120" or 0.004')
-    return _positive(value, where)
+    return positive_real(value, where)
 
 
 def _bodies(value: Any, where: str) -> int:
@@ -380,7 +369,7 @@ def parse_campaign_spec(data: dict[str, Any], source: Path) -> CampaignSpec:
     seeds = _axis(sweep, "seeds", at, _seed, integer=True)
     autonomous = _axis(sweep, "autonomous", at, _name(AUTONOMOUS), "consensus", ranged=False)
     reference = _axis(sweep, "reference", at, _name(REFERENCES), "constant", ranged=False)
-    seconds = _axis(sweep, "seconds", at, _positive, DEFAULT_SECONDS)
+    seconds = _axis(sweep, "seconds", at, positive_real, DEFAULT_SECONDS)
     step = _axis(sweep, "step", at, _step, DEFAULT_STEP)
     from verify.sim.run import step_count
 
@@ -410,7 +399,7 @@ def parse_campaign_spec(data: dict[str, Any], source: Path) -> CampaignSpec:
         chosen = {_name(PROPERTIES)(v, f"{where}: checks.properties[{i}]")
                   for i, v in enumerate(value)}
         properties = tuple(p for p in PROPERTIES if p in chosen)  # canonical order
-    threshold = _positive(checks.get("convergence_threshold", DEFAULT_THRESHOLD),
+    threshold = positive_real(checks.get("convergence_threshold", DEFAULT_THRESHOLD),
                           f"{where}: checks.convergence_threshold")
     spec = CampaignSpec(source, name, description, tuple(k_s), tuple(n), tuple(seeds),
                         tuple(autonomous), tuple(reference), tuple(seconds), tuple(step),

@@ -104,12 +104,11 @@ def real(value: Any, where: str) -> float:
     return x
 
 
-def positive_real(value: Any, where: str) -> float:
-    """A finite float > 0 (gains, durations, steps)."""
+def positive_real(value: Any, where: str, fix: str = "give a number > 0") -> float:
+    """A finite float > 0 (gains, durations, steps); ``fix`` ends the error message."""
     x = real(value, where)
     if not x > 0:
-        raise VerifyInputError(f"{where} must be a positive number, got {shown(value)}; give a "
-                               "number > 0")
+        raise VerifyInputError(f"{where} must be a positive number, got {shown(value)}; {fix}")
     return x
 
 
