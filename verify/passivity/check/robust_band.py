@@ -42,6 +42,7 @@ import flint
 from gmpy2 import mpq
 
 from verify.passivity.check import exact as ex
+from verify.passivity.check.qpoly import is_hurwitz
 
 Interval = tuple[Any, Any]
 
@@ -298,12 +299,7 @@ def check_linear_leaf(box: list[Interval], variable: str, shape: Shape, covarian
         if low < c:
             return LeafResult(False, f"first-order bound of {name} is {low}, below the "
                               f"claimed {c}")
-    if stability:
-        for i in range(2):
-            _, a = element(phi, i, shape, ExactOps)
-            if not kharitonov_stable(a):
-                return LeafResult(False, f"denominator {i + 1} fails Kharitonov's test")
-    return LeafResult(True, "")
+    return stable_denominators(phi, shape) if stability else LeafResult(True, "")
 
 
 # ------------------------------------------------------------------ stability (Kharitonov)
@@ -311,23 +307,21 @@ def check_linear_leaf(box: list[Interval], variable: str, shape: Shape, covarian
 
 def hurwitz(coefficients: Sequence[mpq]) -> bool:
     """Routh's test, exact: True iff the real polynomial (ascending coefficients, positive
-    leading one) has every root in Re s < 0; a zero in the first column gives False."""
-    desc = list(coefficients)[::-1]
-    if not desc or desc[0] <= 0:
+    leading one) has every root in Re s < 0 (:func:`verify.passivity.check.qpoly.is_hurwitz`);
+    an empty list or a leading coefficient that is not positive gives False."""
+    if not coefficients or not coefficients[-1] > 0:
         return False
-    if len(desc) == 1:
-        return True
-    rows = [desc[0::2], desc[1::2]]
-    while len(rows) < len(desc):
-        top, low = rows[-2], rows[-1]
-        if not low or low[0] <= 0:
-            return False
-        nxt = []
-        for j in range(len(top) - 1):
-            below = low[j + 1] if j + 1 < len(low) else mpq(0)
-            nxt.append((low[0] * top[j + 1] - top[0] * below) / low[0])
-        rows.append(nxt)
-    return all(r and r[0] > 0 for r in rows)
+    return is_hurwitz(flint.fmpq_poly([flint.fmpq(int(c.numerator), int(c.denominator))
+                                       for c in coefficients]))
+
+
+def stable_denominators(box: Sequence[Interval], shape: Shape) -> LeafResult:
+    """Both diagonal denominators Hurwitz for every parameter vector of ``box``."""
+    for i in range(2):
+        _, a = element(box, i, shape, ExactOps)
+        if not kharitonov_stable(a):
+            return LeafResult(False, f"denominator {i + 1} fails Kharitonov's test")
+    return LeafResult(True, "")
 
 
 _KHARITONOV = ((0, 0, 1, 1), (1, 1, 0, 0), (0, 1, 1, 0), (1, 0, 0, 1))
@@ -475,12 +469,7 @@ def check_positive_leaf(box: list[Interval], variable: str, shape: Shape,
             return LeafResult(False, f"claimed lower bound of {name} {c} is not > 0")
         if lo < c:
             return LeafResult(False, f"lower bound of {name} is {lo}, below the claimed {c}")
-    if stability:
-        for i in range(2):
-            _, a = element(theta, i, shape, ExactOps)
-            if not kharitonov_stable(a):
-                return LeafResult(False, f"denominator {i + 1} fails Kharitonov's test")
-    return LeafResult(True, "")
+    return stable_denominators(theta, shape) if stability else LeafResult(True, "")
 
 
 def check_outside_leaf(box: list[Interval], S, center, chi2: mpq,
