@@ -39,6 +39,18 @@ _B1, _B2, _B3, _B4, _B5 = (-1 / 24, 1 / 720, -1 / 40320, 1 / 3628800, -1 / 47900
 
 
 @njit(cache=True, inline="always", fastmath=_CONTRACT)
+def _affine_row(M: Array, N: Array, x: Array, e: Array, r: int, m: int, k: int) -> float:
+    """Row r of M x + N e (x of length m, the first k components of e): the LTI human's
+    output C x + D e and state rate A x + B e."""
+    acc = 0.0
+    for j in range(m):
+        acc += M[r, j] * x[j]
+    for j in range(k):
+        acc += N[r, j] * e[j]
+    return acc
+
+
+@njit(cache=True, inline="always", fastmath=_CONTRACT)
 def _rodrigues_coefficients(t2: float) -> tuple[float, float]:
     """(sin t / t, (1 - cos t) / t^2) for t^2 = |w|^2, accurate at every angle.
 
@@ -202,12 +214,7 @@ def closed_loop_field(Y: Array, x: Array, k_s: float, R_r: Array, c_s: Array,
     e[0], e[1], e[2] = _vee_at_b(Rl, R_r)  # e = sk(R_l^T R_r)^vee
     ob = np.zeros(3)  # omega_h^b
     for r in range(k):
-        acc = 0.0
-        for j in range(m):
-            acc += hC[r, j] * x[j]
-        for j in range(k):
-            acc += hD[r, j] * e[j]
-        ob[r] = acc
+        ob[r] = _affine_row(hC, hD, x, e, r, m, k)  # C x + D e
     for r in range(3):
         ob[r] += Rl[0, r] * c_s[0] + Rl[1, r] * c_s[1] + Rl[2, r] * c_s[2]
     l0, l1, l2 = _vee_at_b(Rl, Rb)
@@ -216,12 +223,7 @@ def closed_loop_field(Y: Array, x: Array, k_s: float, R_r: Array, c_s: Array,
         F[n, r] = ot[r]
         F[n + 1, r] = Rl[r, 0] * l0 + Rl[r, 1] * l1 + Rl[r, 2] * l2
     for r in range(m):
-        acc = 0.0
-        for j in range(m):
-            acc += hA[r, j] * x[j]
-        for j in range(k):
-            acc += hB[r, j] * e[j]
-        g[r] = acc
+        g[r] = _affine_row(hA, hB, x, e, r, m, k)  # A x + B e
     g[m] = e[0] * ob[0] + e[1] * ob[1] + e[2] * ob[2]
     R = Y[:n]
     if auto == AUTO_ZERO:
