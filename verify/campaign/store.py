@@ -12,7 +12,6 @@ two writers on one folder.
 
 from __future__ import annotations
 
-import os
 import time
 import uuid
 from collections.abc import Iterable, Sequence
@@ -25,6 +24,7 @@ import pyarrow.parquet as pq
 from verify.campaign.execute import column
 from verify.errors import VerifyInputError
 from verify.inputs.campaign_spec import PROPERTIES
+from verify.report.atomic import write_atomic
 
 _PROPERTY_FIELDS = [f for p in PROPERTIES for f in (
     pa.field(column(p), pa.string()), pa.field(f"{column(p)}_violation", pa.float64()),
@@ -93,15 +93,9 @@ class ResultStore:
                                      schema=SCHEMA)
         self.folder.mkdir(parents=True, exist_ok=True)
         name = f"part-{time.time_ns():020d}-{uuid.uuid4().hex[:8]}.parquet"
-        tmp = self.folder / f".{name}.tmp"
-        try:
-            pq.write_table(table, tmp)
-            with open(tmp, "rb") as handle:
-                os.fsync(handle.fileno())
-            os.replace(tmp, self.folder / name)
-        except BaseException:
-            tmp.unlink(missing_ok=True)
-            raise
+        sink = pa.BufferOutputStream()
+        pq.write_table(table, sink)
+        write_atomic(self.folder / name, sink.getvalue().to_pybytes())
         self._keys = stored
         return len(fresh)
 

@@ -32,10 +32,9 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
-import tempfile
 from pathlib import Path
 
+from verify.report.atomic import write_atomic
 from verify.sos import poly as pl
 from verify.sos.check import SosCheck, check_identity_and_psd
 from verify.sos.program import Block, Multiplier
@@ -92,14 +91,7 @@ def write(directory: Path, data: dict) -> Path:
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
     path = directory / file_name(data["claim"]["key"])
-    fd, tmp = tempfile.mkstemp(dir=directory, prefix=".sos-", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(dumps(data))
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_atomic(path, dumps(data))
     return path
 
 
