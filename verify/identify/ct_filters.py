@@ -8,15 +8,16 @@ responses of A (the transients a trial starts with).
 
 Intersample behaviour: x is taken piecewise linear between samples (first-order hold),
 which is exact for piecewise-linear signals and accurate to O(h^2) for smooth ones. The
-filter's continuous state is zero at the first sample. Discretisation is
-``scipy.signal.cont2discrete(..., method="foh")``; the recursion runs in
+filter's continuous state at the first sample is zero unless given (a trial that starts
+where the previous one left off, :meth:`Filter.filtered` and :meth:`Filter.coast`).
+Discretisation is ``scipy.signal.cont2discrete(..., method="foh")``; the recursion runs in
 ``scipy.signal.lfilter``.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from scipy import signal
+from scipy import linalg, signal
 
 __all__ = ["Filter", "companion", "filtered", "free_responses"]
 
@@ -86,22 +87,29 @@ class Filter:
             self._free = (shifted @ coeff.reshape(n, n * n)).reshape(count, n, n)
         return self._free[:count]
 
-    def filtered(self, x: np.ndarray) -> np.ndarray:
+    def filtered(self, x: np.ndarray, z0: np.ndarray | None = None) -> np.ndarray:
         """s^k / A(s) x at the samples, for k = 0..n, shape (N, n + 1).
 
-        Zero continuous state at the first sample, x piecewise linear (module docstring).
-        Column n is s^n / A(s) x = x - sum_k a_k s^k / A(s) x.
+        Continuous state z = (w, ..., w^(n-1)) equal to ``z0`` at the first sample (zero
+        when None), x piecewise linear (module docstring). Columns 0..n-1 are that state
+        at every sample; column n is s^n / A(s) x = x - sum_k a_k s^k / A(s) x.
         """
         x = np.asarray(x, float)
         n = self.n
         out = np.empty((x.shape[0], n + 1))
         for j in range(n):
             out[:, j] = signal.lfilter(self.num[j], self.den, x)
-        # lfilter starts from xi_0 = 0; a zero continuous state needs xi_0 = -M x_0
-        out[:, :n] -= self._powers(x.shape[0]) @ (self.M * x[0])
+        # lfilter starts from xi_0 = 0; a continuous state z0 needs xi_0 = z0 - M x_0
+        start = -self.M * x[0] if z0 is None else np.asarray(z0, float) - self.M * x[0]
+        out[:, :n] += self._powers(x.shape[0]) @ start
         out[:, :n] += np.outer(x, self.M)
         out[:, n] = x - out[:, :n] @ self.a[::-1]
         return out
+
+    def coast(self, z: np.ndarray, seconds: float) -> np.ndarray:
+        """The state ``seconds`` after ``z`` with zero input: exp(Ac seconds) z."""
+        Ac, _ = companion(self.a)
+        return linalg.expm(Ac * float(seconds)) @ np.asarray(z, float)
 
     def free(self, count: int) -> np.ndarray:
         """The n free responses of A(s) at t = k h, k = 0..count-1, shape (count, n).

@@ -1,9 +1,10 @@
 """Output-error prediction-error refinement and its asymptotic covariance.
 
 The criterion is the output-error one, sum over the used samples of (u_i - yhat_i)^2
-with yhat_i the model output simulated from the measured inputs, each trial from rest or
-from an estimated initial state, the first ``OutputData.skip`` samples of each trial
-left out (:mod:`verify.identify.prediction`). For white noise on the output this is the
+with yhat_i the model output simulated from the measured inputs, each trial from rest,
+from the state the previous trial left it in or from an estimated initial state, the
+first ``OutputData.skip`` samples of each trial left out
+(:mod:`verify.identify.prediction`). For white noise on the output this is the
 prediction-error (maximum-likelihood for Gaussian noise) criterion, which stays
 consistent in closed loop because the noise model (white) is right (Ljung, System
 Identification, 2nd ed., 1999, Sec. 13.4, "direct approach"). The numerator, coupling

@@ -9,15 +9,19 @@ For a fixed denominator A_i the output is linear in the numerator, the coupling 
 initial state of each trial, so those are solved by linear least squares and only A_i is
 searched (variable projection, Golub & Pereyra, SIAM J. Numer. Anal. 10(2), 1973).
 
-The initial state of every trial is *estimated* (a free response of A_i, n numbers per
-trial), on identification and validation data alike: a trial starts when the operator
-starts reacting, with the state the operator is in, so a zero initial state would be a
-model error of the first seconds of each trial, not a property of H(s).
+How a trial starts (``OutputData.initial``): "estimate" fits each trial's free response
+(n numbers per trial; the fit ratios of identification and validation data use it, so a
+transient the model does not explain is not counted against H(s)); "carry" starts each
+trial in the state the model ended the previous trial in, coasted with zero input over
+the dead time the protocol removed (:func:`verify.identify.trial_data.dead_time_gaps`),
+which is what the estimator uses by default (:mod:`verify.identify.estimation`); "zero"
+starts every trial at rest.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 
 import numpy as np
 from scipy import signal
@@ -27,15 +31,20 @@ from verify.identify.experiment import Trial
 from verify.identify.structure import Structure
 from verify.identify.trial_data import OutputData, check_trials, output_data
 
-__all__ = ["design", "element_parameters", "fit_linear", "lengths", "predict", "predict_output",
-           "used", "whiten"]
+#: How a trial's initial state is treated (module docstring).
+INITIAL_STATES = ("carry", "estimate", "zero")
+
+__all__ = ["INITIAL_STATES", "design", "element_parameters", "fit_linear", "lengths", "predict",
+           "predict_output", "used", "whiten"]
 
 
 def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     """Regressors of output data for denominator ``a``, shape (N, zeros + 2 + T n).
 
     Columns: s^k/A e_i for k = zeros..0, then e_j, then per trial the n free responses of
-    A (zero outside that trial).
+    A (zero outside that trial). With ``data.initial == "carry"`` the filter of a trial
+    with a dead-time gap starts from the state the previous trial ended in, coasted over
+    the gap (:class:`verify.identify.trial_data.OutputData`); otherwise from rest.
     """
     a = np.asarray(a, float)
     n = len(a)
@@ -44,11 +53,15 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     total = data.samples
     X = np.zeros((total, zeros + 2 + T * n))
     row = 0
+    end = None
     for k, (own, other) in enumerate(zip(data.own, data.other, strict=True)):
         N = len(own)
         with np.errstate(over="ignore", invalid="ignore"):  # unstable candidates overflow
-            Z = filt.filtered(own)
+            gap = data.gaps[k] if data.initial == "carry" and k < len(data.gaps) else None
+            z0 = None if gap is None or end is None else filt.coast(end, gap)
+            Z = filt.filtered(own, z0)
             free = filt.free(N)
+        end = Z[-1, :n]
         X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
         X[row:row + N, zeros + 1] = other
         col = zeros + 2 + k * n
@@ -123,7 +136,7 @@ def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None
         rows = slice(row, row + count)
         bases.append(rows)
         row += count
-        if data.initial == "zero":
+        if data.initial != "estimate":
             continue
         Q = np.linalg.qr(Xw[rows, p + k * n:p + (k + 1) * n])[0]
         Xp[rows] -= Q @ (Q.T @ Xp[rows])
@@ -133,7 +146,7 @@ def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None
     shared = np.linalg.lstsq(Xp / scale, yp, rcond=None)[0] / scale
     beta = np.zeros(X.shape[1])
     beta[:p] = shared
-    if data.initial == "zero":
+    if data.initial != "estimate":
         return beta, yp - Xp @ shared, X
     for k, rows in enumerate(bases):
         F = Xw[rows, p + k * n:p + (k + 1) * n]
@@ -155,16 +168,16 @@ def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
                    initial: str = "estimate") -> np.ndarray:
     """The model's output i over all trials (concatenated) from the measured inputs.
 
-    ``initial="estimate"``: each trial's initial state by least squares (module
-    docstring); ``"zero"``: zero initial state.
+    ``initial``: "estimate" (each trial's initial state by least squares), "carry" or
+    "zero" (module docstring).
     """
+    if initial not in INITIAL_STATES:
+        raise ValueError(f"initial must be one of {', '.join(INITIAL_STATES)}, got {initial!r}")
     zeros = len(b) - 1
-    X = design(a, data, zeros)
+    X = design(a, replace(data, initial=initial), zeros)
     forced = X[:, : zeros + 1] @ np.asarray(b, float) + c * X[:, zeros + 1]
-    if initial == "zero":
-        return forced
     if initial != "estimate":
-        raise ValueError(f"initial must be 'estimate' or 'zero', got {initial!r}")
+        return forced
     F = X[:, zeros + 2:]
     y = np.concatenate(data.y)
     eta = np.linalg.lstsq(F, y - forced, rcond=None)[0]

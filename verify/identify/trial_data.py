@@ -17,7 +17,7 @@ from verify.errors import VerifyInputError
 from verify.identify.experiment import Trial
 from verify.identify.structure import Structure
 
-__all__ = ["OutputData", "check_trials", "output_data"]
+__all__ = ["OutputData", "check_trials", "dead_time_gaps", "output_data"]
 
 
 @dataclass(frozen=True)
@@ -25,9 +25,13 @@ class OutputData:
     """The data of output i: per trial the own input e_i, the other input e_j and u_i.
 
     ``initial`` says how the estimators treat the start of each trial: "estimate" (the
-    initial state is estimated with the other parameters) or "zero" (the model starts
-    at rest); ``skip`` samples at the start of each trial are left out of the criterion
-    (the model is still simulated over them).
+    initial state is estimated with the other parameters), "zero" (the model starts
+    at rest) or "carry" (the model starts where it left the previous trial, coasting
+    with zero input over the dead time between them, ``gaps``); ``skip`` samples at the
+    start of each trial are left out of the criterion (the model is still simulated
+    over them). ``gaps[k]`` is the time in seconds from the last sample of trial k - 1
+    to the first of trial k, or None when trial k starts from rest
+    (:func:`dead_time_gaps`).
     """
 
     output: int
@@ -37,6 +41,7 @@ class OutputData:
     h: float
     initial: str = "estimate"
     skip: int = 0
+    gaps: tuple[float | None, ...] = ()
 
     @property
     def samples(self) -> int:
@@ -101,6 +106,27 @@ def check_trials(trials: Sequence[Trial], structure: Structure, *, what: str = "
     return float(h)
 
 
+def dead_time_gaps(trials: Sequence[Trial]) -> tuple[float | None, ...]:
+    """Per trial, the dead time (s) since the previous trial's last sample, or None.
+
+    In the protocol of Section 4 the trials of a log follow each other: after a trial's
+    last sample the reference changes, the operator does not react until the start
+    event (the dead time the protocol removes), and the next trial begins. A trial
+    continues the previous one when its trial id differs from the previous one's (the
+    segments of one trial split at invalid samples do not: what the operator did
+    during those samples is unknown) and its first sample comes later than the
+    previous trial's last one (logs whose trials restart the clock do not). Otherwise,
+    and for the first trial, None: the trial starts from rest.
+    """
+    out: list[float | None] = [None] * len(trials)
+    for k in range(1, len(trials)):
+        prev, cur = trials[k - 1], trials[k]
+        gap = float(np.asarray(cur.t, float)[0] - np.asarray(prev.t, float)[-1])
+        if cur.trial != prev.trial and np.isfinite(gap) and gap > 0:
+            out[k] = gap
+    return tuple(out)
+
+
 def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "estimate",
                 skip: int = 0) -> OutputData:
     """The view of output ``i`` (0 or 1) of checked trials."""
@@ -113,4 +139,5 @@ def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "es
         h,
         initial,
         skip,
+        dead_time_gaps(trials),
     )
