@@ -130,3 +130,29 @@ def test_a_foreign_output_directory_is_refused(logs, tmp_path):
     assert main(["identify", str(logs["passive_human"]), "--split", "2:2", "--out",
                  str(out)]) == 2
     assert (out / "notes.txt").read_text() == "mine"
+
+
+def test_identification_claim_replaces_its_stale_certificates_in_the_store(tmp_path):
+    """After the estimate changes, the store's earlier robust certificates of a shipped
+    model are bound to a model file that no longer holds their region; the claim removes
+    them (and nothing else) and writes the new ones only into the store."""
+    from verify.claims import CheckContext, Verdict, run_claims
+    from verify.claims.catalog import REGISTRY
+
+    store = tmp_path / "certificates"
+    store.mkdir()
+    stale = store / "passive_human-identified-robust-band-0-6.63-000000000000.json"
+    stale.write_text("{}")
+    unrelated = store / "reconstructed-ks3.0-kyp-all.json"
+    unrelated.write_text("{}")
+    claim = REGISTRY.get("sec4.identification")
+    run = run_claims([claim], CheckContext(quick=True, out_dir=tmp_path / "reports",
+                                           certificates_dir=store))
+    assert run.results[0].outcome.verdict is Verdict.VERIFIED
+    assert not stale.exists() and unrelated.exists()
+    unrelated.unlink()
+    fresh = sorted(store.glob("*-identified-robust-*.json"))
+    assert [p.name.split("-identified-")[0] for p in fresh] == ["nonpassive_human",
+                                                                "passive_human"]
+    assert not list((tmp_path / "reports").rglob("*.json"))  # one copy, in the store
+    assert main(["certificates", "check", str(store)]) == 0

@@ -70,18 +70,36 @@ def _truth(name: str):
 
 
 def _store(context: CheckContext, outcome) -> list[Path]:
-    """Write the run's files (model, figures) and copy its certificates."""
+    """Write the run's model and figures, and its certificates into the certificate store.
+
+    With a store, the certificates go there only (one copy; they name the model file
+    they are bound to), and the store's earlier robust certificates of the same model are
+    removed: after the log or the estimator changes they are bound to a model file that
+    no longer says what they were issued for, and ``verify certificates check`` would
+    report them invalid. Without a store they stay beside the model, as ``verify
+    identify`` writes them.
+    """
+    from dataclasses import replace
+
     from verify.identify.command import write
     from verify.report.atomic import write_atomic
 
-    write(outcome)
+    if context.certificates_dir is None:
+        write(outcome)
+        return []
+    certificates = {p: d for p, d in outcome.files.items() if p.suffix == ".json"}
+    write(replace(outcome, files={p: d for p, d in outcome.files.items()
+                                  if p not in certificates}))
+    store = Path(context.certificates_dir)
     stored = []
-    if context.certificates_dir is not None:
-        for path, data in outcome.files.items():
-            if path.suffix == ".json":
-                target = Path(context.certificates_dir) / path.name
-                write_atomic(target, data)
-                stored.append(target)
+    for path, data in certificates.items():
+        target = store / path.name
+        prefix = path.name.split("-robust-")[0] + "-robust-"
+        for stale in store.glob(f"{prefix}*.json"):
+            if stale.name not in {p.name for p in certificates}:
+                stale.unlink()
+        write_atomic(target, data)
+        stored.append(target)
     return stored
 
 
