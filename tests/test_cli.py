@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from verify.cli import main
+from verify.cli import SMALL_MATRIX_COMMANDS, main
 
 DATA = Path(__file__).resolve().parents[1] / "verify" / "data" / "networks"
 
@@ -104,3 +104,23 @@ def test_missing_file_and_projection_option(tmp_path, capsys):
 
 def test_no_command_prints_help_and_exits_2(capsys):
     assert main([]) == 2
+
+
+@pytest.mark.parametrize("preset, expected", [(None, "1"), ("3", "3")])
+def test_identification_commands_use_one_blas_thread_unless_told(preset, expected):
+    """The identification's many small least-squares problems gain nothing from a
+    multithreaded BLAS and lose on a busy machine; `verify identify` and `verify all`
+    ask for one thread before numpy loads, and a user's own setting wins."""
+    import os
+
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")}
+    if preset is not None:
+        env["OPENBLAS_NUM_THREADS"] = preset
+    code = ("import os, sys; from verify import cli; "
+            "assert 'numpy' not in sys.modules; cli.single_threaded_blas(); "
+            "import numpy; print(os.environ['OPENBLAS_NUM_THREADS'])")
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                         text=True, check=True)
+    assert out.stdout.strip() == expected
+    assert {"identify", "all"} <= set(SMALL_MATRIX_COMMANDS)

@@ -423,12 +423,28 @@ def _attach_band_value(argv: Sequence[str]) -> list[str]:
     return out
 
 
+#: Commands whose linear algebra is many small matrices (the identification's least
+#: squares on N x 6 regressors), where a multithreaded BLAS only adds synchronisation.
+SMALL_MATRIX_COMMANDS = ("identify", "all")
+BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def single_threaded_blas() -> None:
+    """One BLAS thread unless the user chose otherwise, if numpy is not loaded yet (the
+    setting is read once, when numpy loads its BLAS)."""
+    if "numpy" not in sys.modules:
+        for variable in BLAS_THREAD_VARIABLES:
+            os.environ.setdefault(variable, "1")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = _build_parser()
     args = parser.parse_args(_attach_band_value(sys.argv[1:] if argv is None else argv))
     if args.command is None:
         parser.print_help()
         return 2
+    if args.command in SMALL_MATRIX_COMMANDS:
+        single_threaded_blas()
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,

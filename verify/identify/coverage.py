@@ -32,7 +32,7 @@ from verify.identify.simulated_experiment import simulate_experiment
 from verify.identify.structure import Structure
 from verify.passivity.model import from_transfer_function
 
-__all__ = ["Repetition", "Study", "run_study", "true_model"]
+__all__ = ["Repetition", "Study", "repetition", "run_study", "true_model"]
 
 
 def true_model(theta: Sequence[float], name: str = "known operator"):
@@ -80,44 +80,67 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
               methods: Sequence[str] = ("riv+pem",), k_s: float = 3.0, n: int = 8,
               trials: int = 6, trial_seconds: float = 15.0, rate: float = 120.0,
               out_rate: float | None = None, operator_noise: float | None = None,
-              measurement_noise: float | None = None, progress=None) -> Study:
-    """Simulate, prepare and estimate once per seed (module docstring)."""
+              measurement_noise: float | None = None, progress=None, jobs: int = 1) -> Study:
+    """Simulate, prepare and estimate once per seed (module docstring).
+
+    ``jobs`` > 1 runs the seeds in that many processes; each repetition depends on its
+    seed alone, so the study is the same as with one job.
+    """
     theta_true = np.asarray(theta_true, float)
-    model = true_model(theta_true)
-    structure = Structure.paper()
     extra = {}
     if operator_noise is not None:
         extra["operator_noise"] = operator_noise
     if measurement_noise is not None:
         extra["measurement_noise"] = measurement_noise
-    reps = []
-    for seed in seeds:
-        log = simulate_experiment(model, k_s=k_s, n=n, trials=trials,
-                                  trial_seconds=trial_seconds, rate=rate, seed=seed, **extra)
-        data = prepare(log, rate=out_rate, split=(trials, 0)).identification
-        clean = predict(structure, theta_true, data)
-        rep = Repetition(seed)
-        for method in methods:
-            try:
-                est = estimate_model(data, structure, method=method)
-            except VerifyInputError as err:
-                rep.failed[method] = str(err)
-                continue
-            rep.theta[method] = est.theta
-            rep.se[method] = est.standard_errors()
-            diff = est.theta - theta_true
-            try:
-                stat = float(diff @ np.linalg.solve(est.covariance, diff))
-            except np.linalg.LinAlgError:
-                stat = np.inf
-            rep.in_ellipsoid[method] = stat <= chi2.ppf(0.95, len(diff))
-            yhat = predict(structure, est.theta, data)
-            u = np.concatenate([np.asarray(tr.u, float) for tr in data])
-            yh = np.concatenate(yhat)
-            yc = np.concatenate(clean)
-            rep.fit_noisy[method] = np.array([fit_ratio(u[:, i], yh[:, i]) for i in (0, 1)])
-            rep.fit_clean[method] = np.array([fit_ratio(yc[:, i], yh[:, i]) for i in (0, 1)])
-        reps.append(rep)
-        if progress is not None:
-            progress(rep)
-    return Study(theta_true, structure.names(), tuple(reps))
+    settings = dict(methods=tuple(methods), k_s=k_s, n=n, trials=trials,
+                    trial_seconds=trial_seconds, rate=rate, out_rate=out_rate, extra=extra)
+    reps: dict[int, Repetition] = {}
+    if jobs > 1:
+        from concurrent.futures import ProcessPoolExecutor
+
+        with ProcessPoolExecutor(jobs) as pool:
+            futures = [pool.submit(repetition, theta_true, seed, **settings) for seed in seeds]
+            for future in futures:
+                rep = future.result()
+                reps[rep.seed] = rep
+                if progress is not None:
+                    progress(rep)
+    else:
+        for seed in seeds:
+            reps[seed] = repetition(theta_true, seed, **settings)
+            if progress is not None:
+                progress(reps[seed])
+    return Study(theta_true, Structure.paper().names(), tuple(reps[s] for s in seeds))
+
+
+def repetition(theta_true: np.ndarray, seed: int, *, methods: tuple[str, ...], k_s: float,
+               n: int, trials: int, trial_seconds: float, rate: float,
+               out_rate: float | None, extra: dict) -> Repetition:
+    """One seeded experiment of :func:`run_study`."""
+    structure = Structure.paper()
+    log = simulate_experiment(true_model(theta_true), k_s=k_s, n=n, trials=trials,
+                              trial_seconds=trial_seconds, rate=rate, seed=seed, **extra)
+    data = prepare(log, rate=out_rate, split=(trials, 0)).identification
+    clean = predict(structure, theta_true, data)
+    rep = Repetition(seed)
+    for method in methods:
+        try:
+            est = estimate_model(data, structure, method=method)
+        except VerifyInputError as err:
+            rep.failed[method] = str(err)
+            continue
+        rep.theta[method] = est.theta
+        rep.se[method] = est.standard_errors()
+        diff = est.theta - theta_true
+        try:
+            stat = float(diff @ np.linalg.solve(est.covariance, diff))
+        except np.linalg.LinAlgError:
+            stat = np.inf
+        rep.in_ellipsoid[method] = stat <= chi2.ppf(0.95, len(diff))
+        yhat = predict(structure, est.theta, data)
+        u = np.concatenate([np.asarray(tr.u, float) for tr in data])
+        yh = np.concatenate(yhat)
+        yc = np.concatenate(clean)
+        rep.fit_noisy[method] = np.array([fit_ratio(u[:, i], yh[:, i]) for i in (0, 1)])
+        rep.fit_clean[method] = np.array([fit_ratio(yc[:, i], yh[:, i]) for i in (0, 1)])
+    return rep
