@@ -43,10 +43,9 @@ on 100 seeds, 80 % carried).
 
 from __future__ import annotations
 
-import os
+from verify.cli import single_threaded_blas
 
-for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_var, "1")
+single_threaded_blas()  # before numpy is imported (verify.cli does not import it)
 
 import argparse  # noqa: E402
 import time  # noqa: E402

@@ -36,10 +36,9 @@ are set: on a loaded machine threaded BLAS makes timings erratic (a 10x spread).
 
 from __future__ import annotations
 
-import os
+from verify.cli import single_threaded_blas
 
-for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
-    os.environ.setdefault(_var, "1")  # before numpy is imported
+single_threaded_blas()  # before numpy is imported (verify.cli does not import it)
 
 import argparse  # noqa: E402
 import importlib  # noqa: E402

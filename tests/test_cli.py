@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from verify.cli import SMALL_MATRIX_COMMANDS, main
+from verify.cli import BLAS_THREAD_VARIABLES, SMALL_MATRIX_COMMANDS, main
 
 DATA = Path(__file__).resolve().parents[1] / "verify" / "data" / "networks"
 
@@ -114,7 +114,7 @@ def test_identification_commands_use_one_blas_thread_unless_told(preset, expecte
     import os
 
     env = {k: v for k, v in os.environ.items()
-           if k not in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")}
+           if k not in BLAS_THREAD_VARIABLES}
     if preset is not None:
         env["OPENBLAS_NUM_THREADS"] = preset
     code = ("import os, sys; from verify import cli; "

@@ -91,15 +91,15 @@ def _store(context: CheckContext, outcome) -> list[Path]:
     write(replace(outcome, files={p: d for p, d in outcome.files.items()
                                   if p not in certificates}))
     store = Path(context.certificates_dir)
+    fresh = {p.name for p in certificates}
     stored = []
     for path, data in certificates.items():
-        target = store / path.name
         prefix = path.name.split("-robust-")[0] + "-robust-"
         for stale in store.glob(f"{prefix}*.json"):
-            if stale.name not in {p.name for p in certificates}:
+            if stale.name not in fresh:
                 stale.unlink()
-        write_atomic(target, data)
-        stored.append(target)
+        write_atomic(store / path.name, data)
+        stored.append(store / path.name)
     return stored
 
 
