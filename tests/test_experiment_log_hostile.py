@@ -52,7 +52,8 @@ def test_round_trip_is_bit_exact(tmp_path, suffix, full):
 
 
 def test_csv_round_trip_keeps_awkward_floats(tmp_path):
-    values = np.array([[5e-324, -0.0], [1.7976931348623157e308, 0.1], [1 / 3, -2.5e-17]])
+    # the extremes the limits allow: the smallest normal float, -0.0, MAX_VALUE
+    values = np.array([[2.2250738585072014e-308, -0.0], [1e9, 0.1], [1 / 3, -2.5e-17]])
     tr = Trial(0, np.arange(3) / RATE, values, values[::-1].copy())
     path = write_log(ExperimentLog((tr,), RATE, ""), tmp_path / "x.csv")
     back = read_log(path).trials[0]
@@ -117,7 +118,8 @@ CSV_CASES = {
                   r"line 4, column 'time': time 0.01 goes back within trial 0"),
     "time repeats": ([HEADER, "0.0,0,1,1,1,1", "0.01,0,1,1,1,1", "0.01,0,1,1,1,1"],
                      r"line 4, column 'time': time 0.01 repeats within trial 0"),
-    "unequal": ([HEADER, "0.0,0,1,1,1,1", "0.01,0,1,1,1,1", "0.0201,0,1,1,1,1",
+    # 0.0201 would still lie on a grid within its written precision (1e-4: module doc)
+    "unequal": ([HEADER, "0.0,0,1,1,1,1", "0.01,0,1,1,1,1", "0.0203,0,1,1,1,1",
                  "0.03,0,1,1,1,1"], r"column 'time': unequal sampling in trial 0.*relative 1e-06"),
     "steps differ": ([HEADER, *_rows(4), *_rows(4, trial=1, step=0.02)],
                      r"line 6, trial 1: trial 1 has step 0.02 s, the first trial 0.01 s"),
@@ -139,8 +141,9 @@ CSV_CASES = {
                     r"line 8, trial 0: trial 0 appears again after other trials \(first at "
                     r"line 2\)"),
     "bad rate": (["# rate = fast", HEADER, *_rows(3)], r"line 1: rate 'fast' is not a positive"),
-    "rate disagrees": (["# rate = 120", HEADER, *_rows(3)],
-                       r"the rate metadata says 120 Hz but the time step is 0.01"),
+    # (times 0.0, 0.01, 0.02 would be 120 Hz rounded to 2 decimals: they cannot disagree)
+    "rate disagrees": (["# rate = 120", HEADER, *_rows(3, step=0.0125)],
+                       r"the rate metadata says 120 Hz but the time step is 0.0125"),
 }
 
 

@@ -20,14 +20,33 @@ start    no       1 on the sample where the operator pressed "start" after the r
 ======== ======== ==========================================================================
 
 Sampling: within a trial every step must equal the trial's mean step
-(t_last - t_first) / (N - 1) within a relative 1e-6; all trials must have the same step
-(relative 1e-6). The rate is 1 / step, or the ``rate`` metadata when given (which must
-agree with the step, relative 1e-6). A trial needs at least ``min_samples`` samples
-(the caller passes what the model order needs; at least 2).
+h = (t_last - t_first) / (N - 1) within a relative 1e-6, or, in a CSV file, every time
+must lie within its written precision of the equally spaced grid t_first + k h (the
+precision is the last decimal place written in the trial's time column: times written
+with 6 decimals, 0.008333, 0.016667, ... at 120 Hz, are equally spaced within 1e-6 s, one
+unit of the last digit, the most two values rounded from one grid can differ from the
+straight line through the trial's ends). All trials must have the same step (relative
+1e-6, widened by what the written precision leaves unknown of each mean step). The rate
+is the ``rate`` metadata when given (it must agree with the step to the same tolerance),
+else the decimal with the fewest significant digits that the step allows (120 for the
+6-decimal example). A trial needs at least ``min_samples`` samples (the caller passes
+what the model order needs; at least 2); a shorter trial is an error, never dropped.
+
+Limits (each refused with one line, before the value is used)
+--------------------------------------------------------------
+Times at most ``MAX_TIME`` = 1e9 s in size, a step of at least ``MIN_STEP`` = 1e-6 s
+(rate at most 1 MHz) and at least ``RESOLUTION`` = 2^-30 of the largest time (so float
+times resolve it); e, u, r values at most ``MAX_VALUE`` = 1e9 in size; no non-zero value
+below the normal float range (2.2e-308: subnormal numbers); trial ids at most
+``MAX_TRIAL_ID`` = 10^12 in size; a CSV cell at most 40 digits before and after the point
+and a 4-digit exponent (integers: 18 digits); an NPZ archive at most ``MAX_NPZ_BYTES``
+(1 GiB) uncompressed, judged from the zip directory and each member's .npy header before
+any data is decompressed. A CSV file is read in one streaming pass that stops at the first
+defect; its memory is that of the numbers read (8 bytes a value), not of the text.
 
 CSV (``.csv``)
 --------------
-UTF-8 text; the first line that is not a comment is the header (column names separated
+UTF-8 text (a byte-order mark is ignored); the first line that is not a comment is the header (column names separated
 by commas, in any order, surrounding spaces ignored); then one row per sample. Lines
 whose first non-blank character is ``#`` are comments anywhere in the file; a comment
 ``# rate = 120`` gives the rate in Hz (other ``# key = value`` comments are kept as
@@ -65,14 +84,18 @@ import io
 import itertools
 import math
 import re
+import sys
 import zipfile
-from collections.abc import Sequence
+from array import array
+from collections.abc import Iterable, Sequence
 from pathlib import Path
+from typing import BinaryIO
 
 import numpy as np
 
 from verify.errors import VerifyInputError
 from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.files import open_regular
 from verify.report.atomic import write_atomic
 
 REQUIRED = ("time", "trial", "e1", "e2", "u1", "u2")
@@ -82,12 +105,20 @@ COLUMNS = (*REQUIRED, *REFERENCE, *FLAGS)
 #: Relative tolerance on the sampling step (within a trial, between trials, vs the rate).
 STEP_TOLERANCE = 1e-6
 
-_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
-_INTEGER = re.compile(r"[+-]?\d+")
-_NONFINITE = re.compile(r"[+-]?(nan|inf|infinity)", re.IGNORECASE)
+#: Limits on what a log may hold (module docstring, "Limits").
+MAX_CELL = 64
+MAX_TIME = 1e9
+MIN_STEP = 1e-6
+RESOLUTION = 2.0**-30
+MAX_VALUE = 1e9
+MAX_TRIAL_ID = 10**12
+MAX_NPZ_BYTES = 2**30
+TINY = sys.float_info.min
 _ZIP_TIME = (1980, 1, 1, 0, 0, 0)
 
-__all__ = ["COLUMNS", "REQUIRED", "STEP_TOLERANCE", "read_log", "read_logs", "write_log"]
+__all__ = ["COLUMNS", "MAX_CELL", "MAX_NPZ_BYTES", "MAX_TIME", "MAX_TRIAL_ID", "MAX_VALUE",
+           "MIN_STEP", "REQUIRED", "STEP_TOLERANCE", "read_csv_lines", "read_log", "read_logs",
+           "write_log"]
 
 
 def _fail(where: str, what: str) -> VerifyInputError:
@@ -109,19 +140,28 @@ def read_log(path: str | Path, *, min_samples: int = 2) -> ExperimentLog:
     """The trials of one log file (format in the module docstring).
 
     ``min_samples`` is the fewest samples a trial may have (what the model order needs;
-    at least 2). Any defect raises a one-line :class:`VerifyInputError`.
+    at least 2). Any defect raises a one-line :class:`VerifyInputError`. A CSV file is
+    read in one streaming pass that stops at the first defect; an NPZ archive's member
+    sizes are checked from its headers before anything is decompressed.
     """
     path = Path(path)
     suffix = _suffix(path)
-    if not isinstance(min_samples, int) or isinstance(min_samples, bool) or min_samples < 2:
-        raise VerifyInputError(f"min_samples must be an integer >= 2, got {min_samples!r}")
-    if not path.is_file():
+    _check_min_samples(min_samples)
+    if not path.exists():
         raise VerifyInputError(f"{path}: no such log file; check the path")
     if suffix == ".csv":
-        columns, rows, rate = _read_csv(path)
-    else:
-        columns, rows, rate = _read_npz(path)
-    return _assemble(path, columns, rows, rate, min_samples)
+        with open_regular(path) as handle:
+            text = io.TextIOWrapper(handle, encoding="utf-8-sig", newline="")
+            return read_csv_lines(text, source=str(path), min_samples=min_samples)
+    with open_regular(path) as handle:
+        columns, rate = _read_npz(path, handle)
+    builder = _Trials(str(path), "entry", min_samples)
+    trial = columns["trial"]
+    bounds = [0, *(np.flatnonzero(np.diff(trial) != 0) + 1).tolist(), trial.shape[0]]
+    for a, b in itertools.pairwise(bounds):
+        builder.finish(int(trial[a]), {k: v[a:b] for k, v in columns.items()},
+                       np.arange(a, b), None)
+    return builder.log(rate)
 
 
 def read_logs(paths: Sequence[str | Path], *, min_samples: int = 2) -> ExperimentLog:
@@ -148,13 +188,18 @@ def read_logs(paths: Sequence[str | Path], *, min_samples: int = 2) -> Experimen
     return ExperimentLog(tuple(trials), rate, "; ".join(str(p) for p in paths))
 
 
-def _header(path: Path, names: list[str], where: str) -> list[str]:
+def _check_min_samples(min_samples: object) -> None:
+    if not isinstance(min_samples, int) or isinstance(min_samples, bool) or min_samples < 2:
+        raise VerifyInputError(f"min_samples must be an integer >= 2, got {min_samples!r}")
+
+
+def _header(path: str, names: list[str], where: str) -> list[str]:
     names = [n.strip() for n in names]
     seen: set[str] = set()
     for name in names:
         if name not in COLUMNS:
-            raise _fail(where, f"unknown column {name!r}; the columns are {', '.join(COLUMNS)} "
-                        "(see verify.inputs.experiment_log)")
+            raise _fail(where, f"unknown column {_short(name)!r}; the columns are "
+                        f"{', '.join(COLUMNS)} (see verify.inputs.experiment_log)")
         if name in seen:
             raise _fail(where, f"column {name!r} appears twice; keep one")
         seen.add(name)
@@ -169,132 +214,417 @@ def _header(path: Path, names: list[str], where: str) -> list[str]:
     return names
 
 
-def _read_csv(path: Path) -> tuple[dict[str, np.ndarray], np.ndarray, float | None]:
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError as exc:
-        raise VerifyInputError(f"{path}: not UTF-8 text (byte {exc.start}); save the log as "
-                               "UTF-8 CSV") from None
+def _short(text: str, width: int = 40) -> str:
+    return text if len(text) <= width else text[: width - 3] + "..."
+
+
+# Cells: decimal literals with bounded digits (a longer cell is refused before conversion).
+_NUM = r"[+-]?(?:\d{1,40}(?:\.\d{0,40})?|\.\d{1,40})(?:[eE][+-]?\d{1,4})?"
+_INT = r"[+-]?\d{1,18}"
+_NUMBER = re.compile(_NUM)
+_INTEGER = re.compile(_INT)
+_TIME_DIGITS = re.compile(r"[+-]?\d*(?:\.(\d*))?(?:[eE]([+-]?\d+))?")
+_NONFINITE = re.compile(r"[+-]?(nan|inf|infinity)", re.IGNORECASE)
+_INTEGER_COLUMNS = ("trial", *FLAGS)
+
+
+def _limit(name: str) -> float:
+    return MAX_TIME if name == "time" else MAX_VALUE
+
+
+def _float_problem(name: str, text: str, x: float) -> str | None:
+    """Why the value ``x`` (written ``text``) of column ``name`` is refused, if it is."""
+    size = abs(x)
+    if size != size or size == math.inf:
+        return f"{_short(text)!r} is beyond the float range; give a finite number"
+    if size > _limit(name):
+        unit = "s" if name == "time" else ""
+        fix = ("write times relative to the experiment's start" if name == "time" else
+               "log e in rad and u_h in rad/s")
+        return (f"{_short(text)!r} exceeds the limit {_limit(name):g}{unit} in size for "
+                f"column {name!r}; {fix}")
+    if 0 < size < TINY:
+        return (f"{_short(text)!r} is below the normal float range ({TINY:.4g}); write 0 or "
+                "a value of at least that size")
+    return None
+
+
+def _int_problem(name: str, text: str, k: int) -> str | None:
+    if name == "trial" and abs(k) > MAX_TRIAL_ID:
+        return (f"trial id {_short(text)} exceeds the limit {MAX_TRIAL_ID} in size; number "
+                "the trials 0, 1, 2, ...")
+    if name in FLAGS and k not in (0, 1):
+        return f"{_short(text)} is not 0 or 1; write 1 (yes) or 0 (no)"
+    return None
+
+
+def _bad_cell(name: str, cell: str) -> str:
+    """The message for a cell that does not match its column's pattern, or is refused."""
+    integer = name in _INTEGER_COLUMNS
+    if not cell:
+        return "empty cell; give a value"
+    if len(cell) > MAX_CELL:
+        return (f"a cell of {len(cell)} characters (limit {MAX_CELL}); write the number "
+                "with fewer digits")
+    if _NONFINITE.fullmatch(cell):
+        return f"NaN or Inf ({cell!r}) is not allowed; give a finite number or mark the sample " \
+               "invalid (valid = 0) with any finite value"
+    if integer:
+        if _INTEGER.fullmatch(cell):
+            return _int_problem(name, cell, int(cell)) or "unreadable integer"
+        if re.fullmatch(r"[+-]?\d+", cell):
+            return (f"{_short(cell)!r} has more than 18 digits; number the trials 0, 1, "
+                    "2, ...")
+        if _NUMBER.fullmatch(cell):
+            return f"{cell!r} is not an integer; write a whole number without a decimal point"
+        return f"{_short(cell)!r} is not an integer; write a whole number"
+    if _NUMBER.fullmatch(cell):
+        return _float_problem(name, cell, float(cell)) or "unreadable number"
+    return f"{_short(cell)!r} is not a number; write a decimal such as -0.25 or 1.5e-3"
+
+
+def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
+                   ) -> ExperimentLog:
+    """The trials of a CSV log given as lines of text (``read_log`` passes the open file).
+
+    One pass: each row is checked as it is read and each trial when its last row has
+    been read, so the first defect ends the reading (nothing after it is consumed), and
+    memory holds the trials read so far, not the text. ``source`` names the log in
+    messages. A UTF-8 byte-order mark before the first line is ignored.
+    """
+    _check_min_samples(min_samples)
+    builder = _Trials(source, "line", min_samples)
     rate: float | None = None
     names: list[str] | None = None
-    cells: list[list[str]] = []
-    lines: list[int] = []
-    for number, line in enumerate(text.splitlines(), start=1):
+    row_pattern: re.Pattern[str] | None = None
+    kinds: list[tuple[int, str]] = []
+    current: dict[str, array] = {}
+    line_numbers = array("q")
+    trial_id: int | None = None
+    exponent = 0  # the finest written precision of the trial's times: 10**exponent s
+    number = 0
+    iterator = iter(lines)
+    while True:
+        try:
+            line = next(iterator)
+        except StopIteration:
+            break
+        except UnicodeDecodeError as exc:
+            raise VerifyInputError(f"{source}: not UTF-8 text (byte {exc.start} of the block "
+                                   f"after line {number}); save the log as UTF-8 CSV") from None
+        number += 1
+        if number == 1:
+            line = line.removeprefix("\ufeff")
         stripped = line.strip()
         if not stripped:
             continue
         if stripped.startswith("#"):
             key, eq, value = stripped[1:].partition("=")
             if eq and key.strip() == "rate":
-                value = value.strip()
-                if not _NUMBER.fullmatch(value) or not float(value) > 0:
-                    raise _fail(f"{path}: line {number}", f"rate {value!r} is not a positive "
-                                "number; write e.g. '# rate = 120'")
-                rate = float(value)
+                rate = _rate_comment(source, number, value.strip())
             continue
-        row = next(csv.reader([line]))
+        if '"' in stripped:
+            cells = [c.strip() for c in next(csv.reader([stripped]))]
+            stripped = ",".join(cells)
         if names is None:
-            names = _header(path, row, f"{path}: line {number} (header)")
+            cells = next(csv.reader([stripped]))
+            names = _header(source, cells, f"{source}: line {number} (header)")
+            row_pattern = re.compile(r"\s*,\s*".join(
+                f"({_INT})" if n in _INTEGER_COLUMNS else f"({_NUM})" for n in names))
+            kinds = list(enumerate(names))
+            current = {n: array("q" if n in _INTEGER_COLUMNS else "d") for n in names}
             continue
-        if len(row) != len(names):
-            raise _fail(f"{path}: line {number}", f"{len(row)} cells, the header has "
-                        f"{len(names)}; give one value per column")
-        cells.append(row)
-        lines.append(number)
+        assert row_pattern is not None
+        match = row_pattern.fullmatch(stripped)
+        if match is None:
+            _diagnose(source, number, names, stripped)
+        cells = match.groups()
+        tid = int(cells[names.index("trial")])
+        if tid != trial_id:
+            if trial_id is not None:
+                builder.finish(trial_id, _arrays(current), np.frombuffer(line_numbers,
+                                                                         np.int64), exponent)
+                current = {n: array(a.typecode) for n, a in current.items()}
+                line_numbers = array("q")
+            trial_id, exponent = tid, 0
+        for j, name in kinds:
+            text = cells[j]
+            if name in _INTEGER_COLUMNS:
+                k = int(text)
+                problem = _int_problem(name, text, k)
+                if problem:
+                    raise _fail(f"{source}: line {number}, column {name!r}", problem)
+                current[name].append(k)
+            else:
+                x = float(text)
+                problem = _float_problem(name, text, x)
+                if problem:
+                    raise _fail(f"{source}: line {number}, column {name!r}", problem)
+                current[name].append(x)
+                if name == "time":
+                    digits = _TIME_DIGITS.fullmatch(text)
+                    written = int(digits.group(2) or 0) - len(digits.group(1) or "")
+                    exponent = min(exponent, written)
+        line_numbers.append(number)
     if names is None:
-        raise VerifyInputError(f"{path}: empty log (no header line); the first line must name "
-                               f"the columns, e.g. {','.join(REQUIRED)}")
-    if not cells:
-        raise VerifyInputError(f"{path}: the log has a header but no samples; add data rows")
-    columns: dict[str, np.ndarray] = {}
-    for j, name in enumerate(names):
-        integer = name in ("trial", *FLAGS)
-        pattern = _INTEGER if integer else _NUMBER
-        values = []
-        for row, number in zip(cells, lines, strict=True):
-            cell = row[j].strip()
-            if not pattern.fullmatch(cell):
-                raise _fail(f"{path}: line {number}, column {name!r}",
-                            _bad_cell(cell, integer))
-            values.append(cell)
-        columns[name] = (np.array([int(v) for v in values], dtype=np.int64) if integer
-                         else np.array([float(v) for v in values], dtype=np.float64))
-        if not integer and not np.all(np.isfinite(columns[name])):
-            k = int(np.flatnonzero(~np.isfinite(columns[name]))[0])
-            raise _fail(f"{path}: line {lines[k]}, column {name!r}",
-                        f"{cells[k][j].strip()!r} is beyond the float range; give a finite "
-                        "number")
-    return columns, np.array(lines), rate
+        raise VerifyInputError(f"{source}: empty log (no header line); the first line must "
+                               f"name the columns, e.g. {','.join(REQUIRED)}")
+    if trial_id is None:
+        raise VerifyInputError(f"{source}: the log has a header but no samples; add data rows")
+    builder.finish(trial_id, _arrays(current), np.frombuffer(line_numbers, np.int64), exponent)
+    return builder.log(rate)
 
 
-def _bad_cell(cell: str, integer: bool) -> str:
-    if not cell:
-        return "empty cell; give a value"
-    if _NONFINITE.fullmatch(cell):
-        return f"NaN or Inf ({cell!r}) is not allowed; give a finite number or mark the sample " \
-               "invalid (valid = 0) with any finite value"
-    if integer:
-        if _NUMBER.fullmatch(cell):
-            return f"{cell!r} is not an integer; write a whole number without a decimal point"
-        return f"{cell!r} is not an integer; write a whole number"
-    return f"{cell!r} is not a number; write a decimal such as -0.25 or 1.5e-3"
+def _arrays(current: dict[str, array]) -> dict[str, np.ndarray]:
+    return {n: np.frombuffer(a, np.int64 if a.typecode == "q" else np.float64)
+            for n, a in current.items()}
 
 
-def _read_npz(path: Path) -> tuple[dict[str, np.ndarray], np.ndarray, float | None]:
+def _rate_comment(source: str, number: int, value: str) -> float:
+    rate = float(value) if _NUMBER.fullmatch(value) else math.nan
+    if not (0 < rate <= 1 / MIN_STEP):
+        raise _fail(f"{source}: line {number}", f"rate {_short(value)!r} is not a positive "
+                    f"number of at most {1 / MIN_STEP:g} Hz; write e.g. '# rate = 120'")
+    return rate
+
+
+def _diagnose(source: str, number: int, names: list[str], stripped: str) -> None:
+    """Raise the error of a row that does not match the header's pattern."""
+    cells = next(csv.reader([stripped])) if stripped else []
+    if len(cells) != len(names):
+        raise _fail(f"{source}: line {number}", f"{len(cells)} cells, the header has "
+                    f"{len(names)}; give one value per column")
+    for name, cell in zip(names, cells, strict=True):
+        cell = cell.strip()
+        pattern = _INTEGER if name in _INTEGER_COLUMNS else _NUMBER
+        if not pattern.fullmatch(cell):
+            raise _fail(f"{source}: line {number}, column {name!r}", _bad_cell(name, cell))
+    raise _fail(f"{source}: line {number}", "unreadable row; give one number per column")
+
+
+class _Trials:
+    """Checks each trial as it is completed and collects them (Section 4: one trial per
+    reference). ``kind`` is "line" (CSV) or "entry" (NPZ), for messages."""
+
+    def __init__(self, source: str, kind: str, min_samples: int) -> None:
+        self.source, self.kind, self.min_samples = source, kind, min_samples
+        self.seen: dict[int, int] = {}
+        self.trials: list[Trial] = []
+        self.step0: float | None = None
+        self.spread0 = 0.0
+
+    def _at(self, row: int) -> str:
+        return f"{self.source}: {self.kind} {row}"
+
+    def finish(self, tid: int, cols: dict[str, np.ndarray], rows: np.ndarray,
+               exponent: int | None) -> None:
+        """Check one trial (rows ``rows`` of the file) and keep it.
+
+        ``exponent``: the times are written to 10**exponent s (CSV), or None when they
+        are binary floats (NPZ).
+        """
+        where = f"{self._at(rows[0])}, trial {tid}"
+        if tid in self.seen:
+            raise _fail(where, f"trial {tid} appears again after other trials (first at "
+                        f"{self.kind} {self.seen[tid]}); keep each trial's rows together")
+        self.seen[tid] = int(rows[0])
+        n = rows.shape[0]
+        if n < self.min_samples:
+            raise _fail(where, f"trial {tid} has {n} sample{'s' if n != 1 else ''}; at least "
+                        f"{self.min_samples} are needed (the model order and the protocol "
+                        "need them); drop the trial or record longer")
+        for name in FLAGS:
+            if name in cols:
+                bad = np.flatnonzero((cols[name] != 0) & (cols[name] != 1))
+                if bad.size:
+                    raise _fail(f"{self._at(rows[bad[0]])}, column {name!r}",
+                                f"{cols[name][bad[0]]} is not 0 or 1; write 1 (yes) or 0 (no)")
+        t = cols["time"]
+        d = np.diff(t)
+        if np.any(d <= 0):
+            k = int(np.flatnonzero(d <= 0)[0]) + 1
+            kind = "repeats" if d[k - 1] == 0 else "goes back"
+            raise _fail(f"{self._at(rows[k])}, column 'time'",
+                        f"time {float(t[k])!r} {kind} within trial {tid} (previous "
+                        f"{float(t[k - 1])!r}); time must increase strictly within a trial")
+        step = float((t[-1] - t[0]) / (n - 1))
+        size = float(max(abs(t[0]), abs(t[-1])))
+        if step < MIN_STEP or step < RESOLUTION * size:
+            raise _fail(where, f"trial {tid} has a time step of {step:.3g} s, below "
+                        f"{max(MIN_STEP, RESOLUTION * size):.3g} s (the limit is {MIN_STEP:g} "
+                        f"s, and {RESOLUTION:.3g} of the largest time so that float times "
+                        "resolve the step); check the time unit (seconds) or write times "
+                        "relative to the experiment's start")
+        written = 0.0 if exponent is None else 10.0 ** exponent
+        slack = 8 * np.finfo(float).eps * size
+        off = np.abs(d - step) > STEP_TOLERANCE * step
+        if np.any(off) and written > 0:
+            line = t[0] + np.arange(n) * step
+            if np.all(np.abs(t - line) <= written + slack):
+                off[:] = False  # equal within the written precision (module docstring)
+        if np.any(off):
+            k = int(np.flatnonzero(off)[0]) + 1
+            allowance = (f", or every time within {written:g} s (its written precision) of "
+                         "the equally spaced grid" if written > 0 else "")
+            raise _fail(f"{self._at(rows[k])}, column 'time'",
+                        f"unequal sampling in trial {tid}: step {d[k - 1]:.9g} s vs the "
+                        f"trial's mean step {step:.9g} s (tolerance: relative "
+                        f"{STEP_TOLERANCE:g}{allowance}); resample the trial uniformly")
+        spread = (written + slack) / (n - 1)  # how far the mean step may be from the grid's
+        if self.step0 is None:
+            self.step0, self.spread0 = step, spread
+        elif abs(step - self.step0) > max(STEP_TOLERANCE * self.step0, spread + self.spread0):
+            raise _fail(where, f"trial {tid} has step {step:.9g} s, the first trial "
+                        f"{self.step0:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); "
+                        "resample the trials to one rate")
+        start = None
+        if "start" in cols:
+            marks = np.flatnonzero(cols["start"])
+            if marks.size > 1:
+                raise _fail(f"{self._at(rows[marks[1]])}, column 'start'",
+                            f"a second start event in trial {tid} (first at time "
+                            f"{float(t[marks[0]])!r}); mark one start per trial")
+            start = float(t[marks[0]]) if marks.size else None
+        reference = (np.stack([cols[r] for r in REFERENCE], axis=1)
+                     if "r1" in cols else None)
+        valid = cols["valid"].astype(bool) if "valid" in cols else None
+        e = np.stack([cols["e1"], cols["e2"]], axis=1)
+        u = np.stack([cols["u1"], cols["u2"]], axis=1)
+        self.trials.append(Trial(tid, np.array(t, dtype=np.float64), e, u, reference, valid,
+                                 start))
+
+    def log(self, rate: float | None) -> ExperimentLog:
+        """The log of the trials read, at ``rate`` (metadata) or the rate of the step."""
+        assert self.step0 is not None
+        step, spread = self.step0, self.spread0
+        if rate is None:
+            rate = _simplest_rate(step, spread)
+        elif abs(rate * step - 1.0) > max(STEP_TOLERANCE, spread / step):
+            raise VerifyInputError(f"{self.source}: the rate metadata says {rate:g} Hz but the "
+                                   f"time step is {step:.9g} s ({1 / step:.9g} Hz); fix the "
+                                   "rate or the time column")
+        return ExperimentLog(tuple(self.trials), float(rate), self.source)
+
+
+def _simplest_rate(step: float, spread: float) -> float:
+    """The rate with the fewest significant digits that the step allows.
+
+    The mean step is known to within ``spread`` (written precision of the times); the
+    rate is then known to within the interval of 1/step, and the shortest decimal in it
+    is the rate (so times written to 6 decimals at 120 Hz give 120 exactly, and the
+    decimation of the protocol finds an integer factor).
+    """
+    exact = 1.0 / step
+    if spread <= 0:
+        return exact
+    lo, hi = 1.0 / (step + spread), 1.0 / max(step - spread, step / 2)
+    for digits in range(1, 18):
+        candidate = float(f"{exact:.{digits}g}")
+        if lo <= candidate <= hi:
+            return candidate
+    return exact
+
+
+def _read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float | None]:
+    """The columns of an NPZ archive, sizes checked from the headers before any data is
+    decompressed (the zip directory's uncompressed sizes, each member's .npy header)."""
+    magic = handle.read(6)
+    handle.seek(0)
+    if magic == b"\x93NUMPY":
+        raise VerifyInputError(f"{path}: a single .npy array, not an .npz archive; save the "
+                               "columns with numpy.savez(path, time=..., trial=..., ...)")
     try:
-        archive = np.load(path, allow_pickle=False)
+        archive = zipfile.ZipFile(handle)
     except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
         first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
         raise VerifyInputError(f"{path}: not a readable .npz archive ({first}); write it with "
                                "numpy.savez or verify simulate --log") from None
-    if not isinstance(archive, np.lib.npyio.NpzFile):
-        raise VerifyInputError(f"{path}: a single .npy array, not an .npz archive; save the "
-                               "columns with numpy.savez(path, time=..., trial=..., ...)")
-    arrays: dict[str, np.ndarray] = {}
     with archive:
-        names = list(archive.files)
-        if not names:
+        infos = archive.infolist()
+        if not infos:
             raise VerifyInputError(f"{path}: empty archive; it needs the arrays "
                                    f"{', '.join(REQUIRED)}")
-        for name in names:
+        total = sum(info.file_size for info in infos)
+        if total > MAX_NPZ_BYTES or len(infos) > 2 * len(COLUMNS):
+            raise VerifyInputError(
+                f"{path}: the archive holds {len(infos)} member(s) of {total} bytes "
+                f"uncompressed, above the limit of {MAX_NPZ_BYTES // 2**20} MiB (or "
+                f"{2 * len(COLUMNS)} members); split the log into several files")
+        headers: dict[str, tuple[tuple[int, ...], np.dtype, zipfile.ZipInfo]] = {}
+        for info in infos:
+            name = info.filename.removesuffix(".npy")
             try:
-                arrays[name] = archive[name]
-            except ValueError:
+                with archive.open(info) as member:
+                    version = np.lib.format.read_magic(member)
+                    if version == (1, 0):
+                        shape, _, dtype = np.lib.format.read_array_header_1_0(member)
+                    else:
+                        shape, _, dtype = np.lib.format.read_array_header_2_0(member)
+            except (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError,
+                    NotImplementedError) as exc:
+                raise VerifyInputError(f"{path}: array {_short(name)!r} is unreadable "
+                                       f"({_short(' '.join(str(exc).split()), 80)}); rewrite "
+                                       "the archive") from None
+            if dtype.hasobject:
                 raise VerifyInputError(
-                    f"{path}: array {name!r} holds Python objects (pickled), which are not "
-                    "loaded; store numbers (float64, int64 or bool)") from None
-            except (OSError, zipfile.BadZipFile, EOFError) as exc:
-                raise VerifyInputError(f"{path}: array {name!r} is unreadable ({exc}); "
-                                       "rewrite the archive") from None
-    rate = None
+                    f"{path}: array {_short(name)!r} holds Python objects (pickled), which are "
+                    "not loaded; store numbers (float64, int64 or bool)")
+            if math.prod(shape) * dtype.itemsize > info.file_size:
+                raise VerifyInputError(f"{path}: array {_short(name)!r}: its header promises "
+                                       f"{math.prod(shape) * dtype.itemsize} bytes, the member "
+                                       f"holds {info.file_size}; rewrite the archive")
+            headers[name] = (shape, dtype, info)
+        rate = None
+        if "rate" in headers:
+            shape, dtype, _ = headers["rate"]
+            if shape != () or dtype.kind not in "iuf":
+                raise _fail(f"{path}: array 'rate'", f"must be one positive number (0-d "
+                            f"array), got shape {shape}, dtype {dtype}")
+        _header(str(path), [n for n in headers if n != "rate"], f"{path}")
+        shapes = {n: s for n, (s, _, _) in headers.items() if n != "rate"}
+        for name, shape in shapes.items():
+            if len(shape) != 1:
+                raise _fail(f"{path}: array {name!r}", f"must be 1-D (one value per sample), "
+                            f"got shape {shape}")
+        if len(set(shapes.values())) > 1:
+            raise _fail(str(path), "arrays of different lengths "
+                        + ", ".join(f"{n}: {s[0]}" for n, s in shapes.items())
+                        + "; give every column one value per sample")
+        if next(iter(shapes.values()))[0] == 0:
+            raise VerifyInputError(f"{path}: the log has no samples; add data")
+        arrays: dict[str, np.ndarray] = {}
+        for name, (_, _, info) in headers.items():
+            try:
+                with archive.open(info) as member:
+                    arrays[name] = np.lib.format.read_array(member, allow_pickle=False)
+            except (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError) as exc:
+                raise VerifyInputError(f"{path}: array {name!r} is unreadable "
+                                       f"({_short(' '.join(str(exc).split()), 80)}); rewrite "
+                                       "the archive") from None
     if "rate" in arrays:
         r = arrays.pop("rate")
-        if r.shape != () or r.dtype.kind not in "iuf" or not (np.isfinite(r) and r > 0):
-            raise _fail(f"{path}: array 'rate'", f"must be one positive number (0-d array), "
-                        f"got shape {r.shape}, dtype {r.dtype}")
+        if not (np.isfinite(r) and 0 < r <= 1 / MIN_STEP):
+            raise _fail(f"{path}: array 'rate'", f"must be one positive number of at most "
+                        f"{1 / MIN_STEP:g} Hz, got {r}")
         rate = float(r)
-    _header(path, list(arrays), f"{path}")
-    lengths = {arr.shape for arr in arrays.values()}
-    for name, arr in arrays.items():
-        if arr.ndim != 1:
-            raise _fail(f"{path}: array {name!r}", f"must be 1-D (one value per sample), got "
-                        f"shape {arr.shape}")
-    if len(lengths) > 1:
-        raise _fail(path, "arrays of different lengths "
-                    + ", ".join(f"{n}: {a.shape[0]}" for n, a in arrays.items())
-                    + "; give every column one value per sample")
-    if next(iter(lengths))[0] == 0:
-        raise VerifyInputError(f"{path}: the log has no samples; add data")
+    return _npz_columns(path, arrays), rate
+
+
+def _npz_columns(path: Path, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     columns: dict[str, np.ndarray] = {}
     for name, arr in arrays.items():
         where = f"{path}: array {name!r}"
         kind = arr.dtype.kind
-        if name in ("trial", *FLAGS):
+        if name in _INTEGER_COLUMNS:
             if kind == "b" and name in FLAGS:
                 arr = arr.astype(np.int64)
             elif kind not in "iu":
                 raise _fail(where, f"dtype {arr.dtype} is not an integer type; store whole "
                             "numbers as int64" + (" (or bool)" if name in FLAGS else ""))
+            big = np.flatnonzero(np.abs(arr.astype(np.float64)) > MAX_TRIAL_ID)
+            if big.size:
+                raise _fail(f"{where}[{big[0]}]", f"{arr[big[0]]} exceeds the limit "
+                            f"{MAX_TRIAL_ID} in size; number the trials 0, 1, 2, ...")
             columns[name] = arr.astype(np.int64)
         else:
             if kind not in "iuf":
@@ -304,88 +634,13 @@ def _read_npz(path: Path) -> tuple[dict[str, np.ndarray], np.ndarray, float | No
             if bad.size:
                 raise _fail(f"{where}[{bad[0]}]", f"NaN or Inf ({arr[bad[0]]}) is not allowed; "
                             "give a finite number or mark the sample invalid (valid = 0)")
-            columns[name] = arr
-    return columns, np.arange(next(iter(lengths))[0]), rate
-
-
-def _row(path: Path, rows: np.ndarray, k: int) -> str:
-    if path.suffix.lower() == ".csv":
-        return f"{path}: line {rows[k]}"
-    return f"{path}: entry {rows[k]}"
-
-
-def _assemble(path: Path, columns: dict[str, np.ndarray], rows: np.ndarray,
-              rate: float | None, min_samples: int) -> ExperimentLog:
-    trial = columns["trial"]
-    for name in FLAGS:
-        if name in columns:
-            bad = np.flatnonzero((columns[name] != 0) & (columns[name] != 1))
+            size = np.abs(arr)
+            bad = np.flatnonzero((size > _limit(name)) | ((size > 0) & (size < TINY)))
             if bad.size:
-                raise _fail(f"{_row(path, rows, bad[0])}, column {name!r}",
-                            f"{columns[name][bad[0]]} is not 0 or 1; write 1 (yes) or 0 (no)")
-    breaks = np.flatnonzero(np.diff(trial) != 0) + 1
-    bounds = [0, *breaks.tolist(), trial.shape[0]]
-    seen: dict[int, int] = {}
-    trials: list[Trial] = []
-    step0: float | None = None
-    for a, b in itertools.pairwise(bounds):
-        tid = int(trial[a])
-        where = f"{_row(path, rows, a)}, trial {tid}"
-        if tid in seen:
-            raise _fail(where, f"trial {tid} appears again after other trials (first at "
-                        f"{_row(path, rows, seen[tid]).split(': ', 1)[1]}); keep each trial's "
-                        "rows together")
-        seen[tid] = a
-        n = b - a
-        if n < min_samples:
-            raise _fail(where, f"trial {tid} has {n} sample{'s' if n != 1 else ''}; at least "
-                        f"{min_samples} are needed (the model order and the protocol need "
-                        "them); drop the trial or record longer")
-        t = columns["time"][a:b]
-        d = np.diff(t)
-        if np.any(d <= 0):
-            k = int(np.flatnonzero(d <= 0)[0]) + 1
-            kind = "repeats" if d[k - 1] == 0 else "goes back"
-            raise _fail(f"{_row(path, rows, a + k)}, column 'time'",
-                        f"time {float(t[k])!r} {kind} within trial {tid} (previous "
-                        f"{float(t[k - 1])!r}); "
-                        "time must increase strictly within a trial")
-        step = (t[-1] - t[0]) / (n - 1)
-        off = np.abs(d - step) > STEP_TOLERANCE * step
-        if np.any(off):
-            k = int(np.flatnonzero(off)[0]) + 1
-            raise _fail(f"{_row(path, rows, a + k)}, column 'time'",
-                        f"unequal sampling in trial {tid}: step {d[k - 1]:.9g} s vs the trial's "
-                        f"mean step {step:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); "
-                        "resample the trial uniformly")
-        if step0 is None:
-            step0 = step
-        elif abs(step - step0) > STEP_TOLERANCE * step0:
-            raise _fail(where, f"trial {tid} has step {step:.9g} s, the first trial "
-                        f"{step0:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); resample the "
-                        "trials to one rate")
-        start = None
-        if "start" in columns:
-            marks = np.flatnonzero(columns["start"][a:b])
-            if marks.size > 1:
-                raise _fail(f"{_row(path, rows, a + marks[1])}, column 'start'",
-                            f"a second start event in trial {tid} (first at time "
-                            f"{float(t[marks[0]])!r}); mark one start per trial")
-            start = float(t[marks[0]]) if marks.size else None
-        reference = (np.stack([columns[r][a:b] for r in REFERENCE], axis=1)
-                     if "r1" in columns else None)
-        valid = columns["valid"][a:b].astype(bool) if "valid" in columns else None
-        e = np.stack([columns["e1"][a:b], columns["e2"][a:b]], axis=1)
-        u = np.stack([columns["u1"][a:b], columns["u2"][a:b]], axis=1)
-        trials.append(Trial(tid, t.copy(), e, u, reference, valid, start))
-    assert step0 is not None
-    if rate is None:
-        rate = 1.0 / step0
-    elif abs(rate * step0 - 1.0) > STEP_TOLERANCE:
-        raise VerifyInputError(f"{path}: the rate metadata says {rate:g} Hz but the time step "
-                               f"is {step0:.9g} s ({1 / step0:.9g} Hz); fix the rate or the "
-                               "time column")
-    return ExperimentLog(tuple(trials), float(rate), str(path))
+                x = float(arr[bad[0]])
+                raise _fail(f"{where}[{bad[0]}]", _float_problem(name, repr(x), x) or "")
+            columns[name] = arr
+    return columns
 
 
 # ----------------------------------------------------------------------------------- writing
