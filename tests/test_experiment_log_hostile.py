@@ -287,3 +287,238 @@ def test_existing_file_survives_a_failed_write(tmp_path):
     with pytest.raises(VerifyInputError):
         write_log(bad, path)
     assert path.read_bytes() == before and list(tmp_path.iterdir()) == [path]
+
+
+# ------------------------------------------------------------------ hostile: sampling
+
+
+def _fixed(n, decimals, rate=RATE, trial=0, t0=0.0):
+    return [f"{t0 + k / rate:.{decimals}f},{trial},0.1,0.2,0.3,0.4" for k in range(n)]
+
+
+def test_times_written_with_six_decimals_at_120_hz_are_equal_sampling(tmp_path):
+    log = read_log(_csv(tmp_path, [HEADER, *_fixed(200, 6), *_fixed(150, 6, trial=1, t0=3.0)]))
+    assert log.rate == 120.0  # the simplest rate the written step allows
+    assert [len(tr.t) for tr in log.trials] == [200, 150]
+    with_rate = read_log(_csv(tmp_path, ["# rate = 120", HEADER, *_fixed(40, 6)], "r.csv"))
+    assert with_rate.rate == 120.0
+
+
+def test_written_precision_does_not_hide_a_skipped_sample(tmp_path):
+    rows = _fixed(60, 6)
+    del rows[30]  # one sample missing: the grid is off by a whole step there
+    with pytest.raises(VerifyInputError, match=r"line 32, column 'time': unequal sampling.*"
+                       r"within 1e-06 s \(its written precision\)"):
+        read_log(_csv(tmp_path, [HEADER, *rows]))
+    jitter = _fixed(60, 6)
+    jitter[20] = jitter[20].replace(jitter[20].split(",")[0],
+                                    f"{20 / RATE + 3e-6:.6f}")  # 3 units of the last digit
+    with pytest.raises(VerifyInputError, match=r"unequal sampling in trial 0"):
+        read_log(_csv(tmp_path, [HEADER, *jitter], "j.csv"))
+
+
+def test_a_byte_order_mark_is_ignored(tmp_path):
+    path = tmp_path / "bom.csv"
+    path.write_text("\n".join([HEADER, *_rows(4)]) + "\n", encoding="utf-8-sig")
+    assert path.read_bytes().startswith(b"\xef\xbb\xbf")
+    assert len(read_log(path).trials[0].t) == 4
+
+
+# ------------------------------------------------------------------ hostile: sizes
+
+SIZE_CASES = {
+    "1e308 in a cell": ("0.02,0,1e308,0.2,0.3,0.4",
+                        r"line 4, column 'e1': '1e308' exceeds the limit 1e\+09"),
+    "max float in a cell": ("0.02,0,0.1,0.2,-1.7976931348623157e308,0.4",
+                            r"line 4, column 'u1': .* exceeds the limit"),
+    "trial id 1e20": ("0.02,100000000000000000000,1,1,1,1",
+                      r"line 4, column 'trial': '100000000000000000000' has more than 18"),
+    "trial id 1e20 written as a float": ("0.02,1e20,1,1,1,1",
+                                         r"line 4, column 'trial': '1e20' is not an integer"),
+    "trial id beyond the limit": ("0.02,900000000000000000,1,1,1,1",
+                                  r"line 4, column 'trial': trial id 900000000000000000 "
+                                  r"exceeds the limit"),
+    "subnormal value": ("0.02,0,5e-324,1,1,1",
+                        r"line 4, column 'e1': '5e-324' is below the normal float range"),
+    "huge time": ("1e12,0,1,1,1,1", r"line 4, column 'time': '1e12' exceeds the limit 1e\+09s"),
+    "many digits": ("0.02,0," + "1" * 50 + ",1,1,1",
+                    r"line 4, column 'e1': '1111.*' has more digits than a log allows"),
+    "long cell": ("0.02,0," + "1" * 70 + ",1,1,1",
+                  r"line 4, column 'e1': a cell of 70 characters \(limit 64\)"),
+    "long exponent": ("0.02,0,1e99999999,1,1,1",
+                      r"line 4, column 'e1': '1e99999999' has more digits"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(SIZE_CASES))
+def test_huge_tiny_and_overflowing_values_are_one_line(tmp_path, case):
+    row, pattern = SIZE_CASES[case]
+    path = _csv(tmp_path, [HEADER, *_rows(2), row])
+    with pytest.raises(VerifyInputError, match=pattern) as info:
+        read_log(path)
+    assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize(("times", "pattern"), [
+    ([k * 5e-324 for k in range(1, 6)], r"'5e-324' is below the normal float range"),
+    ([1.0 + k * 1e-12 for k in range(5)], r"time step of 1e-12 s, below 1e-06 s"),
+    ([1e8 + k * 0.01 for k in range(5)], r"time step of 0\.01 s, below 0\.0931"),
+])
+def test_steps_too_small_to_resolve_are_one_line(tmp_path, times, pattern):
+    path = _csv(tmp_path, [HEADER, *[f"{t!r},0,1,1,1,1" for t in times]])
+    with pytest.raises(VerifyInputError, match=pattern):
+        read_log(path)
+
+
+def test_cli_exit_2_not_3_for_value_edges(tmp_path, capsys):
+    from verify.cli import main
+
+    for name, row in [("big", "0.02,0,1e308,0.2,0.3,0.4"), ("id", "0.02,10**20,1,1,1,1"),
+                      ("sub", "1e-320,0,1,1,1,1")]:
+        path = _csv(tmp_path, [HEADER, *_rows(2), row], f"{name}.csv")
+        assert main(["identify", str(path), "--split", "1:1", "--out",
+                     str(tmp_path / f"out-{name}")]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and str(path) in err and "Traceback" not in err
+    assert not any(p.name.startswith("out-") for p in tmp_path.iterdir())
+
+
+def test_a_trial_too_short_for_the_filter_is_exit_2(tmp_path, capsys):
+    from verify.cli import main
+
+    rows = [*_fixed(200, 9), *_fixed(3, 9, trial=1, t0=5.0), *_fixed(200, 9, trial=2, t0=9.0)]
+    path = _csv(tmp_path, [HEADER, *rows])
+    assert main(["identify", str(path), "--split", "2:1", "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "trial 1 has 3 samples; at least 28 are needed" in err and err.count("\n") == 1
+
+
+def test_split_advice_is_a_split_the_command_accepts(tmp_path, capsys):
+    import re
+
+    from verify.cli import main
+    from verify.identify.command import parse_split
+
+    for count in (1, 2, 3, 5):
+        rows = [r for k in range(count) for r in _fixed(40, 9, trial=k, t0=2.0 * k)]
+        path = _csv(tmp_path, [HEADER, *rows], f"n{count}.csv")
+        assert main(["identify", str(path), "--split", "6:6", "--out",
+                     str(tmp_path / "o")]) == 2
+        err = capsys.readouterr().err
+        assert f"needs 12 trials but the log has {count}" in err
+        advice = re.search(r"--split (\d+:\d+)\s*$", err.strip())
+        if count == 1:
+            assert advice is None and "at least 2 trials" in err
+        else:
+            a, b = parse_split(advice.group(1))  # accepted by the command's parser
+            assert a + b == count
+
+
+# ------------------------------------------------------------------ hostile: streaming
+
+
+def test_csv_reading_stops_at_the_first_defect():
+    from verify.inputs.experiment_log import read_csv_lines
+
+    consumed = []
+
+    def lines():
+        yield HEADER
+        for k in range(10**9):  # an endless log whose line 6 is bad
+            consumed.append(k)
+            yield "0.0x,0,1,1,1,1" if k == 4 else f"{k * 0.01!r},0,1,1,1,1"
+
+    with pytest.raises(VerifyInputError, match=r"src: line 6, column 'time': '0\.0x' is not"):
+        read_csv_lines(lines(), source="src")
+    assert consumed == [0, 1, 2, 3, 4]  # nothing after the defect was read
+
+    def trials():
+        yield HEADER
+        for k in range(3):
+            yield f"{k * 0.01!r},0,1,1,1,1"
+        yield "0.5,1,1,1,1,1"  # trial 1 starts: trial 0 (3 samples) is checked now
+        raise AssertionError("read past the end of a short trial")
+
+    with pytest.raises(VerifyInputError, match=r"trial 0 has 3 samples; at least 4"):
+        read_csv_lines(trials(), source="src", min_samples=4)
+
+
+def test_log_paths_that_are_not_regular_files(tmp_path):
+    import os
+
+    fifo = tmp_path / "pipe.csv"
+    os.mkfifo(fifo)
+    with pytest.raises(VerifyInputError, match=r"pipe\.csv: is a FIFO"):
+        read_log(fifo)  # returns at once: opened without blocking
+    zero = tmp_path / "zero.npz"
+    zero.symlink_to("/dev/zero")
+    with pytest.raises(VerifyInputError, match=r"zero\.npz: is a device"):
+        read_log(zero)
+    folder = tmp_path / "dir.csv"
+    folder.mkdir()
+    with pytest.raises(VerifyInputError, match=r"dir\.csv: is a directory"):
+        read_log(folder)
+
+
+# ------------------------------------------------------------------ hostile: NPZ sizes
+
+
+def _zip(path, members: dict[str, bytes]):
+    with zipfile.ZipFile(path, "w", compression=zipfile.ZIP_DEFLATED) as z:
+        for name, data in members.items():
+            z.writestr(name, data)
+    return path
+
+
+def _npy(arr: np.ndarray) -> bytes:
+    buf = io.BytesIO()
+    np.lib.format.write_array(buf, arr, allow_pickle=False)
+    return buf.getvalue()
+
+
+def test_npz_header_promising_more_than_the_member_holds(tmp_path, monkeypatch):
+    def no_data(*args, **kwargs):
+        raise AssertionError("array data read before the headers were checked")
+
+    monkeypatch.setattr(np.lib.format, "read_array", no_data)
+    huge = io.BytesIO()
+    np.lib.format.write_array_header_1_0(huge, {"descr": "<f8", "fortran_order": False,
+                                                "shape": (2**40,)})
+    members = {f"{k}.npy": _npy(v) for k, v in _good_arrays().items() if k != "e1"}
+    path = _zip(tmp_path / "lie.npz", {**members, "e1.npy": huge.getvalue()})
+    with pytest.raises(VerifyInputError, match=r"array 'e1': its header promises "
+                       r"8796093022208 bytes, the member holds"):
+        read_log(path)
+
+
+def test_npz_uncompressed_size_is_bounded_before_decompressing(tmp_path, monkeypatch):
+    import verify.inputs.experiment_log as module
+
+    path = _zip(tmp_path / "bomb.npz", {f"{k}.npy": _npy(np.resize(v, 20_000))
+                                        for k, v in _good_arrays().items()})
+    opened = []
+    real_open = zipfile.ZipFile.open
+    monkeypatch.setattr(zipfile.ZipFile, "open",
+                        lambda self, *a, **k: opened.append(a) or real_open(self, *a, **k))
+    monkeypatch.setattr(module, "MAX_NPZ_BYTES", 100_000)
+    with pytest.raises(VerifyInputError, match=r"bomb\.npz: the archive holds 6 member\(s\) "
+                       r"of 960\d+ bytes uncompressed, above the limit"):
+        read_log(path)
+    assert opened == []  # refused from the zip directory alone
+
+
+def test_npz_trial_ids_and_values_beyond_the_limits(tmp_path):
+    cases = {
+        "uint64 ids": ({"trial": np.full(6, 2**63 + 5, np.uint64)},
+                       r"array 'trial'\[0\]: 9223372036854775813 exceeds the limit"),
+        "huge value": ({"u2": np.array([0, 0, 1e300, 0, 0, 0])},
+                       r"array 'u2'\[2\]: '1e\+300' exceeds the limit 1e\+09"),
+        "subnormal": ({"e1": np.array([0, 1e-310, 0, 0, 0, 0])},
+                      r"array 'e1'\[1\]: '1e-310' is below the normal float range"),
+        "subnormal step": ({"time": np.arange(6) * 5e-324},
+                           r"array 'time'\[1\]: '5e-324' is below the normal float range"),
+    }
+    for name, (change, pattern) in cases.items():
+        path = _npz(tmp_path, {**_good_arrays(), **change}, f"{name}.npz")
+        with pytest.raises(VerifyInputError, match=pattern):
+            read_log(path)

@@ -98,6 +98,17 @@ def parse_split(text: str) -> tuple[int, int]:
                            "identification and validation, e.g. --split 6:6")
 
 
+def _check_split(split: tuple[int, int], count: int) -> None:
+    """The split against the log's trial count, with advice this command accepts."""
+    a, b = split
+    if a + b <= count:
+        return
+    advice = (f"e.g. --split {count - count // 2}:{count // 2}" if count >= 2 else
+              "log at least 2 trials (one to identify, one to validate)")
+    raise VerifyInputError(f"--split {a}:{b} needs {a + b} trials but the log has {count}; "
+                           f"{advice}")
+
+
 def parse_rate(text: str | None) -> float | None:
     if text is None:
         return None
@@ -160,11 +171,12 @@ def identify_logs(plan: Plan) -> Identified:
     """Logs -> prepared trials -> estimate and quality (steps 1 and 2)."""
     from verify.identify.estimation import estimate_model
     from verify.identify.prediction import predict
-    from verify.identify.protocol import prepare
+    from verify.identify.protocol import MIN_FILTER_SAMPLES, prepare
     from verify.identify.quality import assess
     from verify.inputs.experiment_log import read_logs
 
-    log = read_logs(plan.logs)
+    log = read_logs(plan.logs, min_samples=MIN_FILTER_SAMPLES)  # shorter: one line, exit 2
+    _check_split(plan.split, len(log.trials))
     prepared = prepare(log, rate=plan.rate, split=plan.split)
     estimate = estimate_model(prepared.identification, plan.structure)
     on_id = assess(estimate, prepared.identification)

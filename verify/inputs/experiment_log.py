@@ -223,6 +223,7 @@ _NUM = r"[+-]?(?:\d{1,40}(?:\.\d{0,40})?|\.\d{1,40})(?:[eE][+-]?\d{1,4})?"
 _INT = r"[+-]?\d{1,18}"
 _NUMBER = re.compile(_NUM)
 _INTEGER = re.compile(_INT)
+_LOOSE = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 _TIME_DIGITS = re.compile(r"[+-]?\d*(?:\.(\d*))?(?:[eE]([+-]?\d+))?")
 _NONFINITE = re.compile(r"[+-]?(nan|inf|infinity)", re.IGNORECASE)
 _INTEGER_COLUMNS = ("trial", *FLAGS)
@@ -280,6 +281,9 @@ def _bad_cell(name: str, cell: str) -> str:
         return f"{_short(cell)!r} is not an integer; write a whole number"
     if _NUMBER.fullmatch(cell):
         return _float_problem(name, cell, float(cell)) or "unreadable number"
+    if _LOOSE.fullmatch(cell):
+        return (f"{_short(cell)!r} has more digits than a log allows (40 before and after "
+                "the point, 4 in the exponent); write the number with fewer digits")
     return f"{_short(cell)!r} is not a number; write a decimal such as -0.25 or 1.5e-3"
 
 
@@ -463,7 +467,10 @@ class _Trials:
             if np.all(np.abs(t - line) <= written + slack):
                 off[:] = False  # equal within the written precision (module docstring)
         if np.any(off):
-            k = int(np.flatnonzero(off)[0]) + 1
+            # point at the first step unlike most steps (a gap, a jump); else the first off
+            typical = float(np.median(d))
+            odd = np.abs(d - typical) > max(STEP_TOLERANCE * typical, 2 * written + slack)
+            k = int(np.flatnonzero(odd if np.any(odd) else off)[0]) + 1
             allowance = (f", or every time within {written:g} s (its written precision) of "
                          "the equally spaced grid" if written > 0 else "")
             raise _fail(f"{self._at(rows[k])}, column 'time'",
