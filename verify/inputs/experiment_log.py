@@ -46,9 +46,10 @@ defect; its memory is that of the numbers read (8 bytes a value), not of the tex
 
 CSV (``.csv``)
 --------------
-UTF-8 text (a byte-order mark is ignored); the first line that is not a comment is the header (column names separated
-by commas, in any order, surrounding spaces ignored); then one row per sample. Lines
-whose first non-blank character is ``#`` are comments anywhere in the file; a comment
+UTF-8 text (a byte-order mark is ignored); the first line that is not a comment is the
+header (column names separated by commas, in any order, surrounding spaces ignored);
+then one row per sample. Lines whose first non-blank character is ``#`` are comments
+anywhere in the file; a comment
 ``# rate = 120`` gives the rate in Hz (other ``# key = value`` comments are kept as
 notes and otherwise ignored). Numbers are decimal literals (``-1.5``, ``2e-3``,
 ``.5``); ``nan``, ``inf``, empty cells, underscores and text are refused. ``trial``,

@@ -19,7 +19,13 @@ Two flavours validate an input: the exact one (:func:`rational`, :func:`exact_ar
 for data the exact machinery decides on, and the float one (:func:`real`,
 :func:`positive_real`, :func:`real_array`) for data that only simulations and
 numerical proposals read. Both refuse bool, text, NaN and Inf with one line naming the
-argument, the value and the fix; :func:`parse_number` reads a command-line number.
+argument, the value and the fix; :func:`parse_number` reads a command-line number;
+:func:`strict_rational` reads a certificate's number (one spelling per value).
+
+Limits, checked on the text before any conversion: a decimal literal has at most
+``MAX_DECIMAL_DIGITS`` = 4000 digits counting the size of its exponent, and an exponent
+of at most ``MAX_DECIMAL_EXPONENT`` = 4300 in size (so ``1e99999999`` is refused at
+once); a strict rational has at most ``MAX_STRICT_CHARS`` = 100 000 characters.
 """
 
 from __future__ import annotations
@@ -40,6 +46,14 @@ Rational = type(mpq(0))
 #: Largest accepted |exponent| of a decimal literal: beyond it an exact value would have
 #: thousands of digits (the same bound as Python's default limit on integer digits).
 MAX_DECIMAL_EXPONENT = 4300
+#: Most digits of a decimal literal's exact value: the mantissa's digits plus the size of
+#: its exponent (so numerator and denominator stay printable, below Python's 4300).
+MAX_DECIMAL_DIGITS = 4000
+#: Most characters of a strict rational "p" or "p/q" (:func:`strict_rational`).
+MAX_STRICT_CHARS = 100_000
+
+_STRICT = re.compile(r"-?(0|[1-9][0-9]*)(/[1-9][0-9]*)?")
+_EXPONENT_DIGITS = 12  # an exponent written with more digits is beyond any bound above
 
 _DECIMAL = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 
@@ -59,11 +73,51 @@ def decimal_literal(text: str) -> Fraction | float:
     match = _DECIMAL.fullmatch(plain)
     if match is None:  # tomllib has checked the syntax; this is a guard
         raise ValueError(f"not a decimal number: {text!r}")
-    if match.group(2) and abs(int(match.group(2)[1:])) > MAX_DECIMAL_EXPONENT:
-        raise ValueError(
-            f"decimal {text} has an exponent beyond +-{MAX_DECIMAL_EXPONENT}"
-        )
-    return Fraction(plain)
+    exponent = (match.group(2) or "e0")[1:].lstrip("+-").lstrip("0") or "0"
+    if len(exponent) > _EXPONENT_DIGITS or int(exponent) > MAX_DECIMAL_EXPONENT:
+        raise ValueError(f"decimal {_brief(text)} has an exponent beyond "
+                         f"+-{MAX_DECIMAL_EXPONENT}")
+    digits = len(match.group(1)) - ("." in match.group(1)) + int(exponent)
+    if digits > MAX_DECIMAL_DIGITS:
+        raise ValueError(f"decimal {_brief(text)} would have {digits} digits, more than "
+                         f"{MAX_DECIMAL_DIGITS}")
+    power = -int(exponent) if (match.group(2) or "e")[1:2] == "-" else int(exponent)
+    mantissa = Fraction(("-" if plain.startswith("-") else "") + match.group(1))
+    return mantissa * Fraction(10) ** power
+
+
+def _brief(text: str, width: int = 40) -> str:
+    return text if len(text) <= width else f"{text[:20]}...{text[-10:]} ({len(text)} chars)"
+
+
+def strict_rational(text: Any, where: str, *, max_chars: int = MAX_STRICT_CHARS) -> Rational:
+    """A certificate number: an integer "p" or a reduced fraction "p/q" with q > 1.
+
+    The one spelling of each rational (Python's ``str`` of a Fraction): no sign but a
+    leading "-", no leading zeros, no whitespace, no decimal point or exponent, no "-0",
+    "3/1", "2/4" or "-2/2". One spelling per value keeps a certificate's bytes a function
+    of its content, and refusing exponents bounds the work a file can ask for: the text
+    is at most ``max_chars`` characters, checked before it is converted. Anything else is
+    a one-line :class:`VerifyInputError` naming ``where``.
+
+    >>> strict_rational("-3/4", "x"), strict_rational("12", "x")
+    (mpq(-3,4), mpq(12,1))
+    """
+    if not isinstance(text, str):
+        raise VerifyInputError(f"{where}: expected a rational as a string 'p' or 'p/q', got "
+                               f"{type(text).__name__}")
+    if len(text) > max_chars:
+        raise VerifyInputError(f"{where}: a number of {len(text)} characters, more than "
+                               f"{max_chars}")
+    if not _STRICT.fullmatch(text):
+        raise VerifyInputError(f"{where}: {_brief(text)!r} is not a rational 'p' or 'p/q' "
+                               "(an integer or a fraction of integers, no spaces, decimals "
+                               "or exponents)")
+    value = mpq(text)
+    if str(value) != text:
+        raise VerifyInputError(f"{where}: {_brief(text)!r} is not in lowest terms with a "
+                               f"positive denominator > 1; write {_brief(str(value))}")
+    return value
 
 
 def rational(value: Any, where: str) -> Rational:
@@ -232,6 +286,6 @@ def real_array(value: Any, where: str, shape: tuple[int | None, ...] | None = No
     return arr
 
 
-__all__ = ["MAX_DECIMAL_EXPONENT", "Rational", "decimal_literal", "exact_array", "float_view",
-           "fraction", "parse_number", "positive_real", "rational", "real", "real_array",
-           "to_float"]
+__all__ = ["MAX_DECIMAL_DIGITS", "MAX_DECIMAL_EXPONENT", "MAX_STRICT_CHARS", "Rational",
+           "decimal_literal", "exact_array", "float_view", "fraction", "parse_number",
+           "positive_real", "rational", "real", "real_array", "strict_rational", "to_float"]

@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import Any
 
 from verify.inputs.numbers import fraction
-from verify.passivity.check import exact as ex
 from verify.passivity.check import qpoly as qp
 from verify.passivity.check.certificate import ExactModel, KypCheck
 from verify.passivity.check.frequency_domain import PASSIVE, Analysis, analyse
@@ -92,11 +91,21 @@ def parse_json_text(text: str) -> Any:
     return loads_strict(text)
 
 
+def _strict_matrix(rows: Any, where: str) -> list:
+    """A matrix of strict rationals (:func:`verify.inputs.numbers.strict_rational`)."""
+    from verify.inputs.numbers import strict_rational
+
+    if not isinstance(rows, list) or not all(isinstance(row, list) for row in rows):
+        raise ValueError(f"{where}: expected a list of rows")
+    return [[strict_rational(x, f"{where}[{i}][{j}]") for j, x in enumerate(row)]
+            for i, row in enumerate(rows)]
+
+
 def _model(data: dict) -> ExactModel:
     m = data["model"]
     if not isinstance(m, dict) or set(m) != {"A", "B", "C", "D"}:
         raise ValueError("the model must have exactly A, B, C, D")
-    model = ExactModel(*(ex.from_strings(m[k]) for k in ("A", "B", "C", "D")))
+    model = ExactModel(*(_strict_matrix(m[k], f"model.{k}") for k in ("A", "B", "C", "D")))
     n, p = model.n, model.m
     shapes = [(model.A, n, n), (model.B, n, p), (model.D, p, p)]
     if p == 0 or any(len(x) != r or any(len(row) != c for row in x) for x, r, c in shapes) \

@@ -211,17 +211,52 @@ def check_nonnegativity(f: fmpq_poly, cert: Nonnegativity) -> str | None:
     return None
 
 
+#: Bound on the degree a certificate may ask for: each polynomial, and the product
+#: of the factors with their exponents (checked before any power is taken).
+MAX_CERTIFICATE_DEGREE = 10_000
+
+
+def _strict_poly(texts, where: str) -> fmpq_poly:
+    """A polynomial of strict rationals (:func:`verify.inputs.numbers.strict_rational`)."""
+    from verify.inputs.numbers import strict_rational
+
+    if not isinstance(texts, list):
+        raise ValueError(f"{where}: a polynomial is a list of 'p/q' coefficient strings")
+    if len(texts) > MAX_CERTIFICATE_DEGREE + 1:
+        raise ValueError(f"{where}: degree {len(texts) - 1} above the limit "
+                         f"{MAX_CERTIFICATE_DEGREE}")
+    return fmpq_poly([qp.q(strict_rational(t, f"{where}[{i}]")) for i, t in enumerate(texts)])
+
+
 def nonnegativity_from_json(data: dict) -> Nonnegativity:
-    """Parse :meth:`Nonnegativity.to_json` (ValueError on malformed data)."""
+    """Parse :meth:`Nonnegativity.to_json` (ValueError on malformed data).
+
+    Numbers are strict rationals; exponents are integers >= 1, and the degree of the
+    product of the factors is at most ``MAX_CERTIFICATE_DEGREE``, checked here, before
+    the checker raises anything to a power.
+    """
+    from verify.inputs.numbers import strict_rational
+
     if not isinstance(data, dict) or set(data) != {"content", "factors"}:
         raise ValueError("malformed nonnegativity certificate")
+    if not isinstance(data["factors"], list):
+        raise ValueError("malformed factors")
     factors = []
-    for item in data["factors"]:
+    total = 0
+    for k, item in enumerate(data["factors"]):
         if not isinstance(item, dict) or set(item) != {"poly", "exponent", "sos"}:
             raise ValueError("malformed factor")
         e = item["exponent"]
         if not isinstance(e, int) or isinstance(e, bool):
             raise ValueError("a factor exponent is not an integer")
+        if not 1 <= e <= MAX_CERTIFICATE_DEGREE:
+            raise ValueError(f"factors[{k}]: exponent {_brief_int(e)} outside 1.."
+                             f"{MAX_CERTIFICATE_DEGREE}")
+        poly = _strict_poly(item["poly"], f"factors[{k}].poly")
+        total += e * max(poly.degree(), 1)
+        if total > MAX_CERTIFICATE_DEGREE:
+            raise ValueError(f"factors[{k}]: the product of the factors has degree above "
+                             f"the limit {MAX_CERTIFICATE_DEGREE}")
         sos = None
         if item["sos"] == "sturm":
             sos = SturmCount()
@@ -232,13 +267,12 @@ def nonnegativity_from_json(data: dict) -> Nonnegativity:
             for term in item["sos"]:
                 if not isinstance(term, dict) or set(term) != {"weight", "poly"}:
                     raise ValueError("malformed sum-of-squares term")
-                sos.append((qp.q(term["weight"]) if isinstance(term["weight"], str)
-                            else _bad(), qp.from_strings(term["poly"])))
-        factors.append((qp.from_strings(item["poly"]), e, sos))
-    if not isinstance(data["content"], str):
-        raise ValueError("content is not a string")
-    return Nonnegativity(qp.q(data["content"]), factors)
+                where = f"factors[{k}].sos[{len(sos)}]"
+                sos.append((qp.q(strict_rational(term["weight"], f"{where}.weight")),
+                            _strict_poly(term["poly"], f"{where}.poly")))
+        factors.append((poly, e, sos))
+    return Nonnegativity(qp.q(strict_rational(data["content"], "content")), factors)
 
 
-def _bad():
-    raise ValueError("a weight is not a 'p/q' string")
+def _brief_int(e: int) -> str:
+    return str(e) if e.bit_length() < 64 else f"of {e.bit_length()} bits"
