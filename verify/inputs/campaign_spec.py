@@ -58,8 +58,16 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
-from verify.inputs.numbers import decimal_literal, parse_number, positive_real, rational, real
-from verify.inputs.toml import read_toml
+from verify.inputs.files import MAX_FILE_BYTES, read_bounded
+from verify.inputs.numbers import (
+    WrittenDecimal,
+    decimal_literal,
+    parse_number,
+    positive_real,
+    rational,
+    real,
+)
+from verify.inputs.toml import parse_toml_bytes
 from verify.validation import shown
 
 #: The property checks of :mod:`verify.sim.properties`, by the name a spec uses.
@@ -84,6 +92,8 @@ MAX_RUNS = 1_000_000  # runs of one campaign
 MAX_BODIES = 1_000_000  # as ``verify simulate``: n 3x3 matrices per integrator stage
 MAX_STEPS = 2_000_000  # as ``verify simulate``: samples kept in memory per run
 MAX_FAMILY = 10_000  # members of one human family
+MAX_MODEL_BYTES = MAX_FILE_BYTES  # a model file (a few KB when written by verify)
+MAX_SPEC_BYTES = MAX_FILE_BYTES
 
 
 @dataclass(frozen=True)
@@ -232,6 +242,8 @@ def _axis(data: dict[str, Any], key: str, where: str, convert: Callable[[Any, st
         values = _range(value, here, integer)
         if integer:  # every value is an integer here (integer from, step and to)
             values = [int(v) for v in values]
+        else:  # messages show a computed value as a number, never as Fraction(...)
+            values = [WrittenDecimal(v, _number_text(v)) for v in values]
         return [convert(v, f"{here}[{i}]") for i, v in enumerate(values)]
     items = value if isinstance(value, list) else [value]
     if not items:
@@ -243,6 +255,33 @@ def _axis(data: dict[str, Any], key: str, where: str, convert: Callable[[Any, st
     if len(set(out)) != len(out):
         raise VerifyInputError(f"{here}: a value is listed twice; list each once")
     return out
+
+
+def _number_text(q: Fraction) -> str:
+    """A computed rational as a reader would write it: 2, 1.5, or 1/3."""
+    if q.denominator == 1:
+        return str(q.numerator)
+    if Fraction(float(q)) == q:
+        return repr(float(q))
+    return f"{q.numerator}/{q.denominator}"
+
+
+def _as_written(raw: Any, x: float) -> str:
+    """The text a spec used for the axis value ``x`` (``raw``: the axis as parsed)."""
+    for item in raw if isinstance(raw, list) else [raw]:
+        if isinstance(item, WrittenDecimal | int | str) and not isinstance(item, bool):
+            try:
+                value = float(parse_number(item, "", "") if isinstance(item, str) else item)
+            except (VerifyInputError, OverflowError):
+                continue
+            if value == x:
+                return str(item)
+    return f"{x:g}"
+
+
+def _count_text(count: int) -> str:
+    """A step count for a message: digits when short, else three significant figures."""
+    return str(count) if count < 10**12 else f"{float(count):.3g}"
 
 
 def _gain(value: Any, where: str) -> float:
@@ -281,13 +320,20 @@ def _name(choices: tuple[str, ...]) -> Callable[[Any, str], str]:
 
 
 def load_human_model(path: Path, where: str) -> tuple[bytes, Any]:
-    """Read a human model file and validate it (a 2- or 3-port LTI model, Section 4)."""
+    """Read a human model file and validate it (a 2- or 3-port LTI model, Section 4).
+
+    The path must name a regular file of at most ``MAX_MODEL_BYTES`` bytes (a FIFO or a
+    device is refused before it is read); every error starts with ``where`` (the spec
+    and ``humans[i].model``), then the model file's path.
+    """
     try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise VerifyInputError(f"{where}: cannot read model file {path} ({exc.strerror})"
+        raw = read_bounded(path, where=f"{where}: model file {path}",
+                           max_bytes=MAX_MODEL_BYTES)
+        model = parse_model_bytes(raw, str(path))
+    except VerifyInputError as exc:
+        text = str(exc)
+        raise VerifyInputError(text if text.startswith(where) else f"{where}: {text}"
                                ) from None
-    model = parse_model_bytes(raw, str(path))
     if model.m not in (2, 3):
         raise VerifyInputError(f"{where}: {path}: the human model needs 2 or 3 ports "
                                f"(inputs = outputs), got {model.m}")
@@ -373,12 +419,25 @@ def parse_campaign_spec(data: dict[str, Any], source: Path) -> CampaignSpec:
     step = _axis(sweep, "step", at, _step, DEFAULT_STEP)
     from verify.sim.run import step_count
 
+    def written(key: str, x: float) -> str:
+        return _as_written(sweep.get(key), x)
+
     for T in seconds:
         for h in step:
             if step_count(T, h) > MAX_STEPS:
-                raise VerifyInputError(f"{at}: seconds = {T:g} with step = {h:g} is "
-                                       f"{step_count(T, h)} steps; at most {MAX_STEPS} are kept "
-                                       "in memory per run")
+                raise VerifyInputError(f"{at}: seconds = {written('seconds', T)} with step = "
+                                       f"{written('step', h)} is "
+                                       f"{_count_text(step_count(T, h))} steps; at most "
+                                       f"{MAX_STEPS} are kept in memory per run")
+        fastest = max(k_s)
+        if fastest * T > MAX_STEPS:
+            raise VerifyInputError(
+                f"{at}: k_s = {written('k_s', fastest)} is a valid gain, but the leader's loop "
+                "(eq. (6)) then turns at rates up to k_s rad/s, and resolving it over "
+                f"seconds = {written('seconds', T)} "
+                f"takes at least k_s * seconds = {_count_text(math.ceil(fastest * T))} steps "
+                f"of at most 1/k_s, above the {MAX_STEPS} a run keeps; lower k_s or the run "
+                "length")
     if "humans" not in data:
         raise VerifyInputError(f"{where}: missing [[humans]] (at least one human model)")
     humans_raw = data["humans"]
@@ -424,9 +483,10 @@ def load_campaign_spec(path: str | Path) -> CampaignSpec:
         The axes as tuples of values and the human entries with their files' bytes.
     """
     path = Path(path)
-    raw_hash = hashlib.sha256(path.read_bytes()).hexdigest() if path.is_file() else ""
-    spec = parse_campaign_spec(read_toml(path, exact=True), path)
-    return CampaignSpec(**{**spec.__dict__, "source_sha256": raw_hash})
+    raw = read_bounded(path, max_bytes=MAX_SPEC_BYTES)
+    data = parse_toml_bytes(raw, str(path), exact=True, written=True)
+    spec = parse_campaign_spec(data, path)
+    return CampaignSpec(**{**spec.__dict__, "source_sha256": hashlib.sha256(raw).hexdigest()})
 
 
 __all__ = ["AUTONOMOUS", "PROPERTIES", "REFERENCES", "CampaignSpec", "HumanEntry",

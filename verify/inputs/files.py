@@ -38,10 +38,8 @@ def open_regular(path: str | Path, *, where: str | None = None,
     where = str(path) if where is None else where
     try:
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except FileNotFoundError:
-        raise VerifyInputError(f"{where}: no such file; check the path") from None
     except OSError as exc:
-        raise VerifyInputError(f"{where}: cannot open ({exc.strerror})") from None
+        raise VerifyInputError(f"{where}: cannot read ({exc.strerror})") from None
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):

@@ -86,6 +86,37 @@ def decimal_literal(text: str) -> Fraction | float:
     return mantissa * Fraction(10) ** power
 
 
+class WrittenDecimal(Fraction):
+    """The exact value of a decimal literal that prints as it was written.
+
+    ``WrittenDecimal("-1.0")`` equals ``Fraction(-1)`` in every comparison and operation
+    (results of arithmetic are plain Fractions), but ``str`` and ``repr`` give ``-1.0``,
+    so a message quotes the user's number, not ``Fraction(-1, 1)``. Made by
+    :func:`written_decimal`, the ``parse_float`` hook for specs.
+    """
+
+    _text: str
+
+    def __new__(cls, value: Fraction, text: str) -> WrittenDecimal:
+        self = super().__new__(cls, value.numerator, value.denominator)
+        self._text = text
+        return self
+
+    def __repr__(self) -> str:
+        return self._text
+
+    __str__ = __repr__
+
+    def __reduce__(self):  # pickles (and copies) as the plain value
+        return (Fraction, (self.numerator, self.denominator))
+
+
+def written_decimal(text: str) -> WrittenDecimal | float:
+    """:func:`decimal_literal`, keeping the text for messages (:class:`WrittenDecimal`)."""
+    value = decimal_literal(text)
+    return WrittenDecimal(value, _brief(text)) if isinstance(value, Fraction) else value
+
+
 def _brief(text: str, width: int = 40) -> str:
     return text if len(text) <= width else f"{text[:20]}...{text[-10:]} ({len(text)} chars)"
 
@@ -107,8 +138,8 @@ def strict_rational(text: Any, where: str, *, max_chars: int = MAX_STRICT_CHARS)
         raise VerifyInputError(f"{where}: expected a rational as a string 'p' or 'p/q', got "
                                f"{type(text).__name__}")
     if len(text) > max_chars:
-        raise VerifyInputError(f"{where}: a number of {len(text)} characters, more than "
-                               f"{max_chars}")
+        raise VerifyInputError(f"{where}: a number of {len(text)} characters is not a "
+                               f"rational this reader accepts (at most {max_chars})")
     if not _STRICT.fullmatch(text):
         raise VerifyInputError(f"{where}: {_brief(text)!r} is not a rational 'p' or 'p/q' "
                                "(an integer or a fraction of integers, no spaces, decimals "
@@ -288,4 +319,5 @@ def real_array(value: Any, where: str, shape: tuple[int | None, ...] | None = No
 
 __all__ = ["MAX_DECIMAL_DIGITS", "MAX_DECIMAL_EXPONENT", "MAX_STRICT_CHARS", "Rational",
            "decimal_literal", "exact_array", "float_view", "fraction", "parse_number",
-           "positive_real", "rational", "real", "real_array", "strict_rational", "to_float"]
+           "positive_real", "rational", "real", "real_array", "strict_rational", "to_float",
+           "written_decimal"]

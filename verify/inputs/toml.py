@@ -6,27 +6,37 @@ import tomllib
 from pathlib import Path
 
 from verify.errors import VerifyInputError
-from verify.inputs.numbers import decimal_literal
+from verify.inputs.files import MAX_FILE_BYTES, read_bounded
+from verify.inputs.numbers import decimal_literal, written_decimal
 
 
-def read_toml(path: str | Path, *, exact: bool = False) -> dict:
+def read_toml(path: str | Path, *, exact: bool = False, written: bool = False,
+              max_bytes: int = MAX_FILE_BYTES, where: str | None = None) -> dict:
     """Parse a TOML input file; unreadable or invalid files are one-line VerifyInputErrors.
 
     With ``exact``, a decimal literal becomes the exact ``Fraction`` it spells
     (:func:`verify.inputs.numbers.decimal_literal`; ``nan``/``inf`` stay floats for the
-    caller to refuse by location); TOML integers are Python ints either way.
+    caller to refuse by location); with ``written`` as well, it prints as written
+    (:class:`~verify.inputs.numbers.WrittenDecimal`, for messages). TOML integers are
+    Python ints either way. The path must name a regular file of at most ``max_bytes``
+    bytes (:func:`verify.inputs.files.read_bounded`: a FIFO or ``/dev/zero`` is refused,
+    not read); ``where`` prefixes messages (default: the path).
     """
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise VerifyInputError(f"{path}: cannot read ({exc.strerror})") from None
-    parse_float = decimal_literal if exact else float
+    where = str(path) if where is None else where
+    raw = read_bounded(path, where=where, max_bytes=max_bytes)
+    return parse_toml_bytes(raw, where, exact=exact, written=written)
+
+
+def parse_toml_bytes(raw: bytes, where: str, *, exact: bool = False,
+                     written: bool = False) -> dict:
+    """:func:`read_toml` on bytes already read; messages start with ``where``."""
+    parse_float = (written_decimal if written else decimal_literal) if exact else float
     try:
         return tomllib.loads(raw.decode("utf-8"), parse_float=parse_float)
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         message = " ".join(str(exc).split())
-        raise VerifyInputError(f"{path}: not valid TOML ({message})") from None
+        raise VerifyInputError(f"{where}: not valid TOML ({message})") from None
     except ValueError as exc:  # an integer beyond Python's digit limit, a huge exponent
         message = " ".join(str(exc).split())
-        raise VerifyInputError(f"{path}: number out of range ({message})") from None
+        raise VerifyInputError(f"{where}: number out of range ({message})") from None

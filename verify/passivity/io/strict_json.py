@@ -11,7 +11,6 @@ Every error is a :class:`CertificateFormatError` whose text is one line.
 from __future__ import annotations
 
 import json
-import re
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
@@ -85,26 +84,23 @@ def text_field(data: Mapping[str, Any], key: str) -> str:
     return value
 
 
-_RATIONAL = re.compile(r"-?(0|[1-9][0-9]*)(/[1-9][0-9]*)?")
 MAX_DIGITS = 100_000  # far above any certificate written here; bounds the work per entry
 
 
 def rational(value: Any, where: str) -> mpq:
     """An exact rational written canonically, "p" or "p/q" in lowest terms with q > 1.
 
-    One spelling per number keeps a certificate's bytes a function of its content, and
+    The input layer's one strict parser (:func:`verify.inputs.numbers.strict_rational`):
+    one spelling per number keeps a certificate's bytes a function of its content, and
     refusing exponents ("1e999999999") bounds the work a hostile file can ask for.
     """
-    if not isinstance(value, str):
-        raise CertificateFormatError(f"{where}: expected a rational as a string 'p/q', got "
-                                     f"{type(value).__name__}")
-    if len(value) > MAX_DIGITS or not _RATIONAL.fullmatch(value):
-        shown = value if len(value) <= 30 else value[:27] + "..."
-        raise CertificateFormatError(f"{where}: {shown!r} is not a rational 'p' or 'p/q'")
-    x = mpq(value)
-    if str(x) != value:
-        raise CertificateFormatError(f"{where}: {value!r} is not in lowest terms (write {x})")
-    return x
+    from verify.errors import VerifyInputError
+    from verify.inputs.numbers import strict_rational
+
+    try:
+        return strict_rational(value, where, max_chars=MAX_DIGITS)
+    except VerifyInputError as exc:
+        raise CertificateFormatError(str(exc)) from None
 
 
 def rational_matrix(value: Any, where: str, rows: int | None = None,
