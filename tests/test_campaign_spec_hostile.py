@@ -249,3 +249,106 @@ def test_nothing_is_evaluated(tmp_path):
     refused(tmp_path, text, "expected a real number, got str")
     assert not marker.exists()
     assert math.isfinite(load_campaign_spec(write(tmp_path, SWEEP + HUMANS)).seconds[0])
+
+
+# ------------------------------------------------------------------ hostile: model paths
+
+
+def _model_spec(tmp_path, target: str) -> Path:
+    return write(tmp_path, SWEEP + f'[[humans]]\nmodel = "{GOOD_MODEL}"\n'
+                 f'[[humans]]\nmodel = "{target}"\n')
+
+
+def test_a_fifo_as_model_path_is_refused_at_once(tmp_path):
+    import os
+
+    os.mkfifo(tmp_path / "pipe.toml")  # opening it for reading would block forever
+    refused(tmp_path, _model_spec(tmp_path, "pipe.toml").read_text(),
+            "spec.toml: humans[1].model: model file", "pipe.toml: is a FIFO")
+
+
+def test_dev_zero_as_model_path_is_refused_without_reading(tmp_path):
+    refused(tmp_path, _model_spec(tmp_path, "/dev/zero").read_text(),
+            "humans[1].model", "/dev/zero: is a device, not a regular file")
+    (tmp_path / "zero.toml").symlink_to("/dev/zero")
+    refused(tmp_path, _model_spec(tmp_path, "zero.toml").read_text(), "zero.toml: is a device")
+
+
+def test_a_directory_and_a_huge_file_as_model_path(tmp_path):
+    from verify.inputs.campaign_spec import MAX_MODEL_BYTES
+
+    (tmp_path / "folder.toml").mkdir()
+    refused(tmp_path, _model_spec(tmp_path, "folder.toml").read_text(), "is a directory")
+    with open(tmp_path / "huge.toml", "wb") as handle:  # sparse: no disk, no memory
+        handle.truncate(MAX_MODEL_BYTES + 1)
+    refused(tmp_path, _model_spec(tmp_path, "huge.toml").read_text(), "humans[1].model",
+            "huge.toml: the file has 16.0 MiB, above the limit of 16.0 MiB")
+
+
+def test_the_command_refuses_a_fifo_before_any_run(tmp_path, capsys):
+    import os
+
+    os.mkfifo(tmp_path / "pipe.toml")
+    out = tmp_path / "out"
+    code, err = _cli(tmp_path, capsys, _model_spec(tmp_path, "pipe.toml"), "--out", out)
+    assert code == 2 and len(err.splitlines()) == 1 and "is a FIFO" in err
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("model, needle", [
+    ("[state_space]\nA = [[\n", "not valid TOML"),
+    ("[state_space]\nA = [[-1e99999999]]\nB = [[1]]\nC = [[1]]\nD = [[1]]\n",
+     "exponent beyond +-4300"),
+    ('[transfer_function]\nnum = [[[1]]]\nden = [[[1, 1]]]\n', "needs 2 or 3 ports"),
+    ("nonsense = 1\n[state_space]\nA = []\nB = []\nC = []\nD = [[1, 0], [0, 1]]\n",
+     "unknown"),
+])
+def test_model_errors_name_the_spec_and_the_entry(tmp_path, model, needle):
+    write(tmp_path, model, "human.toml")
+    message = refused(tmp_path, _model_spec(tmp_path, "human.toml").read_text(), needle)
+    assert message.startswith(f"{tmp_path / 'spec.toml'}: humans[1].model: ")
+    assert "human.toml" in message
+
+
+# ------------------------------------------------------------------ hostile: numbers shown
+
+
+@pytest.mark.parametrize("sweep, shown", [
+    ("k_s = -1.0", "got -1.0;"),
+    ("k_s = [2.0, -1.50]", "k_s[1] must be a positive number, got -1.50;"),
+    ("k_s = 0.0", "got 0.0;"),
+    ("k_s = {from = -1, to = 2, step = 0.5}", "k_s[0] must be a positive number, got -1;"),
+    ("k_s = {from = -0.5, to = 2, step = 0.5}", "k_s[0] must be a positive number, got -0.5;"),
+    ("k_s = {from = 1, to = 2, step = -1.0}", "step must be > 0, got -1.0"),
+    ("k_s = {from = 1, to = 0.50, step = 0.5}", "to = 0.50 is below from = 1"),
+    ("k_s = 2.0\nseconds = -2.5", "seconds must be a positive number, got -2.5;"),
+])
+def test_numbers_appear_as_written(tmp_path, sweep, shown):
+    text = SWEEP.replace("k_s = [2.0, 3.0]", sweep)
+    if "seconds = -2.5" in sweep:
+        text = text.replace("seconds = 1\n", "")
+    message = refused(tmp_path, text + HUMANS, shown)
+    assert "Fraction(" not in message and "mpq(" not in message
+
+
+@pytest.mark.parametrize("sweep, needles", [
+    ("seconds = 1e300", ["seconds = 1e300 with step", "is 1.2e+302 steps; at most 2000000"]),
+    ('seconds = 30\nstep = 1e-300', ["step = 1e-300 is 3e+301 steps"]),
+])
+def test_huge_step_counts_are_short(tmp_path, sweep, needles):
+    message = refused(tmp_path, SWEEP.replace("seconds = 1\n", sweep + "\n") + HUMANS,
+                      *needles)
+    assert len(message) < 300 and not any(c * 30 in message for c in "0123456789")
+
+
+def test_k_s_1e300_gets_the_real_reason(tmp_path):
+    """1e300 is finite and positive; what is wrong is that no step can resolve the loop
+    (not the directions cancelling, which a run at that gain reported before)."""
+    message = refused(tmp_path, SWEEP.replace("k_s = [2.0, 3.0]", "k_s = [2.0, 1e300]")
+                      + HUMANS, "k_s = 1e300 is a valid gain", "k_s * seconds = 1e+300 steps",
+                      "lower k_s or the run length")
+    assert "must be a positive number" not in message and "cancel" not in message
+    # a large gain a run can resolve is accepted: 60 000 * 30 s = 1.8e6 steps of 1/k_s
+    big = load_campaign_spec(write(tmp_path, SWEEP.replace("k_s = [2.0, 3.0]", "k_s = 60000")
+                                   .replace("seconds = 1", "seconds = 30") + HUMANS, "ok.toml"))
+    assert big.k_s == (60000.0,)
