@@ -31,9 +31,10 @@ TOML allows; the exponent at most 4300 in size), never a rounded binary float
 ``verify identify``, :mod:`verify.identify.model_writer`) holds strings, booleans, finite
 numbers and arrays of numbers (one or two levels) or of strings, nothing else; it is kept in
 ``meta["identification"]`` and no verdict of the gate depends on it. TOML's ``nan`` and
-``inf`` are refused; nothing is evaluated. Unknown keys, at the top level or inside a
-table, are refused by name. A transfer function is realised exactly over Q and minimally
-(:mod:`verify.passivity.check.realization`). Every problem is a one-line
+``inf`` are refused; nothing is evaluated. The path must name a regular file of at most
+16 MiB (a FIFO, a device such as ``/dev/zero`` or a directory is refused unread).
+Unknown keys, at the top level or inside a table, are refused by name. A transfer function
+is realised exactly over Q and minimally (:mod:`verify.passivity.check.realization`). Every problem is a one-line
 :class:`~verify.errors.VerifyInputError` starting with the file path.
 """
 
@@ -44,6 +45,7 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
+from verify.inputs.files import MAX_FILE_BYTES
 from verify.inputs.numbers import rational, real
 from verify.inputs.toml import read_toml
 from verify.passivity.check.realization import transfer_function_model
@@ -54,6 +56,7 @@ TEXT_KEYS = ("name", "description", "units")
 ALLOWED_KEYS = {*TABLES, *TEXT_KEYS, "k_s", "reconstructed", "identification"}
 MAX_IDENTIFICATION_KEYS = 200
 MAX_ARRAY_LENGTH = 10_000
+MAX_MODEL_FILE_BYTES = MAX_FILE_BYTES  # 16 MiB; a model file written by verify is a few KB
 
 
 def _identification_value(value: Any, where: str) -> Any:
@@ -195,4 +198,5 @@ def load_model(path: str | Path) -> LTIModel:
         On an unreadable file, bad TOML, or a missing, unknown or non-finite entry.
     """
     path = Path(path)
-    return parse_model(read_toml(path, exact=True), str(path))
+    # a regular file of at most MAX_MODEL_FILE_BYTES (a FIFO or /dev/zero: one line, exit 2)
+    return parse_model(read_toml(path, exact=True, max_bytes=MAX_MODEL_FILE_BYTES), str(path))

@@ -49,12 +49,18 @@ def loads_strict(text: str) -> dict[str, Any]:
     return data
 
 
+MAX_CERTIFICATE_BYTES = 256 * 2**20  # far above any certificate written here
+
+
 def read_strict(path: Path) -> dict[str, Any]:
     """Read and parse a certificate file strictly (see :func:`loads_strict`)."""
-    try:
-        text = Path(path).read_bytes().decode("utf-8")
-    except OSError as exc:
-        raise CertificateFormatError(f"cannot read ({exc.strerror})") from None
+    from verify.errors import VerifyInputError
+    from verify.inputs.files import read_bounded
+
+    try:  # a regular file of bounded size: a FIFO or a device is refused unread
+        text = read_bounded(path, where="", max_bytes=MAX_CERTIFICATE_BYTES).decode("utf-8")
+    except VerifyInputError as exc:
+        raise CertificateFormatError(str(exc).removeprefix(": ")) from None
     except UnicodeDecodeError:
         raise CertificateFormatError("not UTF-8 text") from None
     return loads_strict(text)
