@@ -34,8 +34,9 @@ numbers and arrays of numbers (one or two levels) or of strings, nothing else; i
 ``inf`` are refused; nothing is evaluated. The path must name a regular file of at most
 16 MiB (a FIFO, a device such as ``/dev/zero`` or a directory is refused unread).
 Unknown keys, at the top level or inside a table, are refused by name. A transfer function
-is realised exactly over Q and minimally (:mod:`verify.passivity.check.realization`). Every problem is a one-line
-:class:`~verify.errors.VerifyInputError` starting with the file path.
+is realised exactly over Q and minimally (:mod:`verify.passivity.check.realization`).
+Every problem is a one-line :class:`~verify.errors.VerifyInputError` starting with the file
+path.
 """
 
 from __future__ import annotations
