@@ -522,3 +522,28 @@ def test_npz_trial_ids_and_values_beyond_the_limits(tmp_path):
         path = _npz(tmp_path, {**_good_arrays(), **change}, f"{name}.npz")
         with pytest.raises(VerifyInputError, match=pattern):
             read_log(path)
+
+
+def test_a_log_without_line_breaks_is_refused_after_a_bounded_read(tmp_path):
+    path = tmp_path / "one.csv"
+    path.write_text(HEADER + "\n" + "0.0," * 200_000 + "\n")
+    with pytest.raises(VerifyInputError, match=r"one\.csv: line 2 is longer than 10000"):
+        read_log(path)
+
+
+def test_quoted_cells_and_crlf_line_ends(tmp_path):
+    path = tmp_path / "q.csv"
+    rows = ['"time","trial","e1","e2","u1","u2"', *[f'"{k * 0.01!r}","0",1,2,3,4'
+                                                      for k in range(5)]]
+    path.write_bytes(("\r\n".join(rows) + "\r\n").encode())
+    tr = read_log(path).trials[0]
+    assert tr.t.shape == (5,) and tr.u[0, 1] == 4.0
+
+
+def test_npz_member_stored_twice_is_ambiguous(tmp_path):
+    members = {f"{k}.npy": _npy(v) for k, v in _good_arrays().items()}
+    path = _zip(tmp_path / "twice.npz", members)
+    with zipfile.ZipFile(path, "a") as z, pytest.warns(UserWarning, match="Duplicate name"):
+        z.writestr("e1.npy", _npy(np.full(6, 7.0)))
+    with pytest.raises(VerifyInputError, match=r"holds 'e1\.npy' twice"):
+        read_log(path)

@@ -42,7 +42,8 @@ below the normal float range (2.2e-308: subnormal numbers); trial ids at most
 and a 4-digit exponent (integers: 18 digits); an NPZ archive at most ``MAX_NPZ_BYTES``
 (1 GiB) uncompressed, judged from the zip directory and each member's .npy header before
 any data is decompressed. A CSV file is read in one streaming pass that stops at the first
-defect; its memory is that of the numbers read (8 bytes a value), not of the text.
+defect; its memory is that of the numbers read (8 bytes a value), not of the text (a
+line is at most ``MAX_LINE`` = 10 000 characters).
 
 CSV (``.csv``)
 --------------
@@ -88,7 +89,7 @@ import re
 import sys
 import zipfile
 from array import array
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import BinaryIO
 
@@ -108,6 +109,7 @@ STEP_TOLERANCE = 1e-6
 
 #: Limits on what a log may hold (module docstring, "Limits").
 MAX_CELL = 64
+MAX_LINE = 10_000
 MAX_TIME = 1e9
 MIN_STEP = 1e-6
 RESOLUTION = 2.0**-30
@@ -117,9 +119,9 @@ MAX_NPZ_BYTES = 2**30
 TINY = sys.float_info.min
 _ZIP_TIME = (1980, 1, 1, 0, 0, 0)
 
-__all__ = ["COLUMNS", "MAX_CELL", "MAX_NPZ_BYTES", "MAX_TIME", "MAX_TRIAL_ID", "MAX_VALUE",
-           "MIN_STEP", "REQUIRED", "STEP_TOLERANCE", "read_csv_lines", "read_log", "read_logs",
-           "write_log"]
+__all__ = ["COLUMNS", "MAX_CELL", "MAX_LINE", "MAX_NPZ_BYTES", "MAX_TIME", "MAX_TRIAL_ID",
+           "MAX_VALUE", "MIN_STEP", "REQUIRED", "STEP_TOLERANCE", "read_csv_lines", "read_log",
+           "read_logs", "write_log"]
 
 
 def _fail(where: str, what: str) -> VerifyInputError:
@@ -153,7 +155,8 @@ def read_log(path: str | Path, *, min_samples: int = 2) -> ExperimentLog:
     if suffix == ".csv":
         with open_regular(path) as handle:
             text = io.TextIOWrapper(handle, encoding="utf-8-sig", newline="")
-            return read_csv_lines(text, source=str(path), min_samples=min_samples)
+            return read_csv_lines(_bounded_lines(text, str(path)), source=str(path),
+                                  min_samples=min_samples)
     with open_regular(path) as handle:
         columns, rate = _read_npz(path, handle)
     builder = _Trials(str(path), "entry", min_samples)
@@ -187,6 +190,21 @@ def read_logs(paths: Sequence[str | Path], *, min_samples: int = 2) -> Experimen
         trials = [Trial(k, tr.t, tr.e, tr.u, tr.reference, tr.valid, tr.start)
                   for k, tr in enumerate(trials)]
     return ExperimentLog(tuple(trials), rate, "; ".join(str(p) for p in paths))
+
+
+def _bounded_lines(text: io.TextIOBase, source: str) -> Iterator[str]:
+    """The lines of a text file, each read with a bound (a file with no line breaks
+    cannot fill memory)."""
+    number = 0
+    while True:
+        line = text.readline(MAX_LINE + 1)
+        if not line:
+            return
+        number += 1
+        if len(line) > MAX_LINE:
+            raise VerifyInputError(f"{source}: line {number} is longer than {MAX_LINE} "
+                                   "characters; a log row holds one short number per column")
+        yield line
 
 
 def _check_min_samples(min_samples: object) -> None:
@@ -549,6 +567,11 @@ def _read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], floa
                                "numpy.savez or verify simulate --log") from None
     with archive:
         infos = archive.infolist()
+        names = [info.filename for info in infos]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:
+            raise VerifyInputError(f"{path}: the archive holds {_short(twice[0])!r} twice "
+                                   "(ambiguous); rewrite it with numpy.savez")
         if not infos:
             raise VerifyInputError(f"{path}: empty archive; it needs the arrays "
                                    f"{', '.join(REQUIRED)}")
