@@ -352,3 +352,30 @@ def test_k_s_1e300_gets_the_real_reason(tmp_path):
     big = load_campaign_spec(write(tmp_path, SWEEP.replace("k_s = [2.0, 3.0]", "k_s = 60000")
                                    .replace("seconds = 1", "seconds = 30") + HUMANS, "ok.toml"))
     assert big.k_s == (60000.0,)
+
+
+@pytest.mark.parametrize("sweep, needle", [
+    ("k_s = {from = 1, to = 1e300, step = 1}", "the range has 1e+300 values; at most 100000"),
+    ("k_s = {from = 1, to = 1e100, count = 2}\nseconds = 1", "k_s = 1e100 is a valid gain"),
+])
+def test_huge_counts_in_ranges_are_short(tmp_path, sweep, needle):
+    text = SWEEP.replace("k_s = [2.0, 3.0]", sweep.split("\n")[0])
+    message = refused(tmp_path, text + HUMANS, needle)
+    assert len(message) < 400 and not any(c * 30 in message for c in "0123456789")
+
+
+def test_a_huge_run_count_is_short(tmp_path):
+    text = """[sweep]
+k_s = {from = 1, to = 100, count = 100000}
+n = {from = 1, count = 100000}
+seeds = {from = 0, count = 100000}
+seconds = 1
+""" + HUMANS
+    message = refused(tmp_path, text, "the sweep has 1e+15 runs; at most 1000000")
+    assert "1000000000000000" not in message
+
+
+def test_long_computed_values_are_shown_short(tmp_path):
+    text = SWEEP.replace("k_s = [2.0, 3.0]", "k_s = {from = -1e100, to = 1, count = 2}")
+    message = refused(tmp_path, text + HUMANS, "k_s[0] must be a positive number, got -1e+100")
+    assert "0" * 30 not in message

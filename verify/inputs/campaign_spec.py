@@ -222,8 +222,8 @@ def _range(table: dict[str, Any], where: str, integer: bool) -> list[Fraction]:
             return [start + (stop - start) * i / (count - 1) for i in range(count)]
         count = math.floor((stop - start) / step) + 1
         if count > MAX_AXIS_VALUES:
-            raise VerifyInputError(f"{where}: the range has {count} values; at most "
-                                   f"{MAX_AXIS_VALUES} per axis (enlarge the step)")
+            raise VerifyInputError(f"{where}: the range has {_count_text(count)} values; at "
+                                   f"most {MAX_AXIS_VALUES} per axis (enlarge the step)")
     return [start + i * step for i in range(count)]
 
 
@@ -259,16 +259,20 @@ def _axis(data: dict[str, Any], key: str, where: str, convert: Callable[[Any, st
 
 def _number_text(q: Fraction) -> str:
     """A computed rational as a reader would write it: 2, 1.5, or 1/3."""
-    if q.denominator == 1:
+    if q.denominator == 1 and abs(q.numerator) < 10**15:
         return str(q.numerator)
-    if Fraction(float(q)) == q:
+    if abs(q) < 10**15 and Fraction(float(q)) == q:
         return repr(float(q))
-    return f"{q.numerator}/{q.denominator}"
+    if q.denominator < 10**6 and abs(q) < 10**15:
+        return f"{q.numerator}/{q.denominator}"
+    return f"{float(q):.6g}"  # a long value, in six significant figures
 
 
 def _as_written(raw: Any, x: float) -> str:
     """The text a spec used for the axis value ``x`` (``raw``: the axis as parsed)."""
-    for item in raw if isinstance(raw, list) else [raw]:
+    items = (list(raw.values()) if isinstance(raw, dict) else raw if isinstance(raw, list)
+             else [raw])  # a range's 'from' or 'to', a list, or one value
+    for item in items:
         if isinstance(item, WrittenDecimal | int | str) and not isinstance(item, bool):
             try:
                 value = float(parse_number(item, "", "") if isinstance(item, str) else item)
@@ -464,8 +468,8 @@ def parse_campaign_spec(data: dict[str, Any], source: Path) -> CampaignSpec:
                         tuple(autonomous), tuple(reference), tuple(seconds), tuple(step),
                         humans, properties, threshold)
     if spec.run_count > MAX_RUNS:
-        raise VerifyInputError(f"{where}: the sweep has {spec.run_count} runs; at most "
-                               f"{MAX_RUNS} per campaign (split it into several specs)")
+        raise VerifyInputError(f"{where}: the sweep has {_count_text(spec.run_count)} runs; at "
+                               f"most {MAX_RUNS} per campaign (split it into several specs)")
     return spec
 
 
