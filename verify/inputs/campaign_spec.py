@@ -242,9 +242,14 @@ def _axis(data: dict[str, Any], key: str, where: str, convert: Callable[[Any, st
         values = _range(value, here, integer)
         if integer:  # every value is an integer here (integer from, step and to)
             values = [int(v) for v in values]
-        else:  # messages show a computed value as a number, never as Fraction(...)
-            values = [WrittenDecimal(v, _number_text(v)) for v in values]
-        return [convert(v, f"{here}[{i}]") for i, v in enumerate(values)]
+        out = []
+        for i, v in enumerate(values):
+            try:
+                out.append(convert(v, f"{here}[{i}]"))
+            except VerifyInputError:  # again, for a message that shows a number, not Fraction()
+                convert(v if integer else WrittenDecimal(v, _number_text(v)), f"{here}[{i}]")
+                raise
+        return out
     items = value if isinstance(value, list) else [value]
     if not items:
         raise VerifyInputError(f"{here}: empty list; give at least one value")
@@ -285,7 +290,7 @@ def _as_written(raw: Any, x: float) -> str:
 
 def _count_text(count: int) -> str:
     """A step count for a message: digits when short, else three significant figures."""
-    return str(count) if count < 10**12 else f"{float(count):.3g}"
+    return str(count) if count < 10**7 else f"{float(count):.3g}"
 
 
 def _gain(value: Any, where: str) -> float:
