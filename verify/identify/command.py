@@ -109,6 +109,23 @@ def _check_split(split: tuple[int, int], count: int) -> None:
                            f"{advice}")
 
 
+MIN_MODEL_SAMPLES = 8  # decimated samples a segment needs (protocol.prepare's default)
+
+
+def _check_lengths(log, rate: float | None) -> None:
+    """Every trial long enough, decimated, for the model (Section 4); shorter is exit 2."""
+    from verify.identify.protocol import DEFAULT_RATE, MIN_FILTER_SAMPLES, decimation_factor
+
+    q = decimation_factor(log.rate, DEFAULT_RATE if rate is None else rate)
+    need = max(MIN_FILTER_SAMPLES, q * (MIN_MODEL_SAMPLES - 1) + 1)
+    for tr in log.trials:
+        if len(tr.t) < need:
+            raise VerifyInputError(
+                f"{log.source}: trial {tr.trial} has {len(tr.t)} samples; at least {need} are "
+                f"needed ({MIN_MODEL_SAMPLES} after decimation by {q} for the model); drop "
+                "the trial or record longer")
+
+
 def parse_rate(text: str | None) -> float | None:
     if text is None:
         return None
@@ -177,6 +194,7 @@ def identify_logs(plan: Plan) -> Identified:
 
     log = read_logs(plan.logs, min_samples=MIN_FILTER_SAMPLES)  # shorter: one line, exit 2
     _check_split(plan.split, len(log.trials))
+    _check_lengths(log, plan.rate)
     prepared = prepare(log, rate=plan.rate, split=plan.split)
     estimate = estimate_model(prepared.identification, plan.structure)
     on_id = assess(estimate, prepared.identification)
