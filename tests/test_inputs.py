@@ -209,3 +209,30 @@ def test_network_tolerance(tmp_path, tolerance, fragment):
     path = tmp_path / "net.toml"
     path.write_text("rotations = [[[2.0, 0, 0], [0, 1, 0], [0, 0, 1]]]\n")
     one_line(lambda: load_network(path, tolerance=tolerance), "--tolerance", fragment)
+
+
+def test_written_decimal_is_its_value_and_prints_as_written():
+    import pickle
+
+    from verify.inputs.numbers import WrittenDecimal, written_decimal
+    from verify.validation import shown
+
+    x = written_decimal("-1.50")
+    assert isinstance(x, WrittenDecimal) and x == Fraction(-3, 2)
+    assert hash(x) == hash(Fraction(-3, 2))
+    assert str(x) == repr(x) == shown(x) == "-1.50"
+    assert type(x + 1) is Fraction and x + 1 == Fraction(-1, 2)  # arithmetic: plain values
+    assert pickle.loads(pickle.dumps(x)) == x and type(pickle.loads(pickle.dumps(x))) is Fraction
+    assert written_decimal("nan") != written_decimal("nan")  # stays a float for the caller
+    with pytest.raises(ValueError, match="exponent beyond"):
+        written_decimal("1e99999999")
+
+
+def test_read_toml_keeps_written_text_only_when_asked(tmp_path):
+    from verify.inputs import read_toml
+
+    path = tmp_path / "x.toml"
+    path.write_text("a = 2.50\nb = 3\n")
+    assert repr(read_toml(path, exact=True)["a"]) == "Fraction(5, 2)"
+    assert repr(read_toml(path, exact=True, written=True)["a"]) == "2.50"
+    assert read_toml(path)["a"] == 2.5 and read_toml(path, exact=True, written=True)["b"] == 3
