@@ -558,3 +558,23 @@ def test_a_trial_too_short_for_the_model_after_decimation_is_exit_2(tmp_path, ca
     err = capsys.readouterr().err
     assert "trial 1 has 40 samples; at least 43 are needed (8 after decimation by 6" in err
     assert err.count("\n") == 1
+
+
+@pytest.mark.parametrize("rate", [100.0, 120.0, 250.0, 1000.0])
+@pytest.mark.parametrize("decimals", [4, 5, 6, 7, 9])
+def test_rounded_times_of_a_known_grid_read_back_as_that_grid(tmp_path, rate, decimals):
+    """Data from a known truth: a uniform grid at ``rate`` (with an offset start), times
+    rounded to ``decimals``; the reader must accept it and find the rate."""
+    rows = [*_fixed(300, decimals, rate=rate, t0=1.2345678),
+            *_fixed(250, decimals, rate=rate, trial=1, t0=7.7777777)]
+    log = read_log(_csv(tmp_path, [HEADER, *rows]))
+    assert log.rate == rate and [len(tr.t) for tr in log.trials] == [300, 250]
+    # the same grid with one time moved by two units of its last digit is refused
+    k = 150
+    moved = rows.copy()
+    t = float(rows[k].split(",")[0]) + 2 * 10.0 ** -decimals
+    moved[k] = f"{t:.{decimals}f}" + rows[k][rows[k].index(","):]
+    if 2 * 10.0 ** -decimals < 1e-6 / rate:  # within the relative 1e-6 tolerance anyway
+        return
+    with pytest.raises(VerifyInputError, match=rf"line {k + 2}, column 'time': unequal"):
+        read_log(_csv(tmp_path, [HEADER, *moved], "moved.csv"))

@@ -481,15 +481,19 @@ class _Trials:
         written = 0.0 if exponent is None else 10.0 ** exponent
         slack = 8 * np.finfo(float).eps * size
         off = np.abs(d - step) > STEP_TOLERANCE * step
+        worst = 0
         if np.any(off) and written > 0:
-            line = t[0] + np.arange(n) * step
-            if np.all(np.abs(t - line) <= written + slack):
+            residual = np.abs(t - (t[0] + np.arange(n) * step))
+            worst = int(np.argmax(residual))
+            if residual[worst] <= written + slack:
                 off[:] = False  # equal within the written precision (module docstring)
         if np.any(off):
-            # point at the first step unlike most steps (a gap, a jump); else the first off
+            # point at the first step clearly unlike most (a gap, a jump), else at the time
+            # farthest from the grid (written precision), else at the first step off
             typical = float(np.median(d))
-            odd = np.abs(d - typical) > max(STEP_TOLERANCE * typical, 2 * written + slack)
-            k = int(np.flatnonzero(odd if np.any(odd) else off)[0]) + 1
+            odd = np.abs(d - typical) > max(STEP_TOLERANCE * typical, 4 * written + slack)
+            k = (int(np.flatnonzero(odd)[0]) + 1 if np.any(odd) else worst if worst > 0
+                 else int(np.flatnonzero(off)[0]) + 1)
             allowance = (f", or every time within {written:g} s (its written precision) of "
                          "the equally spaced grid" if written > 0 else "")
             raise _fail(f"{self._at(rows[k])}, column 'time'",
