@@ -578,3 +578,17 @@ def test_rounded_times_of_a_known_grid_read_back_as_that_grid(tmp_path, rate, de
         return
     with pytest.raises(VerifyInputError, match=rf"line {k + 2}, column 'time': unequal"):
         read_log(_csv(tmp_path, [HEADER, *moved], "moved.csv"))
+
+
+def test_the_writer_refuses_what_the_reader_would_refuse(tmp_path):
+    for values, pattern in [(np.full((3, 2), 1e300), r"column 'e1'\[0\]: '1e\+300' exceeds"),
+                            (np.full((3, 2), 5e-324), r"column 'e1'\[0\]: '5e-324' is below")]:
+        bad = ExperimentLog((Trial(0, np.arange(3) / RATE, values, np.zeros((3, 2))),), RATE, "")
+        for suffix in (".csv", ".npz"):
+            with pytest.raises(VerifyInputError, match=pattern):
+                write_log(bad, tmp_path / f"out{suffix}")
+    far = ExperimentLog((Trial(10**13, np.arange(3) / RATE, np.zeros((3, 2)),
+                               np.zeros((3, 2))),), RATE, "")
+    with pytest.raises(VerifyInputError, match="an id exceeds the limit"):
+        write_log(far, tmp_path / "out.csv")
+    assert list(tmp_path.iterdir()) == []

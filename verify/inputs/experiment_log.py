@@ -645,6 +645,15 @@ def _read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], floa
     return _npz_columns(path, arrays), rate
 
 
+def _check_limits(name: str, arr: np.ndarray, where: str) -> None:
+    """The limits of the module docstring on a float column, for NPZ and for the writer."""
+    size = np.abs(arr)
+    bad = np.flatnonzero((size > _limit(name)) | ((size > 0) & (size < TINY)))
+    if bad.size:
+        x = float(arr[bad[0]])
+        raise _fail(f"{where}[{bad[0]}]", _float_problem(name, repr(x), x) or "")
+
+
 def _npz_columns(path: Path, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     columns: dict[str, np.ndarray] = {}
     for name, arr in arrays.items():
@@ -669,11 +678,7 @@ def _npz_columns(path: Path, arrays: dict[str, np.ndarray]) -> dict[str, np.ndar
             if bad.size:
                 raise _fail(f"{where}[{bad[0]}]", f"NaN or Inf ({arr[bad[0]]}) is not allowed; "
                             "give a finite number or mark the sample invalid (valid = 0)")
-            size = np.abs(arr)
-            bad = np.flatnonzero((size > _limit(name)) | ((size > 0) & (size < TINY)))
-            if bad.size:
-                x = float(arr[bad[0]])
-                raise _fail(f"{where}[{bad[0]}]", _float_problem(name, repr(x), x) or "")
+            _check_limits(name, arr, where)
             columns[name] = arr
     return columns
 
@@ -745,7 +750,9 @@ def write_log(log: ExperimentLog, path: str | Path) -> Path:
     """Write ``log`` as CSV or NPZ (by the suffix), atomically (temporary file + rename).
 
     CSV floats are written with ``repr`` (bit-exact round trip); NPZ is compressed with a
-    fixed timestamp (equal logs, equal bytes). Returns the path written.
+    fixed timestamp (equal logs, equal bytes). A log the reader would refuse (NaN, values
+    beyond the limits of the module docstring) is refused here, before anything is
+    written. Returns the path written.
     """
     path = Path(path)
     suffix = _suffix(path)
@@ -756,6 +763,10 @@ def write_log(log: ExperimentLog, path: str | Path) -> Path:
         if arr.dtype.kind == "f" and not np.all(np.isfinite(arr)):
             raise VerifyInputError(f"column {name!r} has NaN or Inf; the format allows finite "
                                    "numbers only (mark bad samples with valid = 0)")
+        if arr.dtype.kind == "f":  # never write a log the reader refuses
+            _check_limits(name, arr, f"column {name!r}")
+        elif name == "trial" and arr.size and int(np.abs(arr).max()) > MAX_TRIAL_ID:
+            raise VerifyInputError(f"column 'trial': an id exceeds the limit {MAX_TRIAL_ID}")
     data = _csv_bytes(log, columns) if suffix == ".csv" else _npz_bytes(log, columns)
     write_atomic(path, data)
     return path
