@@ -492,7 +492,7 @@ def test_npz_header_promising_more_than_the_member_holds(tmp_path, monkeypatch):
 
 
 def test_npz_uncompressed_size_is_bounded_before_decompressing(tmp_path, monkeypatch):
-    import verify.inputs.experiment_log as module
+    import verify.inputs.log_npz as module
 
     path = _zip(tmp_path / "bomb.npz", {f"{k}.npy": _npy(np.resize(v, 20_000))
                                         for k, v in _good_arrays().items()})

@@ -86,46 +86,45 @@ import io
 import itertools
 import math
 import re
-import sys
 import zipfile
 from array import array
 from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import BinaryIO
 
 import numpy as np
 
 from verify.errors import VerifyInputError
 from verify.identify.experiment import ExperimentLog, Trial
 from verify.inputs.files import open_regular
+from verify.inputs.log_checks import (
+    COLUMNS,
+    INTEGER_COLUMNS,
+    MAX_NPZ_BYTES,
+    MAX_TIME,
+    MAX_TRIAL_ID,
+    MAX_VALUE,
+    MIN_STEP,
+    REQUIRED,
+    STEP_TOLERANCE,
+    TrialChecker,
+    check_header,
+    check_limits,
+    fail,
+    float_problem,
+    int_problem,
+    short,
+)
+from verify.inputs.log_npz import read_npz
 from verify.report.atomic import write_atomic
 
-REQUIRED = ("time", "trial", "e1", "e2", "u1", "u2")
-REFERENCE = ("r1", "r2", "r3")
-FLAGS = ("valid", "start")
-COLUMNS = (*REQUIRED, *REFERENCE, *FLAGS)
-#: Relative tolerance on the sampling step (within a trial, between trials, vs the rate).
-STEP_TOLERANCE = 1e-6
-
-#: Limits on what a log may hold (module docstring, "Limits").
+#: Limits of the CSV form (module docstring, "Limits").
 MAX_CELL = 64
 MAX_LINE = 10_000
-MAX_TIME = 1e9
-MIN_STEP = 1e-6
-RESOLUTION = 2.0**-30
-MAX_VALUE = 1e9
-MAX_TRIAL_ID = 10**12
-MAX_NPZ_BYTES = 2**30
-TINY = sys.float_info.min
 _ZIP_TIME = (1980, 1, 1, 0, 0, 0)
 
 __all__ = ["COLUMNS", "MAX_CELL", "MAX_LINE", "MAX_NPZ_BYTES", "MAX_TIME", "MAX_TRIAL_ID",
            "MAX_VALUE", "MIN_STEP", "REQUIRED", "STEP_TOLERANCE", "read_csv_lines", "read_log",
            "read_logs", "write_log"]
-
-
-def _fail(where: str, what: str) -> VerifyInputError:
-    return VerifyInputError(f"{where}: {what}")
 
 
 def _suffix(path: Path) -> str:
@@ -158,8 +157,8 @@ def read_log(path: str | Path, *, min_samples: int = 2) -> ExperimentLog:
             return read_csv_lines(_bounded_lines(text, str(path)), source=str(path),
                                   min_samples=min_samples)
     with open_regular(path) as handle:
-        columns, rate = _read_npz(path, handle)
-    builder = _Trials(str(path), "entry", min_samples)
+        columns, rate = read_npz(path, handle)
+    builder = TrialChecker(str(path), "entry", min_samples)
     trial = columns["trial"]
     bounds = [0, *(np.flatnonzero(np.diff(trial) != 0) + 1).tolist(), trial.shape[0]]
     for a, b in itertools.pairwise(bounds):
@@ -212,31 +211,6 @@ def _check_min_samples(min_samples: object) -> None:
         raise VerifyInputError(f"min_samples must be an integer >= 2, got {min_samples!r}")
 
 
-def _header(path: str, names: list[str], where: str) -> list[str]:
-    names = [n.strip() for n in names]
-    seen: set[str] = set()
-    for name in names:
-        if name not in COLUMNS:
-            raise _fail(where, f"unknown column {_short(name)!r}; the columns are "
-                        f"{', '.join(COLUMNS)} (see verify.inputs.experiment_log)")
-        if name in seen:
-            raise _fail(where, f"column {name!r} appears twice; keep one")
-        seen.add(name)
-    missing = [n for n in REQUIRED if n not in seen]
-    if missing:
-        raise _fail(where, f"missing column{'s' if len(missing) > 1 else ''} "
-                    f"{', '.join(missing)}; a log needs {', '.join(REQUIRED)}")
-    ref = [n for n in REFERENCE if n in seen]
-    if ref and len(ref) != 3:
-        raise _fail(where, f"reference columns {', '.join(ref)} without the others; give all "
-                    "of r1, r2, r3 or none")
-    return names
-
-
-def _short(text: str, width: int = 40) -> str:
-    return text if len(text) <= width else text[: width - 3] + "..."
-
-
 # Cells: decimal literals with bounded digits (a longer cell is refused before conversion).
 _NUM = r"[+-]?(?:\d{1,40}(?:\.\d{0,40})?|\.\d{1,40})(?:[eE][+-]?\d{1,4})?"
 _INT = r"[+-]?\d{1,18}"
@@ -245,42 +219,11 @@ _INTEGER = re.compile(_INT)
 _LOOSE = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
 _TIME_DIGITS = re.compile(r"[+-]?\d*(?:\.(\d*))?(?:[eE]([+-]?\d+))?")
 _NONFINITE = re.compile(r"[+-]?(nan|inf|infinity)", re.IGNORECASE)
-_INTEGER_COLUMNS = ("trial", *FLAGS)
-
-
-def _limit(name: str) -> float:
-    return MAX_TIME if name == "time" else MAX_VALUE
-
-
-def _float_problem(name: str, text: str, x: float) -> str | None:
-    """Why the value ``x`` (written ``text``) of column ``name`` is refused, if it is."""
-    size = abs(x)
-    if size != size or size == math.inf:
-        return f"{_short(text)!r} is beyond the float range; give a finite number"
-    if size > _limit(name):
-        unit = "s" if name == "time" else ""
-        fix = ("write times relative to the experiment's start" if name == "time" else
-               "log e in rad and u_h in rad/s")
-        return (f"{_short(text)!r} exceeds the limit {_limit(name):g}{unit} in size for "
-                f"column {name!r}; {fix}")
-    if 0 < size < TINY:
-        return (f"{_short(text)!r} is below the normal float range ({TINY:.4g}); write 0 or "
-                "a value of at least that size")
-    return None
-
-
-def _int_problem(name: str, text: str, k: int) -> str | None:
-    if name == "trial" and abs(k) > MAX_TRIAL_ID:
-        return (f"trial id {_short(text)} exceeds the limit {MAX_TRIAL_ID} in size; number "
-                "the trials 0, 1, 2, ...")
-    if name in FLAGS and k not in (0, 1):
-        return f"{_short(text)} is not 0 or 1; write 1 (yes) or 0 (no)"
-    return None
 
 
 def _bad_cell(name: str, cell: str) -> str:
     """The message for a cell that does not match its column's pattern, or is refused."""
-    integer = name in _INTEGER_COLUMNS
+    integer = name in INTEGER_COLUMNS
     if not cell:
         return "empty cell; give a value"
     if len(cell) > MAX_CELL:
@@ -291,19 +234,19 @@ def _bad_cell(name: str, cell: str) -> str:
                "invalid (valid = 0) with any finite value"
     if integer:
         if _INTEGER.fullmatch(cell):
-            return _int_problem(name, cell, int(cell)) or "unreadable integer"
+            return int_problem(name, cell, int(cell)) or "unreadable integer"
         if re.fullmatch(r"[+-]?\d+", cell):
-            return (f"{_short(cell)!r} has more than 18 digits; number the trials 0, 1, "
+            return (f"{short(cell)!r} has more than 18 digits; number the trials 0, 1, "
                     "2, ...")
         if _NUMBER.fullmatch(cell):
             return f"{cell!r} is not an integer; write a whole number without a decimal point"
-        return f"{_short(cell)!r} is not an integer; write a whole number"
+        return f"{short(cell)!r} is not an integer; write a whole number"
     if _NUMBER.fullmatch(cell):
-        return _float_problem(name, cell, float(cell)) or "unreadable number"
+        return float_problem(name, cell, float(cell)) or "unreadable number"
     if _LOOSE.fullmatch(cell):
-        return (f"{_short(cell)!r} has more digits than a log allows (40 before and after "
+        return (f"{short(cell)!r} has more digits than a log allows (40 before and after "
                 "the point, 4 in the exponent); write the number with fewer digits")
-    return f"{_short(cell)!r} is not a number; write a decimal such as -0.25 or 1.5e-3"
+    return f"{short(cell)!r} is not a number; write a decimal such as -0.25 or 1.5e-3"
 
 
 def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
@@ -316,7 +259,7 @@ def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
     messages. A UTF-8 byte-order mark before the first line is ignored.
     """
     _check_min_samples(min_samples)
-    builder = _Trials(source, "line", min_samples)
+    builder = TrialChecker(source, "line", min_samples)
     rate: float | None = None
     names: list[str] | None = None
     row_pattern: re.Pattern[str] | None = None
@@ -351,11 +294,11 @@ def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
             stripped = ",".join(cells)
         if names is None:
             cells = next(csv.reader([stripped]))
-            names = _header(source, cells, f"{source}: line {number} (header)")
+            names = check_header(source, cells, f"{source}: line {number} (header)")
             row_pattern = re.compile(r"\s*,\s*".join(
-                f"({_INT})" if n in _INTEGER_COLUMNS else f"({_NUM})" for n in names))
+                f"({_INT})" if n in INTEGER_COLUMNS else f"({_NUM})" for n in names))
             kinds = list(enumerate(names))
-            current = {n: array("q" if n in _INTEGER_COLUMNS else "d") for n in names}
+            current = {n: array("q" if n in INTEGER_COLUMNS else "d") for n in names}
             continue
         assert row_pattern is not None
         match = row_pattern.fullmatch(stripped)
@@ -372,17 +315,17 @@ def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
             trial_id, exponent = tid, 0
         for j, name in kinds:
             text = cells[j]
-            if name in _INTEGER_COLUMNS:
+            if name in INTEGER_COLUMNS:
                 k = int(text)
-                problem = _int_problem(name, text, k)
+                problem = int_problem(name, text, k)
                 if problem:
-                    raise _fail(f"{source}: line {number}, column {name!r}", problem)
+                    raise fail(f"{source}: line {number}, column {name!r}", problem)
                 current[name].append(k)
             else:
                 x = float(text)
-                problem = _float_problem(name, text, x)
+                problem = float_problem(name, text, x)
                 if problem:
-                    raise _fail(f"{source}: line {number}, column {name!r}", problem)
+                    raise fail(f"{source}: line {number}, column {name!r}", problem)
                 current[name].append(x)
                 if name == "time":
                     digits = _TIME_DIGITS.fullmatch(text)
@@ -406,7 +349,7 @@ def _arrays(current: dict[str, array]) -> dict[str, np.ndarray]:
 def _rate_comment(source: str, number: int, value: str) -> float:
     rate = float(value) if _NUMBER.fullmatch(value) else math.nan
     if not (0 < rate <= 1 / MIN_STEP):
-        raise _fail(f"{source}: line {number}", f"rate {_short(value)!r} is not a positive "
+        raise fail(f"{source}: line {number}", f"rate {short(value)!r} is not a positive "
                     f"number of at most {1 / MIN_STEP:g} Hz; write e.g. '# rate = 120'")
     return rate
 
@@ -415,272 +358,14 @@ def _diagnose(source: str, number: int, names: list[str], stripped: str) -> None
     """Raise the error of a row that does not match the header's pattern."""
     cells = next(csv.reader([stripped])) if stripped else []
     if len(cells) != len(names):
-        raise _fail(f"{source}: line {number}", f"{len(cells)} cells, the header has "
+        raise fail(f"{source}: line {number}", f"{len(cells)} cells, the header has "
                     f"{len(names)}; give one value per column")
     for name, cell in zip(names, cells, strict=True):
         cell = cell.strip()
-        pattern = _INTEGER if name in _INTEGER_COLUMNS else _NUMBER
+        pattern = _INTEGER if name in INTEGER_COLUMNS else _NUMBER
         if not pattern.fullmatch(cell):
-            raise _fail(f"{source}: line {number}, column {name!r}", _bad_cell(name, cell))
-    raise _fail(f"{source}: line {number}", "unreadable row; give one number per column")
-
-
-class _Trials:
-    """Checks each trial as it is completed and collects them (Section 4: one trial per
-    reference). ``kind`` is "line" (CSV) or "entry" (NPZ), for messages."""
-
-    def __init__(self, source: str, kind: str, min_samples: int) -> None:
-        self.source, self.kind, self.min_samples = source, kind, min_samples
-        self.seen: dict[int, int] = {}
-        self.trials: list[Trial] = []
-        self.step0: float | None = None
-        self.spread0 = 0.0
-
-    def _at(self, row: int) -> str:
-        return f"{self.source}: {self.kind} {row}"
-
-    def finish(self, tid: int, cols: dict[str, np.ndarray], rows: np.ndarray,
-               exponent: int | None) -> None:
-        """Check one trial (rows ``rows`` of the file) and keep it.
-
-        ``exponent``: the times are written to 10**exponent s (CSV), or None when they
-        are binary floats (NPZ).
-        """
-        where = f"{self._at(rows[0])}, trial {tid}"
-        if tid in self.seen:
-            raise _fail(where, f"trial {tid} appears again after other trials (first at "
-                        f"{self.kind} {self.seen[tid]}); keep each trial's rows together")
-        self.seen[tid] = int(rows[0])
-        n = rows.shape[0]
-        if n < self.min_samples:
-            raise _fail(where, f"trial {tid} has {n} sample{'s' if n != 1 else ''}; at least "
-                        f"{self.min_samples} are needed (the model order and the protocol "
-                        "need them); drop the trial or record longer")
-        for name in FLAGS:
-            if name in cols:
-                bad = np.flatnonzero((cols[name] != 0) & (cols[name] != 1))
-                if bad.size:
-                    raise _fail(f"{self._at(rows[bad[0]])}, column {name!r}",
-                                f"{cols[name][bad[0]]} is not 0 or 1; write 1 (yes) or 0 (no)")
-        t = cols["time"]
-        d = np.diff(t)
-        if np.any(d <= 0):
-            k = int(np.flatnonzero(d <= 0)[0]) + 1
-            kind = "repeats" if d[k - 1] == 0 else "goes back"
-            raise _fail(f"{self._at(rows[k])}, column 'time'",
-                        f"time {float(t[k])!r} {kind} within trial {tid} (previous "
-                        f"{float(t[k - 1])!r}); time must increase strictly within a trial")
-        step = float((t[-1] - t[0]) / (n - 1))
-        size = float(max(abs(t[0]), abs(t[-1])))
-        if step < MIN_STEP or step < RESOLUTION * size:
-            raise _fail(where, f"trial {tid} has a time step of {step:.3g} s, below "
-                        f"{max(MIN_STEP, RESOLUTION * size):.3g} s (the limit is {MIN_STEP:g} "
-                        f"s, and {RESOLUTION:.3g} of the largest time so that float times "
-                        "resolve the step); check the time unit (seconds) or write times "
-                        "relative to the experiment's start")
-        written = 0.0 if exponent is None else 10.0 ** exponent
-        slack = 8 * np.finfo(float).eps * size
-        off = np.abs(d - step) > STEP_TOLERANCE * step
-        worst = 0
-        if np.any(off) and written > 0:
-            residual = np.abs(t - (t[0] + np.arange(n) * step))
-            worst = int(np.argmax(residual))
-            if residual[worst] <= written + slack:
-                off[:] = False  # equal within the written precision (module docstring)
-        if np.any(off):
-            # point at the first step clearly unlike most (a gap, a jump), else at the time
-            # farthest from the grid (written precision), else at the first step off
-            typical = float(np.median(d))
-            odd = np.abs(d - typical) > max(STEP_TOLERANCE * typical, 4 * written + slack)
-            k = (int(np.flatnonzero(odd)[0]) + 1 if np.any(odd) else worst if worst > 0
-                 else int(np.flatnonzero(off)[0]) + 1)
-            allowance = (f", or every time within {written:g} s (its written precision) of "
-                         "the equally spaced grid" if written > 0 else "")
-            raise _fail(f"{self._at(rows[k])}, column 'time'",
-                        f"unequal sampling in trial {tid}: step {d[k - 1]:.9g} s vs the "
-                        f"trial's mean step {step:.9g} s (tolerance: relative "
-                        f"{STEP_TOLERANCE:g}{allowance}); resample the trial uniformly")
-        spread = (written + slack) / (n - 1)  # how far the mean step may be from the grid's
-        if self.step0 is None:
-            self.step0, self.spread0 = step, spread
-        elif abs(step - self.step0) > max(STEP_TOLERANCE * self.step0, spread + self.spread0):
-            raise _fail(where, f"trial {tid} has step {step:.9g} s, the first trial "
-                        f"{self.step0:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); "
-                        "resample the trials to one rate")
-        start = None
-        if "start" in cols:
-            marks = np.flatnonzero(cols["start"])
-            if marks.size > 1:
-                raise _fail(f"{self._at(rows[marks[1]])}, column 'start'",
-                            f"a second start event in trial {tid} (first at time "
-                            f"{float(t[marks[0]])!r}); mark one start per trial")
-            start = float(t[marks[0]]) if marks.size else None
-        reference = (np.stack([cols[r] for r in REFERENCE], axis=1)
-                     if "r1" in cols else None)
-        valid = cols["valid"].astype(bool) if "valid" in cols else None
-        e = np.stack([cols["e1"], cols["e2"]], axis=1)
-        u = np.stack([cols["u1"], cols["u2"]], axis=1)
-        self.trials.append(Trial(tid, np.array(t, dtype=np.float64), e, u, reference, valid,
-                                 start))
-
-    def log(self, rate: float | None) -> ExperimentLog:
-        """The log of the trials read, at ``rate`` (metadata) or the rate of the step."""
-        assert self.step0 is not None
-        step, spread = self.step0, self.spread0
-        if rate is None:
-            rate = _simplest_rate(step, spread)
-        elif abs(rate * step - 1.0) > max(STEP_TOLERANCE, spread / step):
-            raise VerifyInputError(f"{self.source}: the rate metadata says {rate:g} Hz but the "
-                                   f"time step is {step:.9g} s ({1 / step:.9g} Hz); fix the "
-                                   "rate or the time column")
-        return ExperimentLog(tuple(self.trials), float(rate), self.source)
-
-
-def _simplest_rate(step: float, spread: float) -> float:
-    """The rate with the fewest significant digits that the step allows.
-
-    The mean step is known to within ``spread`` (written precision of the times); the
-    rate is then known to within the interval of 1/step, and the shortest decimal in it
-    is the rate (so times written to 6 decimals at 120 Hz give 120 exactly, and the
-    decimation of the protocol finds an integer factor).
-    """
-    exact = 1.0 / step
-    if spread <= 0:
-        return exact
-    lo, hi = 1.0 / (step + spread), 1.0 / max(step - spread, step / 2)
-    for digits in range(1, 18):
-        candidate = float(f"{exact:.{digits}g}")
-        if lo <= candidate <= hi:
-            return candidate
-    return exact
-
-
-def _read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float | None]:
-    """The columns of an NPZ archive, sizes checked from the headers before any data is
-    decompressed (the zip directory's uncompressed sizes, each member's .npy header)."""
-    magic = handle.read(6)
-    handle.seek(0)
-    if magic == b"\x93NUMPY":
-        raise VerifyInputError(f"{path}: a single .npy array, not an .npz archive; save the "
-                               "columns with numpy.savez(path, time=..., trial=..., ...)")
-    try:
-        archive = zipfile.ZipFile(handle)
-    except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
-        first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-        raise VerifyInputError(f"{path}: not a readable .npz archive ({first}); write it with "
-                               "numpy.savez or verify simulate --log") from None
-    with archive:
-        infos = archive.infolist()
-        names = [info.filename for info in infos]
-        twice = sorted({n for n in names if names.count(n) > 1})
-        if twice:
-            raise VerifyInputError(f"{path}: the archive holds {_short(twice[0])!r} twice "
-                                   "(ambiguous); rewrite it with numpy.savez")
-        if not infos:
-            raise VerifyInputError(f"{path}: empty archive; it needs the arrays "
-                                   f"{', '.join(REQUIRED)}")
-        total = sum(info.file_size for info in infos)
-        if total > MAX_NPZ_BYTES or len(infos) > 2 * len(COLUMNS):
-            raise VerifyInputError(
-                f"{path}: the archive holds {len(infos)} member(s) of {total} bytes "
-                f"uncompressed, above the limit of {MAX_NPZ_BYTES // 2**20} MiB (or "
-                f"{2 * len(COLUMNS)} members); split the log into several files")
-        headers: dict[str, tuple[tuple[int, ...], np.dtype, zipfile.ZipInfo]] = {}
-        for info in infos:
-            name = info.filename.removesuffix(".npy")
-            try:
-                with archive.open(info) as member:
-                    version = np.lib.format.read_magic(member)
-                    if version == (1, 0):
-                        shape, _, dtype = np.lib.format.read_array_header_1_0(member)
-                    else:
-                        shape, _, dtype = np.lib.format.read_array_header_2_0(member)
-            except (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError,
-                    NotImplementedError) as exc:
-                raise VerifyInputError(f"{path}: array {_short(name)!r} is unreadable "
-                                       f"({_short(' '.join(str(exc).split()), 80)}); rewrite "
-                                       "the archive") from None
-            if dtype.hasobject:
-                raise VerifyInputError(
-                    f"{path}: array {_short(name)!r} holds Python objects (pickled), which are "
-                    "not loaded; store numbers (float64, int64 or bool)")
-            if math.prod(shape) * dtype.itemsize > info.file_size:
-                raise VerifyInputError(f"{path}: array {_short(name)!r}: its header promises "
-                                       f"{math.prod(shape) * dtype.itemsize} bytes, the member "
-                                       f"holds {info.file_size}; rewrite the archive")
-            headers[name] = (shape, dtype, info)
-        rate = None
-        if "rate" in headers:
-            shape, dtype, _ = headers["rate"]
-            if shape != () or dtype.kind not in "iuf":
-                raise _fail(f"{path}: array 'rate'", f"must be one positive number (0-d "
-                            f"array), got shape {shape}, dtype {dtype}")
-        _header(str(path), [n for n in headers if n != "rate"], f"{path}")
-        shapes = {n: s for n, (s, _, _) in headers.items() if n != "rate"}
-        for name, shape in shapes.items():
-            if len(shape) != 1:
-                raise _fail(f"{path}: array {name!r}", f"must be 1-D (one value per sample), "
-                            f"got shape {shape}")
-        if len(set(shapes.values())) > 1:
-            raise _fail(str(path), "arrays of different lengths "
-                        + ", ".join(f"{n}: {s[0]}" for n, s in shapes.items())
-                        + "; give every column one value per sample")
-        if next(iter(shapes.values()))[0] == 0:
-            raise VerifyInputError(f"{path}: the log has no samples; add data")
-        arrays: dict[str, np.ndarray] = {}
-        for name, (_, _, info) in headers.items():
-            try:
-                with archive.open(info) as member:
-                    arrays[name] = np.lib.format.read_array(member, allow_pickle=False)
-            except (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError) as exc:
-                raise VerifyInputError(f"{path}: array {name!r} is unreadable "
-                                       f"({_short(' '.join(str(exc).split()), 80)}); rewrite "
-                                       "the archive") from None
-    if "rate" in arrays:
-        r = arrays.pop("rate")
-        if not (np.isfinite(r) and 0 < r <= 1 / MIN_STEP):
-            raise _fail(f"{path}: array 'rate'", f"must be one positive number of at most "
-                        f"{1 / MIN_STEP:g} Hz, got {r}")
-        rate = float(r)
-    return _npz_columns(path, arrays), rate
-
-
-def _check_limits(name: str, arr: np.ndarray, where: str) -> None:
-    """The limits of the module docstring on a float column, for NPZ and for the writer."""
-    size = np.abs(arr)
-    bad = np.flatnonzero((size > _limit(name)) | ((size > 0) & (size < TINY)))
-    if bad.size:
-        x = float(arr[bad[0]])
-        raise _fail(f"{where}[{bad[0]}]", _float_problem(name, repr(x), x) or "")
-
-
-def _npz_columns(path: Path, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
-    columns: dict[str, np.ndarray] = {}
-    for name, arr in arrays.items():
-        where = f"{path}: array {name!r}"
-        kind = arr.dtype.kind
-        if name in _INTEGER_COLUMNS:
-            if kind == "b" and name in FLAGS:
-                arr = arr.astype(np.int64)
-            elif kind not in "iu":
-                raise _fail(where, f"dtype {arr.dtype} is not an integer type; store whole "
-                            "numbers as int64" + (" (or bool)" if name in FLAGS else ""))
-            big = np.flatnonzero(np.abs(arr.astype(np.float64)) > MAX_TRIAL_ID)
-            if big.size:
-                raise _fail(f"{where}[{big[0]}]", f"{arr[big[0]]} exceeds the limit "
-                            f"{MAX_TRIAL_ID} in size; number the trials 0, 1, 2, ...")
-            columns[name] = arr.astype(np.int64)
-        else:
-            if kind not in "iuf":
-                raise _fail(where, f"dtype {arr.dtype} is not a real number type; store float64")
-            arr = arr.astype(np.float64)
-            bad = np.flatnonzero(~np.isfinite(arr))
-            if bad.size:
-                raise _fail(f"{where}[{bad[0]}]", f"NaN or Inf ({arr[bad[0]]}) is not allowed; "
-                            "give a finite number or mark the sample invalid (valid = 0)")
-            _check_limits(name, arr, where)
-            columns[name] = arr
-    return columns
+            raise fail(f"{source}: line {number}, column {name!r}", _bad_cell(name, cell))
+    raise fail(f"{source}: line {number}", "unreadable row; give one number per column")
 
 
 # ----------------------------------------------------------------------------------- writing
@@ -764,7 +449,7 @@ def write_log(log: ExperimentLog, path: str | Path) -> Path:
             raise VerifyInputError(f"column {name!r} has NaN or Inf; the format allows finite "
                                    "numbers only (mark bad samples with valid = 0)")
         if arr.dtype.kind == "f":  # never write a log the reader refuses
-            _check_limits(name, arr, f"column {name!r}")
+            check_limits(name, arr, f"column {name!r}")
         elif name == "trial" and arr.size and int(np.abs(arr).max()) > MAX_TRIAL_ID:
             raise VerifyInputError(f"column 'trial': an id exceeds the limit {MAX_TRIAL_ID}")
     data = _csv_bytes(log, columns) if suffix == ".csv" else _npz_bytes(log, columns)
