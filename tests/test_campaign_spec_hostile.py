@@ -380,3 +380,12 @@ def test_long_computed_values_are_shown_short(tmp_path):
     text = SWEEP.replace("k_s = [2.0, 3.0]", "k_s = {from = -1e100, to = 1, count = 2}")
     message = refused(tmp_path, text + HUMANS, "k_s[0] must be a positive number, got -1e+100")
     assert "0" * 30 not in message
+
+
+@pytest.mark.parametrize("sweep, needle", [
+    ("seconds = 1e308\nstep = 1e-10", "is more than 1.8e+308 steps"),
+    ("seconds = 1e290\nstep = 1e-10", "is 1e+300 steps"),
+])
+def test_step_counts_beyond_the_float_range(tmp_path, sweep, needle):
+    message = refused(tmp_path, SWEEP.replace("seconds = 1\n", sweep + "\n") + HUMANS, needle)
+    assert "OverflowError" not in message

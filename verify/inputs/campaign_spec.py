@@ -288,9 +288,11 @@ def _as_written(raw: Any, x: float) -> str:
     return f"{x:g}"
 
 
-def _count_text(count: int) -> str:
-    """A step count for a message: digits when short, else three significant figures."""
-    return str(count) if count < 10**7 else f"{float(count):.3g}"
+def _count_text(count: float) -> str:
+    """A count for a message: digits when short, else three significant figures."""
+    if count < 10**7:
+        return str(math.ceil(count))
+    return f"{float(count):.3g}" if count < math.inf else "more than 1.8e+308"
 
 
 def _gain(value: Any, where: str) -> float:
@@ -433,18 +435,22 @@ def parse_campaign_spec(data: dict[str, Any], source: Path) -> CampaignSpec:
 
     for T in seconds:
         for h in step:
+            if not T / h <= MAX_STEPS:  # also when T / h overflows to inf
+                raise VerifyInputError(f"{at}: seconds = {written('seconds', T)} with step = "
+                                       f"{written('step', h)} is {_count_text(T / h)} steps; "
+                                       f"at most {MAX_STEPS} are kept in memory per run")
             if step_count(T, h) > MAX_STEPS:
                 raise VerifyInputError(f"{at}: seconds = {written('seconds', T)} with step = "
                                        f"{written('step', h)} is "
                                        f"{_count_text(step_count(T, h))} steps; at most "
                                        f"{MAX_STEPS} are kept in memory per run")
         fastest = max(k_s)
-        if fastest * T > MAX_STEPS:
+        if not fastest * T <= MAX_STEPS:
             raise VerifyInputError(
                 f"{at}: k_s = {written('k_s', fastest)} is a valid gain, but the leader's loop "
                 "(eq. (6)) then turns at rates up to k_s rad/s, and resolving it over "
                 f"seconds = {written('seconds', T)} "
-                f"takes at least k_s * seconds = {_count_text(math.ceil(fastest * T))} steps "
+                f"takes at least k_s * seconds = {_count_text(fastest * T)} steps "
                 f"of at most 1/k_s, above the {MAX_STEPS} a run keeps; lower k_s or the run "
                 "length")
     if "humans" not in data:
