@@ -592,3 +592,76 @@ def test_the_writer_refuses_what_the_reader_would_refuse(tmp_path):
     with pytest.raises(VerifyInputError, match="an id exceeds the limit"):
         write_log(far, tmp_path / "out.csv")
     assert list(tmp_path.iterdir()) == []
+
+
+# ------------------------------------------------------------------ hostile: fuzzing
+
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+_CELL = st.one_of(
+    st.sampled_from(["0", "1", "-0.5", "1e308", "5e-324", "nan", "", " ", "1e99999999",
+                     "9" * 30, "0x1", "1_0", '"2"', "١", "1.", ".5", "+3", "-0"]),
+    st.text(alphabet="0123456789.eE+-, \"#\t\ufeff", max_size=12),
+    st.floats(allow_nan=True, allow_infinity=True).map(repr),
+    st.integers(min_value=-10**20, max_value=10**20).map(str),
+)
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(st.lists(_CELL, min_size=5, max_size=7), min_size=1, max_size=8),
+       st.sampled_from([HEADER, HEADER + ",valid", "# rate = 120\n" + HEADER]))
+def test_random_rows_give_a_log_or_one_line(rows, header):
+    """Whatever the cells, the reader ends in a log or a one-line VerifyInputError."""
+    from verify.inputs.experiment_log import read_csv_lines
+
+    lines = [*header.split("\n"), *(",".join(r) for r in rows)]
+    try:
+        log = read_csv_lines(iter(lines), source="fuzz")
+    except VerifyInputError as exc:
+        assert "\n" not in str(exc) and str(exc).startswith("fuzz")
+        return
+    for tr in log.trials:  # what is accepted respects the limits
+        assert np.all(np.isfinite(tr.t)) and np.all(np.abs(tr.e) <= 1e9)
+        assert np.all(np.diff(tr.t) > 0)
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                                 HealthCheck.function_scoped_fixture])
+@given(st.data())
+def test_corrupted_npz_bytes_give_a_log_or_one_line(tmp_path, data):
+    good = tmp_path / "good.npz"
+    if not good.exists():
+        write_log(_log(2, n=30), good)
+    raw = bytearray(good.read_bytes())
+    for _ in range(data.draw(st.integers(1, 8))):
+        k = data.draw(st.integers(0, len(raw) - 1))
+        raw[k] = data.draw(st.integers(0, 255))
+    cut = data.draw(st.integers(1, len(raw)))
+    path = tmp_path / "bad.npz"
+    path.write_bytes(bytes(raw[:cut]))
+    try:
+        read_log(path)
+    except VerifyInputError as exc:
+        assert "\n" not in str(exc)
+
+
+def test_a_corrupt_deflate_stream_is_one_line(tmp_path):
+    """Flipped bytes inside a compressed member: zlib's own error type, not exit 3."""
+    rng = np.random.default_rng(1)
+    tr = Trial(0, np.arange(2000) / RATE, rng.random((2000, 2)), rng.random((2000, 2)))
+    path = write_log(ExperimentLog((tr,), RATE, ""), tmp_path / "z.npz")
+    raw = path.read_bytes()
+    with zipfile.ZipFile(path) as z:
+        info = z.getinfo("e1.npy")
+    start = info.header_offset + 30 + len(info.filename) + len(info.extra)
+    refused = 0
+    for k in range(200, info.compress_size, 97):
+        bad = bytearray(raw)
+        bad[start + k] ^= 0xFF
+        (tmp_path / "c.npz").write_bytes(bytes(bad))
+        with pytest.raises(VerifyInputError) as exc:
+            read_log(tmp_path / "c.npz")
+        assert "\n" not in str(exc.value)
+        refused += 1
+    assert refused > 50

@@ -7,8 +7,10 @@ uncompressed sizes (at most ``MAX_NPZ_BYTES`` in all) and each member's .npy hea
 
 from __future__ import annotations
 
+import lzma
 import math
 import zipfile
+import zlib
 from pathlib import Path
 from typing import BinaryIO
 
@@ -29,6 +31,11 @@ from verify.inputs.log_checks import (
     short,
 )
 
+#: What a damaged archive raises while it is read (zlib and lzma report corrupt streams
+#: with their own error types; bz2 with OSError).
+_ARCHIVE_ERRORS = (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError,
+                   NotImplementedError, zlib.error, lzma.LZMAError)
+
 
 def read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float | None]:
     """The columns of an NPZ archive, sizes checked from the headers before any data is
@@ -40,7 +47,7 @@ def read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float
                                "columns with numpy.savez(path, time=..., trial=..., ...)")
     try:
         archive = zipfile.ZipFile(handle)
-    except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
+    except _ARCHIVE_ERRORS as exc:
         first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
         raise VerifyInputError(f"{path}: not a readable .npz archive ({first}); write it with "
                                "numpy.savez or verify simulate --log") from None
@@ -70,8 +77,7 @@ def read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float
                         shape, _, dtype = np.lib.format.read_array_header_1_0(member)
                     else:
                         shape, _, dtype = np.lib.format.read_array_header_2_0(member)
-            except (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError,
-                    NotImplementedError) as exc:
+            except _ARCHIVE_ERRORS as exc:
                 raise VerifyInputError(f"{path}: array {short(name)!r} is unreadable "
                                        f"({short(' '.join(str(exc).split()), 80)}); rewrite "
                                        "the archive") from None
@@ -107,7 +113,7 @@ def read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float
             try:
                 with archive.open(info) as member:
                     arrays[name] = np.lib.format.read_array(member, allow_pickle=False)
-            except (OSError, ValueError, zipfile.BadZipFile, EOFError, RuntimeError) as exc:
+            except _ARCHIVE_ERRORS as exc:
                 raise VerifyInputError(f"{path}: array {name!r} is unreadable "
                                        f"({short(' '.join(str(exc).split()), 80)}); rewrite "
                                        "the archive") from None
