@@ -665,3 +665,15 @@ def test_a_corrupt_deflate_stream_is_one_line(tmp_path):
         assert "\n" not in str(exc.value)
         refused += 1
     assert refused > 50
+
+
+@pytest.mark.parametrize(("lines", "pattern"), [
+    ([HEADER, '0\r0,0,1,1,1,1'], r"s: line 2: not a CSV row"),
+    ([HEADER, '"0\x00",0,1,1,1,1'], r"s: line 2, column 'time': '0\\x00' is not a number"),
+    (["\x00" + HEADER, "0,0,1,1,1,1"], r"s: line 1 \(header\): unknown column '\\x00time'"),
+])
+def test_control_characters_in_lines_are_one_line(lines, pattern):
+    from verify.inputs.experiment_log import read_csv_lines
+
+    with pytest.raises(VerifyInputError, match=pattern):
+        read_csv_lines(iter(lines), source="s")

@@ -290,10 +290,10 @@ def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
                 rate = _rate_comment(source, number, value.strip())
             continue
         if '"' in stripped:
-            cells = [c.strip() for c in next(csv.reader([stripped]))]
+            cells = [c.strip() for c in _csv_cells(stripped, source, number)]
             stripped = ",".join(cells)
         if names is None:
-            cells = next(csv.reader([stripped]))
+            cells = _csv_cells(stripped, source, number)
             names = check_header(source, cells, f"{source}: line {number} (header)")
             row_pattern = re.compile(r"\s*,\s*".join(
                 f"({_INT})" if n in INTEGER_COLUMNS else f"({_NUM})" for n in names))
@@ -341,6 +341,15 @@ def read_csv_lines(lines: Iterable[str], *, source: str, min_samples: int = 2
     return builder.log(rate)
 
 
+def _csv_cells(text: str, source: str, number: int) -> list[str]:
+    """The cells of one CSV line (quotes as CSV allows); a malformed line is one line."""
+    try:
+        return next(csv.reader([text]))
+    except csv.Error as exc:
+        raise fail(f"{source}: line {number}", f"not a CSV row ({exc}); write numbers "
+                   "separated by commas, one row per line") from None
+
+
 def _arrays(current: dict[str, array]) -> dict[str, np.ndarray]:
     return {n: np.frombuffer(a, np.int64 if a.typecode == "q" else np.float64)
             for n, a in current.items()}
@@ -356,7 +365,7 @@ def _rate_comment(source: str, number: int, value: str) -> float:
 
 def _diagnose(source: str, number: int, names: list[str], stripped: str) -> None:
     """Raise the error of a row that does not match the header's pattern."""
-    cells = next(csv.reader([stripped])) if stripped else []
+    cells = _csv_cells(stripped, source, number) if stripped else []
     if len(cells) != len(names):
         raise fail(f"{source}: line {number}", f"{len(cells)} cells, the header has "
                     f"{len(names)}; give one value per column")
