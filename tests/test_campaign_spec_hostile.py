@@ -389,3 +389,9 @@ def test_long_computed_values_are_shown_short(tmp_path):
 def test_step_counts_beyond_the_float_range(tmp_path, sweep, needle):
     message = refused(tmp_path, SWEEP.replace("seconds = 1\n", sweep + "\n") + HUMANS, needle)
     assert "OverflowError" not in message
+
+
+def test_a_positive_number_that_rounds_to_zero_is_called_what_it_is(tmp_path):
+    text = SWEEP.replace("k_s = [2.0, 3.0]", "k_s = 1e-400")
+    message = refused(tmp_path, text + HUMANS, "sweep.k_s: 1e-400 is too small for a float")
+    assert "must be a positive number" not in message

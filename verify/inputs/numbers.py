@@ -182,10 +182,14 @@ def rational(value: Any, where: str) -> Rational:
 
 def real(value: Any, where: str) -> float:
     """The float flavour of :func:`rational`: the nearest float, refusing what overflows."""
-    x = to_float(rational(value, where))
+    q = rational(value, where)
+    x = to_float(q)
     if not math.isfinite(x):
         raise VerifyInputError(f"{where}: {shown(value)} is too large for a float; give a "
                                "number below 1.8e308 in size")
+    if x == 0 and q != 0:
+        raise VerifyInputError(f"{where}: {shown(value)} is too small for a float (it rounds "
+                               "to 0); give 0 or a number of at least 2.2e-308 in size")
     return x
 
 
