@@ -359,7 +359,7 @@ def _rate_comment(source: str, number: int, value: str) -> float:
     rate = float(value) if _NUMBER.fullmatch(value) else math.nan
     if not (0 < rate <= 1 / MIN_STEP):
         raise fail(f"{source}: line {number}", f"rate {short(value)!r} is not a positive "
-                    f"number of at most {1 / MIN_STEP:g} Hz; write e.g. '# rate = 120'")
+                   f"number of at most {1 / MIN_STEP:g} Hz; write e.g. '# rate = 120'")
     return rate
 
 
@@ -368,7 +368,7 @@ def _diagnose(source: str, number: int, names: list[str], stripped: str) -> None
     cells = _csv_cells(stripped, source, number) if stripped else []
     if len(cells) != len(names):
         raise fail(f"{source}: line {number}", f"{len(cells)} cells, the header has "
-                    f"{len(names)}; give one value per column")
+                   f"{len(names)}; give one value per column")
     for name, cell in zip(names, cells, strict=True):
         cell = cell.strip()
         pattern = _INTEGER if name in INTEGER_COLUMNS else _NUMBER

@@ -46,18 +46,18 @@ def check_header(path: str, names: list[str], where: str) -> list[str]:
     for name in names:
         if name not in COLUMNS:
             raise fail(where, f"unknown column {short(name)!r}; the columns are "
-                        f"{', '.join(COLUMNS)} (see verify.inputs.experiment_log)")
+                       f"{', '.join(COLUMNS)} (see verify.inputs.experiment_log)")
         if name in seen:
             raise fail(where, f"column {name!r} appears twice; keep one")
         seen.add(name)
     missing = [n for n in REQUIRED if n not in seen]
     if missing:
         raise fail(where, f"missing column{'s' if len(missing) > 1 else ''} "
-                    f"{', '.join(missing)}; a log needs {', '.join(REQUIRED)}")
+                   f"{', '.join(missing)}; a log needs {', '.join(REQUIRED)}")
     ref = [n for n in REFERENCE if n in seen]
     if ref and len(ref) != 3:
         raise fail(where, f"reference columns {', '.join(ref)} without the others; give all "
-                    "of r1, r2, r3 or none")
+                   "of r1, r2, r3 or none")
     return names
 
 
@@ -96,7 +96,8 @@ def int_problem(name: str, text: str, k: int) -> str | None:
 
 
 def check_limits(name: str, arr: np.ndarray, where: str) -> None:
-    """The limits of the module docstring on a float column, for NPZ and for the writer."""
+    """The limits (:mod:`verify.inputs.experiment_log`, "Limits") on a float column, for
+    NPZ arrays and for the writer."""
     size = np.abs(arr)
     bad = np.flatnonzero((size > limit_of(name)) | ((size > 0) & (size < TINY)))
     if bad.size:
@@ -128,35 +129,35 @@ class TrialChecker:
         where = f"{self._at(rows[0])}, trial {tid}"
         if tid in self.seen:
             raise fail(where, f"trial {tid} appears again after other trials (first at "
-                        f"{self.kind} {self.seen[tid]}); keep each trial's rows together")
+                       f"{self.kind} {self.seen[tid]}); keep each trial's rows together")
         self.seen[tid] = int(rows[0])
         n = rows.shape[0]
         if n < self.min_samples:
             raise fail(where, f"trial {tid} has {n} sample{'s' if n != 1 else ''}; at least "
-                        f"{self.min_samples} are needed (the model order and the protocol "
-                        "need them); drop the trial or record longer")
+                       f"{self.min_samples} are needed (the model order and the protocol "
+                       "need them); drop the trial or record longer")
         for name in FLAGS:
             if name in cols:
                 bad = np.flatnonzero((cols[name] != 0) & (cols[name] != 1))
                 if bad.size:
                     raise fail(f"{self._at(rows[bad[0]])}, column {name!r}",
-                                f"{cols[name][bad[0]]} is not 0 or 1; write 1 (yes) or 0 (no)")
+                               f"{cols[name][bad[0]]} is not 0 or 1; write 1 (yes) or 0 (no)")
         t = cols["time"]
         d = np.diff(t)
         if np.any(d <= 0):
             k = int(np.flatnonzero(d <= 0)[0]) + 1
             kind = "repeats" if d[k - 1] == 0 else "goes back"
             raise fail(f"{self._at(rows[k])}, column 'time'",
-                        f"time {float(t[k])!r} {kind} within trial {tid} (previous "
-                        f"{float(t[k - 1])!r}); time must increase strictly within a trial")
+                       f"time {float(t[k])!r} {kind} within trial {tid} (previous "
+                       f"{float(t[k - 1])!r}); time must increase strictly within a trial")
         step = float((t[-1] - t[0]) / (n - 1))
         size = float(max(abs(t[0]), abs(t[-1])))
         if step < MIN_STEP or step < RESOLUTION * size:
             raise fail(where, f"trial {tid} has a time step of {step:.3g} s, below "
-                        f"{max(MIN_STEP, RESOLUTION * size):.3g} s (the limit is {MIN_STEP:g} "
-                        f"s, and {RESOLUTION:.3g} of the largest time so that float times "
-                        "resolve the step); check the time unit (seconds) or write times "
-                        "relative to the experiment's start")
+                       f"{max(MIN_STEP, RESOLUTION * size):.3g} s (the limit is {MIN_STEP:g} "
+                       f"s, and {RESOLUTION:.3g} of the largest time so that float times "
+                       "resolve the step); check the time unit (seconds) or write times "
+                       "relative to the experiment's start")
         written = 0.0 if exponent is None else 10.0 ** exponent
         slack = 8 * np.finfo(float).eps * size
         off = np.abs(d - step) > STEP_TOLERANCE * step
@@ -176,23 +177,23 @@ class TrialChecker:
             allowance = (f", or every time within {written:g} s (its written precision) of "
                          "the equally spaced grid" if written > 0 else "")
             raise fail(f"{self._at(rows[k])}, column 'time'",
-                        f"unequal sampling in trial {tid}: step {d[k - 1]:.9g} s vs the "
-                        f"trial's mean step {step:.9g} s (tolerance: relative "
-                        f"{STEP_TOLERANCE:g}{allowance}); resample the trial uniformly")
+                       f"unequal sampling in trial {tid}: step {d[k - 1]:.9g} s vs the "
+                       f"trial's mean step {step:.9g} s (tolerance: relative "
+                       f"{STEP_TOLERANCE:g}{allowance}); resample the trial uniformly")
         spread = (written + slack) / (n - 1)  # how far the mean step may be from the grid's
         if self.step0 is None:
             self.step0, self.spread0 = step, spread
         elif abs(step - self.step0) > max(STEP_TOLERANCE * self.step0, spread + self.spread0):
             raise fail(where, f"trial {tid} has step {step:.9g} s, the first trial "
-                        f"{self.step0:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); "
-                        "resample the trials to one rate")
+                       f"{self.step0:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); "
+                       "resample the trials to one rate")
         start = None
         if "start" in cols:
             marks = np.flatnonzero(cols["start"])
             if marks.size > 1:
                 raise fail(f"{self._at(rows[marks[1]])}, column 'start'",
-                            f"a second start event in trial {tid} (first at time "
-                            f"{float(t[marks[0]])!r}); mark one start per trial")
+                           f"a second start event in trial {tid} (first at time "
+                           f"{float(t[marks[0]])!r}); mark one start per trial")
             start = float(t[marks[0]]) if marks.size else None
         reference = (np.stack([cols[r] for r in REFERENCE], axis=1)
                      if "r1" in cols else None)

@@ -95,17 +95,17 @@ def read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float
             shape, dtype, _ = headers["rate"]
             if shape != () or dtype.kind not in "iuf":
                 raise fail(f"{path}: array 'rate'", f"must be one positive number (0-d "
-                            f"array), got shape {shape}, dtype {dtype}")
+                           f"array), got shape {shape}, dtype {dtype}")
         check_header(str(path), [n for n in headers if n != "rate"], f"{path}")
         shapes = {n: s for n, (s, _, _) in headers.items() if n != "rate"}
         for name, shape in shapes.items():
             if len(shape) != 1:
                 raise fail(f"{path}: array {name!r}", f"must be 1-D (one value per sample), "
-                            f"got shape {shape}")
+                           f"got shape {shape}")
         if len(set(shapes.values())) > 1:
             raise fail(str(path), "arrays of different lengths "
-                        + ", ".join(f"{n}: {s[0]}" for n, s in shapes.items())
-                        + "; give every column one value per sample")
+                       + ", ".join(f"{n}: {s[0]}" for n, s in shapes.items())
+                       + "; give every column one value per sample")
         if next(iter(shapes.values()))[0] == 0:
             raise VerifyInputError(f"{path}: the log has no samples; add data")
         arrays: dict[str, np.ndarray] = {}
@@ -121,7 +121,7 @@ def read_npz(path: Path, handle: BinaryIO) -> tuple[dict[str, np.ndarray], float
         r = arrays.pop("rate")
         if not (np.isfinite(r) and 0 < r <= 1 / MIN_STEP):
             raise fail(f"{path}: array 'rate'", f"must be one positive number of at most "
-                        f"{1 / MIN_STEP:g} Hz, got {r}")
+                       f"{1 / MIN_STEP:g} Hz, got {r}")
         rate = float(r)
     return npz_columns(path, arrays), rate
 
@@ -136,11 +136,11 @@ def npz_columns(path: Path, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarr
                 arr = arr.astype(np.int64)
             elif kind not in "iu":
                 raise fail(where, f"dtype {arr.dtype} is not an integer type; store whole "
-                            "numbers as int64" + (" (or bool)" if name in FLAGS else ""))
+                           "numbers as int64" + (" (or bool)" if name in FLAGS else ""))
             big = np.flatnonzero(np.abs(arr.astype(np.float64)) > MAX_TRIAL_ID)
             if big.size:
                 raise fail(f"{where}[{big[0]}]", f"{arr[big[0]]} exceeds the limit "
-                            f"{MAX_TRIAL_ID} in size; number the trials 0, 1, 2, ...")
+                           f"{MAX_TRIAL_ID} in size; number the trials 0, 1, 2, ...")
             columns[name] = arr.astype(np.int64)
         else:
             if kind not in "iuf":
@@ -149,7 +149,7 @@ def npz_columns(path: Path, arrays: dict[str, np.ndarray]) -> dict[str, np.ndarr
             bad = np.flatnonzero(~np.isfinite(arr))
             if bad.size:
                 raise fail(f"{where}[{bad[0]}]", f"NaN or Inf ({arr[bad[0]]}) is not allowed; "
-                            "give a finite number or mark the sample invalid (valid = 0)")
+                           "give a finite number or mark the sample invalid (valid = 0)")
             check_limits(name, arr, where)
             columns[name] = arr
     return columns
