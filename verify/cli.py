@@ -280,6 +280,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
+    from verify.inputs.number_text import short_text, unlimited_int_text
     from verify.passivity.band import parse_band
     from verify.passivity.gate import (
         add_indices,
@@ -299,24 +300,27 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
     models = [load_model(path) for path in args.models]  # validate all before any work
-    if band is None:
-        results = run_gate(models, margin, args.certificates, tolerance)
-    else:
-        results = run_band_gate(models, band, margin, args.certificates)
-    if args.indices:
-        add_indices(results)
-    for r in results:
-        print(r.line(), flush=True)
-    passed = sum(r.passed for r in results)
-    where = "" if band is None else f" on [{band[0]}, {band[1]}] rad/s"
-    within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
-    print(f"{passed} of {len(results)} model(s) passive{where}"
-          + (f" ({within} within tolerance {args.tolerance})" if within else "")
-          + (f" with margin {margin}" if margin else ""))
-    if args.json:
-        write_json(results, args.json)
-    if args.junit:
-        write_junit(results, args.junit)
+    with unlimited_int_text():  # every input is validated: exact numbers of any size now
+        if band is None:
+            results = run_gate(models, margin, args.certificates, tolerance)
+        else:
+            results = run_band_gate(models, band, margin, args.certificates)
+        if args.indices:
+            add_indices(results)
+        for r in results:
+            print(r.line(), flush=True)
+        passed = sum(r.passed for r in results)
+        where = "" if band is None else \
+            f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
+        within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
+        spelled = args.tolerance if len(args.tolerance) <= 24 else short_text(tolerance)
+        print(f"{passed} of {len(results)} model(s) passive{where}"
+              + (f" ({within} within tolerance {spelled})" if within else "")
+              + (f" with margin {short_text(margin)}" if margin else ""))
+        if args.json:
+            write_json(results, args.json)
+        if args.junit:
+            write_junit(results, args.junit)
     return 0 if passed == len(results) else 1
 
 
@@ -412,14 +416,37 @@ def _cmd_network(args: argparse.Namespace) -> int:
     return status
 
 
-def _attach_band_value(argv: Sequence[str]) -> list[str]:
-    """``--band -1:2`` as ``--band=-1:2``: argparse would take the negative band for an
-    option and print usage; joined, the band check reports it in one line."""
-    out = list(argv)
-    for i, token in enumerate(out[:-1]):
-        if token == "--band" and out[i + 1].startswith("-") and ":" in out[i + 1]:
-            out[i : i + 2] = [f"--band={out[i + 1]}"]
+#: Options whose value is a number (or band) that may be negative.
+SIGNED_VALUE_OPTIONS = ("--margin", "--tolerance", "--band")
+
+
+def _looks_signed(value: str) -> bool:
+    """"-1e-3", "-.5", "-1/100", "-1:2": a negative number, not an option."""
+    return len(value) > 1 and value[0] == "-" and (value[1].isdigit() or value[1] == ".")
+
+
+def _attach_signed_values(argv: Sequence[str]) -> list[str]:
+    """``--margin -1e-3`` as ``--margin=-1e-3`` (likewise ``--tolerance``, ``--band``).
+
+    argparse takes a value that starts with "-" and is not a plain decimal for an option
+    and prints usage; joined, both spellings reach the number parser, which accepts the
+    value or refuses it in one line.
+    """
+    out: list[str] = []
+    tokens = list(argv)
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        if token == "--":  # everything after is positional
+            out += tokens[i:]
             break
+        if (token in SIGNED_VALUE_OPTIONS and i + 1 < len(tokens)
+                and _looks_signed(tokens[i + 1])):
+            out.append(f"{token}={tokens[i + 1]}")
+            i += 2
+            continue
+        out.append(token)
+        i += 1
     return out
 
 
@@ -439,7 +466,7 @@ def single_threaded_blas() -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     parser = _build_parser()
-    args = parser.parse_args(_attach_band_value(sys.argv[1:] if argv is None else argv))
+    args = parser.parse_args(_attach_signed_values(sys.argv[1:] if argv is None else argv))
     if args.command is None:
         parser.print_help()
         return 2

@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING, Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
+from verify.inputs.number_text import approx_text
 from verify.inputs.numbers import fraction
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.io.strict_json import (
@@ -96,10 +97,10 @@ def file_name(name: str, claim: Claim, fingerprint: str) -> str:
     """``<name>[-margin-<nu0>][-band-<w1>-<w2>]-<first 12 hex of the fingerprint>.json``."""
     parts = [slug(name)]
     if claim.margin != 0:
-        text = f"{float(claim.margin):.6g}"
+        text = approx_text(claim.margin, 6)
         parts.append("margin-" + (f"minus{text[1:]}" if text.startswith("-") else text))
     if claim.band is not None:
-        parts.append(f"band-{float(claim.band[0]):.6g}-{float(claim.band[1]):.6g}")
+        parts.append(f"band-{approx_text(claim.band[0], 6)}-{approx_text(claim.band[1], 6)}")
     return "-".join([*parts, fingerprint[:12]]) + ".json"
 
 

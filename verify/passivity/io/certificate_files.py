@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from verify.inputs.number_text import short_text
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, KypCheck, check_kyp
 from verify.passivity.check.gkyp import ComplexMatrix, check_gkyp
@@ -252,10 +253,11 @@ def check_exact(cert: StoredCertificate) -> KypCheck:
 
 def summary(claim: Claim) -> str:
     """A short form of the claim for the check's one line."""
-    margin = "" if claim.margin == 0 else f" with margin {claim.margin}"
+    margin = "" if claim.margin == 0 else f" with margin {short_text(claim.margin)}"
     if claim.band is None:
         return f"passive{margin}"
-    return f"passive on [{claim.band[0]}, {claim.band[1]}] rad/s{margin}"
+    w1, w2 = (short_text(w) for w in claim.band)
+    return f"passive on [{w1}, {w2}] rad/s{margin}"
 
 
 def check_parsed(cert: StoredCertificate, path: Path) -> KypCheck:

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
+from verify.inputs.number_text import unlimited_int_text
 from verify.passivity.check import fd_certificate
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io import certificate_files as cf
@@ -62,7 +63,8 @@ def check_stored_certificate(path: Path) -> KypCheck:
         if checker is None:
             return KypCheck(False, f"unknown schema {schema!r}; known: "
                             f"{', '.join(sorted(SCHEMAS))}")
-        return checker(data, Path(path))
+        with unlimited_int_text():  # parsed strictly (bounded digits): any size from here
+            return checker(data, Path(path))
     except CertificateFormatError as exc:
         return KypCheck(False, f"malformed: {exc}")
 
