@@ -112,7 +112,9 @@ def test_frequency_domain_certificate_is_written_bound_and_kept(tmp_path, monkey
     assert "(kept: already a valid certificate" in capsys.readouterr().out
     assert cert.read_bytes() == before
     assert main(["certificates", "check", "certs"]) == 0
-    assert "exactly the one lossless.toml denotes" in capsys.readouterr().out
+    assert json.loads(cert.read_text())["source"] == "../lossless.toml"
+    assert ("source ../lossless.toml found relative to the certificate's folder: the "
+            "stored model is exactly the one it denotes") in capsys.readouterr().out
     model.write_text("[transfer_function]\nnum = [[[2, 18, 24, 27]]]\nden = [[[1, 4, 2, 8]]]\n")
     assert main(["certificates", "check", "certs"]) == 1
     assert "denotes another model" in capsys.readouterr().out

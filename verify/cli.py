@@ -141,11 +141,17 @@ def _build_parser() -> argparse.ArgumentParser:
         "check", help="re-verify stored certificates with no solver",
         description="Check each certificate file (each DIR's *.json): strict JSON (no "
         "duplicate keys, no unknown fields), its fingerprint and file name, the statement "
-        "derived from what it proves, its source model file when found, and the exact "
-        "inequalities. Exit 0 if all are valid, 1 if one is refused or none is found, 2 if "
-        "a path does not exist.")
+        "derived from what it proves, its source model file (looked up relative to the "
+        "certificate's folder, never the working directory), and the exact inequalities. "
+        "A certificate whose source file is not found is UNBOUND: its name and descriptive "
+        "labels are not checked. Exit 0 if all are valid (or unbound, with "
+        "--allow-unbound), 1 if one is refused or unbound or none is found, 2 if a path "
+        "does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
                       default=[Path("certificates")])
+    p_cc.add_argument("--allow-unbound", action="store_true",
+                      help="accept certificates whose source file is not found (their proof "
+                      "is re-checked; the summary lists the labels left unchecked)")
 
     p_sim = sub.add_parser(
         "simulate",
@@ -325,21 +331,35 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.io.stored import certificate_files, check_stored_certificate
+    from verify.passivity.io.stored import (
+        CertificateStatus,
+        certificate_files,
+        check_stored_certificate,
+    )
 
     files = certificate_files(args.paths)
     if not files:
         where = ", ".join(str(p) for p in args.paths)
         print(f"verify: no certificate found in {where} (no *.json file)", file=sys.stderr)
         return 1
-    bad = 0
+    marks = {CertificateStatus.VALID: "ok     ", CertificateStatus.UNBOUND: "UNBOUND",
+             CertificateStatus.INVALID: "INVALID"}
+    checks = []
     for f in files:
-        c = check_stored_certificate(f)
-        bad += not c.ok
-        print(f"{'ok     ' if c.ok else 'INVALID'} {f}: {c.reason}", flush=True)
-    print(f"{len(files) - bad} of {len(files)} certificate(s) valid (bound to their claims, "
-          "exact re-check, no solver)")
-    return 0 if bad == 0 else 1
+        c = check_stored_certificate(f, allow_unbound=args.allow_unbound)
+        checks.append((f, c))
+        print(f"{marks[c.status]} {f}: {c.reason}", flush=True)
+    valid = sum(c.status is CertificateStatus.VALID for _, c in checks)
+    unbound = [(f, c) for f, c in checks if c.status is CertificateStatus.UNBOUND]
+    print(f"{valid} of {len(files)} certificate(s) valid (bound to their claims, exact "
+          "re-check, no solver)")
+    if unbound:
+        verdict = "accepted (--allow-unbound)" if args.allow_unbound else \
+            "not accepted (source file not found; --allow-unbound accepts them)"
+        print(f"{len(unbound)} unbound, {verdict}; labels not checked:")
+        for f, c in unbound:
+            print(f"  {f}: {', '.join(c.unchecked)}")
+    return 0 if all(c.ok for _, c in checks) else 1
 
 
 def _cmd_simulate(args: argparse.Namespace) -> int:

@@ -3,8 +3,9 @@
 Every model file is validated before any is analysed (bad input fails fast and whole).
 A passive verdict writes its exactly checked KYP certificate under the certificates
 directory (with ``--band W1:W2``, a generalized KYP certificate for that band, see
-:mod:`verify.passivity.band`); a JSON summary and a JUnit XML file (one test case per
-model) are optional.
+:mod:`verify.passivity.band`), naming its model file by a path relative to that
+directory, so ``verify certificates check`` finds the file from the certificate wherever
+it runs; a JSON summary and a JUnit XML file (one test case per model) are optional.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from verify.inputs.numbers import parse_number
 from verify.passivity.check.fd_certificate import PrCertificate
 from verify.passivity.decision import PASSIVE, Decision, decide
 from verify.passivity.io import certificate_files as cf
-from verify.passivity.io.binding import Claim, shifted, unverified_meta
+from verify.passivity.io.binding import Claim, relative_source, shifted, unverified_meta
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
@@ -83,6 +84,7 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
     from verify.passivity.io.certificate_files import dumps, keep_or_write
 
     data = dict(cert.to_json(), meta={"margin": str(Fraction(margin))})
+    data["source"] = relative_source(data["source"], certificates_dir)
     given = shifted(cert.model, -Fraction(margin))
     path = Path(certificates_dir) / file_name(cert.name, Claim(Fraction(margin)),
                                               given.fingerprint())
@@ -113,7 +115,8 @@ def run_gate(models, margin: Fraction, certificates_dir: Path,
             H = shifted(d.certificate.model, -claim.margin)  # the model as given
             P = coarse_kyp(d.certificate.model, d.certificate.P)
             if getattr(d, "perturbation", None) is None:
-                name, source, meta = model.name, model.source, unverified_meta(model)
+                name, meta = model.name, unverified_meta(model)
+                source = relative_source(model.source, certificates_dir)
             else:  # the perturbed model is no file's model: nothing to bind it to
                 name, source, meta = f"{model.name} (perturbed within tolerance)", "", {}
             path, kept = cf.store_certificate(
@@ -136,8 +139,8 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
             H = shifted(d.certificate.model, -claim.margin)  # the model as given
             P, Q = coarse_band(d.certificate.model, d.certificate.P, d.certificate.Q, band)
             path, kept = cf.store_certificate(cf.band_json(
-                model.name, model.source, H, claim, P, Q, unverified_meta(model)),
-                certificates_dir)
+                model.name, relative_source(model.source, certificates_dir), H, claim, P, Q,
+                unverified_meta(model)), certificates_dir)
         results.append(GateResult(d, path, kept=path is not None and kept))
     return results
 

@@ -20,6 +20,7 @@ and compared when the file is checked, or labelled unverified:
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass
 from fractions import Fraction
@@ -180,19 +181,73 @@ def check_unverified(value: Any) -> dict[str, Any]:
     return value
 
 
-def resolve_source(source: str, cert_path: Path) -> Path | None:
-    """The model file a certificate names, if it exists here.
+#: Sources that name no file (a model built in Python, a perturbed model).
+NO_SOURCE = ("", "python")
 
-    A relative ``source`` is taken from the working directory (as ``verify gate`` stores
-    it), then from the directory above the certificate's folder (the repository root for
-    ``certificates/``). ``python`` and ``""`` name no file.
+
+@dataclass(frozen=True)
+class SourceLocation:
+    """Where a certificate's source file was found, and by which rule."""
+
+    path: Path
+    rule: str  # e.g. "relative to the certificate's folder"
+
+    def describe(self, source: str) -> str:
+        return f"source {source} found {self.rule}"
+
+
+def locate_source(source: str, cert_path: Path) -> SourceLocation | None:
+    """The model file a certificate names, looked up from the certificate, never from the
+    working directory (so the verdict does not depend on where the check runs).
+
+    A relative ``source`` is taken relative to the certificate's folder (as ``verify
+    gate`` writes it), then relative to each folder above it, nearest first (how
+    certificates in a repository's ``certificates/`` named files from the repository
+    root), then as a file of that name next to the certificate (a model file and its
+    certificates kept together, as ``verify identify --out DIR`` writes them).
+    ``python`` and ``""`` name no file.
     """
-    if source in ("", "python"):
+    if source in NO_SOURCE:
         return None
     path = Path(source)
-    candidates = [path] if path.is_absolute() else [
-        Path.cwd() / path, Path(cert_path).resolve().parent.parent / path]
-    return next((c for c in candidates if c.is_file()), None)
+    folder = Path(cert_path).resolve().parent
+    if path.is_absolute():
+        candidates = [(path, "at its absolute path")]
+    else:
+        candidates = [(folder / path, "relative to the certificate's folder")]
+        candidates += [(up / path, f"relative to {up}, a folder above the certificate's")
+                       for up in folder.parents]
+        candidates.append((folder / path.name, "next to the certificate"))
+    return next((SourceLocation(c, rule) for c, rule in candidates if c.is_file()), None)
+
+
+def same_source(a: str, b: str, cert_path: Path) -> bool:
+    """Two ``source`` texts of certificates at ``cert_path`` name the same file (or are
+    the same text): a rewritten spelling of a source is no new claim."""
+    if a == b:
+        return True
+    found_a, found_b = resolve_source(a, cert_path), resolve_source(b, cert_path)
+    return found_a is not None and found_b is not None and \
+        found_a.resolve() == found_b.resolve()
+
+
+def resolve_source(source: str, cert_path: Path) -> Path | None:
+    """The path :func:`locate_source` finds, or None."""
+    found = locate_source(source, cert_path)
+    return None if found is None else found.path
+
+
+def relative_source(source: str, directory: Path) -> str:
+    """A model file's path as a certificate in ``directory`` names it: relative to that
+    folder, with "/" separators (the same bytes on every machine for the same layout);
+    absolute only where no relative path exists (another drive)."""
+    if source in NO_SOURCE:
+        return source
+    target = Path(source).resolve()
+    try:
+        return Path(os.path.relpath(target, Path(directory).resolve())).as_posix()
+    except ValueError:
+        return target.as_posix()
 
 
 @dataclass(frozen=True)
@@ -208,11 +263,12 @@ def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str,
     """Compare the stored model, name and unverified fields with the source file."""
     from verify.passivity.io.model_file import load_model
 
-    found = resolve_source(source, cert_path)
-    if found is None:
-        what = "no source file" if source in ("", "python") else \
-            f"source {source} not found here"
+    location = locate_source(source, cert_path)
+    if location is None:
+        what = "no source file" if source in NO_SOURCE else \
+            f"source {source} not found (looked up from the certificate's folder)"
         return SourceBinding(None, f"{what}: the claim is about the stored model only")
+    found = location.path
     try:
         loaded = load_model(found)
     except VerifyInputError as exc:
@@ -227,10 +283,31 @@ def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str,
         if key in unverified and unverified[key] != loaded.meta.get(key):
             return SourceBinding(f"unverified.{key} = {unverified[key]!r} differs from the "
                                  f"source file's {loaded.meta.get(key)!r}", "")
-    return SourceBinding(None, f"the stored model is exactly the one {source} denotes")
+    return SourceBinding(None, f"{location.describe(source)}: the stored model is exactly "
+                         "the one it denotes")
 
 
-__all__ = ["LEGACY_BAND_STATEMENT", "LEGACY_KYP_STATEMENT", "UNVERIFIED_KEYS", "Claim",
-           "SourceBinding", "bind_source", "check_unverified", "claim_from_fields",
-           "exact_of", "file_name", "model_from_json", "model_to_json", "resolve_source",
-           "shifted", "slug", "statement", "unverified_meta"]
+__all__ = [
+    "LEGACY_BAND_STATEMENT",
+    "LEGACY_KYP_STATEMENT",
+    "NO_SOURCE",
+    "UNVERIFIED_KEYS",
+    "Claim",
+    "SourceBinding",
+    "SourceLocation",
+    "bind_source",
+    "check_unverified",
+    "claim_from_fields",
+    "exact_of",
+    "file_name",
+    "locate_source",
+    "model_from_json",
+    "model_to_json",
+    "relative_source",
+    "resolve_source",
+    "same_source",
+    "shifted",
+    "slug",
+    "statement",
+    "unverified_meta",
+]

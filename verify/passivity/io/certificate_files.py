@@ -37,6 +37,7 @@ from verify.passivity.io.binding import (
     claim_from_fields,
     file_name,
     model_from_json,
+    same_source,
     shifted,
     statement,
 )
@@ -70,10 +71,14 @@ class StoredCertificate:
     Q: ComplexMatrix | None
     unverified: dict[str, Any]
 
-    def same_claim(self, other: StoredCertificate) -> bool:
-        """Same name, source, exact model and claim (the proof matrices may differ)."""
-        return (self.name, self.source, self.claim, self.model) == (
-            other.name, other.source, other.claim, other.model)
+    def same_claim(self, other: StoredCertificate, path: Path | None = None) -> bool:
+        """Same name, source, exact model and claim (the proof matrices may differ); with
+        ``path`` (where both would be stored), sources spelt differently but naming the
+        same file count as the same."""
+        if (self.name, self.claim, self.model) != (other.name, other.claim, other.model):
+            return False
+        return self.source == other.source or (
+            path is not None and same_source(self.source, other.source, path))
 
 
 # ------------------------------------------------------------------------------ writing
@@ -123,7 +128,7 @@ def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool
     def still_valid(old: Path) -> bool:
         old_data = read_strict(old)
         parse = PARSERS.get(old_data.get("schema"))  # type: ignore[arg-type]
-        return (parse is not None and parse(old_data).same_claim(fresh)
+        return (parse is not None and parse(old_data).same_claim(fresh, old)
                 and check_stored_certificate(old).ok)
 
     return keep_or_write(path, dumps(data), still_valid)
