@@ -287,7 +287,6 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 def _cmd_gate(args: argparse.Namespace) -> int:
     from verify.inputs.number_text import short_text, unlimited_int_text
-    from verify.passivity.band import parse_band
     from verify.passivity.gate import (
         add_indices,
         parse_margin,
@@ -301,7 +300,11 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
     margin = parse_margin(args.margin)
     tolerance = parse_tolerance(args.tolerance)
-    band = parse_band(args.band) if args.band is not None else None
+    band = None
+    if args.band is not None:  # the band route's modules load only when asked for
+        from verify.passivity.band import parse_band
+
+        band = parse_band(args.band)
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")

@@ -32,7 +32,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from gmpy2 import mpq
-from scipy.optimize import minimize_scalar
 
 from verify.inputs.numbers import float_view
 from verify.passivity.check.certificate import Certificate, ExactModel
@@ -117,6 +116,8 @@ def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
 
 def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tuple]:
     """Frequencies where nu is smallest: a log sweep around the poles, then refinement."""
+    from scipy.optimize import minimize_scalar  # imported on use (start-up time)
+
     eig = np.abs(np.linalg.eigvals(A)) if A.shape[0] else np.array([1.0])
     eig = eig[eig > 0] if np.any(eig > 0) else np.array([1.0])
     lo, hi = np.log10(eig.min()) - 4, np.log10(eig.max()) + 6

@@ -33,7 +33,6 @@ from fractions import Fraction
 import flint
 import gmpy2
 import numpy as np
-import sympy as sp
 from gmpy2 import mpq
 
 from verify.passivity.check import exact as ex
@@ -291,6 +290,7 @@ def _transfer_matrix(model: ExactModel):
     Only rational matrix products and polynomials over QQ: no symbolic matrix algebra,
     which took minutes at n = 8.
     """
+    import sympy as sp  # only the pole route needs it: imported on use (start-up time)
     from sympy.polys.matrices import DomainMatrix
 
     s = sp.Symbol("s")
@@ -343,6 +343,8 @@ def pole_witness(model: ExactModel) -> Witness | None:
     """An exact RHP pole, or a non-simple / non-PSD-residue pole at 0 (small models)."""
     if model.n == 0 or model.n > EXACT_POLE_LIMIT:
         return None
+    import sympy as sp
+
     s, Hs = _transfer_matrix(model)
     m = model.m
     seen: set = set()
