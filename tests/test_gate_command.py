@@ -118,3 +118,19 @@ def test_frequency_domain_certificate_is_written_bound_and_kept(tmp_path, monkey
     model.write_text("[transfer_function]\nnum = [[[2, 18, 24, 27]]]\nden = [[[1, 4, 2, 8]]]\n")
     assert main(["certificates", "check", "certs"]) == 1
     assert "denotes another model" in capsys.readouterr().out
+
+
+def test_margin_refutation_speaks_of_h_minus_nu_i(tmp_path, capsys):
+    """With --margin the model decided is H - nu I: the reason says so, not "D + Dᵀ"."""
+    assert main(["gate", str(MODELS / "example_state_space.toml"), "--margin", "0.1",
+                 "--certificates", str(tmp_path)]) == 1
+    out = capsys.readouterr().out
+    assert "H − νI is not passive for ν = 1/10: D + Dᵀ − 2νI is not PSD" in out
+    assert "D + Dᵀ is not PSD" not in out
+    assert main(["gate", str(MODELS / "reconstructed_ks2p5.toml"), "--margin=-1/100",
+                 "--certificates", str(tmp_path)]) == 1
+    assert "H − νI is not passive for ν = -1/100 (evidence for H − νI" in \
+        capsys.readouterr().out
+    assert main(["gate", str(MODELS / "reconstructed_ks2p5.toml"), "--certificates",
+                 str(tmp_path)]) == 1
+    assert "νI" not in capsys.readouterr().out  # no margin: nothing about it

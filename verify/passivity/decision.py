@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 from gmpy2 import mpq
 
+from verify.inputs.number_text import short_text
 from verify.inputs.numbers import float_view
 from verify.passivity.check.certificate import Certificate, ExactModel
 from verify.passivity.check.realization import MinimalPart, minimal_part
@@ -241,10 +242,13 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     em = shifted(part.model, margin)
 
     def done(verdict, reason, **kw) -> Decision:
+        if margin and verdict == NOT_PASSIVE and not reason.startswith("H − νI"):
+            reason = f"H − νI is not passive for ν = {short_text(margin)} (evidence for " \
+                f"H − νI, whose feedthrough is D − νI): {reason}"
         return Decision(model, verdict, reason + note, margin=margin,
                         seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
-    w = infinity_witness(em)  # exact on the model as written, at any scale
+    w = infinity_witness(em, margin=margin)  # exact on the model as written, at any scale
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
     rescaled = rescale(part.model, margin)  # far from 1: decide H(beta s)/alpha instead

@@ -35,6 +35,7 @@ import gmpy2
 import numpy as np
 from gmpy2 import mpq
 
+from verify.inputs.number_text import short_text
 from verify.passivity.check import exact as ex
 from verify.passivity.check import intmat
 from verify.passivity.check.certificate import ExactModel
@@ -69,18 +70,30 @@ def negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     return None
 
 
-def infinity_witness(model: ExactModel) -> Witness | None:
+def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Witness | None:
+    """A rational v with vᵀ(D + Dᵀ)v < 0 for the model decided (paper, Section 4: H passive
+    needs H(jω) + H(jω)ᴴ ⪰ 0 as ω → ∞, where H(jω) → D).
+
+    With a margin ν the model decided is H − νI (``model`` is already shifted, its
+    feedthrough is D − νI), and the message says so in terms of the model as given:
+    D + Dᵀ − 2νI not PSD, i.e. ν(ω) < ν as ω → ∞.
+    """
     S = ex.add(model.D, ex.transpose(model.D))
     found = negative_direction(S)
     if found is None:
         return None
     v, value = found
-    return Witness(
-        "infinity",
-        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {gmpy2.mpfr(value):.3g} < 0 at v = "
-        f"{[str(x) for x in v]}, so H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞",
-        {"v": [str(x) for x in v], "value": str(value)},
-    )
+    shown = f"{gmpy2.mpfr(value):.3g}"
+    vector = [str(x) for x in v]
+    if margin:
+        nu = short_text(margin)
+        summary = (f"H − νI is not passive for ν = {nu}: D + Dᵀ − 2νI is not PSD, "
+                   f"vᵀ(D + Dᵀ − 2νI)v = {shown} < 0 at v = {vector}, so "
+                   "λmin(H(jω) + H(jω)ᴴ)/2 < ν as ω → ∞")
+    else:
+        summary = (f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {shown} < 0 at v = {vector}, so "
+                   "H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞")
+    return Witness("infinity", summary, {"v": vector, "value": str(value)})
 
 
 def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
