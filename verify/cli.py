@@ -16,6 +16,9 @@ from pathlib import Path
 from verify import __version__
 from verify.errors import VerifyInputError
 
+#: Where ``verify gate`` writes certificates unless told (under the git-ignored build/).
+GATE_CERTIFICATES = Path("build") / "certificates"
+
 
 def _build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
@@ -106,8 +109,11 @@ def _build_parser() -> argparse.ArgumentParser:
     p_gate.add_argument("--tolerance", default="0", metavar="EPS",
                         help="pass a model within relative distance EPS of one certified "
                         "passive (H(s + a) + d I; default 0 = exact)")
-    p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
-                        metavar="DIR", help="where certificates are written")
+    p_gate.add_argument("--certificates", type=Path, default=GATE_CERTIFICATES,
+                        metavar="DIR", help="where certificates are written (default "
+                        f"{GATE_CERTIFICATES}, git-ignored: gating a model never adds "
+                        "files to a checkout; the paper's certificates/ are written by "
+                        "'verify all')")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
 
@@ -148,7 +154,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "--allow-unbound), 1 if one is refused or unbound or none is found, 2 if a path "
         "does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
-                      default=[Path("certificates")])
+                      help=f"certificate files or folders (default: certificates and "
+                      f"{GATE_CERTIFICATES}, those that exist)")
     p_cc.add_argument("--allow-unbound", action="store_true",
                       help="accept certificates whose source file is not found (their proof "
                       "is re-checked; the summary lists the labels left unchecked)")
@@ -340,9 +347,11 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
         check_stored_certificate,
     )
 
-    files = certificate_files(args.paths)
+    paths = args.paths or [p for p in (Path("certificates"), GATE_CERTIFICATES)
+                           if p.is_dir()] or [Path("certificates")]
+    files = certificate_files(paths)
     if not files:
-        where = ", ".join(str(p) for p in args.paths)
+        where = ", ".join(str(p) for p in paths)
         print(f"verify: no certificate found in {where} (no *.json file)", file=sys.stderr)
         return 1
     marks = {CertificateStatus.VALID: "ok     ", CertificateStatus.UNBOUND: "UNBOUND",
