@@ -15,7 +15,8 @@ measured in the same run. Commands:
 - ``gate N files``: ``verify gate`` on ``--files`` copies of the example in one process
   (many models decided by one start-up).
 
-Certificates go to a temporary folder. BLAS threads are pinned to 1.
+Certificates go to a temporary folder. BLAS threads are pinned to 1. ``--root DIR`` times
+another checkout of the package (e.g. an older commit, unpacked with ``git archive``).
 """
 
 from __future__ import annotations
@@ -32,14 +33,15 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-MODELS = ROOT / "verify" / "data" / "models"
 
 
-def _run(argv: list[str], env: dict[str, str]) -> tuple[float, float]:
-    """(wall seconds, child CPU seconds) of one process; it must exit 0."""
+def _run(argv: list[str], env: dict[str, str], cwd: str) -> tuple[float, float]:
+    """(wall seconds, child CPU seconds) of one process; it must exit 0. It runs in
+    ``cwd`` (a temporary folder), so ``-m verify.cli`` finds the package through
+    PYTHONPATH and not through the caller's working directory."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    done = subprocess.run(argv, env=env, capture_output=True, text=True)
+    done = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=cwd)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
@@ -52,15 +54,19 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--files", type=int, default=10)
+    parser.add_argument("--root", type=Path, default=ROOT,
+                        help="the checkout whose verify package is timed (default: this one)")
     args = parser.parse_args()
-    env = dict(os.environ, PYTHONPATH=str(ROOT), OPENBLAS_NUM_THREADS="1",
+    root = args.root.resolve()
+    models = root / "verify" / "data" / "models"
+    env = dict(os.environ, PYTHONPATH=str(root), OPENBLAS_NUM_THREADS="1",
                OMP_NUM_THREADS="1", MKL_NUM_THREADS="1")
     py = sys.executable
     with tempfile.TemporaryDirectory() as tmp:
         copies = []
         for k in range(args.files):
             copy = Path(tmp) / f"model{k}.toml"
-            shutil.copy(MODELS / "example_state_space.toml", copy)
+            shutil.copy(models / "example_state_space.toml", copy)
             copies.append(str(copy))
         certs = ["--certificates", str(Path(tmp) / "certs")]
         gate = [py, "-m", "verify.cli", "gate"]
@@ -68,16 +74,16 @@ def main() -> None:
             "python -c pass": [py, "-c", "pass"],
             "import control": [py, "-c", "import control"],
             "import verify.cli": [py, "-c", "import verify.cli"],
-            "gate example": [*gate, str(MODELS / "example_state_space.toml"), *certs],
-            "gate ks3.0": [*gate, str(MODELS / "reconstructed_ks3p0.toml"), *certs],
+            "gate example": [*gate, str(models / "example_state_space.toml"), *certs],
+            "gate ks3.0": [*gate, str(models / "reconstructed_ks3p0.toml"), *certs],
             f"gate {args.files} files": [*gate, *copies, *certs],
         }
         times: dict[str, list[tuple[float, float]]] = {name: [] for name in commands}
         for argv in commands.values():  # warm the file cache once
-            _run(argv, env)
+            _run(argv, env, tmp)
         for _ in range(args.repeats):
             for name, argv in commands.items():
-                times[name].append(_run(argv, env))
+                times[name].append(_run(argv, env, tmp))
     base_wall = statistics.median(w for w, _ in times["import control"])
     base_cpu = statistics.median(c for _, c in times["import control"])
     print(f"{'command':<22}{'wall s':>9}{'cpu s':>9}{'wall/ctl':>10}{'cpu/ctl':>9}")
