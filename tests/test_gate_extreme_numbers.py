@@ -185,3 +185,18 @@ def test_signed_values_are_joined_only_for_numeric_options():
         == ["gate", "--margin", "--json", "x"]  # a real option is left to argparse
     assert _attach_signed_values(["gate", "--", "--margin", "-1"]) \
         == ["gate", "--", "--margin", "-1"]
+
+
+def test_the_gate_from_python_is_safe_for_any_size_too(tmp_path):
+    """run_gate / write_json / GateResult.line, called without the command line."""
+    from verify.passivity.gate import run_gate, write_json
+    from verify.passivity.io.model_file import load_model
+
+    model = _model(tmp_path, "A = [[-1e-4300, 0.0], [0.0, -1e4300]]\nB = [[1.0], [1.0]]\n"
+                   "C = [[1.0, -1.0]]\nD = [[0.0]]")
+    limit = sys.get_int_max_str_digits()
+    for margin in (Fraction(0), -Fraction(10) ** 4300):
+        (r,) = run_gate([load_model(model)], margin, tmp_path / "c")
+        write_json([r], tmp_path / "g.json")
+        assert r.line() and json.loads((tmp_path / "g.json").read_text())
+    assert sys.get_int_max_str_digits() == limit  # restored after each call
