@@ -154,3 +154,39 @@ def test_allow_unbound_still_refuses_a_broken_proof(genuine, tmp_path, capsys):
     forged = _forge(data, tmp_path, source="")
     code, out = _check(capsys, "--allow-unbound", forged)
     assert code == 1 and out.startswith("INVALID")
+
+
+# ------------------------------------------------------------------ perturbed within tolerance
+
+
+@pytest.fixture(scope="module")
+def perturbed(tmp_path_factory) -> Path:
+    """A certificate of a rounded lossless model passed by --tolerance, bound to its file."""
+    d = tmp_path_factory.mktemp("tolerance")
+    model = d / "ll.toml"
+    model.write_text("[state_space]\nA = [[1e-16, 1.0], [-1.0, 0.0]]\n"
+                     "B = [[0.0], [1.0]]\nC = [[0.0, 1.0]]\nD = [[0.0]]\n")
+    assert main(["gate", str(model), "--tolerance", "0.1", "--certificates",
+                 str(d / "certs")]) == 0
+    (path,) = (d / "certs").glob("*.json")
+    return path
+
+
+def test_perturbed_certificate_is_bound_to_its_file_and_perturbation(perturbed, capsys):
+    code, out = _check(capsys, perturbed)
+    assert code == 0 and "perturbed by a = " in out and "unbound" not in out
+
+
+@pytest.mark.parametrize("edit, reason", [
+    (lambda d: d["perturbation"].update(a="1/1024"), "denotes another model"),
+    (lambda d: d.pop("perturbation"), "denotes another model"),
+    (lambda d: d.update(name="ll"), "marked perturbed 'll (perturbed within tolerance)'"),
+    (lambda d: d["perturbation"].update(d="-1"), "must be >= 0"),
+])
+def test_perturbed_certificate_edited_is_refused(perturbed, tmp_path, capsys, edit, reason):
+    data = json.loads(perturbed.read_text())
+    edit(data)
+    data["source"] = str((perturbed.parent / data["source"]).resolve())
+    forged = _forge(data, tmp_path)
+    code, out = _check(capsys, forged)
+    assert code == 1 and out.startswith("INVALID") and reason in out, out

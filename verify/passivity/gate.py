@@ -22,7 +22,14 @@ from verify.inputs.numbers import parse_number
 from verify.passivity.check.fd_certificate import PrCertificate
 from verify.passivity.decision import PASSIVE, Decision, decide
 from verify.passivity.io import certificate_files as cf
-from verify.passivity.io.binding import Claim, relative_source, shifted, unverified_meta
+from verify.passivity.io.binding import (
+    PERTURBED_SUFFIX,
+    Claim,
+    Perturbed,
+    relative_source,
+    shifted,
+    unverified_meta,
+)
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
@@ -123,13 +130,15 @@ def _gate_one(model, margin: Fraction, certificates_dir: Path,
         claim = Claim(Fraction(margin))
         H = shifted(d.certificate.model, -claim.margin)  # the model as given
         P = coarse_kyp(d.certificate.model, d.certificate.P)
-        if getattr(d, "perturbation", None) is None:
-            name, meta = model.name, unverified_meta(model)
-            source = relative_source(model.source, certificates_dir)
-        else:  # the perturbed model is no file's model: nothing to bind it to
-            name, source, meta = f"{model.name} (perturbed within tolerance)", "", {}
+        source = relative_source(model.source, certificates_dir)
+        perturbation = getattr(d, "perturbation", None)
+        if perturbation is None:
+            name, meta, perturbed = model.name, unverified_meta(model), None
+        else:  # bound to the file's model and (a, d), re-derived when checked
+            name, meta = model.name + PERTURBED_SUFFIX, unverified_meta(model)
+            perturbed = Perturbed(perturbation.shift, perturbation.feedthrough)
         path, kept = cf.store_certificate(
-            cf.kyp_json(name, source, H, claim, P, meta), certificates_dir)
+            cf.kyp_json(name, source, H, claim, P, meta, perturbed), certificates_dir)
     return GateResult(d, path, kept=path is not None and kept)
 
 

@@ -250,6 +250,41 @@ def relative_source(source: str, directory: Path) -> str:
         return target.as_posix()
 
 
+#: The name suffix of a model perturbed within tolerance (``verify gate --tolerance``).
+PERTURBED_SUFFIX = " (perturbed within tolerance)"
+
+
+@dataclass(frozen=True)
+class Perturbed:
+    """A model perturbed within tolerance: H(s + a) + d I, i.e. A - a I and D + d I."""
+
+    a: Fraction
+    d: Fraction
+
+    def to_json(self) -> dict[str, str]:
+        return {"a": str(self.a), "d": str(self.d)}
+
+    def apply(self, model: ExactModel) -> ExactModel:
+        """A - a I and D + d I, exactly (B, C unchanged)."""
+        qa, qd = mpq(self.a), mpq(self.d)
+        A = [[x - qa if i == j else x for j, x in enumerate(row)]
+             for i, row in enumerate(model.A)]
+        D = [[x + qd if i == j else x for j, x in enumerate(row)]
+             for i, row in enumerate(model.D)]
+        return ExactModel(A, model.B, model.C, D)
+
+
+def perturbed_from_json(value: Any) -> Perturbed:
+    """The ``perturbation`` field {a, d} of a certificate (exact rationals >= 0)."""
+    if not isinstance(value, dict):
+        raise CertificateFormatError("field 'perturbation' must be an object {a, d}")
+    fields(value, required=("a", "d"), where="perturbation")
+    a, d = (fraction(rational(value[k], f"perturbation.{k}")) for k in ("a", "d"))
+    if a < 0 or d < 0:
+        raise CertificateFormatError("perturbation a and d must be >= 0")
+    return Perturbed(a, d)
+
+
 @dataclass(frozen=True)
 class SourceBinding:
     """The outcome of comparing a certificate with its source file."""
@@ -259,8 +294,13 @@ class SourceBinding:
 
 
 def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str, Any],
-                cert_path: Path) -> SourceBinding:
-    """Compare the stored model, name and unverified fields with the source file."""
+                cert_path: Path, perturbed: Perturbed | None = None) -> SourceBinding:
+    """Compare the stored model, name and unverified fields with the source file.
+
+    With ``perturbed``, the stored model must be the source file's model perturbed by
+    (a, d) (on the file's realisation or on its minimal part) and the name the file's
+    name with :data:`PERTURBED_SUFFIX`.
+    """
     from verify.passivity.io.model_file import load_model
 
     location = locate_source(source, cert_path)
@@ -273,26 +313,41 @@ def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str,
         loaded = load_model(found)
     except VerifyInputError as exc:
         return SourceBinding(f"source {source} is not a valid model file ({exc})", "")
-    if exact_of(loaded) != model:
-        return SourceBinding(f"source {source} denotes another model than the stored one "
-                             "(exact data differ)", "")
-    if loaded.name != name:
-        return SourceBinding(f"name {name!r} is not the source file's model name "
-                             f"{loaded.name!r}", "")
+    if perturbed is None:
+        expected_name, same = loaded.name, exact_of(loaded) == model
+    else:
+        from verify.passivity.check.realization import minimal_part
+
+        expected_name = loaded.name + PERTURBED_SUFFIX
+        moved = perturbed.apply(loaded.exact)
+        same = model in (moved, minimal_part(moved).model)
+    if not same:
+        what = "" if perturbed is None else \
+            f" perturbed by a = {perturbed.a}, d = {perturbed.d}"
+        return SourceBinding(f"source {source}{what} denotes another model than the stored "
+                             "one (exact data differ)", "")
+    if expected_name != name:
+        whose = "the source file's model name" if perturbed is None else \
+            "the source file's model name marked perturbed"
+        return SourceBinding(f"name {name!r} is not {whose} {expected_name!r}", "")
     for key in UNVERIFIED_KEYS:
         if key in unverified and unverified[key] != loaded.meta.get(key):
             return SourceBinding(f"unverified.{key} = {unverified[key]!r} differs from the "
                                  f"source file's {loaded.meta.get(key)!r}", "")
+    how = "the one it denotes" if perturbed is None else \
+        f"the one it denotes perturbed by a = {perturbed.a}, d = {perturbed.d}"
     return SourceBinding(None, f"{location.describe(source)}: the stored model is exactly "
-                         "the one it denotes")
+                         f"{how}")
 
 
 __all__ = [
     "LEGACY_BAND_STATEMENT",
     "LEGACY_KYP_STATEMENT",
     "NO_SOURCE",
+    "PERTURBED_SUFFIX",
     "UNVERIFIED_KEYS",
     "Claim",
+    "Perturbed",
     "SourceBinding",
     "SourceLocation",
     "bind_source",
@@ -303,6 +358,7 @@ __all__ = [
     "locate_source",
     "model_from_json",
     "model_to_json",
+    "perturbed_from_json",
     "relative_source",
     "resolve_source",
     "same_source",
