@@ -240,8 +240,11 @@ def resolve_source(source: str, cert_path: Path) -> Path | None:
 def relative_source(source: str, directory: Path) -> str:
     """A model file's path as a certificate in ``directory`` names it: relative to that
     folder, with "/" separators (the same bytes on every machine for the same layout);
-    absolute only where no relative path exists (another drive)."""
-    if source in NO_SOURCE:
+    absolute only where no relative path exists (another drive). A source that names no
+    file from here (e.g. a path inside the package, "verify/data/models/x.toml", given
+    while the working directory is elsewhere) is kept as written: the check looks it up
+    from the folders above the certificate."""
+    if source in NO_SOURCE or not Path(source).is_file():
         return source
     target = Path(source).resolve()
     try:
