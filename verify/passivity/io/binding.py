@@ -11,9 +11,13 @@ and compared when the file is checked, or labelled unverified:
   beside a proof of margin 0;
 * the file name: the model's name, the claim and the model's fingerprint
   (:func:`file_name`);
-* the ``source`` model file, when it can be found: it must denote exactly the stored
-  model (:func:`exact_of` is the one place that turns a loaded model into exact data) and
-  carry the stored ``name`` (:func:`bind_source`);
+* the ``source`` model file, looked up from the certificate's folder
+  (:func:`locate_source`; the gate writes it relative to that folder,
+  :func:`relative_source`): it must denote exactly the stored model (:func:`exact_of` is
+  the one place that turns a loaded model into exact data), or that model perturbed by
+  the stored (a, d) of ``--tolerance`` (:class:`Perturbed`), and carry the stored
+  ``name`` (:func:`bind_source`); where it cannot be found the certificate is unbound
+  (:mod:`verify.passivity.io.stored`);
 * descriptive fields copied from the model file (description, units, k_s, reconstructed)
   travel under ``unverified``, are no part of the claim, and are compared with the file.
 """
