@@ -180,7 +180,8 @@ def test_free_statement_is_refused(cert, capsys):
 def test_legacy_meta_margin_other_than_zero_is_refused(tmp_path, capsys):
     # a schema-1 certificate as shipped before models were read exactly (source detached)
     shipped = Path(__file__).parent / "data" / "legacy" / "reconstructed-k_s-3.0-dfa80a2f58eb.json"
-    assert check_stored_certificate(shipped).ok
+    assert check_stored_certificate(shipped).status == "unbound"  # its source is not shipped
+    assert check_stored_certificate(shipped, allow_unbound=True).ok
     data = json.loads(shipped.read_text())
     data["meta"]["margin"] = "1000"
     refused(write(tmp_path / shipped.name, data), capsys, "margin 0 only")
@@ -311,8 +312,16 @@ def test_certificate_bytes_depend_only_on_model_and_claim(tmp_path, made):
         gate(KS25, "--band", "0:1.5", "--certificates", tmp_path / run)
     a = {p.name: p.read_bytes() for p in (tmp_path / "a").glob("*.json")}
     b = {p.name: p.read_bytes() for p in (tmp_path / "b").glob("*.json")}
-    assert a == b and len(a) == 3
-    assert a == {p.name: p.read_bytes() for p in made.values()}
+    assert a == b and len(a) == 3  # same layout (model file relative to the folder)
+
+    def but_source(data: bytes) -> dict:
+        out = json.loads(data)
+        assert not Path(out.pop("source")).is_absolute()
+        return out
+
+    # elsewhere, only the source's path relative to the certificate's folder differs
+    assert {k: but_source(v) for k, v in a.items()} == {
+        p.name: but_source(p.read_bytes()) for p in made.values()}
     mask = os.umask(0)
     os.umask(mask)
     assert all((p.stat().st_mode & 0o777) == 0o666 & ~mask for p in (tmp_path / "a").iterdir())
@@ -320,27 +329,45 @@ def test_certificate_bytes_depend_only_on_model_and_claim(tmp_path, made):
 
 def test_a_valid_existing_certificate_is_kept_and_a_broken_one_replaced(tmp_path, monkeypatch,
                                                                         capsys):
-    monkeypatch.chdir(ROOT)
+    # a copy of the repository's layout: certificates/ and the model file it names
+    repo = tmp_path / "repo"
+    model = repo / "verify" / "data" / "models" / KS30.name
+    model.parent.mkdir(parents=True)
+    shutil.copy(KS30, model)
+    monkeypatch.chdir(repo)
     (shipped,) = (ROOT / "certificates").glob("reconstructed-k_s-3.0-*.json")
-    kept = tmp_path / shipped.name
+    kept = repo / "certificates" / shipped.name
+    kept.parent.mkdir()
     shutil.copy(shipped, kept)
     capsys.readouterr()
-    gate("verify/data/models/reconstructed_ks3p0.toml", "--certificates", tmp_path)
+    # the shipped file names its source from the repository root, the gate would write
+    # ../verify/...: the same file, so the same claim, and the valid file is kept
+    gate("verify/data/models/reconstructed_ks3p0.toml", "--certificates", "certificates")
     assert kept.read_bytes() == shipped.read_bytes()  # valid, same claim: kept
     assert "(kept: already a valid certificate" in capsys.readouterr().out
     data = json.loads(shipped.read_text())
     data["P"][0][0] = "1"
     write(kept, data)
-    gate("verify/data/models/reconstructed_ks3p0.toml", "--certificates", tmp_path)
+    gate("verify/data/models/reconstructed_ks3p0.toml", "--certificates", "certificates")
     fresh = json.loads(kept.read_text())
     assert fresh["schema"] == "verify-kyp-certificate/2"
     assert check_stored_certificate(kept).ok
 
 
-def test_source_not_found_here_is_said_not_hidden(cert, capsys):
-    """A source that cannot be found binds nothing; the ok line says so."""
+def test_source_not_found_is_unbound_and_refused_unless_allowed(cert, capsys):
+    """A source that cannot be found binds nothing: unbound, exit 1; with --allow-unbound
+    accepted, and the summary names the labels left unchecked."""
     path, data = cert()
     data["source"] = "elsewhere/model.toml"
     c = check_stored_certificate(write(path, data))
-    assert c.ok and "source elsewhere/model.toml not found here" in c.reason
-    assert "the claim is about the stored model only" in c.reason
+    assert not c.ok and c.status == "unbound"
+    assert "source elsewhere/model.toml not found" in c.reason
+    assert c.unchecked == ("name", "unverified.description")
+    capsys.readouterr()
+    assert main(["certificates", "check", str(path)]) == 1
+    out = capsys.readouterr().out
+    assert out.startswith("UNBOUND") and "1 unbound, not accepted" in out
+    assert main(["certificates", "check", "--allow-unbound", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "1 unbound, accepted (--allow-unbound); labels not checked:" in out
+    assert f"  {path}: name, unverified.description" in out

@@ -112,7 +112,52 @@ def test_frequency_domain_certificate_is_written_bound_and_kept(tmp_path, monkey
     assert "(kept: already a valid certificate" in capsys.readouterr().out
     assert cert.read_bytes() == before
     assert main(["certificates", "check", "certs"]) == 0
-    assert "exactly the one lossless.toml denotes" in capsys.readouterr().out
+    assert json.loads(cert.read_text())["source"] == "../lossless.toml"
+    assert ("source ../lossless.toml found relative to the certificate's folder: the "
+            "stored model is exactly the one it denotes") in capsys.readouterr().out
     model.write_text("[transfer_function]\nnum = [[[2, 18, 24, 27]]]\nden = [[[1, 4, 2, 8]]]\n")
     assert main(["certificates", "check", "certs"]) == 1
     assert "denotes another model" in capsys.readouterr().out
+
+
+def test_margin_refutation_speaks_of_h_minus_nu_i(tmp_path, capsys):
+    """With --margin the model decided is H - nu I: the reason says so, not "D + Dᵀ"."""
+    assert main(["gate", str(MODELS / "example_state_space.toml"), "--margin", "0.1",
+                 "--certificates", str(tmp_path)]) == 1
+    out = capsys.readouterr().out
+    assert "H − νI is not passive for ν = 1/10: D + Dᵀ − 2νI is not PSD" in out
+    assert "D + Dᵀ is not PSD" not in out
+    assert main(["gate", str(MODELS / "reconstructed_ks2p5.toml"), "--margin=-1/100",
+                 "--certificates", str(tmp_path)]) == 1
+    assert "H − νI is not passive for ν = -1/100 (evidence for H − νI" in \
+        capsys.readouterr().out
+    assert main(["gate", str(MODELS / "reconstructed_ks2p5.toml"), "--certificates",
+                 str(tmp_path)]) == 1
+    assert "νI" not in capsys.readouterr().out  # no margin: nothing about it
+
+
+def test_gate_by_default_writes_under_the_git_ignored_build_folder(tmp_path, monkeypatch,
+                                                                    capsys):
+    """README example commands leave a checkout clean: the gate's default certificate
+    folder is build/certificates, which the repository's .gitignore ignores."""
+    import subprocess
+
+    from verify.cli import GATE_CERTIFICATES
+
+    monkeypatch.chdir(tmp_path)
+    lossless = tmp_path / "work" / "ll.toml"  # not passive as written, passes --tolerance
+    lossless.parent.mkdir()
+    lossless.write_text("[state_space]\nA = [[1e-16, 1.0], [-1.0, 0.0]]\n"
+                        "B = [[0.0], [1.0]]\nC = [[0.0, 1.0]]\nD = [[0.0]]\n")
+    assert main(["gate", str(MODELS / "example_state_space.toml")]) == 0
+    assert main(["gate", str(lossless), "--tolerance", "0.1"]) == 0
+    written = sorted(p.relative_to(tmp_path) for p in tmp_path.rglob("*") if p.is_file())
+    assert written and all(p.parts[:2] == ("build", "certificates") or p == Path("work/ll.toml")
+                           for p in written), written
+    assert str(GATE_CERTIFICATES) in capsys.readouterr().out
+    ignored = subprocess.run(["git", "check-ignore", "-q", f"{GATE_CERTIFICATES}/x.json"],
+                             cwd=MODELS.parents[2], capture_output=True)
+    assert ignored.returncode == 0  # git ignores it in this repository
+    # with no path, `verify certificates check` looks in build/certificates too
+    assert main(["certificates", "check", "--allow-unbound"]) == 0
+    assert "build/certificates/example-state-space-" in capsys.readouterr().out

@@ -125,7 +125,11 @@ def test_gate_command_with_tolerance(tmp_path, capsys):
         assert "infinity norm" in t["perturbation"]["norm"]
         assert t["perturbed_certificate"]["P"]
     assert not data["violation 1e-09"]["passed"]
+    # a perturbed model's certificate is bound to its file and (a, d), re-derived
+    capsys.readouterr()
     assert main(["certificates", "check", str(certs)]) == 0
+    out = capsys.readouterr().out
+    assert out.count("the stored model is exactly the one it denotes perturbed by a = ") == 2
 
 
 def test_tolerance_zero_changes_nothing(tmp_path, capsys):

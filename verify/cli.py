@@ -16,6 +16,9 @@ from pathlib import Path
 from verify import __version__
 from verify.errors import VerifyInputError
 
+#: Where ``verify gate`` writes certificates unless told (under the git-ignored build/).
+GATE_CERTIFICATES = Path("build") / "certificates"
+
 
 def _build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
@@ -106,8 +109,11 @@ def _build_parser() -> argparse.ArgumentParser:
     p_gate.add_argument("--tolerance", default="0", metavar="EPS",
                         help="pass a model within relative distance EPS of one certified "
                         "passive (H(s + a) + d I; default 0 = exact)")
-    p_gate.add_argument("--certificates", type=Path, default=Path("certificates"),
-                        metavar="DIR", help="where certificates are written")
+    p_gate.add_argument("--certificates", type=Path, default=GATE_CERTIFICATES,
+                        metavar="DIR", help="where certificates are written (default "
+                        f"{GATE_CERTIFICATES}, git-ignored: gating a model never adds "
+                        "files to a checkout; the paper's certificates/ are written by "
+                        "'verify all')")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
 
@@ -141,11 +147,18 @@ def _build_parser() -> argparse.ArgumentParser:
         "check", help="re-verify stored certificates with no solver",
         description="Check each certificate file (each DIR's *.json): strict JSON (no "
         "duplicate keys, no unknown fields), its fingerprint and file name, the statement "
-        "derived from what it proves, its source model file when found, and the exact "
-        "inequalities. Exit 0 if all are valid, 1 if one is refused or none is found, 2 if "
-        "a path does not exist.")
+        "derived from what it proves, its source model file (looked up relative to the "
+        "certificate's folder, never the working directory), and the exact inequalities. "
+        "A certificate whose source file is not found is UNBOUND: its name and descriptive "
+        "labels are not checked. Exit 0 if all are valid (or unbound, with "
+        "--allow-unbound), 1 if one is refused or unbound or none is found, 2 if a path "
+        "does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
-                      default=[Path("certificates")])
+                      help=f"certificate files or folders (default: certificates and "
+                      f"{GATE_CERTIFICATES}, those that exist)")
+    p_cc.add_argument("--allow-unbound", action="store_true",
+                      help="accept certificates whose source file is not found (their proof "
+                      "is re-checked; the summary lists the labels left unchecked)")
 
     p_sim = sub.add_parser(
         "simulate",
@@ -280,7 +293,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
-    from verify.passivity.band import parse_band
+    from verify.inputs.number_text import short_text, unlimited_int_text
     from verify.passivity.gate import (
         add_indices,
         parse_margin,
@@ -294,48 +307,71 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
     margin = parse_margin(args.margin)
     tolerance = parse_tolerance(args.tolerance)
-    band = parse_band(args.band) if args.band is not None else None
+    band = None
+    if args.band is not None:  # the band route's modules load only when asked for
+        from verify.passivity.band import parse_band
+
+        band = parse_band(args.band)
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
     models = [load_model(path) for path in args.models]  # validate all before any work
-    if band is None:
-        results = run_gate(models, margin, args.certificates, tolerance)
-    else:
-        results = run_band_gate(models, band, margin, args.certificates)
-    if args.indices:
-        add_indices(results)
-    for r in results:
-        print(r.line(), flush=True)
-    passed = sum(r.passed for r in results)
-    where = "" if band is None else f" on [{band[0]}, {band[1]}] rad/s"
-    within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
-    print(f"{passed} of {len(results)} model(s) passive{where}"
-          + (f" ({within} within tolerance {args.tolerance})" if within else "")
-          + (f" with margin {margin}" if margin else ""))
-    if args.json:
-        write_json(results, args.json)
-    if args.junit:
-        write_junit(results, args.junit)
+    with unlimited_int_text():  # every input is validated: exact numbers of any size now
+        if band is None:
+            results = run_gate(models, margin, args.certificates, tolerance)
+        else:
+            results = run_band_gate(models, band, margin, args.certificates)
+        if args.indices:
+            add_indices(results)
+        for r in results:
+            print(r.line(), flush=True)
+        passed = sum(r.passed for r in results)
+        where = "" if band is None else \
+            f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
+        within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
+        spelled = args.tolerance if len(args.tolerance) <= 24 else short_text(tolerance)
+        print(f"{passed} of {len(results)} model(s) passive{where}"
+              + (f" ({within} within tolerance {spelled})" if within else "")
+              + (f" with margin {short_text(margin)}" if margin else ""))
+        if args.json:
+            write_json(results, args.json)
+        if args.junit:
+            write_junit(results, args.junit)
     return 0 if passed == len(results) else 1
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.io.stored import certificate_files, check_stored_certificate
+    from verify.passivity.io.stored import (
+        CertificateStatus,
+        certificate_files,
+        check_stored_certificate,
+    )
 
-    files = certificate_files(args.paths)
+    paths = args.paths or [p for p in (Path("certificates"), GATE_CERTIFICATES)
+                           if p.is_dir()] or [Path("certificates")]
+    files = certificate_files(paths)
     if not files:
-        where = ", ".join(str(p) for p in args.paths)
+        where = ", ".join(str(p) for p in paths)
         print(f"verify: no certificate found in {where} (no *.json file)", file=sys.stderr)
         return 1
-    bad = 0
+    marks = {CertificateStatus.VALID: "ok     ", CertificateStatus.UNBOUND: "UNBOUND",
+             CertificateStatus.INVALID: "INVALID"}
+    checks = []
     for f in files:
-        c = check_stored_certificate(f)
-        bad += not c.ok
-        print(f"{'ok     ' if c.ok else 'INVALID'} {f}: {c.reason}", flush=True)
-    print(f"{len(files) - bad} of {len(files)} certificate(s) valid (bound to their claims, "
-          "exact re-check, no solver)")
-    return 0 if bad == 0 else 1
+        c = check_stored_certificate(f, allow_unbound=args.allow_unbound)
+        checks.append((f, c))
+        print(f"{marks[c.status]} {f}: {c.reason}", flush=True)
+    valid = sum(c.status is CertificateStatus.VALID for _, c in checks)
+    unbound = [(f, c) for f, c in checks if c.status is CertificateStatus.UNBOUND]
+    print(f"{valid} of {len(files)} certificate(s) valid (bound to their claims, exact "
+          "re-check, no solver)")
+    if unbound:
+        verdict = "accepted (--allow-unbound)" if args.allow_unbound else \
+            "not accepted (source file not found; --allow-unbound accepts them)"
+        print(f"{len(unbound)} unbound, {verdict}; labels not checked:")
+        for f, c in unbound:
+            print(f"  {f}: {', '.join(c.unchecked)}")
+    return 0 if all(c.ok for _, c in checks) else 1
 
 
 def _cmd_simulate(args: argparse.Namespace) -> int:
@@ -412,14 +448,37 @@ def _cmd_network(args: argparse.Namespace) -> int:
     return status
 
 
-def _attach_band_value(argv: Sequence[str]) -> list[str]:
-    """``--band -1:2`` as ``--band=-1:2``: argparse would take the negative band for an
-    option and print usage; joined, the band check reports it in one line."""
-    out = list(argv)
-    for i, token in enumerate(out[:-1]):
-        if token == "--band" and out[i + 1].startswith("-") and ":" in out[i + 1]:
-            out[i : i + 2] = [f"--band={out[i + 1]}"]
+#: Options whose value is a number (or band) that may be negative.
+SIGNED_VALUE_OPTIONS = ("--margin", "--tolerance", "--band")
+
+
+def _looks_signed(value: str) -> bool:
+    """"-1e-3", "-.5", "-1/100", "-1:2": a negative number, not an option."""
+    return len(value) > 1 and value[0] == "-" and (value[1].isdigit() or value[1] == ".")
+
+
+def _attach_signed_values(argv: Sequence[str]) -> list[str]:
+    """``--margin -1e-3`` as ``--margin=-1e-3`` (likewise ``--tolerance``, ``--band``).
+
+    argparse takes a value that starts with "-" and is not a plain decimal for an option
+    and prints usage; joined, both spellings reach the number parser, which accepts the
+    value or refuses it in one line.
+    """
+    out: list[str] = []
+    tokens = list(argv)
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        if token == "--":  # everything after is positional
+            out += tokens[i:]
             break
+        if (token in SIGNED_VALUE_OPTIONS and i + 1 < len(tokens)
+                and _looks_signed(tokens[i + 1])):
+            out.append(f"{token}={tokens[i + 1]}")
+            i += 2
+            continue
+        out.append(token)
+        i += 1
     return out
 
 
@@ -439,7 +498,7 @@ def single_threaded_blas() -> None:
 
 def main(argv: Sequence[str] | None = None) -> int:
     parser = _build_parser()
-    args = parser.parse_args(_attach_band_value(sys.argv[1:] if argv is None else argv))
+    args = parser.parse_args(_attach_signed_values(sys.argv[1:] if argv is None else argv))
     if args.command is None:
         parser.print_help()
         return 2

@@ -32,8 +32,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from gmpy2 import mpq
-from scipy.optimize import minimize_scalar
 
+from verify.inputs.number_text import short_text
 from verify.inputs.numbers import float_view
 from verify.passivity.check.certificate import Certificate, ExactModel
 from verify.passivity.check.realization import MinimalPart, minimal_part
@@ -117,6 +117,8 @@ def nu(model_A, B, C, D, omega: np.ndarray) -> np.ndarray:
 
 def candidate_frequencies(A, B, C, D, count: int = 400) -> tuple[list[float], tuple]:
     """Frequencies where nu is smallest: a log sweep around the poles, then refinement."""
+    from scipy.optimize import minimize_scalar  # imported on use (start-up time)
+
     eig = np.abs(np.linalg.eigvals(A)) if A.shape[0] else np.array([1.0])
     eig = eig[eig > 0] if np.any(eig > 0) else np.array([1.0])
     lo, hi = np.log10(eig.min()) - 4, np.log10(eig.max()) + 6
@@ -240,10 +242,13 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     em = shifted(part.model, margin)
 
     def done(verdict, reason, **kw) -> Decision:
+        if margin and verdict == NOT_PASSIVE and not reason.startswith("H − νI"):
+            reason = f"H − νI is not passive for ν = {short_text(margin)} (evidence for " \
+                f"H − νI, whose feedthrough is D − νI): {reason}"
         return Decision(model, verdict, reason + note, margin=margin,
                         seconds=time.perf_counter() - start, note=note.lstrip("; "), **kw)
 
-    w = infinity_witness(em)  # exact on the model as written, at any scale
+    w = infinity_witness(em, margin=margin)  # exact on the model as written, at any scale
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
     rescaled = rescale(part.model, margin)  # far from 1: decide H(beta s)/alpha instead

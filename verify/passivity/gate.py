@@ -3,8 +3,9 @@
 Every model file is validated before any is analysed (bad input fails fast and whole).
 A passive verdict writes its exactly checked KYP certificate under the certificates
 directory (with ``--band W1:W2``, a generalized KYP certificate for that band, see
-:mod:`verify.passivity.band`); a JSON summary and a JUnit XML file (one test case per
-model) are optional.
+:mod:`verify.passivity.band`), naming its model file by a path relative to that
+directory, so ``verify certificates check`` finds the file from the certificate wherever
+it runs; a JSON summary and a JUnit XML file (one test case per model) are optional.
 """
 
 from __future__ import annotations
@@ -16,11 +17,19 @@ from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
 from verify.errors import VerifyInputError
+from verify.inputs.number_text import unlimited_int_text
 from verify.inputs.numbers import parse_number
 from verify.passivity.check.fd_certificate import PrCertificate
 from verify.passivity.decision import PASSIVE, Decision, decide
 from verify.passivity.io import certificate_files as cf
-from verify.passivity.io.binding import Claim, shifted, unverified_meta
+from verify.passivity.io.binding import (
+    PERTURBED_SUFFIX,
+    Claim,
+    Perturbed,
+    relative_source,
+    shifted,
+    unverified_meta,
+)
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
 from verify.report.atomic import write_atomic
@@ -54,6 +63,10 @@ class GateResult:
         return self.decision.verdict in (PASSIVE, PASSIVE_WITHIN)
 
     def line(self) -> str:
+        with unlimited_int_text():  # a reason may hold exact numbers of any size
+            return self._line()
+
+    def _line(self) -> str:
         d = self.decision
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
@@ -83,6 +96,7 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
     from verify.passivity.io.certificate_files import dumps, keep_or_write
 
     data = dict(cert.to_json(), meta={"margin": str(Fraction(margin))})
+    data["source"] = relative_source(data["source"], certificates_dir)
     given = shifted(cert.model, -Fraction(margin))
     path = Path(certificates_dir) / file_name(cert.name, Claim(Fraction(margin)),
                                               given.fingerprint())
@@ -100,26 +114,32 @@ def run_gate(models, margin: Fraction, certificates_dir: Path,
     """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
     pass as *passive within tolerance* (:mod:`verify.passivity.search.tolerance`), and then the
     certificate written is the perturbed model's (it names that model exactly)."""
-    results = []
-    for model in models:
-        d = decide(model, margin)
-        if tolerance:
-            d = within_tolerance(model, tolerance, margin, d)
-        path, kept = None, False
-        if isinstance(d.certificate, PrCertificate):  # the frequency-domain route
-            path, kept = store_pr_certificate(d.certificate, margin, certificates_dir)
-        elif d.certificate is not None:
-            claim = Claim(Fraction(margin))
-            H = shifted(d.certificate.model, -claim.margin)  # the model as given
-            P = coarse_kyp(d.certificate.model, d.certificate.P)
-            if getattr(d, "perturbation", None) is None:
-                name, source, meta = model.name, model.source, unverified_meta(model)
-            else:  # the perturbed model is no file's model: nothing to bind it to
-                name, source, meta = f"{model.name} (perturbed within tolerance)", "", {}
-            path, kept = cf.store_certificate(
-                cf.kyp_json(name, source, H, claim, P, meta), certificates_dir)
-        results.append(GateResult(d, path, kept=path is not None and kept))
-    return results
+    with unlimited_int_text():  # exact numbers of any size from here (inputs validated)
+        return [_gate_one(model, margin, certificates_dir, tolerance) for model in models]
+
+
+def _gate_one(model, margin: Fraction, certificates_dir: Path,
+              tolerance: Fraction) -> GateResult:
+    d = decide(model, margin)
+    if tolerance:
+        d = within_tolerance(model, tolerance, margin, d)
+    path, kept = None, False
+    if isinstance(d.certificate, PrCertificate):  # the frequency-domain route
+        path, kept = store_pr_certificate(d.certificate, margin, certificates_dir)
+    elif d.certificate is not None:
+        claim = Claim(Fraction(margin))
+        H = shifted(d.certificate.model, -claim.margin)  # the model as given
+        P = coarse_kyp(d.certificate.model, d.certificate.P)
+        source = relative_source(model.source, certificates_dir)
+        perturbation = getattr(d, "perturbation", None)
+        if perturbation is None:
+            name, meta, perturbed = model.name, unverified_meta(model), None
+        else:  # bound to the file's model and (a, d), re-derived when checked
+            name, meta = model.name + PERTURBED_SUFFIX, unverified_meta(model)
+            perturbed = Perturbed(perturbation.shift, perturbation.feedthrough)
+        path, kept = cf.store_certificate(
+            cf.kyp_json(name, source, H, claim, P, meta, perturbed), certificates_dir)
+    return GateResult(d, path, kept=path is not None and kept)
 
 
 def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
@@ -129,28 +149,40 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
 
     results = []
     for model in models:
-        d = decide_band(model, band, margin)
-        path, kept = None, False
-        if d.certificate is not None:
-            claim = Claim(Fraction(margin), band)
-            H = shifted(d.certificate.model, -claim.margin)  # the model as given
-            P, Q = coarse_band(d.certificate.model, d.certificate.P, d.certificate.Q, band)
-            path, kept = cf.store_certificate(cf.band_json(
-                model.name, model.source, H, claim, P, Q, unverified_meta(model)),
-                certificates_dir)
-        results.append(GateResult(d, path, kept=path is not None and kept))
+        with unlimited_int_text():
+            results.append(_band_one(decide_band(model, band, margin), model, band, margin,
+                                     certificates_dir))
     return results
+
+
+def _band_one(d, model, band: tuple[Fraction, Fraction], margin: Fraction,
+              certificates_dir: Path) -> GateResult:
+    path, kept = None, False
+    if d.certificate is not None:
+        claim = Claim(Fraction(margin), band)
+        H = shifted(d.certificate.model, -claim.margin)  # the model as given
+        P, Q = coarse_band(d.certificate.model, d.certificate.P, d.certificate.Q, band)
+        path, kept = cf.store_certificate(cf.band_json(
+            model.name, relative_source(model.source, certificates_dir), H, claim, P, Q,
+            unverified_meta(model)), certificates_dir)
+    return GateResult(d, path, kept=path is not None and kept)
 
 
 def add_indices(results: list[GateResult]) -> None:
     """Attach the passivity indices nu_IFP and rho_OFP (estimates and exact bounds)."""
     from verify.passivity.indices import indices
 
-    for r in results:
-        r.indices = indices(r.decision.model)
+    with unlimited_int_text():
+        for r in results:
+            r.indices = indices(r.decision.model)
 
 
 def write_json(results: list[GateResult], path: Path) -> None:
+    with unlimited_int_text():  # exact numbers of any size, written in full
+        _write_json(results, path)
+
+
+def _write_json(results: list[GateResult], path: Path) -> None:
     data = [
         {**r.decision.to_json(), "passed": r.passed,
          "certificate": None if r.certificate_path is None else str(r.certificate_path),

@@ -72,24 +72,75 @@ def from_sympy(matrix) -> RationalMatrix:
     return [[mpq(int(x.p), int(x.q)) for x in row] for row in matrix.tolist()]
 
 
-def kernel_basis(S: RationalMatrix) -> RationalMatrix:
-    """Exact rational basis of ker S as columns (m x k); k may be 0."""
-    import sympy as sp
+def _fmpq_mat(m: RationalMatrix, rows: int | None = None, cols: int | None = None):
+    """The same exact matrix as a FLINT fmpq_mat (python-flint; no sympy to import)."""
+    import flint
 
-    vecs = to_sympy(S).nullspace()
-    if not vecs:
-        return [[] for _ in range(len(S))]
-    return from_sympy(sp.Matrix.hstack(*vecs))
+    r = len(m) if rows is None else rows
+    c = (len(m[0]) if m else 0) if cols is None else cols
+    out = flint.fmpq_mat(r, c)
+    for i in range(r):
+        for j in range(c):
+            x = m[i][j]
+            out[i, j] = flint.fmpq(int(x.numerator), int(x.denominator))
+    return out
+
+
+def _from_fmpq(matrix) -> RationalMatrix:
+    return [[mpq(int(matrix[i, j].p), int(matrix[i, j].q)) for j in range(matrix.ncols())]
+            for i in range(matrix.nrows())]
+
+
+def _rref(S: RationalMatrix) -> tuple[RationalMatrix, list[int]]:
+    """Reduced row echelon form of S and its pivot columns (exact, FLINT)."""
+    R = _from_fmpq(_fmpq_mat(S).rref()[0])
+    pivots = []
+    for row in R:
+        j = next((j for j, x in enumerate(row) if x != 0), None)
+        if j is None:
+            break
+        pivots.append(j)
+    return R, pivots
+
+
+def kernel_basis(S: RationalMatrix) -> RationalMatrix:
+    """Exact rational basis of ker S as columns (m x k); k may be 0.
+
+    One vector per free column f of the reduced row echelon form (entry 1 at f, -R[i][f]
+    at the i-th pivot column, 0 elsewhere): the same basis as sympy's ``nullspace``.
+    """
+    rows, cols = len(S), (len(S[0]) if S else 0)
+    R, pivots = _rref(S) if rows and cols else ([], [])
+    free = [j for j in range(cols) if j not in set(pivots)]
+    if not free:
+        return [[] for _ in range(rows)]  # as before: one empty row per row of S
+    basis = zeros(cols, len(free))
+    for k, f in enumerate(free):
+        basis[f][k] = mpq(1)
+        for i, p in enumerate(pivots):
+            basis[p][k] = -R[i][f]
+    return basis
 
 
 def range_basis(S: RationalMatrix) -> RationalMatrix:
-    """Exact basis of range S as columns; for symmetric S it spans (ker S)^perp."""
-    import sympy as sp
+    """Exact basis of range S as columns (S's own pivot columns, as sympy's
+    ``columnspace``); for symmetric S it spans (ker S)^perp."""
+    rows = len(S)
+    _, pivots = _rref(S) if rows and S[0] else ([], [])
+    if not pivots:
+        return [[] for _ in range(rows)]
+    return [[S[i][j] for j in pivots] for i in range(rows)]
 
-    cols = to_sympy(S).columnspace()
-    if not cols:
-        return [[] for _ in range(len(S))]
-    return from_sympy(sp.Matrix.hstack(*cols))
+
+def inverse(M: RationalMatrix) -> RationalMatrix:
+    """The exact inverse of a nonsingular square rational matrix (FLINT)."""
+    return _from_fmpq(_fmpq_mat(M).inv())
+
+
+def determinant(M: RationalMatrix) -> mpq:
+    """The exact determinant of a square rational matrix (FLINT)."""
+    d = _fmpq_mat(M).det()
+    return mpq(int(d.p), int(d.q))
 
 
 def zeros(r: int, c: int) -> RationalMatrix:

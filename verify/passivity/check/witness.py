@@ -33,9 +33,9 @@ from fractions import Fraction
 import flint
 import gmpy2
 import numpy as np
-import sympy as sp
 from gmpy2 import mpq
 
+from verify.inputs.number_text import short_text
 from verify.passivity.check import exact as ex
 from verify.passivity.check import intmat
 from verify.passivity.check.certificate import ExactModel
@@ -70,18 +70,30 @@ def negative_direction(M: ex.RationalMatrix) -> tuple[list[mpq], mpq] | None:
     return None
 
 
-def infinity_witness(model: ExactModel) -> Witness | None:
+def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Witness | None:
+    """A rational v with vᵀ(D + Dᵀ)v < 0 for the model decided (paper, Section 4: H passive
+    needs H(jω) + H(jω)ᴴ ⪰ 0 as ω → ∞, where H(jω) → D).
+
+    With a margin ν the model decided is H − νI (``model`` is already shifted, its
+    feedthrough is D − νI), and the message says so in terms of the model as given:
+    D + Dᵀ − 2νI not PSD, i.e. ν(ω) < ν as ω → ∞.
+    """
     S = ex.add(model.D, ex.transpose(model.D))
     found = negative_direction(S)
     if found is None:
         return None
     v, value = found
-    return Witness(
-        "infinity",
-        f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {gmpy2.mpfr(value):.3g} < 0 at v = "
-        f"{[str(x) for x in v]}, so H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞",
-        {"v": [str(x) for x in v], "value": str(value)},
-    )
+    shown = f"{gmpy2.mpfr(value):.3g}"
+    vector = [str(x) for x in v]
+    if margin:
+        nu = short_text(margin)
+        summary = (f"H − νI is not passive for ν = {nu}: D + Dᵀ − 2νI is not PSD, "
+                   f"vᵀ(D + Dᵀ − 2νI)v = {shown} < 0 at v = {vector}, so "
+                   "λmin(H(jω) + H(jω)ᴴ)/2 < ν as ω → ∞")
+    else:
+        summary = (f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {shown} < 0 at v = {vector}, so "
+                   "H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞")
+    return Witness("infinity", summary, {"v": vector, "value": str(value)})
 
 
 def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
@@ -204,8 +216,81 @@ def vector_witness(w: object, approx: float, shown_value: str, v: list, value: o
     )
 
 
+#: The canonical witness looks at most this far (relative) from the float frequency.
+CANONICAL_REACH = Fraction(1, 10)
+#: and makes at most this many exact checks before the plain rounding of omega.
+CANONICAL_CHECKS = 48
+
+
+def _continued_fraction(x: Fraction) -> list[int]:
+    """The partial quotients of x >= 0 (finite: x is rational)."""
+    terms = []
+    p, q = x.numerator, x.denominator
+    while q:
+        a, r = divmod(p, q)
+        terms.append(a)
+        p, q = q, r
+    return terms
+
+
+def canonical_frequency_witness(model: ExactModel, omega: float) -> Witness | None:
+    """The witness at the simplest rational on the way to ``omega`` that the exact check
+    certifies, so that float noise in ``omega`` does not change it (paper, Section 4: the
+    gate's *not passive* evidence is a rational frequency and vector).
+
+    The rationals are visited in Stern-Brocot order along the path to omega's exact
+    binary value (one run of semiconvergents (p' + j p)/(q' + j q), j = 1..a, per
+    partial quotient a), keeping those within :data:`CANONICAL_REACH` of omega. Within
+    a run, the last node (a convergent) is checked first; when it is a witness, the
+    first certified node of the run is found by bisection over j. Let J be the interval
+    of frequencies around omega where nu < 0: the simplest rational in J is a Stern-Brocot
+    ancestor of every point of J, so the path to any omega' in J (omega plus noise) visits
+    the same nodes up to it, and the result is the same rational. The exact check of
+    :func:`frequency_witness_at` decides each node; nothing float is trusted. None after
+    :data:`CANONICAL_CHECKS` checks without a witness.
+    """
+    x = abs(Fraction(omega))
+    if x == 0:
+        return frequency_witness_at(model, Fraction(0))
+    reach = CANONICAL_REACH * x
+    checks = 0
+
+    def certified(r: Fraction) -> Witness | None:
+        nonlocal checks
+        if abs(r - x) > reach:
+            return None
+        checks += 1
+        return frequency_witness_at(model, r)
+
+    p2, q2, p1, q1 = 0, 1, 1, 0  # the two previous convergents
+    for a in _continued_fraction(x):
+        def node(j: int, p2=p2, q2=q2, p1=p1, q1=q1) -> Fraction:
+            return Fraction(p2 + j * p1, q2 + j * q1)
+
+        if a > 0:
+            found = certified(node(a))
+            if found is not None:
+                lo, hi = 1, a  # node(hi) is certified; find the first such j
+                while lo < hi and checks < CANONICAL_CHECKS:
+                    mid = (lo + hi) // 2
+                    at_mid = certified(node(mid))
+                    if at_mid is not None:
+                        hi, found = mid, at_mid
+                    else:
+                        lo = mid + 1
+                return found
+        if checks >= CANONICAL_CHECKS:
+            return None
+        p2, q2, p1, q1 = p1, q1, p2 + a * p1, q2 + a * q1
+    return None
+
+
 def frequency_witness(model: ExactModel, omega: float) -> Witness | None:
-    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at a rational w near omega."""
+    """Exact check of a negative eigenvalue of H(jw) + H(jw)^H at a rational w near omega:
+    the canonical one (:func:`canonical_frequency_witness`), else a rounding of omega."""
+    found = canonical_frequency_witness(model, omega)
+    if found is not None:
+        return found
     for limit in (10, 1000, 10**6, 10**12):
         w = Fraction(omega).limit_denominator(limit) if omega else Fraction(0)
         found = frequency_witness_at(model, w)
@@ -291,6 +376,7 @@ def _transfer_matrix(model: ExactModel):
     Only rational matrix products and polynomials over QQ: no symbolic matrix algebra,
     which took minutes at n = 8.
     """
+    import sympy as sp  # only the pole route needs it: imported on use (start-up time)
     from sympy.polys.matrices import DomainMatrix
 
     s = sp.Symbol("s")
@@ -343,6 +429,8 @@ def pole_witness(model: ExactModel) -> Witness | None:
     """An exact RHP pole, or a non-simple / non-PSD-residue pole at 0 (small models)."""
     if model.n == 0 or model.n > EXACT_POLE_LIMIT:
         return None
+    import sympy as sp
+
     s, Hs = _transfer_matrix(model)
     m = model.m
     seen: set = set()

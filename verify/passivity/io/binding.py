@@ -11,15 +11,20 @@ and compared when the file is checked, or labelled unverified:
   beside a proof of margin 0;
 * the file name: the model's name, the claim and the model's fingerprint
   (:func:`file_name`);
-* the ``source`` model file, when it can be found: it must denote exactly the stored
-  model (:func:`exact_of` is the one place that turns a loaded model into exact data) and
-  carry the stored ``name`` (:func:`bind_source`);
+* the ``source`` model file, looked up from the certificate's folder
+  (:func:`locate_source`; the gate writes it relative to that folder,
+  :func:`relative_source`): it must denote exactly the stored model (:func:`exact_of` is
+  the one place that turns a loaded model into exact data), or that model perturbed by
+  the stored (a, d) of ``--tolerance`` (:class:`Perturbed`), and carry the stored
+  ``name`` (:func:`bind_source`); where it cannot be found the certificate is unbound
+  (:mod:`verify.passivity.io.stored`);
 * descriptive fields copied from the model file (description, units, k_s, reconstructed)
   travel under ``unverified``, are no part of the claim, and are compared with the file.
 """
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass
 from fractions import Fraction
@@ -29,6 +34,7 @@ from typing import TYPE_CHECKING, Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
+from verify.inputs.number_text import approx_text
 from verify.inputs.numbers import fraction
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.io.strict_json import (
@@ -96,10 +102,10 @@ def file_name(name: str, claim: Claim, fingerprint: str) -> str:
     """``<name>[-margin-<nu0>][-band-<w1>-<w2>]-<first 12 hex of the fingerprint>.json``."""
     parts = [slug(name)]
     if claim.margin != 0:
-        text = f"{float(claim.margin):.6g}"
+        text = approx_text(claim.margin, 6)
         parts.append("margin-" + (f"minus{text[1:]}" if text.startswith("-") else text))
     if claim.band is not None:
-        parts.append(f"band-{float(claim.band[0]):.6g}-{float(claim.band[1]):.6g}")
+        parts.append(f"band-{approx_text(claim.band[0], 6)}-{approx_text(claim.band[1], 6)}")
     return "-".join([*parts, fingerprint[:12]]) + ".json"
 
 
@@ -179,19 +185,111 @@ def check_unverified(value: Any) -> dict[str, Any]:
     return value
 
 
-def resolve_source(source: str, cert_path: Path) -> Path | None:
-    """The model file a certificate names, if it exists here.
+#: Sources that name no file (a model built in Python, a perturbed model).
+NO_SOURCE = ("", "python")
 
-    A relative ``source`` is taken from the working directory (as ``verify gate`` stores
-    it), then from the directory above the certificate's folder (the repository root for
-    ``certificates/``). ``python`` and ``""`` name no file.
+
+@dataclass(frozen=True)
+class SourceLocation:
+    """Where a certificate's source file was found, and by which rule."""
+
+    path: Path
+    rule: str  # e.g. "relative to the certificate's folder"
+
+    def describe(self, source: str) -> str:
+        return f"source {source} found {self.rule}"
+
+
+def locate_source(source: str, cert_path: Path) -> SourceLocation | None:
+    """The model file a certificate names, looked up from the certificate, never from the
+    working directory (so the verdict does not depend on where the check runs).
+
+    A relative ``source`` is taken relative to the certificate's folder (as ``verify
+    gate`` writes it), then relative to each folder above it, nearest first (how
+    certificates in a repository's ``certificates/`` named files from the repository
+    root), then as a file of that name next to the certificate (a model file and its
+    certificates kept together, as ``verify identify --out DIR`` writes them).
+    ``python`` and ``""`` name no file.
     """
-    if source in ("", "python"):
+    if source in NO_SOURCE:
         return None
     path = Path(source)
-    candidates = [path] if path.is_absolute() else [
-        Path.cwd() / path, Path(cert_path).resolve().parent.parent / path]
-    return next((c for c in candidates if c.is_file()), None)
+    folder = Path(cert_path).resolve().parent
+    if path.is_absolute():
+        candidates = [(path, "at its absolute path")]
+    else:
+        candidates = [(folder / path, "relative to the certificate's folder")]
+        candidates += [(up / path, f"relative to {up}, a folder above the certificate's")
+                       for up in folder.parents]
+        candidates.append((folder / path.name, "next to the certificate"))
+    return next((SourceLocation(c, rule) for c, rule in candidates if c.is_file()), None)
+
+
+def same_source(a: str, b: str, cert_path: Path) -> bool:
+    """Two ``source`` texts of certificates at ``cert_path`` name the same file (or are
+    the same text): a rewritten spelling of a source is no new claim."""
+    if a == b:
+        return True
+    found_a, found_b = resolve_source(a, cert_path), resolve_source(b, cert_path)
+    return found_a is not None and found_b is not None and \
+        found_a.resolve() == found_b.resolve()
+
+
+def resolve_source(source: str, cert_path: Path) -> Path | None:
+    """The path :func:`locate_source` finds, or None."""
+    found = locate_source(source, cert_path)
+    return None if found is None else found.path
+
+
+def relative_source(source: str, directory: Path) -> str:
+    """A model file's path as a certificate in ``directory`` names it: relative to that
+    folder, with "/" separators (the same bytes on every machine for the same layout);
+    absolute only where no relative path exists (another drive). A source that names no
+    file from here (e.g. a path inside the package, "verify/data/models/x.toml", given
+    while the working directory is elsewhere) is kept as written: the check looks it up
+    from the folders above the certificate."""
+    if source in NO_SOURCE or not Path(source).is_file():
+        return source
+    target = Path(source).resolve()
+    try:
+        return Path(os.path.relpath(target, Path(directory).resolve())).as_posix()
+    except ValueError:
+        return target.as_posix()
+
+
+#: The name suffix of a model perturbed within tolerance (``verify gate --tolerance``).
+PERTURBED_SUFFIX = " (perturbed within tolerance)"
+
+
+@dataclass(frozen=True)
+class Perturbed:
+    """A model perturbed within tolerance: H(s + a) + d I, i.e. A - a I and D + d I."""
+
+    a: Fraction
+    d: Fraction
+
+    def to_json(self) -> dict[str, str]:
+        return {"a": str(self.a), "d": str(self.d)}
+
+    def apply(self, model: ExactModel) -> ExactModel:
+        """A - a I and D + d I, exactly (B, C unchanged)."""
+        qa, qd = mpq(self.a), mpq(self.d)
+        A = [[x - qa if i == j else x for j, x in enumerate(row)]
+             for i, row in enumerate(model.A)]
+        D = [[x + qd if i == j else x for j, x in enumerate(row)]
+             for i, row in enumerate(model.D)]
+        return ExactModel(A, model.B, model.C, D)
+
+
+def perturbed_from_json(value: Any) -> Perturbed:
+    """The ``perturbation`` field {a, d} of a certificate (exact rationals >= 0)."""
+    if not isinstance(value, dict):
+        raise CertificateFormatError("field 'perturbation' must be an object {a, d}")
+    fields(value, required=("a", "d"), where="perturbation")
+    a, d = (fraction(rational(value[k], f"perturbation.{k}")) for k in ("a", "d"))
+    if a < 0 or d < 0:
+        raise CertificateFormatError("perturbation a and d must be >= 0")
+    return Perturbed(a, d)
 
 
 @dataclass(frozen=True)
@@ -203,33 +301,76 @@ class SourceBinding:
 
 
 def bind_source(name: str, source: str, model: ExactModel, unverified: dict[str, Any],
-                cert_path: Path) -> SourceBinding:
-    """Compare the stored model, name and unverified fields with the source file."""
+                cert_path: Path, perturbed: Perturbed | None = None) -> SourceBinding:
+    """Compare the stored model, name and unverified fields with the source file.
+
+    With ``perturbed``, the stored model must be the source file's model perturbed by
+    (a, d) (on the file's realisation or on its minimal part) and the name the file's
+    name with :data:`PERTURBED_SUFFIX`.
+    """
     from verify.passivity.io.model_file import load_model
 
-    found = resolve_source(source, cert_path)
-    if found is None:
-        what = "no source file" if source in ("", "python") else \
-            f"source {source} not found here"
+    location = locate_source(source, cert_path)
+    if location is None:
+        what = "no source file" if source in NO_SOURCE else \
+            f"source {source} not found (looked up from the certificate's folder)"
         return SourceBinding(None, f"{what}: the claim is about the stored model only")
+    found = location.path
     try:
         loaded = load_model(found)
     except VerifyInputError as exc:
         return SourceBinding(f"source {source} is not a valid model file ({exc})", "")
-    if exact_of(loaded) != model:
-        return SourceBinding(f"source {source} denotes another model than the stored one "
-                             "(exact data differ)", "")
-    if loaded.name != name:
-        return SourceBinding(f"name {name!r} is not the source file's model name "
-                             f"{loaded.name!r}", "")
+    if perturbed is None:
+        expected_name, same = loaded.name, exact_of(loaded) == model
+    else:
+        from verify.passivity.check.realization import minimal_part
+
+        expected_name = loaded.name + PERTURBED_SUFFIX
+        moved = perturbed.apply(loaded.exact)
+        same = model in (moved, minimal_part(moved).model)
+    if not same:
+        what = "" if perturbed is None else \
+            f" perturbed by a = {perturbed.a}, d = {perturbed.d}"
+        return SourceBinding(f"source {source}{what} denotes another model than the stored "
+                             "one (exact data differ)", "")
+    if expected_name != name:
+        whose = "the source file's model name" if perturbed is None else \
+            "the source file's model name marked perturbed"
+        return SourceBinding(f"name {name!r} is not {whose} {expected_name!r}", "")
     for key in UNVERIFIED_KEYS:
         if key in unverified and unverified[key] != loaded.meta.get(key):
             return SourceBinding(f"unverified.{key} = {unverified[key]!r} differs from the "
                                  f"source file's {loaded.meta.get(key)!r}", "")
-    return SourceBinding(None, f"the stored model is exactly the one {source} denotes")
+    how = "the one it denotes" if perturbed is None else \
+        f"the one it denotes perturbed by a = {perturbed.a}, d = {perturbed.d}"
+    return SourceBinding(None, f"{location.describe(source)}: the stored model is exactly "
+                         f"{how}")
 
 
-__all__ = ["LEGACY_BAND_STATEMENT", "LEGACY_KYP_STATEMENT", "UNVERIFIED_KEYS", "Claim",
-           "SourceBinding", "bind_source", "check_unverified", "claim_from_fields",
-           "exact_of", "file_name", "model_from_json", "model_to_json", "resolve_source",
-           "shifted", "slug", "statement", "unverified_meta"]
+__all__ = [
+    "LEGACY_BAND_STATEMENT",
+    "LEGACY_KYP_STATEMENT",
+    "NO_SOURCE",
+    "PERTURBED_SUFFIX",
+    "UNVERIFIED_KEYS",
+    "Claim",
+    "Perturbed",
+    "SourceBinding",
+    "SourceLocation",
+    "bind_source",
+    "check_unverified",
+    "claim_from_fields",
+    "exact_of",
+    "file_name",
+    "locate_source",
+    "model_from_json",
+    "model_to_json",
+    "perturbed_from_json",
+    "relative_source",
+    "resolve_source",
+    "same_source",
+    "shifted",
+    "slug",
+    "statement",
+    "unverified_meta",
+]

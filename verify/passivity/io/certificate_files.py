@@ -19,10 +19,11 @@ from __future__ import annotations
 
 import json
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from verify.inputs.number_text import short_text
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, KypCheck, check_kyp
 from verify.passivity.check.gkyp import ComplexMatrix, check_gkyp
@@ -31,11 +32,14 @@ from verify.passivity.io.binding import (
     LEGACY_KYP_STATEMENT,
     UNVERIFIED_KEYS,
     Claim,
+    Perturbed,
     bind_source,
     check_unverified,
     claim_from_fields,
     file_name,
     model_from_json,
+    perturbed_from_json,
+    same_source,
     shifted,
     statement,
 )
@@ -68,23 +72,37 @@ class StoredCertificate:
     P: ex.RationalMatrix | ComplexMatrix
     Q: ComplexMatrix | None
     unverified: dict[str, Any]
+    perturbed: Perturbed | None = None  # a model perturbed within tolerance (KYP only)
 
-    def same_claim(self, other: StoredCertificate) -> bool:
-        """Same name, source, exact model and claim (the proof matrices may differ)."""
-        return (self.name, self.source, self.claim, self.model) == (
-            other.name, other.source, other.claim, other.model)
+    def same_claim(self, other: StoredCertificate, path: Path | None = None) -> bool:
+        """Same name, source, exact model and claim (the proof matrices may differ); with
+        ``path`` (where both would be stored), sources spelt differently but naming the
+        same file count as the same."""
+        if (self.name, self.claim, self.model, self.perturbed) != (
+                other.name, other.claim, other.model, other.perturbed):
+            return False
+        return self.source == other.source or (
+            path is not None and same_source(self.source, other.source, path))
 
 
 # ------------------------------------------------------------------------------ writing
 
 
 def kyp_json(name: str, source: str, model: ExactModel, claim: Claim, P: ex.RationalMatrix,
-             unverified: dict[str, Any]) -> dict[str, Any]:
-    """Version-2 JSON of a KYP certificate: P certifies H - margin I for H = ``model``."""
-    return {"schema": KYP_V2, "name": name, "source": source,
+             unverified: dict[str, Any], perturbed: Perturbed | None = None
+             ) -> dict[str, Any]:
+    """Version-2 JSON of a KYP certificate: P certifies H - margin I for H = ``model``.
+
+    ``perturbed``: ``model`` is the source file's model perturbed within tolerance by
+    (a, d), stored as field ``perturbation`` so that the check re-derives it from the file.
+    """
+    data = {"schema": KYP_V2, "name": name, "source": source,
             "fingerprint": model.fingerprint(), "margin": str(claim.margin),
             "statement": statement(claim), "model": model.to_json(), "P": ex.to_strings(P),
             "unverified": dict(unverified)}
+    if perturbed is not None:
+        data["perturbation"] = perturbed.to_json()
+    return data
 
 
 def band_json(name: str, source: str, model: ExactModel, claim: Claim, P: ComplexMatrix,
@@ -122,7 +140,7 @@ def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool
     def still_valid(old: Path) -> bool:
         old_data = read_strict(old)
         parse = PARSERS.get(old_data.get("schema"))  # type: ignore[arg-type]
-        return (parse is not None and parse(old_data).same_claim(fresh)
+        return (parse is not None and parse(old_data).same_claim(fresh, old)
                 and check_stored_certificate(old).ok)
 
     return keep_or_write(path, dumps(data), still_valid)
@@ -187,11 +205,13 @@ def parse_kyp(data: dict[str, Any]) -> StoredCertificate:
         fields(data, required=(*_HEAD, "meta"))
         unverified, claim = _legacy_meta(data), Claim()
     else:
-        fields(data, required=(*_HEAD, "margin"), optional=("unverified",))
+        fields(data, required=(*_HEAD, "margin"), optional=("unverified", "perturbation"))
         unverified = check_unverified(data.get("unverified", {}))
         claim = claim_from_fields(data["margin"], None)
     model = model_from_json(data["model"])
-    return _common(data, model, claim, _real(data, model.n), None, unverified)
+    perturbed = perturbed_from_json(data["perturbation"]) if "perturbation" in data else None
+    return replace(_common(data, model, claim, _real(data, model.n), None, unverified),
+                   perturbed=perturbed)
 
 
 def parse_band(data: dict[str, Any]) -> StoredCertificate:
@@ -235,7 +255,8 @@ def check_binding(cert: StoredCertificate, path: Path) -> tuple[str | None, str]
                 + ("" if cert.claim.band is None else
                    f", band [{cert.claim.band[0]}, {cert.claim.band[1]}]")
                 + f"); expected: {_derived_statement(cert)!r}"), ""
-    bound = bind_source(cert.name, cert.source, cert.model, cert.unverified, path)
+    bound = bind_source(cert.name, cert.source, cert.model, cert.unverified, path,
+                        cert.perturbed)
     return bound.error, bound.note
 
 
@@ -252,10 +273,11 @@ def check_exact(cert: StoredCertificate) -> KypCheck:
 
 def summary(claim: Claim) -> str:
     """A short form of the claim for the check's one line."""
-    margin = "" if claim.margin == 0 else f" with margin {claim.margin}"
+    margin = "" if claim.margin == 0 else f" with margin {short_text(claim.margin)}"
     if claim.band is None:
         return f"passive{margin}"
-    return f"passive on [{claim.band[0]}, {claim.band[1]}] rad/s{margin}"
+    w1, w2 = (short_text(w) for w in claim.band)
+    return f"passive on [{w1}, {w2}] rad/s{margin}"
 
 
 def check_parsed(cert: StoredCertificate, path: Path) -> KypCheck:

@@ -8,18 +8,29 @@ strictly parsed JSON object and the file's path and returns a
 Every checker re-derives what the certificate claims and decides it in exact arithmetic,
 with no solver: a certificate is bound to its claim and trusted only once re-checked
 (Necula, "Proof-carrying code", POPL 1997: check the proof, not the prover).
+
+Bound or refused: some labels of a certificate (the model's name, the descriptive fields,
+a robust region's tie to its identification) can only be re-derived from the ``source``
+file it names. :data:`SOURCE_LABELS` lists them per schema; when that file cannot be
+found from the certificate's folder (:func:`verify.passivity.io.binding.locate_source`),
+the certificate is *unbound* (:class:`CertificateStatus`): not valid unless the caller
+accepts unbound certificates, and then the result names the labels left unchecked.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from enum import StrEnum
 from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
+from verify.inputs.number_text import unlimited_int_text
 from verify.passivity.check import fd_certificate
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io import certificate_files as cf
+from verify.passivity.io.binding import UNVERIFIED_KEYS, locate_source
 from verify.passivity.io.strict_json import CertificateFormatError, read_strict
 
 Checker = Callable[[dict[str, Any], Path], KypCheck]
@@ -53,18 +64,96 @@ SCHEMAS: dict[str, Checker] = {
 }
 
 
-def check_stored_certificate(path: Path) -> KypCheck:
-    """The binding and exact re-check of one file; malformed content is a refusal."""
+def _model_labels(data: dict[str, Any]) -> tuple[str, ...]:
+    """KYP, band and positive-realness certificates: the name and descriptive fields."""
+    described = data.get("unverified", data.get("meta", {}))
+    keys = [k for k in UNVERIFIED_KEYS if isinstance(described, dict) and k in described]
+    return ("name", *(f"unverified.{k}" for k in keys))
+
+
+def _robust_labels(data: dict[str, Any]) -> tuple[str, ...]:
+    """Robust certificates: the name, and the region as the identification's."""
+    return ("name", "structure",
+            "region = the source's identified coefficients, covariance, chi2 and level")
+
+
+#: Per schema, the labels only the source file can confirm (schemas not listed here
+#: bind to no model file).
+SOURCE_LABELS: dict[str, Callable[[dict[str, Any]], tuple[str, ...]]] = {
+    "verify-robust-band-certificate/1": _robust_labels,
+    fd_certificate.SCHEMA: _model_labels,
+    cf.KYP_V1: _model_labels,
+    cf.KYP_V2: _model_labels,
+    cf.BAND_V1: _model_labels,
+    cf.BAND_V2: _model_labels,
+}
+
+
+class CertificateStatus(StrEnum):
+    """Outcome of checking one certificate file."""
+
+    VALID = "valid"  # proof re-checked, every label re-derived
+    UNBOUND = "unbound"  # proof re-checked, but its source file was not found
+    INVALID = "invalid"  # refused
+
+
+@dataclass(frozen=True)
+class CertificateCheck:
+    """The check of one certificate file: status, one-line reason, unchecked labels."""
+
+    status: CertificateStatus
+    reason: str
+    unchecked: tuple[str, ...] = ()  # labels not re-derived (an unbound certificate)
+    accepted: bool = False  # True when the status is acceptable to the caller
+
+    @property
+    def ok(self) -> bool:
+        """Valid, or unbound and accepted (``allow_unbound``)."""
+        return self.accepted
+
+
+def _unbound_labels(data: dict[str, Any], schema: str, path: Path) -> tuple[str, ...]:
+    """The labels left unchecked because the source file is not found (empty if bound)."""
+    labels = SOURCE_LABELS.get(schema)
+    if labels is None:
+        return ()
+    source = data.get("source")
+    if isinstance(source, str) and locate_source(source, path) is not None:
+        return ()
+    return labels(data)
+
+
+def check_stored_certificate(path: Path, *, allow_unbound: bool = False) -> CertificateCheck:
+    """The binding and exact re-check of one file; malformed content is a refusal.
+
+    A certificate whose source file cannot be found from its folder is *unbound*: its
+    proof is re-checked, but the labels only that file can confirm are not, so it is
+    accepted only with ``allow_unbound=True`` (and then :attr:`CertificateCheck.unchecked`
+    names those labels).
+    """
     try:
         data = read_strict(path)
         schema = data.get("schema")
         checker = SCHEMAS.get(schema) if isinstance(schema, str) else None
         if checker is None:
-            return KypCheck(False, f"unknown schema {schema!r}; known: "
-                            f"{', '.join(sorted(SCHEMAS))}")
-        return checker(data, Path(path))
+            return _invalid(f"unknown schema {schema!r}; known: {', '.join(sorted(SCHEMAS))}")
+        with unlimited_int_text():  # parsed strictly (bounded digits): any size from here
+            result = checker(data, Path(path))
+        if not result.ok:
+            return _invalid(result.reason)
+        unchecked = _unbound_labels(data, schema, Path(path))  # type: ignore[arg-type]
     except CertificateFormatError as exc:
-        return KypCheck(False, f"malformed: {exc}")
+        return _invalid(f"malformed: {exc}")
+    if not unchecked:
+        return CertificateCheck(CertificateStatus.VALID, result.reason, accepted=True)
+    return CertificateCheck(
+        CertificateStatus.UNBOUND,
+        f"{result.reason}; unbound: not checked against a source file: "
+        f"{', '.join(unchecked)}", unchecked, accepted=allow_unbound)
+
+
+def _invalid(reason: str) -> CertificateCheck:
+    return CertificateCheck(CertificateStatus.INVALID, reason)
 
 
 def certificate_files(paths: Iterable[Path]) -> list[Path]:
@@ -80,4 +169,5 @@ def certificate_files(paths: Iterable[Path]) -> list[Path]:
     return files
 
 
-__all__ = ["SCHEMAS", "Checker", "certificate_files", "check_stored_certificate"]
+__all__ = ["SCHEMAS", "SOURCE_LABELS", "CertificateCheck", "CertificateStatus", "Checker",
+           "certificate_files", "check_stored_certificate"]

@@ -58,7 +58,7 @@ def _equalities(model: ExactModel):
     if not N or not N[0]:
         return None
     G = ex.matmul(model.B, N)
-    if ex.to_sympy(ex.matmul(ex.transpose(G), G)).det() == 0:
+    if ex.determinant(ex.matmul(ex.transpose(G), G)) == 0:
         return None
     return G, ex.matmul(ex.transpose(model.C), N)
 

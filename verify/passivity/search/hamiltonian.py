@@ -32,7 +32,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.optimize import minimize_scalar
 
 Array = NDArray[np.float64]
 
@@ -183,6 +182,8 @@ def _polish(A: Array, B: Array, C: Array, D: Array, w0: float, v0: float, lo: fl
     right = min(hi, w0 * (1 + 1e-3) if w0 > 0 else 1e-6)
     if right <= left:
         return w0, v0
+    from scipy.optimize import minimize_scalar  # imported on use (start-up time)
+
     res = minimize_scalar(lambda x: nu_values(A, B, C, D, np.array([x]))[0],
                           bounds=(left, right), method="bounded", options={"xatol": 1e-14})
     if np.isfinite(res.fun) and res.fun < v0:

@@ -25,7 +25,6 @@ from __future__ import annotations
 import warnings
 from dataclasses import dataclass
 
-import cvxpy as cp
 import numpy as np
 import scipy.linalg as sla
 from gmpy2 import mpq
@@ -65,6 +64,8 @@ def solve_numeric(A, B, C, D, N: np.ndarray, *, kernel: np.ndarray | None = None
     N: the directions of the equality P B N = C^T N; ``kernel`` (default N): a basis of
     ker(D + D^T), where no margin is asked.
     """
+    import cvxpy as cp  # the SDP fallback only: imported on use (start-up time)
+
     kernel = N if kernel is None else kernel
     n, m = A.shape[0], D.shape[0]
     S = D + D.T
@@ -127,7 +128,7 @@ def riccati_candidate(A, B, C, D) -> np.ndarray | None:
 def _project_equalities(P: ex.RationalMatrix, G: ex.RationalMatrix, target: ex.RationalMatrix):
     """Symmetric exact correction so that P G = target (G full column rank, G^T target sym)."""
     R = ex.add(target, ex.matmul(P, G), -1)
-    Hq = ex.from_sympy(ex.to_sympy(ex.matmul(ex.transpose(G), G)).inv())
+    Hq = ex.inverse(ex.matmul(ex.transpose(G), G))
     RH = ex.matmul(R, Hq)
     GH = ex.matmul(G, Hq)
     GtR = ex.matmul(ex.transpose(G), R)

@@ -90,7 +90,7 @@ class NotReducible:
 
 
 def _inverse(M: ex.RationalMatrix) -> ex.RationalMatrix:
-    return ex.from_sympy(ex.to_sympy(M).inv())
+    return ex.inverse(M)
 
 
 def _floats(M: ex.RationalMatrix, rows: int, cols: int) -> np.ndarray:
@@ -106,7 +106,7 @@ def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
     pivots = sorted(int(i) for i in piv[:k])
     free = [i for i in range(n) if i not in set(pivots)]
     B1 = [Bp[i] for i in pivots]
-    if ex.to_sympy(B1).det() == 0:
+    if ex.determinant(B1) == 0:
         return None
     if not free:
         return pivots, free, [[] for _ in range(k)]  # B' square and invertible: no Y

@@ -29,6 +29,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from verify.inputs.number_text import exact_text
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
@@ -132,10 +133,10 @@ def _map_witness(witness, r: Rescaling):
     data = dict(witness.data)
     for key in _FREQUENCY_KEYS:
         if key in data:
-            data[key] = str(Fraction(data[key]) * r.beta)
+            data[key] = exact_text(Fraction(data[key]) * r.beta)
     for key in _GAIN_KEYS:
         if key in data:
-            data[key] = str(Fraction(data[key]) * r.alpha)
+            data[key] = exact_text(Fraction(data[key]) * r.alpha)
     data["rescaled"] = {"frequency_exponent": r.freq, "gain_exponent": r.gain,
                         "state_exponent": r.state,
                         "note": "omega, s and value are for the model as written; other "

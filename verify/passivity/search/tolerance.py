@@ -41,6 +41,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from verify.inputs.number_text import approx_text, float_or_none
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import Certificate, ExactModel, check_kyp
@@ -87,11 +88,11 @@ class Perturbation:
 
     def summary(self) -> str:
         moved = " and ".join(
-            f"{name} by {float(size):.3g}" for name, size in
+            f"{name} by {approx_text(size, 3)}" for name, size in
             (("A's diagonal", self.moved_a), ("D's diagonal", self.moved_d)) if size)
-        return (f"H(s + a) + d I ({moved or 'nothing'}): relative "
-                f"size {float(self.relative):.3g} <= {float(self.tolerance):.3g} (induced "
-                "∞-norm, relative to ‖A‖ and to the gain scale)")
+        size, bound = approx_text(self.relative, 3), approx_text(self.tolerance, 3)
+        return (f"H(s + a) + d I ({moved or 'nothing'}): relative size {size} <= {bound} "
+                "(induced ∞-norm, relative to ‖A‖ and to the gain scale)")
 
     def to_json(self) -> dict:
         return {
@@ -103,7 +104,7 @@ class Perturbation:
             "relative_to": {"A": f"||A|| = {self.norm_a}",
                             "D": f"g = max(||D||, ||C|| ||B|| / ||A||) = {self.gain}"},
             "relative_size": str(self.relative),
-            "relative_size_float": float(self.relative),
+            "relative_size_float": float_or_none(self.relative),
             "tolerance": str(self.tolerance),
         }
 
@@ -257,7 +258,7 @@ def within_tolerance(model: LTIModel, tolerance: Fraction, margin: Fraction,
                 margin=margin, seconds=exact.seconds + inner.seconds, perturbation=p,
                 exact=exact, perturbed_model=perturbed)
     exact.reason = (f"{exact.reason}; no model H(s + a) + d I within relative distance "
-                    f"{float(tolerance):.3g} was certified passive")
+                    f"{approx_text(tolerance, 3)} was certified passive")
     return exact
 
 
