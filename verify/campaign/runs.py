@@ -28,7 +28,7 @@ import numpy as np
 from verify.inputs.campaign_spec import CampaignSpec, HumanEntry
 from verify.so3 import Array
 
-KEY_VERSION = 1  # bump when the meaning of a row's columns changes
+KEY_VERSION = 2  # bump when the meaning of a row's columns changes
 
 #: The code a row's figures depend on: the simulator, the paper's system, SO(3) maps and
 #: the per-run checks. Their bytes enter every run key, so ``--resume`` after a change of

@@ -28,13 +28,15 @@ from verify.report.atomic import write_atomic
 
 _PROPERTY_FIELDS = [f for p in PROPERTIES for f in (
     pa.field(column(p), pa.string()), pa.field(f"{column(p)}_violation", pa.float64()),
-    pa.field(f"{column(p)}_tolerance", pa.float64()))]
+    pa.field(f"{column(p)}_tolerance", pa.float64()),
+    pa.field(f"{column(p)}_conclusion", pa.string()))]
 
 SCHEMA = pa.schema([
     pa.field("key", pa.string(), nullable=False),
     pa.field("human", pa.string()), pa.field("human_kind", pa.string()),
     pa.field("human_sha256", pa.string()), pa.field("human_gain", pa.float64()),
     pa.field("human_gate", pa.string()),
+    pa.field("engine", pa.string()), pa.field("engine_note", pa.string()),
     pa.field("k_s", pa.float64()), pa.field("n", pa.int64()), pa.field("seed", pa.int64()),
     pa.field("autonomous", pa.string()), pa.field("reference", pa.string()),
     pa.field("seconds", pa.float64()), pa.field("step", pa.float64()),
