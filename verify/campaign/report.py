@@ -38,6 +38,7 @@ from verify.campaign.execute import (
     HELD,
     NOT_APPLICABLE,
     NOT_CHECKED,
+    UNRESOLVED,
     column,
 )
 from verify.campaign.reproduce import simulate_command
@@ -218,30 +219,45 @@ class Campaign:
         return list(seen.values())
 
 
+ANYWAY, NOT_ANYWAY = "anyway", "not-anyway"  # assumption failed; conclusion held / failed
+
+
 def _counts(pairs: Sequence[tuple[Run, dict[str, Any]]], prop: str) -> dict[str, int]:
-    counts = {HELD: 0, FAILED: 0, ASSUMPTION: 0, "error": 0, NOT_APPLICABLE: 0}
+    counts = {HELD: 0, FAILED: 0, ASSUMPTION: 0, UNRESOLVED: 0, "error": 0,
+              NOT_APPLICABLE: 0, ANYWAY: 0, NOT_ANYWAY: 0}
     for _, row in pairs:
         if row.get("error"):
             counts["error"] += 1
-        else:
-            status = row.get(column(prop)) or NOT_CHECKED
-            if status in counts:
-                counts[status] += 1
+            continue
+        status = row.get(column(prop)) or NOT_CHECKED
+        if status in counts:
+            counts[status] += 1
+        if status == ASSUMPTION:
+            conclusion = row.get(f"{column(prop)}_conclusion")
+            if conclusion == HELD:
+                counts[ANYWAY] += 1
+            elif conclusion == FAILED:
+                counts[NOT_ANYWAY] += 1
     return counts
 
 
 def _cell_text(counts: dict[str, int], total: int) -> str:
+    """Held under the assumptions, failed, and, where an assumption failed, whether the
+    conclusion held anyway (what the system did outside the theorem)."""
     if counts[NOT_APPLICABLE] == total:
         return "n/a"
     text = f"{counts[HELD]}/{total} held"
     notes = [f"{counts[FAILED]} FAILED"] if counts[FAILED] else []
     if counts[ASSUMPTION]:
-        notes.append(f"{counts[ASSUMPTION]} assumption failed")
+        notes.append(f"{counts[ASSUMPTION]} assumption failed: conclusion held without the "
+                     f"assumption in {counts[ANYWAY]}, failed in {counts[NOT_ANYWAY]}")
+    if counts[UNRESOLVED]:
+        notes.append(f"{counts[UNRESOLVED]} UNRESOLVED (integration)")
     if counts["error"]:
         notes.append(f"{counts['error']} raised")
     if counts[NOT_APPLICABLE]:
         notes.append(f"{counts[NOT_APPLICABLE]} n/a")
-    return text + (f" ({', '.join(notes)})" if notes else "")
+    return text + (f" ({'; '.join(notes)})" if notes else "")
 
 
 def convergence_summary(pairs: Sequence[tuple[Run, dict[str, Any]]]) -> tuple[
@@ -287,7 +303,7 @@ def property_figure(c: Campaign) -> bytes:
     cols = min(3, len(props))
     rows = -(-len(props) // cols)
     fig, axes = plt.subplots(rows, cols, figsize=(2.0 + (0.8 + 0.45 * len(ks)) * cols,
-                                                  (0.9 + 0.3 * len(settings)) * rows + 0.4),
+                                                  (0.9 + 0.5 * len(settings)) * rows + 0.5),
                              squeeze=False, layout="constrained")
     for ax in axes.flat[len(props):]:
         ax.set_visible(False)
@@ -297,12 +313,15 @@ def property_figure(c: Campaign) -> bytes:
             for j, k in enumerate(ks):
                 pairs = cells.get((s, k), [])
                 counts = _counts(pairs, prop)
-                judged = counts[HELD] + counts[FAILED]
-                if judged:
-                    grid[i, j] = counts[HELD] / judged
-                label = "n/a" if not pairs else (
-                    f"{counts[HELD]}/{len(pairs)}" + ("*" if counts[ASSUMPTION] else ""))
-                ax.text(j, i, label, ha="center", va="center", fontsize=7)
+                judged = counts[HELD] + counts[FAILED] + counts[ANYWAY] + counts[NOT_ANYWAY]
+                if judged:  # colour: the conclusion, with or without the assumptions
+                    grid[i, j] = (counts[HELD] + counts[ANYWAY]) / judged
+                label = "n/a" if not pairs else f"{counts[HELD]}/{len(pairs)}"
+                if counts[ASSUMPTION]:
+                    label += f"\n+{counts[ANYWAY]}/{counts[ASSUMPTION]} w/o"
+                if counts[UNRESOLVED]:
+                    label += f"\n{counts[UNRESOLVED]} unres."
+                ax.text(j, i, label, ha="center", va="center", fontsize=6)
         cmap = plt.get_cmap("RdYlGn").with_extremes(bad="0.85")
         ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
         ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
@@ -311,8 +330,9 @@ def property_figure(c: Campaign) -> bytes:
                       fontsize=7)
         ax.set_xlabel("k_s", fontsize=8)
         ax.set_title(prop, fontsize=9)
-    fig.suptitle("runs held / runs (* some had an assumption fail; grey: none judged)",
-                 fontsize=8)
+    fig.suptitle("held / runs; +a/b w/o: an assumption failed in b runs and the conclusion "
+                 "held anyway in a; colour: runs whose conclusion held; grey: none resolved",
+                 fontsize=7)
     return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
 
 
@@ -411,6 +431,7 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
                                          if cells.get((s, k)) else "-" for k in ks]]
                 for s in settings]
         blocks += [("p", PROPERTY_TITLE[prop]), ("table", Table(header, rows))]
+    blocks += findings_blocks(c, gate_of)
     figures: dict[str, bytes] = {}
     if spec.properties and stored:
         figures["figures/properties.png"] = property_figure(c)
@@ -453,6 +474,19 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         blocks.append(("h2", f"Runs that raised ({len(raised)})"))
         blocks.append(("table", Table([*PARAMETER_HEADER, "error"], [
             [*_parameters(r), c.rows[r.key]["error"]] for r in raised[:MAX_LISTED]])))
+    unresolved = [(r, [p for p in spec.properties
+                       if c.rows[r.key].get(column(p)) == UNRESOLVED]) for r in stored]
+    unresolved = [(r, ps) for r, ps in unresolved if ps]
+    if unresolved:
+        blocks.append(("h2", f"Runs the integration did not resolve ({len(unresolved)})"))
+        blocks.append(("p", "Their properties are neither held nor failed: the fixed step is "
+                       "beyond CF4's stability for the loop's rates, or the error estimate "
+                       "exceeds 1 % of the checked quantity's scale, and error-controlled "
+                       "steps did not resolve them within the step budget. Rerun with a "
+                       "smaller step."))
+        blocks.append(("table", Table([*PARAMETER_HEADER, "unresolved", "why"], [
+            [*_parameters(r), ", ".join(ps), c.rows[r.key].get("engine_note") or "-"]
+            for r, ps in unresolved[:MAX_LISTED]])))
     missing = [r for r in c.runs if r.key not in c.rows]
     if missing:
         blocks.append(("p", f"{len(missing)} runs have no row yet (interrupted or lost); "
@@ -464,6 +498,53 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         blocks.append(("code", Code(simulate_command(c.runs[0], cwd=cwd))))
     commands = "".join(f"{r.key}  {simulate_command(r, cwd=cwd)}\n" for r in c.runs)
     return blocks, figures, commands
+
+
+def engine_counts(c: Campaign) -> dict[str, int]:
+    """Stored runs per integration engine (``fixed``, ``adaptive rtol=...``, ``none``)."""
+    counts: dict[str, int] = defaultdict(int)
+    for r in c.runs:
+        row = c.rows.get(r.key)
+        if row is not None and not row.get("error"):
+            counts[row.get("engine") or "-"] += 1
+    return dict(sorted(counts.items()))
+
+
+def findings_blocks(c: Campaign, gate_of: dict[str, str]) -> list[Block]:
+    """Where a conclusion held although an assumption failed (and where it failed)."""
+    cells = c.cells()
+    rows = []
+    for prop in c.spec.properties:
+        for s in c.settings():
+            counts = {ANYWAY: 0, NOT_ANYWAY: 0, ASSUMPTION: 0}
+            ks_anyway, ks_not = [], []
+            for k in c.k_values():
+                got = _counts(cells.get((s, k), []), prop)
+                for name in counts:
+                    counts[name] += got[name]
+                if got[ANYWAY]:
+                    ks_anyway.append(f"{k:g}")
+                if got[NOT_ANYWAY]:
+                    ks_not.append(f"{k:g}")
+            if counts[ASSUMPTION]:
+                rows.append([prop, f"{s} [{gate_of[s]}]", str(counts[ASSUMPTION]),
+                             f"{counts[ANYWAY]} (k_s {', '.join(ks_anyway) or '-'})",
+                             f"{counts[NOT_ANYWAY]} (k_s {', '.join(ks_not) or '-'})"])
+    engines = engine_counts(c)
+    out: list[Block] = [("h2", "What held outside the assumptions")]
+    out.append(("p", "Runs whose assumption failed along the trajectory (for Theorem 1: "
+                "a human without a passivity certificate, sym(R_rl) > 0 lost, a switching "
+                "reference) are outside the paper's guarantees; the conclusion was still "
+                "checked on them, within the same tolerance. Integration engines of the "
+                "stored runs: " + (", ".join(f"{k} {v}" for k, v in engines.items()) or "-")
+                + "."))
+    if rows:
+        out.append(("table", Table(["property", "setting [gate]", "assumption failed",
+                                    "conclusion held without the assumption",
+                                    "conclusion failed"], rows)))
+    else:
+        out.append(("p", "No run had an assumption fail."))
+    return out
 
 
 def timing_blocks(c: Campaign, session: dict[str, str]) -> list[Block]:
