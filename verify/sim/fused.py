@@ -167,6 +167,40 @@ class CompiledStepper(Stepper):
         return Y_out, x_out
 
 
+def run_fixed(stepper: Stepper, rec, Y: Array, x: Array, k0: int, k1: int, dt: float
+              ) -> tuple[Array, Array, int, int]:
+    """Steps k0 .. k1 - 1 in one compiled call when the stepper allows it
+    (:func:`verify.sim.kernels.cf4_run`), recording into ``rec`` (a
+    :class:`verify.sim.run.Recorder`). Returns (Y, x, k, status) with k where it stopped;
+    status -1 when the stepper has no whole-run kernel (nothing done)."""
+    if not (isinstance(stepper, CompiledStepper) and stepper.command in ("none", "held")
+            and stepper.auto != kernels.AUTO_GIVEN):
+        return Y, x, k0, -1
+    h = stepper.human
+    held = stepper.command == "held"
+    if not hasattr(stepper, "_segments"):
+        ref = stepper.reference
+        stepper._segments = np.array([ref.segment(k * dt) for k in range(rec.t.shape[0])],
+                                     dtype=np.int64)
+        stepper._rotations = np.ascontiguousarray(np.stack(stepper.rotations))
+    Y, x = np.array(Y, dtype=float), np.array(x, dtype=float)
+    Y_out, x_out = np.empty_like(Y), np.empty_like(x)
+    s = np.empty((rec.t.shape[0], 3))
+    dirs = rec.d if rec.d is not None else np.empty((0, rec.n, 3))
+    k, status = kernels.cf4_run(
+        Y, x, k0, k1, dt, stepper.k_s, stepper._rotations, stepper._segments, int(held),
+        float(h.k_omega) if held else 0.0, float(h.saturation) if held else 0.0,
+        float(h.tilt) if held else 0.0, stepper.hA, stepper.hB, stepper.hC, stepper.hD,
+        stepper.auto, stepper.gain, stepper.tol, rec.R_bar, rec.R_l, rec.R_r, rec.x, s,
+        dirs, rec.every if rec.d is not None else 0, Y_out, x_out, *stepper.workspace)
+    if k > k0:
+        norm = np.linalg.norm(s[k0:k], axis=1)
+        rec.coherence[k0:k] = norm / rec.n
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rec.dbar[k0:k] = np.where(norm[:, None] > 0, s[k0:k] / norm[:, None], np.nan)
+    return Y, x, k, int(status)
+
+
 def stepper(scenario: Scenario, engine: str = "auto") -> Stepper:
     """The stepper of ``engine``: "python" (ClosedLoop's field), "compiled" (the kernels;
     VerifyInputError when they do not model the scenario) or "auto" (kernels if they do)."""

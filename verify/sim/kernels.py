@@ -299,6 +299,64 @@ def cf4_step(Y: Array, x: Array, h: float, k_s: float, R_r: Array, c_stage: Arra
     return OK
 
 
+#: status of :func:`cf4_run`: the VR command left the kernel's branch (Python takes the step)
+NEEDS_PYTHON = 2
+
+
+@njit(cache=True, fastmath=_CONTRACT)
+def cf4_run(Y: Array, x: Array, k0: int, k1: int, h: float, k_s: float, rotations: Array,
+            segment: Array, held_kind: int, k_omega: float, saturation: float, tilt: float,
+            hA: Array, hB: Array, hC: Array, hD: Array, auto: int, gain: float, tol: float,
+            out_Rbar: Array, out_Rl: Array, out_Rr: Array, out_x: Array, out_s: Array,
+            dirs: Array, every: int, Y_out: Array, x_out: Array, Ys: Array, Fs: Array,
+            xs: Array, Om: Array, work: Array) -> tuple[int, int]:
+    """Steps k0 .. k1 - 1 of a fixed-step run in one call, recording each sample first.
+
+    Step k holds R_r = rotations[segment[k]] and, for the VR operator (``held_kind`` 1),
+    its command from :func:`vr_command`; the stages are those of :func:`cf4_step` with
+    no given input. Sample k stores R-bar, R_l, R_r, x, s = sum_i d_i (summed in body
+    order, as ``sum(axis=0)``) and, every ``every`` samples, the d_i. (Y, x) are advanced
+    in place. Returns (k, status): k = k1 and OK, or the step k where the run stopped
+    (DBAR_UNDEFINED; NEEDS_PYTHON when the VR command left the kernel's branch; sample k
+    is then not recorded).
+    """
+    n = Y.shape[0] - 2
+    q = x.shape[0]
+    c_stage = np.zeros((4, 3))
+    c = np.zeros(3)
+    no_input = np.zeros((4, 0, 3))
+    for k in range(k0, k1):
+        R_r = rotations[segment[k]]
+        if held_kind == 1:
+            if not vr_command(Y[n + 1], R_r, k_omega, saturation, tilt, c):
+                return k, NEEDS_PYTHON
+            for j in range(4):
+                c_stage[j, 0], c_stage[j, 1], c_stage[j, 2] = c[0], c[1], c[2]
+        for r in range(3):
+            for col in range(3):
+                out_Rbar[k, r, col] = Y[n, r, col]
+                out_Rl[k, r, col] = Y[n + 1, r, col]
+                out_Rr[k, r, col] = R_r[r, col]
+        for j in range(q):
+            out_x[k, j] = x[j]
+        s0, s1, s2 = Y[0, 0, 2], Y[0, 1, 2], Y[0, 2, 2]
+        for i in range(1, n):
+            s0 += Y[i, 0, 2]
+            s1 += Y[i, 1, 2]
+            s2 += Y[i, 2, 2]
+        out_s[k, 0], out_s[k, 1], out_s[k, 2] = s0, s1, s2
+        if every > 0 and k % every == 0:
+            for i in range(n):
+                for r in range(3):
+                    dirs[k // every, i, r] = Y[i, r, 2]
+        if cf4_step(Y, x, h, k_s, R_r, c_stage, hA, hB, hC, hD, auto, gain, no_input, tol,
+                    Y_out, x_out, Ys, Fs, xs, Om, work) != OK:
+            return k, DBAR_UNDEFINED
+        Y[:] = Y_out
+        x[:] = x_out
+    return k1, OK
+
+
 @njit(cache=True, fastmath=_CONTRACT)
 def vr_command(R_l: Array, R_r: Array, k_omega: float, saturation: float, tilt: float,
                out: Array) -> bool:
