@@ -231,7 +231,8 @@ def test_whole_run_kernel_stops_where_dbar_is_lost():
     from verify.sim.run import Recorder
 
     sc = Scenario(so3.exp(0.1 * np.ones((2, 3))), 2.0, StaticGainHuman(np.eye(2)),
-                  Reference.constant(np.eye(3)), R_l0=np.eye(3))
+                  Reference.constant(np.eye(3)), R_l0=np.eye(3),
+                  autonomous=autonomous_input("consensus", 2))  # A(d) needs dbar
     st = stepper(sc)
     Y, x = sc.initial_state()
     Y[1] = Y[0] @ so3.exp(np.array([np.pi, 0.0, 0.0]))  # d_2 = -d_1
