@@ -180,8 +180,10 @@ def run_fixed(stepper: Stepper, rec, Y: Array, x: Array, k0: int, k1: int, dt: f
     held = stepper.command == "held"
     if not hasattr(stepper, "_segments"):
         ref = stepper.reference
-        stepper._segments = np.array([ref.segment(k * dt) for k in range(rec.t.shape[0])],
-                                     dtype=np.int64)
+        times = np.arange(rec.t.shape[0]) * dt  # k * dt, as the per-step loop forms it
+        stepper._segments = (np.zeros(times.shape[0], dtype=np.int64) if ref.period is None
+                             else np.minimum(np.floor(times / ref.period + 1e-9),
+                                             len(ref.rotations) - 1).astype(np.int64))
         stepper._rotations = np.ascontiguousarray(np.stack(stepper.rotations))
     Y, x = np.array(Y, dtype=float), np.array(x, dtype=float)
     Y_out, x_out = np.empty_like(Y), np.empty_like(x)
