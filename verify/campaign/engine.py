@@ -113,6 +113,7 @@ def run_campaign(
     scheduler: str | None = None,
     workers: int = 2,
     progress: bool = True,
+    force_progress: bool = False,
     stream: TextIO | None = None,
     function: Callable[[Run], dict[str, Any]] = execute_run,
     on_rows: Callable[[list[dict[str, Any]], Any], None] | None = None,
@@ -134,7 +135,8 @@ def run_campaign(
     workers : int
         Worker processes of the LocalCluster (one thread each).
     progress : bool
-        Show the one-line progress on ``stream`` (stderr) when it is a terminal.
+        Show the one-line progress on ``stream`` (stderr) when it is a terminal, or with
+        ``force_progress`` anywhere (:mod:`verify.campaign.progress`).
     function : callable
         The task (default :func:`verify.campaign.execute.execute_run`).
     on_rows : callable, optional
@@ -148,7 +150,8 @@ def run_campaign(
     stored = store.keys()
     pending = [r for r in runs if r.key not in stored]
     outcome = CampaignOutcome(total=len(runs), stored_before=len(runs) - len(pending))
-    bar = CampaignProgress(len(runs), outcome.stored_before, stream=stream, enabled=progress)
+    bar = CampaignProgress(len(runs), outcome.stored_before, stream=stream, enabled=progress,
+                           forced=force_progress)
     if not pending:
         return outcome
     owned = connect(scheduler, workers) if client is None else contextlib.nullcontext(client)

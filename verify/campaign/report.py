@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import html
 import math
+import re
 import statistics
 from collections import defaultdict
 from collections.abc import Sequence
@@ -108,28 +109,48 @@ class Code:
 Block = tuple[str, Any]  # ("h1" | "h2" | "p", text) or ("table" | "figure" | "code", obj)
 
 
-def _md_cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ")
+#: characters that can open Markdown or HTML constructs anywhere in a line
+_MD_SPECIAL = re.compile(r"([\\`*\[\]<>&|!#])")
+#: what opens a block (list, quote, heading, rule, ordered list) at a line's start
+_MD_BLOCK_START = re.compile(r"^(\s*)([-+=~_])")
+_MD_ORDERED = re.compile(r"^(\s*\d+)([.)])")
+
+
+def md_text(text: str) -> str:
+    """``text`` as literal Markdown inline text: one line (a spec's name or a human's
+    label cannot open a heading or a block), with HTML and Markdown punctuation
+    backslash-escaped (CommonMark: any ASCII punctuation may be escaped)."""
+    line = " ".join(str(text).split())
+    line = _MD_SPECIAL.sub(r"\\\1", line)
+    line = _MD_ORDERED.sub(r"\1\\\2", line)
+    return _MD_BLOCK_START.sub(r"\1\\\2", line)
+
+
+def _fence(text: str) -> str:
+    """A code fence longer than any backtick run in ``text`` (so it cannot be closed)."""
+    runs = [len(m) for m in re.findall(r"`+", text)]
+    return "`" * max(3, 1 + max(runs, default=0))
 
 
 def render_markdown(blocks: Sequence[Block]) -> str:
     out: list[str] = []
     for kind, item in blocks:
         if kind == "h1":
-            out += [f"# {item}", ""]
+            out += [f"# {md_text(item)}", ""]
         elif kind == "h2":
-            out += [f"## {item}", ""]
+            out += [f"## {md_text(item)}", ""]
         elif kind == "p":
-            out += [item, ""]
+            out += [md_text(item), ""]
         elif kind == "table":
-            out.append("| " + " | ".join(_md_cell(h) for h in item.header) + " |")
+            out.append("| " + " | ".join(md_text(h) for h in item.header) + " |")
             out.append("|" + "---|" * len(item.header))
-            out += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in item.rows]
+            out += ["| " + " | ".join(md_text(c) for c in row) + " |" for row in item.rows]
             out.append("")
         elif kind == "figure":
-            out += [f"![{item.alt}]({item.path})", ""]
+            out += [f"![{md_text(item.alt)}](<{item.path}>)", ""]
         elif kind == "code":
-            out += ["```", item.text.rstrip("\n"), "```", ""]
+            fence = _fence(item.text)
+            out += [fence, item.text.rstrip("\n"), fence, ""]
     return "\n".join(out).rstrip("\n") + "\n"
 
 

@@ -101,6 +101,27 @@ def run_key(human: Human, k_s: float, n: int, seed: int, autonomous: str, refere
     return hashlib.sha256(text.encode()).hexdigest()[:24]
 
 
+def spec_fingerprint(spec: CampaignSpec) -> str:
+    """SHA-256 (24 hex digits) of what a spec sweeps: its name, every axis (floats by
+    their exact value), the humans (model files by content) and the checks. Comments,
+    layout and the spec's path do not enter it; the simulator's code does not either
+    (a code change re-runs rows, it does not make the store another campaign's)."""
+    humans = [{"kind": h.kind, "sha256": h.sha256 or "",
+               "gain": None if h.gain is None else float(h.gain).hex(),
+               "family": h.family or "", "count": h.count, "seed": h.seed}
+              for h in spec.humans]
+    payload = {
+        "name": spec.name, "k_s": [float(k).hex() for k in spec.k_s], "n": list(spec.n),
+        "seeds": list(spec.seeds), "autonomous": list(spec.autonomous),
+        "reference": list(spec.reference), "seconds": [float(t).hex() for t in spec.seconds],
+        "step": [float(h).hex() for h in spec.step], "humans": humans,
+        "properties": list(spec.properties),
+        "convergence_threshold": float(spec.convergence_threshold).hex(),
+    }
+    text = json.dumps(payload, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()[:24]
+
+
 def exact_decimal(x: float) -> str:
     """The exact decimal expansion of a float, as a TOML number (it reads back exactly)."""
     if not np.isfinite(x):
@@ -206,4 +227,4 @@ def write_family_files(runs: list[Run], folder: Path) -> list[Run]:
 
 
 __all__ = ["Human", "Run", "exact_decimal", "expand", "family_member", "model_file_text",
-           "run_key", "write_family_files"]
+           "run_key", "spec_fingerprint", "write_family_files"]

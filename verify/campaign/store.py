@@ -8,10 +8,15 @@ writer or in an earlier part) are dropped, so a run computed twice (a retried ta
 resumed campaign) is stored once. Reading merges the parts and keeps the first row of a
 key in part-name order (parts are named by time), which also settles the rare case of
 two writers on one folder.
+
+``campaign.json`` in the folder names the campaign the store belongs to (the spec's
+fingerprint, :func:`verify.campaign.runs.spec_fingerprint`, and name): it is written
+before the first part, and a store of another campaign is refused before any run.
 """
 
 from __future__ import annotations
 
+import json
 import time
 import uuid
 from collections.abc import Iterable, Sequence
@@ -58,6 +63,37 @@ class ResultStore:
         if self.folder.exists() and not self.folder.is_dir():
             raise VerifyInputError(f"{self.folder}: the result store must be a folder")
         self._keys: set[str] | None = None
+
+    MANIFEST = "campaign.json"
+
+    def bind(self, fingerprint: str, name: str) -> None:
+        """Tie the store to one campaign: record ``fingerprint`` in an empty store, and
+        refuse (one line, before any run) a store that belongs to another campaign or
+        holds rows with no record of their campaign."""
+        manifest = self.folder / self.MANIFEST
+        if manifest.is_file():
+            try:
+                found = json.loads(manifest.read_text(encoding="utf-8"))
+                theirs, their_name = str(found["spec_fingerprint"]), str(found["name"])
+            except (OSError, ValueError, KeyError, TypeError, UnicodeDecodeError):
+                raise VerifyInputError(f"{manifest}: not a readable campaign record; this "
+                                       "folder was not written by verify campaign: choose "
+                                       "another --out") from None
+            if theirs != fingerprint:
+                raise VerifyInputError(
+                    f"{self.folder} holds the store of another campaign ({their_name!r}, "
+                    f"spec fingerprint {theirs}; this spec's is {fingerprint}): choose "
+                    "another --out")
+            return
+        if manifest.exists():
+            raise VerifyInputError(f"{manifest}: not a regular file; choose another --out")
+        if self.parts():
+            raise VerifyInputError(f"{self.folder} holds rows with no record of their "
+                                   f"campaign ({self.MANIFEST} is missing): choose another "
+                                   "--out")
+        self.folder.mkdir(parents=True, exist_ok=True)
+        record = {"spec_fingerprint": fingerprint, "name": name}
+        write_atomic(manifest, json.dumps(record, sort_keys=True, indent=1) + "\n")
 
     def parts(self) -> list[Path]:
         """The part files, in the order they were written."""

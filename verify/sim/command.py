@@ -24,6 +24,7 @@ from verify.sim.properties import largest_rise
 from verify.sim.resolution import stable_step, step_is_stable
 from verify.sim.run import simulate, step_count
 from verify.sim.scenario import Scenario
+from verify.sim.terminal import is_terminal, progress_wanted
 from verify.so3 import exp, orthogonality_error
 
 SWITCH_PERIOD = 15.0  # s, the reference changes in the paper's experiment (Section 4)
@@ -44,7 +45,7 @@ class SimulateSettings:
     autonomous: str = "consensus"
     reference: str = "constant"  # constant | switching
     network: Path | None = None
-    out: Path = Path("reports/simulation")
+    out: Path = Path("build/simulation")
     fmt: str = "npz"
     plots: bool = True
     check: bool = False  # also run the property checks (two more runs, h and h/2)
@@ -52,6 +53,7 @@ class SimulateSettings:
     operator_noise: float = 0.0  # std of white noise on u_h, held per loop period (model)
     measurement_noise: float = 0.0  # std of white noise on the logged e and u
     adaptive: float | None = None  # rtol of error-controlled steps (None: fixed step)
+    progress: bool = False  # show progress on stderr even when it is not a terminal
 
 
 def build_human(s: SimulateSettings) -> tuple[Human, str]:
@@ -114,11 +116,13 @@ def _ball(rng: np.random.Generator, count: int, radius: float) -> np.ndarray:
 
 
 class ProgressBar:
-    """A one-line progress bar on stderr (redrawn on a terminal, every 10% otherwise)."""
+    """A one-line progress bar on stderr (redrawn on a terminal, every 10% otherwise;
+    shown only where :func:`verify.sim.terminal.progress_wanted` says so)."""
 
-    def __init__(self, seconds: float, stream=sys.stderr) -> None:
-        self.seconds, self.stream = seconds, stream
-        self.tty = bool(getattr(stream, "isatty", lambda: False)())
+    def __init__(self, seconds: float, stream=None) -> None:
+        self.seconds = seconds
+        self.stream = sys.stderr if stream is None else stream
+        self.tty = is_terminal(self.stream)
         self.start = time.perf_counter()
         self.shown = -1
 
@@ -162,7 +166,9 @@ def run_simulate(s: SimulateSettings) -> int:
           f"{steps} steps of {seconds / steps:.4g} s, autonomous input {s.autonomous}, "
           f"reference {s.reference}")
     print(f"  human: {human_line}")
-    progress = ProgressBar(seconds) if steps >= 600 else None
+    print(f"  engine: {engine_line(scenario)}")
+    progress = (ProgressBar(seconds) if steps >= 600
+                and progress_wanted(sys.stderr, forced=s.progress) else None)
     every = max(1, round(0.1 / (seconds / steps)))  # bodies' directions at 10 Hz
     start = time.perf_counter()
     if rtol is None:
@@ -187,6 +193,22 @@ def run_simulate(s: SimulateSettings) -> int:
         paths.append(_write_log(s, traj, noises[1]))
     print("  wrote: " + ", ".join(str(p) for p in paths))
     return 0
+
+
+def engine_line(scenario: Scenario) -> str:
+    """Which engine integrates the scenario, and why when it is the slow Python one."""
+    from verify.sim import fused
+
+    if isinstance(fused.stepper(scenario), fused.CompiledStepper):
+        return "compiled kernels (numba)"
+    if not fused.laws_unmodified():
+        why = "a closed-loop law was replaced at run time"
+    elif fused.human_form(scenario.human) is None:
+        why = (f"the kernels do not model the human {type(scenario.human).__name__} "
+               "(e.g. --operator-noise: reaction times and held noise)")
+    else:
+        why = f"the kernels do not model the autonomous input {scenario.autonomous.name}"
+    return f"Python field (slow: {why})"
 
 
 def _check_log_settings(s: SimulateSettings) -> tuple[float, float]:
