@@ -136,7 +136,8 @@ EVIL = ['# Heading injected', '<script>alert(1)</script>', '<img src=x onerror=a
 def test_md_text_is_inert(evil):
     text = md_text(evil)
     assert "\n" not in text
-    assert not re.search(r"(?<!\\)[<>\[\]`|!&#]", text), text  # every opener escaped
+    assert not re.search(r"(?<!\\)[<>`|&#]", text), text  # every opener escaped
+    assert not re.search(r"(?<!\\)\]\(|(?<!\\)\]\[|^\[", text), text  # no link or image
     assert not re.match(r"\s*([-+=>*]|\d+[.)])", text), text  # no block starts
 
 

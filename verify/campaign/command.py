@@ -97,10 +97,16 @@ def _terminate_as_interrupt() -> Iterator[None]:
 
 def run_campaign_command(s: CampaignSettings) -> int:
     from verify.campaign.engine import run_campaign
-    from verify.campaign.execute import FAILED, column
+    from verify.campaign.execute import FAILED, UNRESOLVED, column
     from verify.campaign.progress import clock
     from verify.campaign.report import Campaign, write_report
-    from verify.campaign.runs import expand, spec_fingerprint, write_family_files
+    from verify.campaign.runs import (
+        distinct_humans,
+        iter_runs,
+        place_family_files,
+        run_total,
+        spec_fingerprint,
+    )
     from verify.campaign.store import ResultStore
     from verify.inputs.campaign_spec import load_campaign_spec
 
@@ -115,34 +121,32 @@ def run_campaign_command(s: CampaignSettings) -> int:
     out = s.out if s.out is not None else DEFAULT_OUT / s.spec.stem
     check_out(out)
     store = ResultStore(out / "results")
-    runs = expand(spec)
-    keys = {r.key for r in runs}
     stored = store.keys()
     if stored and not s.resume:
-        mine = len(stored & keys)
+        mine = sum(1 for r in iter_runs(spec) if r.key in stored)
         raise VerifyInputError(
             f"{store.folder} already holds {len(stored)} rows ({mine} of this campaign); "
             "pass --resume to continue without repeating them, or choose another --out")
     store.bind(spec_fingerprint(spec), spec.name)
-    runs = write_family_files(runs, out / "humans")
+    humans = place_family_files(distinct_humans(spec), out / "humans")
+    total = run_total(spec, humans)
     engine = (f"the Dask scheduler at {scheduler}" if scheduler
               else f"a LocalCluster of {workers} worker process(es), 1 thread each")
-    print(f"verify campaign: {spec.name}: {len(runs)} runs; properties "
-          f"{', '.join(spec.properties) or 'none'}; on {engine}")
-    done_before = len(stored & keys)
-    if done_before:
-        print(f"  resuming: {done_before} of {len(runs)} runs already stored in "
-              f"{store.folder}")
+    print(f"verify campaign: {spec.name}: {total} runs; properties "
+          f"{', '.join(spec.properties) or 'none'}; on {engine}", flush=True)
+    if stored:
+        print(f"  resuming: {len(stored)} rows already in {store.folder}", flush=True)
     try:
         with _terminate_as_interrupt():
-            outcome = run_campaign(runs, store, scheduler=scheduler, workers=workers,
-                                   progress=not s.quiet, force_progress=s.progress,
-                                   stream=sys.stderr)
+            outcome = run_campaign(iter_runs(spec, humans), store, scheduler=scheduler,
+                                   workers=workers, progress=not s.quiet,
+                                   force_progress=s.progress, stream=sys.stderr,
+                                   total=total)
     except KeyboardInterrupt:
-        have = len(store.keys() & keys)
-        print(f"verify campaign: interrupted; {have} of {len(runs)} rows stored in "
+        print(f"verify campaign: interrupted; {len(store.keys())} rows stored in "
               f"{store.folder}; rerun with --resume to continue", file=sys.stderr)
         raise
+    runs = list(iter_runs(spec, humans))
     rows = {row["key"]: row for row in store.rows([r.key for r in runs])}
     ran = outcome.written
     session = {
@@ -155,8 +159,11 @@ def run_campaign_command(s: CampaignSettings) -> int:
     paths = write_report(Campaign(spec, runs, rows), out, session)
     failed = sum(1 for row in rows.values() if any(
         row.get(column(p)) == FAILED for p in spec.properties))
+    unresolved = sum(1 for row in rows.values() if any(
+        row.get(column(p)) == UNRESOLVED for p in spec.properties))
     print(f"  {len(rows)} of {len(runs)} runs stored ({ran} this session in "
-          f"{clock(outcome.seconds)}); {failed} failed a property; {outcome.raised} raised"
+          f"{clock(outcome.seconds)}); {failed} failed a property; {unresolved} not resolved "
+          f"by the integration; {outcome.raised} raised"
           + (f"; {len(outcome.lost)} lost" if outcome.lost else ""))
     for key, why in outcome.lost[:5]:
         print(f"  lost {key}: {why}", file=sys.stderr)

@@ -109,8 +109,9 @@ class Code:
 Block = tuple[str, Any]  # ("h1" | "h2" | "p", text) or ("table" | "figure" | "code", obj)
 
 
-#: characters that can open Markdown or HTML constructs anywhere in a line
-_MD_SPECIAL = re.compile(r"([\\`*\[\]<>&|!#])")
+#: characters that can open Markdown or HTML constructs anywhere in a line (a link or
+#: image needs "](" or "][" after its text, so "[gate]" labels stay as they read)
+_MD_SPECIAL = re.compile(r"([\\`*<>&|#]|\](?=[(\[]))")
 #: what opens a block (list, quote, heading, rule, ordered list) at a line's start
 _MD_BLOCK_START = re.compile(r"^(\s*)([-+=~_])")
 _MD_ORDERED = re.compile(r"^(\s*\d+)([.)])")
@@ -122,6 +123,8 @@ def md_text(text: str) -> str:
     backslash-escaped (CommonMark: any ASCII punctuation may be escaped)."""
     line = " ".join(str(text).split())
     line = _MD_SPECIAL.sub(r"\\\1", line)
+    if line.startswith("["):  # "[label]: url" at a line's start defines a link
+        line = "\\" + line
     line = _MD_ORDERED.sub(r"\1\\\2", line)
     return _MD_BLOCK_START.sub(r"\1\\\2", line)
 

@@ -19,6 +19,7 @@ import functools
 import hashlib
 import itertools
 import json
+from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
 from pathlib import Path
@@ -188,43 +189,87 @@ def _distinct_labels(humans: list[Human]) -> list[Human]:
             if len(identities[h.label]) > 1 and h.sha256 else h for h in humans]
 
 
-def expand(spec: CampaignSpec) -> list[Run]:
-    """Every run of ``spec``, in a fixed order (humans, k_s, n, autonomous, reference,
-    seconds, step, seeds), runs with equal keys merged."""
+def _distinct(values: tuple) -> list:
+    """The values in order, repeats dropped (floats by exact value, as in the key)."""
+    seen: dict[object, object] = {}
+    for v in values:
+        seen.setdefault(float(v).hex() if isinstance(v, float) else v, v)
+    return list(seen.values())
+
+
+def distinct_humans(spec: CampaignSpec) -> list[Human]:
+    """The spec's humans, one per identity (equal model files are one human)."""
     humans = _distinct_labels([h for entry in spec.humans for h in _humans(entry)])
-    runs: dict[str, Run] = {}
-    for human, k_s, n, auto, ref, T, h, seed in itertools.product(
-            humans, spec.k_s, spec.n, spec.autonomous, spec.reference, spec.seconds,
-            spec.step, spec.seeds):
+    seen: dict[tuple[object, ...], Human] = {}
+    for h in humans:
+        seen.setdefault(tuple(h.identity().items()), h)
+    return list(seen.values())
+
+
+def _axes(spec: CampaignSpec) -> list[list]:
+    return [_distinct(a) for a in (spec.k_s, spec.n, spec.autonomous, spec.reference,
+                                   spec.seconds, spec.step, spec.seeds)]
+
+
+def run_total(spec: CampaignSpec, humans: list[Human] | None = None) -> int:
+    """How many runs :func:`iter_runs` yields (without expanding them)."""
+    count = len(distinct_humans(spec) if humans is None else humans)
+    for axis in _axes(spec):
+        count *= len(axis)
+    return count
+
+
+def iter_runs(spec: CampaignSpec, humans: list[Human] | None = None) -> Iterator[Run]:
+    """Every run of ``spec``, lazily, in a fixed order (humans, k_s, n, autonomous,
+    reference, seconds, step, seeds). Humans and axis values are made distinct first, so
+    the runs' keys are distinct with no set of keys held. ``humans`` (from
+    :func:`distinct_humans`, e.g. with file paths set) replaces the spec's."""
+    humans = distinct_humans(spec) if humans is None else humans
+    for human, k_s, n, auto, ref, T, h, seed in itertools.product(humans, *_axes(spec)):
         key = run_key(human, k_s, n, seed, auto, ref, T, h, spec.properties,
                       spec.convergence_threshold)
-        runs.setdefault(key, Run(key, human, k_s, n, seed, auto, ref, T, h, spec.properties,
-                                 spec.convergence_threshold))
-    return list(runs.values())
+        yield Run(key, human, k_s, n, seed, auto, ref, T, h, spec.properties,
+                  spec.convergence_threshold)
 
 
-def write_family_files(runs: list[Run], folder: Path) -> list[Run]:
+def expand(spec: CampaignSpec) -> list[Run]:
+    """Every run of ``spec`` as a list (:func:`iter_runs`)."""
+    return list(iter_runs(spec))
+
+
+def place_family_files(humans: list[Human], folder: Path) -> list[Human]:
     """Write the model files of drawn humans into ``folder`` (atomically) and return the
-    runs with those paths set, so that their reproducing commands can name a file."""
+    humans with those paths set, so that their reproducing commands can name a file."""
     from dataclasses import replace
 
     from verify.report.atomic import write_atomic
 
-    placed: dict[str, Path] = {}
     out = []
-    for run in runs:
-        human = run.human
+    for human in humans:
         if human.kind == "model" and human.path is None and human.text is not None:
-            if human.sha256 not in placed:
-                stem = human.label.replace(" ", "-")
-                path = folder / f"{stem}-{human.sha256[:12]}.toml"
-                if not (path.is_file() and path.read_bytes() == human.text):
-                    write_atomic(path, human.text)
-                placed[human.sha256] = path
-            run = replace(run, human=replace(human, path=placed[human.sha256]))
-        out.append(run)
+            stem = human.label.replace(" ", "-")
+            path = folder / f"{stem}-{human.sha256[:12]}.toml"
+            if not (path.is_file() and path.read_bytes() == human.text):
+                write_atomic(path, human.text)
+            human = replace(human, path=path)
+        out.append(human)
     return out
 
 
-__all__ = ["Human", "Run", "exact_decimal", "expand", "family_member", "model_file_text",
-           "run_key", "spec_fingerprint", "write_family_files"]
+def write_family_files(runs: list[Run], folder: Path) -> list[Run]:
+    """The runs with their drawn humans' model files written (:func:`place_family_files`)."""
+    from dataclasses import replace
+
+    placed: dict[tuple[object, ...], Human] = {}
+    out = []
+    for run in runs:
+        ident = tuple(run.human.identity().items())
+        if ident not in placed:
+            placed[ident] = place_family_files([run.human], folder)[0]
+        out.append(replace(run, human=placed[ident]))
+    return out
+
+
+__all__ = ["Human", "Run", "distinct_humans", "exact_decimal", "expand", "family_member",
+           "iter_runs", "model_file_text", "place_family_files", "run_key", "run_total",
+           "spec_fingerprint", "write_family_files"]

@@ -124,6 +124,9 @@ class RunPair:
         if use_storage not in self._energies:
             self._energies[use_storage] = (energy(self.coarse, use_storage),
                                            energy(self.fine, use_storage))
+            human, x0 = self.coarse.scenario.human, self.coarse.human_state[0]
+            if human.storage(x0) is None:  # no storage: both choices are the supply
+                self._energies[not use_storage] = self._energies[use_storage]
         return self._energies[use_storage]
 
     @classmethod
