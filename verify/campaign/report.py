@@ -23,6 +23,7 @@ there.
 
 from __future__ import annotations
 
+import functools
 import html
 import math
 import re
@@ -157,14 +158,20 @@ def render_markdown(blocks: Sequence[Block]) -> str:
     return "\n".join(out).rstrip("\n") + "\n"
 
 
+#: the campaign report's own additions to the main report's style: code blocks wrap
+#: (a reproducing command is never cut off), figures fit the page, tables keep margins
+_CAMPAIGN_CSS = ("pre{background:#f6f6f6;padding:.6em;white-space:pre-wrap;"
+                 "overflow-wrap:anywhere}img{max-width:100%}table{margin:.6em 0 1em}")
+
+
 def render_html(blocks: Sequence[Block], title: str) -> str:
+    """HTML in the style of the main report (``verify all``'s report.html)."""
+    from verify.report.render import _CSS
+
     e = html.escape
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-           f"<title>{e(title)}</title>",
-           "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;}"
-           "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;"
-           "padding:2px 6px;text-align:left}pre{background:#f4f4f4;padding:0.6em;"
-           "overflow-x:auto}img{max-width:100%}</style>", "</head><body>"]
+    out = ["<!doctype html>", "<html lang='en'><head><meta charset='utf-8'>",
+           f"<title>{e(title)}</title>", f"<style>{_CSS}{_CAMPAIGN_CSS}</style>",
+           "</head><body>"]
     for kind, item in blocks:
         if kind in ("h1", "h2"):
             out.append(f"<{kind}>{e(item)}</{kind}>")
@@ -273,15 +280,17 @@ def _cell_text(counts: dict[str, int], total: int) -> str:
     text = f"{counts[HELD]}/{total} held"
     notes = [f"{counts[FAILED]} FAILED"] if counts[FAILED] else []
     if counts[ASSUMPTION]:
-        notes.append(f"{counts[ASSUMPTION]} assumption failed: conclusion held without the "
-                     f"assumption in {counts[ANYWAY]}, failed in {counts[NOT_ANYWAY]}")
+        note = (f"conclusion held without the assumption in {counts[ANYWAY]} of "
+                f"{counts[ASSUMPTION]}")
+        notes.append(note + (f", FAILED in {counts[NOT_ANYWAY]}" if counts[NOT_ANYWAY]
+                             else ""))
     if counts[UNRESOLVED]:
         notes.append(f"{counts[UNRESOLVED]} UNRESOLVED (integration)")
     if counts["error"]:
         notes.append(f"{counts['error']} raised")
     if counts[NOT_APPLICABLE]:
         notes.append(f"{counts[NOT_APPLICABLE]} n/a")
-    return text + (f" ({'; '.join(notes)})" if notes else "")
+    return text + (f"; {'; '.join(notes)}" if notes else "")
 
 
 def convergence_summary(pairs: Sequence[tuple[Run, dict[str, Any]]]) -> tuple[
@@ -312,6 +321,15 @@ def _pyplot():
     import matplotlib.pyplot as plt
 
     return plt
+
+
+@functools.cache
+def _light_map():
+    """Light red to light green (dark text stays readable on every cell)."""
+    from matplotlib.colors import LinearSegmentedColormap
+
+    return LinearSegmentedColormap.from_list("held", ["#f4c7c3", "#fdf2c4", "#cfe8d0"])
+
 
 
 def property_figure(c: Campaign) -> bytes:
@@ -346,7 +364,7 @@ def property_figure(c: Campaign) -> bytes:
                 if counts[UNRESOLVED]:
                     label += f"\n{counts[UNRESOLVED]} unres."
                 ax.text(j, i, label, ha="center", va="center", fontsize=6)
-        cmap = plt.get_cmap("RdYlGn").with_extremes(bad="0.85")
+        cmap = _light_map().with_extremes(bad="#eeeeee")
         ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
         ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
         first = ax in axes[:, 0]
@@ -367,7 +385,9 @@ def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
     plt = _pyplot()
     cells = c.cells()
     fig, ax = plt.subplots(figsize=(6.4, 3.8))
-    top = max(r.seconds for r in c.runs)
+    highest = [max(times) for pairs in cells.values()
+               for times in [convergence_summary(pairs)[0]] if times]
+    top = 1.12 * max(highest) if highest else max(r.seconds for r in c.runs)
     for i, s in enumerate(c.settings()):
         xs, med, lo, hi, miss = [], [], [], [], []
         for k in c.k_values():
@@ -383,12 +403,13 @@ def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
         ax.errorbar(xs, med, yerr=[lo, hi], color=color, marker="o", capsize=3,
                     label=f"{s} [{gates.get(s, '')}]")
         if miss:
-            ax.plot(miss, [top * (1.03 + 0.02 * i)] * len(miss), "x", color=color)
-    ax.axhline(top, color="k", lw=0.5, ls="--")
+            ax.plot(miss, [top * (1.0 + 0.02 * i)] * len(miss), "x", color=color)
+    ax.axhline(top, color="0.6", lw=0.5, ls="--")
+    ax.set_ylim(0.0, top * (1.06 + 0.02 * len(c.settings())))  # fitted to the data
     ax.set_xlabel("k_s")
     ax.set_ylabel("convergence time [s]")
     ax.set_title(f"|dbar - d_r| < {c.spec.convergence_threshold:g} from then on "
-                 "(x: not converged by T)", fontsize=9)
+                 "(x above the dashed line: not converged by T)", fontsize=9)
     ax.legend(fontsize=7)
     return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
 
@@ -426,8 +447,10 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         ("run lengths", spec.seconds), ("steps", spec.step)) if len(v) > 1)
     blocks.append(("p", f"{len(c.runs)} runs ({axes or 'one setting'}); {len(stored)} stored, "
                    f"{len(raised)} raised. Properties checked: "
-                   f"{', '.join(spec.properties) or 'none'}, each with runs at steps h and "
-                   "h/2 (the step-doubling tolerance of verify.sim.properties). Spec "
+                   f"{', '.join(spec.properties) or 'none'}, all from one pair of runs at "
+                   "steps h and h/2 (the step-doubling tolerance of verify.sim.properties; "
+                   "error-controlled steps where the fixed step cannot resolve the loop, "
+                   "and unresolved, never held, where neither can). Spec "
                    f"sha256 {spec.source_sha256[:16] or '-'}."))
 
     gates = {}
