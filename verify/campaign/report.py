@@ -49,6 +49,7 @@ from verify.inputs.campaign_spec import CampaignSpec
 
 TIMINGS_HEADING = "Timings (not reproducible)"
 MAX_LISTED = 200  # failing runs listed in the report text (all are in commands.txt)
+MAX_ANNOTATED = 300  # cells of the property map written in; beyond, colours only
 
 PROPERTY_TITLE = {
     "stealthiness": "stealthiness (Section 2: dbar unchanged by the autonomous input)",
@@ -217,31 +218,44 @@ def setting(run: Run, axes: Sequence[str]) -> str:
 
 @dataclass
 class Campaign:
-    """Runs and rows of a campaign, and the aggregates the report shows."""
+    """Runs and rows of a campaign, and the aggregates the report shows (each computed
+    once: the report reads them many times, and a sweep may hold 10^5 runs)."""
 
     spec: CampaignSpec
     runs: list[Run]
     rows: dict[str, dict[str, Any]]
 
-    @property
+    @functools.cached_property
     def axes(self) -> list[str]:
         return varying(self.runs)
 
+    @functools.cached_property
+    def _setting_of(self) -> list[str]:
+        axes, labels = self.axes, {}
+        out = []
+        for r in self.runs:  # setting labels per (human, other axes), built once each
+            ident = (r.human.label, *(getattr(r, a) for a in axes))
+            if ident not in labels:
+                labels[ident] = setting(r, axes)
+            out.append(labels[ident])
+        return out
+
     def settings(self) -> list[str]:
-        seen: dict[str, None] = {}
-        for r in self.runs:
-            seen.setdefault(setting(r, self.axes), None)
-        return list(seen)
+        return list(dict.fromkeys(self._setting_of))
 
     def k_values(self) -> list[float]:
         return sorted({r.k_s for r in self.runs})
 
-    def cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
+    @functools.cached_property
+    def _cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
         out: dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]] = defaultdict(list)
-        for r in self.runs:
+        for r, s in zip(self.runs, self._setting_of, strict=True):
             if r.key in self.rows:
-                out[setting(r, self.axes), r.k_s].append((r, self.rows[r.key]))
+                out[s, r.k_s].append((r, self.rows[r.key]))
         return out
+
+    def cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
+        return self._cells
 
     def humans(self) -> list[Human]:
         seen: dict[tuple[object, ...], Human] = {}
@@ -344,11 +358,13 @@ def property_figure(c: Campaign) -> bytes:
     cells = c.cells()
     cols = min(3, len(props))
     rows = -(-len(props) // cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(2.0 + (0.8 + 0.45 * len(ks)) * cols,
-                                                  (0.9 + 0.5 * len(settings)) * rows + 0.5),
-                             squeeze=False, layout="constrained")
+    size = (2.0 + (0.8 + 0.45 * min(len(ks), 30)) * cols,
+            (0.9 + 0.5 * min(len(settings), 60)) * rows + 0.5)
+    fig, axes = plt.subplots(rows, cols, figsize=size, squeeze=False, layout="constrained")
     for ax in axes.flat[len(props):]:
         ax.set_visible(False)
+    annotate = len(settings) * len(ks) <= MAX_ANNOTATED  # else colours only
+    ticks = range(0, len(ks), max(1, -(-len(ks) // 30)))  # at most 30 k_s labels
     for ax, prop in zip(axes.flat, props, strict=False):
         grid = np.full((len(settings), len(ks)), np.nan)
         for i, s in enumerate(settings):
@@ -358,6 +374,8 @@ def property_figure(c: Campaign) -> bytes:
                 judged = counts[HELD] + counts[FAILED] + counts[ANYWAY] + counts[NOT_ANYWAY]
                 if judged:  # colour: the conclusion, with or without the assumptions
                     grid[i, j] = (counts[HELD] + counts[ANYWAY]) / judged
+                if not annotate:
+                    continue
                 label = "n/a" if not pairs else f"{counts[HELD]}/{len(pairs)}"
                 if counts[ASSUMPTION]:
                     label += f"\n+{counts[ANYWAY]}/{counts[ASSUMPTION]} w/o"
@@ -366,7 +384,7 @@ def property_figure(c: Campaign) -> bytes:
                 ax.text(j, i, label, ha="center", va="center", fontsize=6)
         cmap = _light_map().with_extremes(bad="#eeeeee")
         ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
-        ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
+        ax.set_xticks(list(ticks), [f"{ks[j]:g}" for j in ticks], fontsize=7)
         first = ax in axes[:, 0]
         ax.set_yticks(range(len(settings)), settings if first else [""] * len(settings),
                       fontsize=7)
@@ -466,7 +484,8 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
                ("table", Table(["human", "file", "sha256", "gate", "reason"], human_rows))]
 
     settings, ks, cells = c.settings(), c.k_values(), c.cells()
-    gate_of = {setting(r, c.axes): gates.get(r.human.label, "") for r in c.runs}
+    gate_of = {s: gates.get(r.human.label, "") for r, s in zip(c.runs, c._setting_of,
+                                                               strict=True)}
     header = ["setting [gate]", *[f"k_s = {k:g}" for k in ks]]
     blocks.append(("h2", "Properties over the swept parameters"))
     if c.axes:
