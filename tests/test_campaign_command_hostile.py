@@ -163,3 +163,13 @@ def test_a_code_block_cannot_be_closed_by_its_content():
     text = render_markdown([("code", Code("verify simulate --model 'a```b.toml'"))])
     fence = text.splitlines()[0]
     assert set(fence) == {"`"} and len(fence) > 3 and text.splitlines()[2] == fence
+
+
+def test_the_campaign_record_is_written_with_the_first_rows(tmp_path):
+    spec = load_campaign_spec(spec_file(tmp_path))
+    store = ResultStore(tmp_path / "results")
+    store.bind(spec_fingerprint(spec), spec.name)
+    assert not store.folder.exists()  # a refused or failed start leaves nothing
+    store.append([execute_run(expand(spec)[0])])
+    assert (store.folder / "campaign.json").is_file()
+    ResultStore(store.folder).bind(spec_fingerprint(spec), spec.name)  # same campaign: fine

@@ -190,3 +190,38 @@ def test_report_shows_conclusions_held_without_the_assumption(tmp_path):
     assert "## What held outside the assumptions" in text
     assert f"conclusion held without the assumption in {anyway} of 2" in text
     assert f"| lasalle | reconstructed k_s = 2.5 [not passive] | 2 | {anyway} (k_s 3)" in text
+
+
+# ---------------------------------------------------------------- attacks on "resolved"
+
+
+def test_attack_stable_but_inaccurate_step_is_not_a_false_verdict():
+    """2 k_s h = 2.6: inside the stability bound but far from accurate. Whatever the
+    checks say must be what a fine, stable pair says, or unresolved."""
+    k_s = 2.6 / (2 * H)
+    sc = scenario(k_s, seconds=1.0, autonomous="zero", human="static", gain=0.0)
+    assert step_is_stable(sc, H)
+    checked = check_scenario(sc, 1.0, H)
+    reference = props.RunPair.of(sc, 1.0, H / 16)
+    for name, result in checked.results.items():
+        if result is not None and result.resolved:
+            assert result.status == CHECKS[name](reference).status, (name, result.line())
+
+
+def test_attack_a_stiff_human_with_a_small_gain():
+    """k_s = 1 but the human's state decays at 1e4 /s: the bound counts the human's rate,
+    so the fixed 1/120 s step is not trusted and nothing is held on it."""
+    import numpy as np
+
+    from verify.sim.humans import LTIHuman
+
+    stiff = LTIHuman(-1e4 * np.eye(2), 1e4 * np.eye(2), np.eye(2), np.zeros((2, 2)))
+    sc = scenario(1.0, seconds=0.5, autonomous="zero")
+    sc.human = stiff
+    assert stiffness(sc) >= 1e4 and not step_is_stable(sc, H)
+    pair = props.RunPair.of(sc, 0.5, H)
+    assert all(CHECKS[p](pair).status is props.Status.UNRESOLVED for p in CHECKS)
+    checked = check_scenario(sc, 0.5, H)
+    assert checked.engine != "fixed"
+    assert all(r.status is not props.Status.HELD for r in checked.results.values()
+               if r is not None and not r.resolved)

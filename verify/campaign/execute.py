@@ -160,7 +160,7 @@ def simulate_run(run: Run) -> dict[str, Any]:
         out[f"{column(p)}_tolerance"] = _finite(result.tolerance)
         if result.conclusion is not None:
             out[f"{column(p)}_conclusion"] = HELD if result.conclusion else FAILED
-    if checked.pair is not None:
+    if checked.pair is not None and checked.pair.finite:
         out.update(_figures(run, checked.pair.coarse, checked.pair.energies(True)[0]))
     return out
 

@@ -11,7 +11,7 @@ two writers on one folder.
 
 ``campaign.json`` in the folder names the campaign the store belongs to (the spec's
 fingerprint, :func:`verify.campaign.runs.spec_fingerprint`, and name): it is written
-before the first part, and a store of another campaign is refused before any run.
+with the first part, and a store of another campaign is refused before any run.
 """
 
 from __future__ import annotations
@@ -63,6 +63,7 @@ class ResultStore:
         if self.folder.exists() and not self.folder.is_dir():
             raise VerifyInputError(f"{self.folder}: the result store must be a folder")
         self._keys: set[str] | None = None
+        self._record: dict[str, str] | None = None  # campaign.json to write (bind)
 
     MANIFEST = "campaign.json"
 
@@ -91,9 +92,8 @@ class ResultStore:
             raise VerifyInputError(f"{self.folder} holds rows with no record of their "
                                    f"campaign ({self.MANIFEST} is missing): choose another "
                                    "--out")
-        self.folder.mkdir(parents=True, exist_ok=True)
-        record = {"spec_fingerprint": fingerprint, "name": name}
-        write_atomic(manifest, json.dumps(record, sort_keys=True, indent=1) + "\n")
+        # written with the first rows, so that a refused or failed start leaves nothing
+        self._record = {"spec_fingerprint": fingerprint, "name": name}
 
     def parts(self) -> list[Path]:
         """The part files, in the order they were written."""
@@ -130,6 +130,9 @@ class ResultStore:
         table = pa.Table.from_pylist([{f.name: r.get(f.name) for f in SCHEMA} for r in fresh],
                                      schema=SCHEMA)
         self.folder.mkdir(parents=True, exist_ok=True)
+        manifest = self.folder / self.MANIFEST
+        if self._record is not None and not manifest.exists():
+            write_atomic(manifest, json.dumps(self._record, sort_keys=True, indent=1) + "\n")
         name = f"part-{time.time_ns():020d}-{uuid.uuid4().hex[:8]}.parquet"
         sink = pa.BufferOutputStream()
         pq.write_table(table, sink)

@@ -155,6 +155,12 @@ class RunPair:
         """The pair of another scenario, integrated the same way (same T, h, engine)."""
         return RunPair.of(scenario, self.seconds, self.coarse.h, rtol=self.rtol)
 
+    @property
+    def finite(self) -> bool:
+        """Whether both runs stayed finite (an unstable step can overflow)."""
+        return all(bool(np.all(np.isfinite(a))) for t in (self.coarse, self.fine)
+                   for a in (t.R_bar, t.R_l, t.x))
+
     def unresolved(self, tolerance: float, scale: float) -> str:
         """Why a check with this tolerance on a quantity of this scale cannot decide
         (empty when it can)."""
@@ -180,6 +186,15 @@ class RunPair:
         return SAFETY * float(self.error(coarse, fine).max()) + self.floor(scale)
 
 
+def _overflowed(name: str, pair: RunPair) -> PropertyResult | None:
+    """An unresolved result when a run of the pair left the finite numbers."""
+    if pair.finite:
+        return None
+    nan = float("nan")
+    return PropertyResult(name, None, nan, nan, resolved=False,
+                          why_unresolved="a run of the pair overflowed (non-finite state)")
+
+
 def _coherent(traj: Trajectory) -> bool:
     return bool(traj.weakest_coherence > COHERENCE_MIN)
 
@@ -199,6 +214,8 @@ def stealthiness(scenario: Scenario | RunPair, seconds: float | None = None,
         if seconds is None:
             raise TypeError("stealthiness(scenario, seconds, h) needs the run length")
         with_a = RunPair.of(scenario, seconds, h)
+    if (bad := _overflowed("stealthiness", with_a)) is not None:
+        return bad
     plain = type(scenario.autonomous) is Autonomous
     without = with_a if plain else with_a.like(replace(scenario, autonomous=Autonomous()))
     violation = float(np.max(np.linalg.norm(with_a.coarse.dbar - without.coarse.dbar, axis=1)))
@@ -212,6 +229,8 @@ def stealthiness(scenario: Scenario | RunPair, seconds: float | None = None,
 
 def quasi_average_axis(pair: RunPair) -> PropertyResult:
     """max_t |R-bar(t) e3 - dbar(t)| (Section 3: R-bar e3 stays equal to dbar)."""
+    if (bad := _overflowed("R-bar e3 = dbar", pair)) is not None:
+        return bad
     c, f = pair.coarse, pair.fine
     violation = float(np.max(np.linalg.norm(c.R_bar @ E3 - c.dbar, axis=1)))
     tol = pair.tolerance(c.dbar, f.dbar) + pair.tolerance(c.R_bar @ E3, f.R_bar @ E3)
@@ -251,6 +270,8 @@ def lemma1_invariance(pair: RunPair) -> PropertyResult:
     The samples after the first loss of sym(R_rl) > 0 in a segment are not checked: the
     lemma says nothing about them.
     """
+    if (bad := _overflowed("Lemma 1 invariance", pair)) is not None:
+        return bad
     Ec, Ef = pair.energies(False)
     segs = _segments(pair.coarse)
     kept = [_while(Ec.lmin_rl > 0, s) for s in segs]
@@ -275,6 +296,8 @@ def lyapunov_decrease(pair: RunPair, use_storage: bool = True) -> PropertyResult
     With ``use_storage`` and a human carrying a KYP storage x^T P x / 2, S_h is that
     storage (passivity is then used); otherwise S_h is the running supply integral.
     """
+    if (bad := _overflowed("Lyapunov decrease", pair)) is not None:
+        return bad
     Ec, Ef = pair.energies(use_storage)
     V_c, V_f = Ec.V, Ef.V
     segs = _segments(pair.coarse)
@@ -309,6 +332,8 @@ def lasalle_convergence(pair: RunPair, fraction: float = 0.1) -> PropertyResult:
     Relative to the peak, not the start: a run may start at dbar = d_r with the leader
     elsewhere, so that dbar first moves away (found by the deep hypothesis profile).
     """
+    if (bad := _overflowed("LaSalle convergence", pair)) is not None:
+        return bad
     c, f = pair.coarse, pair.fine
     d_r = c.R_r[:, :, 2]
     err_c = np.linalg.norm(c.dbar - d_r, axis=1)
