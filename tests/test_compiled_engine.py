@@ -240,3 +240,29 @@ def test_whole_run_kernel_stops_where_dbar_is_lost():
     _, _, k, status = run_fixed(st, rec, Y, x, 5, 10, 0.01)
     assert (k, status) == (5, kernels.DBAR_UNDEFINED)
     assert np.array_equal(rec.R_l[5], np.eye(3))  # sample 5 is the state the step left from
+
+
+# ---------------------------------------------------------------- the noisy operator
+
+
+@pytest.mark.parametrize("adaptive", [False, True])
+def test_noisy_operator_compiled_equals_the_python_field(adaptive):
+    """ReactingNoisyHuman on the kernels (opt-in, engine="compiled"): held noise on the
+    output and no B e, D e before each reaction, as the Python field to rounding."""
+    from verify.sim.noisy_humans import ReactingNoisyHuman
+
+    rng = np.random.default_rng(5)
+    ref = Reference.switching([so3.exp(v) for v in 0.7 * rng.standard_normal((3, 3))], 0.5)
+    A = np.array([[-0.5, 2.0], [-2.0, -0.5]])
+    human = ReactingNoisyHuman(A, np.array([[1.0, 0.3], [0.0, 1.0]]), np.eye(2),
+                               0.2 * np.eye(2), noise=0.05 * rng.standard_normal((200, 2)),
+                               reaction=[10, 25, 5], reference=ref, h=1 / 120)
+    sc = _scenario(human, "consensus", reference=ref)
+    assert not isinstance(stepper(sc), CompiledStepper)  # "auto" keeps the definition
+    assert isinstance(stepper(sc, "compiled"), CompiledStepper)
+    kw = {"adaptive": True, "rtol": 1e-9, "atol": 1e-11} if adaptive else {}
+    fast = simulate(sc, 1.4, 1 / 120, engine="compiled", **kw)
+    slow = simulate(sc, 1.4, 1 / 120, engine="python", **kw)
+    assert np.max(np.abs(fast.R_l - slow.R_l)) < 1e-12
+    assert np.max(np.abs(fast.x - slow.x)) < 1e-12
+    assert np.max(np.abs(fast.dbar - slow.dbar)) < 1e-12

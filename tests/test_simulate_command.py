@@ -153,6 +153,23 @@ def test_progress_rule_is_shared_with_campaigns():
     assert not CampaignProgress(20, 0, stream=io.StringIO()).enabled
 
 
+def test_the_slow_engine_says_why():
+    from verify.sim.command import SimulateSettings, build_human, build_scenario, engine_line
+    from verify.sim.humans import Human
+
+    class Custom(Human):  # a human the kernels do not know
+        name = "custom"
+
+        def command(self, t, x, e, R_l, held):
+            return np.zeros(3)
+
+    s = SimulateSettings(seconds=1.0)
+    sc = build_scenario(s, build_human(s)[0])
+    sc.human = Custom()
+    assert engine_line(sc) == ("Python field (slow: the kernels do not model the human "
+                               "Custom)")
+
+
 def test_the_engine_is_named_and_the_slow_one_explained(tmp_path):
     fast = run_cli("simulate", "--seconds", "0.5", "--no-plots", "--out", str(tmp_path / "a"))
     assert "engine: compiled kernels (numba)" in fast.stdout
@@ -160,8 +177,10 @@ def test_the_engine_is_named_and_the_slow_one_explained(tmp_path):
     slow = run_cli("simulate", "--model", str(model), "--seconds", "0.5", "--no-plots",
                    "--operator-noise", "0.01", "--out", str(tmp_path / "b"))
     assert slow.returncode == 0, slow.stderr
-    assert "engine: Python field (slow: the kernels do not model the human " \
-           "ReactingNoisyHuman" in slow.stdout
+    assert "engine: compiled kernels (numba)" in slow.stdout  # the noisy operator too
+    patched = run_cli("simulate", "--seconds", "0.5", "--no-plots", "--autonomous", "random",
+                      "--human", "static", "--out", str(tmp_path / "c"))
+    assert "engine: compiled" in patched.stdout  # a signal input is compiled as well
 
 
 def test_help_documents_format_gain_and_where_outputs_go():

@@ -166,16 +166,18 @@ def run_simulate(s: SimulateSettings) -> int:
           f"{steps} steps of {seconds / steps:.4g} s, autonomous input {s.autonomous}, "
           f"reference {s.reference}")
     print(f"  human: {human_line}")
-    print(f"  engine: {engine_line(scenario)}")
+    engine = "compiled" if noises[0] > 0 and fused_models(scenario) else "auto"
+    print(f"  engine: {engine_line(scenario, engine)}")
     progress = (ProgressBar(seconds) if steps >= 600
                 and progress_wanted(sys.stderr, forced=s.progress) else None)
     every = max(1, round(0.1 / (seconds / steps)))  # bodies' directions at 10 Hz
     start = time.perf_counter()
     if rtol is None:
-        traj = simulate(scenario, seconds, step, direction_every=every, progress=progress)
+        traj = simulate(scenario, seconds, step, direction_every=every, progress=progress,
+                        engine=engine)
     else:
         traj = simulate(scenario, seconds, step, direction_every=every, progress=progress,
-                        adaptive=True, rtol=rtol, atol=rtol / 100)
+                        adaptive=True, rtol=rtol, atol=rtol / 100, engine=engine)
         print(f"  adaptive steps (rtol {rtol:g}, atol {rtol / 100:g}): {traj.steps} accepted, "
               f"{traj.rejected_steps} rejected; samples every {seconds / steps:.4g} s")
     wall = time.perf_counter() - start
@@ -195,17 +197,26 @@ def run_simulate(s: SimulateSettings) -> int:
     return 0
 
 
-def engine_line(scenario: Scenario) -> str:
+def fused_models(scenario: Scenario) -> bool:
+    """Whether the compiled kernels can integrate the scenario when asked to."""
+    from verify.sim import fused
+
+    try:
+        return isinstance(fused.stepper(scenario, "compiled"), fused.CompiledStepper)
+    except VerifyInputError:
+        return False
+
+
+def engine_line(scenario: Scenario, engine: str = "auto") -> str:
     """Which engine integrates the scenario, and why when it is the slow Python one."""
     from verify.sim import fused
 
-    if isinstance(fused.stepper(scenario), fused.CompiledStepper):
+    if isinstance(fused.stepper(scenario, engine), fused.CompiledStepper):
         return "compiled kernels (numba)"
     if not fused.laws_unmodified():
         why = "a closed-loop law was replaced at run time"
     elif fused.human_form(scenario.human) is None:
-        why = (f"the kernels do not model the human {type(scenario.human).__name__} "
-               "(e.g. --operator-noise: reaction times and held noise)")
+        why = f"the kernels do not model the human {type(scenario.human).__name__}"
     else:
         why = f"the kernels do not model the autonomous input {scenario.autonomous.name}"
     return f"Python field (slow: {why})"

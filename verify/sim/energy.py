@@ -63,8 +63,8 @@ def _batched(traj: Trajectory, uses: bool) -> tuple[Array, Array | None] | None:
     s = traj.scenario
     human = s.human
     form = fused.human_form(human)
-    if form is None or not fused.laws_unmodified():
-        return None
+    if form is None or form[4] == "noisy" or not fused.laws_unmodified():
+        return None  # the noisy operator's held values are read by the loop below
     A, B, C, D, command = form
     Rb, Rl, Rr, x = traj.R_bar, traj.R_l, traj.R_r, traj.human_state
     T, k = traj.t.shape[0], D.shape[0]
