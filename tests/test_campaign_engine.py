@@ -22,7 +22,7 @@ import pytest
 
 from verify.campaign.engine import run_campaign
 from verify.campaign.execute import execute_run
-from verify.campaign.runs import expand
+from verify.campaign.runs import expand, spec_fingerprint
 from verify.campaign.store import ResultStore
 from verify.cli import main
 from verify.inputs.campaign_spec import load_campaign_spec
@@ -159,6 +159,7 @@ def test_the_command_resumes_and_reports(tmp_path, capsys, runs):
     spec.write_text(SPEC)
     out = tmp_path / "out"
     store = ResultStore(out / "results")
+    store.bind(spec_fingerprint(load_campaign_spec(spec)), "engine test")
     early = [execute_run(r) for r in runs[:3]]
     store.append(early)
     assert main(["campaign", str(spec), "--out", str(out), "--workers", "1", "--quiet"]) == 2
@@ -166,7 +167,7 @@ def test_the_command_resumes_and_reports(tmp_path, capsys, runs):
     assert main(["campaign", str(spec), "--out", str(out), "--workers", "1", "--quiet",
                  "--resume"]) == 0
     text = capsys.readouterr().out
-    assert f"resuming: 3 of {len(runs)} runs already stored" in text
+    assert "resuming: 3 rows already in" in text
     assert f"{len(runs) - 3} this session" in text
     rows = check_store(ResultStore(out / "results"), runs)
     by_key = {r["key"]: r for r in rows}
@@ -207,3 +208,69 @@ def test_the_small_shipped_spec(tmp_path, capsys):
         assert r["lyapunov"] == expected and r["lemma1"] == "held"
     report = (out / "campaign.md").read_text()
     assert "reconstructed k_s = 2.5 [not passive]" in report
+
+
+# ---------------------------------------------------------------- a million runs
+
+MILLION = """name = "million"
+[sweep]
+k_s = {from = 1, to = 1000, step = 1}
+n = 2
+seeds = {from = 0, count = 1000}
+seconds = 0.02
+step = "1/60"
+[[humans]]
+kind = "vr"
+[checks]
+properties = ["lemma1"]
+"""
+
+
+def _rss_kib(pid: int) -> int:
+    with open(f"/proc/{pid}/status") as f:
+        return int(next(ln for ln in f if ln.startswith("VmRSS")).split()[1])
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT,
+                                 pytest.param(signal.SIGTERM, marks=pytest.mark.slow)])
+def test_a_million_run_spec_starts_at_once_and_stops_on_a_signal(tmp_path, sig):
+    """10^6 runs: rows are stored within seconds (the runs are submitted in a bounded
+    window, not as one graph), the client stays small, and a signal ends the command
+    within 10 s with exit 130, no traceback or Dask warning, and every stored row whole
+    and unique."""
+    import subprocess
+
+    import pyarrow.parquet as pq
+
+    (tmp_path / "spec.toml").write_text(MILLION)
+    out = tmp_path / "out"
+    env = dict(os.environ, PYTHONPATH=str(Path(__file__).resolve().parents[1]))
+    proc = subprocess.Popen([sys.executable, "-m", "verify.cli", "campaign",
+                             str(tmp_path / "spec.toml"), "--out", str(out), "--workers", "2"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    start, rss = time.perf_counter(), 0
+    try:
+        while not list((out / "results").glob("part-*.parquet")):
+            assert proc.poll() is None, proc.communicate()
+            assert time.perf_counter() - start < 60, "no row stored within 60 s"
+            rss = max(rss, _rss_kib(proc.pid))
+            time.sleep(0.1)
+        first = time.perf_counter() - start
+        time.sleep(2.0)
+        rss = max(rss, _rss_kib(proc.pid))
+        proc.send_signal(sig)
+        stopped = time.perf_counter()
+        stdout, stderr = proc.communicate(timeout=60)
+        took = time.perf_counter() - stopped
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode == 130 and took < 10, (proc.returncode, took, stderr)
+    assert first < 30, first  # measured about 15 s on the loaded 2-core machine
+    assert rss < 600 * 1024, rss  # about 190 MB measured; the full key list alone is more
+    assert "Traceback" not in stderr and "Warning" not in stderr and "large graph" not in stderr
+    assert "interrupted" in stderr and "1000000 runs" in stdout
+    keys = [k for part in sorted((out / "results").glob("part-*.parquet"))
+            for k in pq.read_table(part, columns=["key"]).column("key").to_pylist()]
+    assert keys and len(keys) == len(set(keys))

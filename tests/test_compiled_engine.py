@@ -178,3 +178,91 @@ def test_batched_energy_equals_the_per_sample_definition(which):
         if slow.uses_storage:
             assert np.abs(fast.S_h_storage - slow.S_h_storage).max() < 1e-15
         assert np.array_equal(fast.V_dot_bound, slow.V_dot_bound)
+
+
+# ---------------------------------------------------------------- whole-run kernel
+
+
+def _step_by_step(monkeypatch):
+    """Disable the whole-run kernel: every step through the stepper, one call each."""
+    import verify.sim.run as run_module
+
+    monkeypatch.setattr(run_module, "run_fixed",
+                        lambda stepper, rec, Y, x, k0, k1, dt: (Y, x, k0, -1))
+
+
+@pytest.mark.parametrize("which", ["lti", "lti3", "static", "vr"])
+@pytest.mark.parametrize("autonomous", ["zero", "consensus"])
+def test_whole_run_kernel_equals_the_step_loop(which, autonomous, monkeypatch):
+    """cf4_run takes the same steps as the per-step loop: states bitwise equal, dbar to
+    rounding (one norm formula differs), with directions and a switching reference."""
+    rng = np.random.default_rng(3)
+    ref = Reference.switching([so3.exp(v) for v in 0.8 * rng.standard_normal((3, 3))], 0.4)
+    sc = _scenario(_humans(rng)[which], autonomous, reference=ref)
+    fast = simulate(sc, 1.1, 1 / 120, direction_every=5)
+    with monkeypatch.context() as m:
+        _step_by_step(m)
+        slow = simulate(sc, 1.1, 1 / 120, direction_every=5)
+    for name in ("R_bar", "R_l", "R_r", "x", "d", "final_bodies"):
+        assert np.array_equal(getattr(fast, name), getattr(slow, name)), name
+    assert np.allclose(fast.dbar, slow.dbar, rtol=0, atol=1e-15)
+    assert np.allclose(fast.coherence, slow.coherence, rtol=1e-15, atol=0)
+
+
+def test_whole_run_kernel_hands_the_vr_branch_cut_to_python(monkeypatch):
+    """With d_r opposite d_l the VR tilt is near pi, outside the kernel's branch: those
+    steps go through the model's hold, and the run equals the per-step loop."""
+    R_r = so3.exp(np.array([np.pi - 0.01, 0.0, 0.0]))  # d_r almost -e3, the leader at e3
+    sc = Scenario(so3.exp(0.05 * np.random.default_rng(0).standard_normal((3, 3))), 2.0,
+                  VROperator(), Reference.constant(R_r), R_l0=np.eye(3))
+    held = kernels.vr_command(np.eye(3), R_r, 0.8, 1.0, 1.0, np.empty(3))
+    assert not held  # the case is really the fallback
+    fast = simulate(sc, 0.5, 1 / 120)
+    with monkeypatch.context() as m:
+        _step_by_step(m)
+        slow = simulate(sc, 0.5, 1 / 120)
+    assert np.array_equal(fast.R_l, slow.R_l) and np.array_equal(fast.x, slow.x)
+
+
+def test_whole_run_kernel_stops_where_dbar_is_lost():
+    """A state whose directions cancel, handed to the kernel at step 5: it stops there
+    with DBAR_UNDEFINED (simulate then raises with t = 5 dt)."""
+    from verify.sim.fused import run_fixed
+    from verify.sim.run import Recorder
+
+    sc = Scenario(so3.exp(0.1 * np.ones((2, 3))), 2.0, StaticGainHuman(np.eye(2)),
+                  Reference.constant(np.eye(3)), R_l0=np.eye(3),
+                  autonomous=autonomous_input("consensus", 2))  # A(d) needs dbar
+    st = stepper(sc)
+    Y, x = sc.initial_state()
+    Y[1] = Y[0] @ so3.exp(np.array([np.pi, 0.0, 0.0]))  # d_2 = -d_1
+    rec = Recorder(sc, 10, 0.01, x.shape[0], 0)
+    _, _, k, status = run_fixed(st, rec, Y, x, 5, 10, 0.01)
+    assert (k, status) == (5, kernels.DBAR_UNDEFINED)
+    assert np.array_equal(rec.R_l[5], np.eye(3))  # sample 5 is the state the step left from
+
+
+# ---------------------------------------------------------------- the noisy operator
+
+
+@pytest.mark.parametrize("adaptive", [False, True])
+def test_noisy_operator_compiled_equals_the_python_field(adaptive):
+    """ReactingNoisyHuman on the kernels (opt-in, engine="compiled"): held noise on the
+    output and no B e, D e before each reaction, as the Python field to rounding."""
+    from verify.sim.noisy_humans import ReactingNoisyHuman
+
+    rng = np.random.default_rng(5)
+    ref = Reference.switching([so3.exp(v) for v in 0.7 * rng.standard_normal((3, 3))], 0.5)
+    A = np.array([[-0.5, 2.0], [-2.0, -0.5]])
+    human = ReactingNoisyHuman(A, np.array([[1.0, 0.3], [0.0, 1.0]]), np.eye(2),
+                               0.2 * np.eye(2), noise=0.05 * rng.standard_normal((200, 2)),
+                               reaction=[10, 25, 5], reference=ref, h=1 / 120)
+    sc = _scenario(human, "consensus", reference=ref)
+    assert not isinstance(stepper(sc), CompiledStepper)  # "auto" keeps the definition
+    assert isinstance(stepper(sc, "compiled"), CompiledStepper)
+    kw = {"adaptive": True, "rtol": 1e-9, "atol": 1e-11} if adaptive else {}
+    fast = simulate(sc, 1.4, 1 / 120, engine="compiled", **kw)
+    slow = simulate(sc, 1.4, 1 / 120, engine="python", **kw)
+    assert np.max(np.abs(fast.R_l - slow.R_l)) < 1e-12
+    assert np.max(np.abs(fast.x - slow.x)) < 1e-12
+    assert np.max(np.abs(fast.dbar - slow.dbar)) < 1e-12

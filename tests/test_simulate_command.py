@@ -119,3 +119,81 @@ def test_adaptive_flag_refuses_a_bad_tolerance_before_running(tmp_path, capsys):
     captured = capsys.readouterr()
     assert "--adaptive must be a positive number" in captured.err
     assert captured.out == "" and not (tmp_path / "b").exists()
+
+
+def test_progress_only_on_a_terminal_or_when_asked(tmp_path):
+    """stderr is a pipe here: no progress unless --progress (then a line per tenth)."""
+    quiet = run_cli("simulate", "--seconds", "6", "--no-plots", "--out", str(tmp_path / "a"))
+    assert quiet.returncode == 0 and quiet.stderr == ""
+    shown = run_cli("simulate", "--seconds", "6", "--no-plots", "--progress", "--out",
+                    str(tmp_path / "b"))
+    assert shown.returncode == 0 and "100%" in shown.stderr and "\r" not in shown.stderr
+
+
+def test_progress_rule_is_shared_with_campaigns():
+    import io
+
+    from verify.campaign.progress import CampaignProgress
+    from verify.sim.terminal import progress_wanted
+
+    class Tty(io.StringIO):
+        def isatty(self) -> bool:
+            return True
+
+    assert not progress_wanted(io.StringIO()) and progress_wanted(io.StringIO(), forced=True)
+    assert progress_wanted(Tty()) and not progress_wanted(Tty(), quiet=True)
+    log = io.StringIO()
+    bar = CampaignProgress(20, 0, stream=log, forced=True)
+    for _ in range(20):
+        bar.update(1)
+    bar.close()
+    lines = log.getvalue().splitlines()
+    assert "\r" not in log.getvalue() and 10 <= len(lines) <= 11
+    assert lines[-1].startswith("campaign: 20/20 runs")
+    assert not CampaignProgress(20, 0, stream=io.StringIO()).enabled
+
+
+def test_the_slow_engine_says_why():
+    from verify.sim.command import SimulateSettings, build_human, build_scenario, engine_line
+    from verify.sim.humans import Human
+
+    class Custom(Human):  # a human the kernels do not know
+        name = "custom"
+
+        def command(self, t, x, e, R_l, held):
+            return np.zeros(3)
+
+    s = SimulateSettings(seconds=1.0)
+    sc = build_scenario(s, build_human(s)[0])
+    sc.human = Custom()
+    assert engine_line(sc) == ("Python field (slow: the kernels do not model the human "
+                               "Custom)")
+
+
+def test_the_engine_is_named_and_the_slow_one_explained(tmp_path):
+    fast = run_cli("simulate", "--seconds", "0.5", "--no-plots", "--out", str(tmp_path / "a"))
+    assert "engine: compiled kernels (numba)" in fast.stdout
+    model = MODELS / "reconstructed_ks3p0.toml"
+    slow = run_cli("simulate", "--model", str(model), "--seconds", "0.5", "--no-plots",
+                   "--operator-noise", "0.01", "--out", str(tmp_path / "b"))
+    assert slow.returncode == 0, slow.stderr
+    assert "engine: compiled kernels (numba)" in slow.stdout  # the noisy operator too
+    patched = run_cli("simulate", "--seconds", "0.5", "--no-plots", "--autonomous", "random",
+                      "--human", "static", "--out", str(tmp_path / "c"))
+    assert "engine: compiled" in patched.stdout  # a signal input is compiled as well
+
+
+def test_help_documents_format_gain_and_where_outputs_go():
+    text = run_cli("simulate", "--help").stdout
+    flat = " ".join(text.split())
+    assert "trajectory.npz" in flat and "default 1)" in flat
+    assert "default build/simulation" in flat
+    campaign = " ".join(run_cli("campaign", "--help").stdout.split())
+    assert "default build/campaigns/" in campaign and "--progress" in campaign
+
+
+def test_default_output_is_under_build(tmp_path):
+    out = run_cli("simulate", "--seconds", "0.2", "--no-plots", cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert (tmp_path / "build" / "simulation" / "trajectory.npz").is_file()
+    assert not (tmp_path / "reports").exists()

@@ -174,7 +174,8 @@ def _build_parser() -> argparse.ArgumentParser:
                        "gain, or an LTI model file (default when --model is given)")
     p_sim.add_argument("--model", type=Path, metavar="FILE",
                        help="LTI human model H(s), a TOML file as for 'verify gate'")
-    p_sim.add_argument("--gain", type=float, default=1.0, help="static gain k (K = k I)")
+    p_sim.add_argument("--gain", type=float, default=1.0,
+                       help="static gain k of --human static (K = k I; default 1)")
     p_sim.add_argument("--seconds", type=float, default=30.0, help="simulated time (default 30)")
     p_sim.add_argument("--step", type=float, default=1 / 120, help="step in s (default 1/120)")
     p_sim.add_argument("--seed", type=int, default=0, help="seed of attitudes and inputs")
@@ -184,13 +185,19 @@ def _build_parser() -> argparse.ArgumentParser:
                        help="constant R_r or a new one every 15 s")
     p_sim.add_argument("--network", type=Path, metavar="FILE",
                        help="initial attitudes from a network file (as for 'verify network')")
-    p_sim.add_argument("--out", type=Path, default=Path("reports/simulation"),
-                       help="output directory (default reports/simulation)")
-    p_sim.add_argument("--format", choices=("npz", "csv"), default="npz", dest="fmt")
+    p_sim.add_argument("--out", type=Path, default=Path("build/simulation"),
+                       help="output directory (default build/simulation)")
+    p_sim.add_argument("--format", choices=("npz", "csv"), default="npz", dest="fmt",
+                       help="trajectory file: trajectory.npz (NumPy arrays, default) or "
+                       "trajectory.csv (one row per sample)")
     p_sim.add_argument("--no-plots", action="store_true", help="write the trajectory only")
     p_sim.add_argument("--check", action="store_true",
                        help="also check stealthiness, R-bar e3 = dbar, Lemma 1, V decrease and "
-                       "LaSalle on this run, within the integrator's error (3 more runs)")
+                       "LaSalle on this run, within the integrator's error (one pair of runs "
+                       "at h and h/2 shared by the checks; a check the integration cannot "
+                       "resolve is reported UNRESOLVED)"),
+    p_sim.add_argument("--progress", action="store_true",
+                       help="show progress on stderr even when it is not a terminal")
     p_sim.add_argument("--adaptive", type=float, metavar="RTOL", default=None,
                        help="error-controlled steps (step doubling of CF4, atol = RTOL/100), "
                        "still sampled every --step; default: fixed steps of --step")
@@ -213,7 +220,8 @@ def _add_campaign_parser(sub) -> None:
         "row and none raised, 1 otherwise, 2 on bad input (before any run starts).")
     p.add_argument("spec", type=Path, metavar="SPEC.toml", help="the campaign spec")
     p.add_argument("--out", type=Path, metavar="DIR",
-                   help="output folder (default reports/campaigns/<spec name>)")
+                   help="output folder (default build/campaigns/<spec file name>); an "
+                   "existing file there is refused before any run")
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="run on an existing Dask scheduler, e.g. tcp://127.0.0.1:8786")
     p.add_argument("--workers", type=int, metavar="N",
@@ -221,6 +229,8 @@ def _add_campaign_parser(sub) -> None:
     p.add_argument("--resume", action="store_true",
                    help="continue a campaign in DIR: runs already stored are skipped")
     p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+    p.add_argument("--progress", action="store_true",
+                   help="show progress on stderr even when it is not a terminal")
 
 
 def _cmd_all(args: argparse.Namespace) -> int:
@@ -383,7 +393,8 @@ def _cmd_simulate(args: argparse.Namespace) -> int:
         seconds=args.seconds, step=args.step, seed=args.seed, autonomous=args.autonomous,
         reference=args.reference, network=args.network, out=args.out, fmt=args.fmt,
         plots=not args.no_plots, check=args.check, log=args.log, adaptive=args.adaptive,
-        operator_noise=args.operator_noise, measurement_noise=args.measurement_noise))
+        operator_noise=args.operator_noise, measurement_noise=args.measurement_noise,
+        progress=args.progress))
 
 
 def _cmd_identify(args: argparse.Namespace) -> int:
@@ -399,7 +410,7 @@ def _cmd_campaign(args: argparse.Namespace) -> int:
 
     return run_campaign_command(CampaignSettings(
         spec=args.spec, out=args.out, scheduler=args.scheduler, workers=args.workers,
-        resume=args.resume, quiet=args.quiet))
+        resume=args.resume, quiet=args.quiet, progress=args.progress))
 
 
 def _cmd_list(_: argparse.Namespace) -> int:

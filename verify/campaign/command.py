@@ -29,11 +29,41 @@ class CampaignSettings:
     workers: int | None = None
     resume: bool = False
     quiet: bool = False
+    progress: bool = False  # progress on stderr even when it is not a terminal
 
 
 def default_workers() -> int:
     """Worker processes of the embedded LocalCluster: the cores, at most 8."""
     return max(1, min(os.cpu_count() or 1, 8))
+
+
+#: where a campaign writes when no --out is given (git-ignored build output)
+DEFAULT_OUT = Path("build") / "campaigns"
+#: what the command writes inside --out: these names must be folders or files as listed
+_FOLDERS = ("results", "humans", "figures")
+_FILES = ("campaign.md", "campaign.html", "commands.txt")
+
+
+def check_out(out: Path) -> None:
+    """Refuse, before any run, an --out the command could not write into: an existing
+    non-folder, or one of its outputs in the way as the wrong kind of file."""
+    if out.exists() and not out.is_dir():
+        raise VerifyInputError(f"--out {out}: exists and is not a folder; name a folder "
+                               "(it is created if missing)")
+    for parent in out.parents:
+        if parent.exists():
+            if not parent.is_dir():
+                raise VerifyInputError(f"--out {out}: {parent} is not a folder")
+            break
+    for name in _FOLDERS:
+        if (out / name).exists() and not (out / name).is_dir():
+            raise VerifyInputError(f"--out {out}: {out / name} is in the way (a file where "
+                                   "the campaign writes a folder); move it or choose another "
+                                   "--out")
+    for name in _FILES:
+        if (out / name).exists() and not (out / name).is_file():
+            raise VerifyInputError(f"--out {out}: {out / name} is in the way (not a regular "
+                                   "file); move it or choose another --out")
 
 
 def _check_address(address: str) -> str:
@@ -67,10 +97,16 @@ def _terminate_as_interrupt() -> Iterator[None]:
 
 def run_campaign_command(s: CampaignSettings) -> int:
     from verify.campaign.engine import run_campaign
-    from verify.campaign.execute import FAILED, column
+    from verify.campaign.execute import FAILED, UNRESOLVED, column
     from verify.campaign.progress import clock
     from verify.campaign.report import Campaign, write_report
-    from verify.campaign.runs import expand, write_family_files
+    from verify.campaign.runs import (
+        distinct_humans,
+        iter_runs,
+        place_family_files,
+        run_total,
+        spec_fingerprint,
+    )
     from verify.campaign.store import ResultStore
     from verify.inputs.campaign_spec import load_campaign_spec
 
@@ -82,34 +118,35 @@ def run_campaign_command(s: CampaignSettings) -> int:
         raise VerifyInputError("--workers sizes the embedded LocalCluster; with --scheduler "
                                "the cluster's own workers run the campaign (drop --workers)")
     spec = load_campaign_spec(s.spec)
-    out = s.out if s.out is not None else Path("reports/campaigns") / s.spec.stem
+    out = s.out if s.out is not None else DEFAULT_OUT / s.spec.stem
+    check_out(out)
     store = ResultStore(out / "results")
-    runs = expand(spec)
-    keys = {r.key for r in runs}
     stored = store.keys()
     if stored and not s.resume:
-        mine = len(stored & keys)
+        mine = sum(1 for r in iter_runs(spec) if r.key in stored)
         raise VerifyInputError(
             f"{store.folder} already holds {len(stored)} rows ({mine} of this campaign); "
             "pass --resume to continue without repeating them, or choose another --out")
-    runs = write_family_files(runs, out / "humans")
+    store.bind(spec_fingerprint(spec), spec.name)
+    humans = place_family_files(distinct_humans(spec), out / "humans")
+    total = run_total(spec, humans)
     engine = (f"the Dask scheduler at {scheduler}" if scheduler
               else f"a LocalCluster of {workers} worker process(es), 1 thread each")
-    print(f"verify campaign: {spec.name}: {len(runs)} runs; properties "
-          f"{', '.join(spec.properties) or 'none'}; on {engine}")
-    done_before = len(stored & keys)
-    if done_before:
-        print(f"  resuming: {done_before} of {len(runs)} runs already stored in "
-              f"{store.folder}")
+    print(f"verify campaign: {spec.name}: {total} runs; properties "
+          f"{', '.join(spec.properties) or 'none'}; on {engine}", flush=True)
+    if stored:
+        print(f"  resuming: {len(stored)} rows already in {store.folder}", flush=True)
     try:
         with _terminate_as_interrupt():
-            outcome = run_campaign(runs, store, scheduler=scheduler, workers=workers,
-                                   progress=not s.quiet, stream=sys.stderr)
+            outcome = run_campaign(iter_runs(spec, humans), store, scheduler=scheduler,
+                                   workers=workers, progress=not s.quiet,
+                                   force_progress=s.progress, stream=sys.stderr,
+                                   total=total)
     except KeyboardInterrupt:
-        have = len(store.keys() & keys)
-        print(f"verify campaign: interrupted; {have} of {len(runs)} rows stored in "
+        print(f"verify campaign: interrupted; {len(store.keys())} rows stored in "
               f"{store.folder}; rerun with --resume to continue", file=sys.stderr)
         raise
+    runs = list(iter_runs(spec, humans))
     rows = {row["key"]: row for row in store.rows([r.key for r in runs])}
     ran = outcome.written
     session = {
@@ -122,8 +159,11 @@ def run_campaign_command(s: CampaignSettings) -> int:
     paths = write_report(Campaign(spec, runs, rows), out, session)
     failed = sum(1 for row in rows.values() if any(
         row.get(column(p)) == FAILED for p in spec.properties))
+    unresolved = sum(1 for row in rows.values() if any(
+        row.get(column(p)) == UNRESOLVED for p in spec.properties))
     print(f"  {len(rows)} of {len(runs)} runs stored ({ran} this session in "
-          f"{clock(outcome.seconds)}); {failed} failed a property; {outcome.raised} raised"
+          f"{clock(outcome.seconds)}); {failed} failed a property; {unresolved} not resolved "
+          f"by the integration; {outcome.raised} raised"
           + (f"; {len(outcome.lost)} lost" if outcome.lost else ""))
     for key, why in outcome.lost[:5]:
         print(f"  lost {key}: {why}", file=sys.stderr)
@@ -132,4 +172,5 @@ def run_campaign_command(s: CampaignSettings) -> int:
     return 0 if len(rows) == len(runs) and not errors else 1
 
 
-__all__ = ["CampaignSettings", "default_workers", "run_campaign_command"]
+__all__ = ["DEFAULT_OUT", "CampaignSettings", "check_out", "default_workers",
+           "run_campaign_command"]

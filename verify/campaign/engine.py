@@ -20,10 +20,12 @@ again on ``--resume``.
 from __future__ import annotations
 
 import contextlib
+import itertools
 import logging
 import time
 import uuid
-from collections.abc import Callable, Iterator, Sequence
+import warnings
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Any, TextIO
 
@@ -62,7 +64,10 @@ def _quiet_distributed() -> Iterator[None]:
     level = logger.level
     logger.setLevel(logging.CRITICAL)
     try:
-        yield
+        with warnings.catch_warnings():  # e.g. "Sending large graph": not the user's concern
+            warnings.filterwarnings("ignore", module=r"distributed(\..*)?")
+            warnings.filterwarnings("ignore", category=UserWarning, message=".*[Ll]arge graph")
+            yield
     finally:
         logger.setLevel(level)
 
@@ -106,25 +111,29 @@ def _why(future: Any, result: Any) -> str:
 
 
 def run_campaign(
-    runs: Sequence[Run],
+    runs: Iterable[Run],
     store: ResultStore,
     *,
     client: Any = None,
     scheduler: str | None = None,
     workers: int = 2,
     progress: bool = True,
+    force_progress: bool = False,
     stream: TextIO | None = None,
     function: Callable[[Run], dict[str, Any]] = execute_run,
     on_rows: Callable[[list[dict[str, Any]], Any], None] | None = None,
     batch_rows: int = 64,
     flush_seconds: float = 2.0,
+    total: int | None = None,
+    window: int | None = None,
 ) -> CampaignOutcome:
     """Run every run whose key is not in ``store`` and append its row as it finishes.
 
     Parameters
     ----------
-    runs : sequence of Run
-        The campaign (keys distinct: :func:`verify.campaign.runs.expand`).
+    runs : iterable of Run
+        The campaign (keys distinct: :func:`verify.campaign.runs.iter_runs`); consumed
+        lazily, so a generator of a million runs costs no more client memory than ten.
     store : ResultStore
         Where rows go; its keys are skipped (resuming is the default behaviour).
     client : distributed.Client, optional
@@ -134,26 +143,48 @@ def run_campaign(
     workers : int
         Worker processes of the LocalCluster (one thread each).
     progress : bool
-        Show the one-line progress on ``stream`` (stderr) when it is a terminal.
+        Show the one-line progress on ``stream`` (stderr) when it is a terminal, or with
+        ``force_progress`` anywhere (:mod:`verify.campaign.progress`).
     function : callable
         The task (default :func:`verify.campaign.execute.execute_run`).
     on_rows : callable, optional
         Called with each batch of rows after it is stored, and the client.
+    total : int, optional
+        How many runs ``runs`` holds (default ``len(runs)``), for progress and outcome.
+    window : int, optional
+        Runs submitted and not yet finished, at most (default 4 per worker, at least 8):
+        the scheduler holds this many tasks, not the whole sweep.
 
     Returns
     -------
     CampaignOutcome
     """
     start = time.perf_counter()
+    if total is None:
+        runs = list(runs)
+        total = len(runs)
     stored = store.keys()
-    pending = [r for r in runs if r.key not in stored]
-    outcome = CampaignOutcome(total=len(runs), stored_before=len(runs) - len(pending))
-    bar = CampaignProgress(len(runs), outcome.stored_before, stream=stream, enabled=progress)
-    if not pending:
+    skipped = [0]
+
+    def unstored(runs: Iterable[Run]) -> Iterator[Run]:
+        for r in runs:
+            if r.key in stored:
+                skipped[0] += 1
+            else:
+                yield r
+
+    fresh = unstored(runs)
+    first_run = next(fresh, None)
+    outcome = CampaignOutcome(total=total, stored_before=0)
+    if first_run is None:
+        outcome.stored_before = total
         return outcome
+    pending = itertools.chain([first_run], fresh)
     owned = connect(scheduler, workers) if client is None else contextlib.nullcontext(client)
     buffer: list[dict[str, Any]] = []
     first = 0.0
+    counted = {"submitted": 0}
+    bar: CampaignProgress | None = None
 
     def flush(client: Any) -> None:
         nonlocal buffer
@@ -169,30 +200,45 @@ def run_campaign(
 
         outcome.engine = str(getattr(dask.scheduler, "address", "") or "")
         outcome.workers = len(dask.scheduler_info().get("workers", {}))
+        limit = window or max(8, 4 * max(1, outcome.workers or workers))
         # Task keys name the run and this session: a session interrupted on a long-lived
         # cluster may leave its cancelled tasks there for a while, and a resumed session
         # must not be handed their cancellation.
         session = uuid.uuid4().hex[:8]
-        run_of = {f"{TASK_PREFIX}{r.key}-{session}": r.key for r in pending}
-        futures = dask.map(function, pending, key=list(run_of), pure=False)
-        live = {f.key: f for f in futures}  # a consumed future is dropped (its result freed)
-        del futures
-        done = as_completed(list(live.values()), loop=dask.loop, with_results=True,
-                            raise_errors=False)
+        run_of: dict[str, str] = {}
+        live: dict[str, Any] = {}  # a consumed future is dropped (its result freed)
+        done = as_completed([], loop=dask.loop, with_results=True, raise_errors=False)
+
+        def submit(count: int) -> None:
+            for run in itertools.islice(pending, count):
+                task = f"{TASK_PREFIX}{run.key}-{session}"
+                run_of[task] = run.key
+                future = dask.submit(function, run, key=task, pure=False)
+                live[task] = future
+                done.add(future)
+                counted["submitted"] += 1
+
         try:
+            submit(limit)
+            bar = CampaignProgress(total, skipped[0], stream=stream, enabled=progress,
+                                   forced=force_progress)
             bar.update(force=True)
-            while not done.is_empty():
+            while live:
                 batch = done.next_batch(block=False)
                 for future, result in batch:
                     live.pop(future.key, None)
+                    key = run_of.pop(future.key, "")
                     if future.status != "finished" or not isinstance(result, dict):
-                        outcome.lost.append((run_of[future.key], _why(future, result)))
+                        outcome.lost.append((key, _why(future, result)))
                         continue
                     if not buffer:
                         first = time.perf_counter()
                     buffer.append(result)
                     outcome.raised += result.get("error") is not None
+                    bar.already = skipped[0]
                     bar.update(1, result.get("error") is not None)
+                if batch:
+                    submit(limit - len(live))
                 if buffer and (len(buffer) >= batch_rows
                                or time.perf_counter() - first >= flush_seconds):
                     flush(dask)
@@ -201,11 +247,14 @@ def run_campaign(
                     time.sleep(0.05)
             flush(dask)
         finally:
+            outcome.stored_before = skipped[0]
             try:
                 flush(dask)  # rows in hand are results: keep them even when interrupted
             finally:
-                dask.cancel(list(live.values()))
-                bar.close()
+                with contextlib.suppress(Exception):
+                    dask.cancel(list(live.values()), force=True)
+                if bar is not None:
+                    bar.close()
                 outcome.seconds = time.perf_counter() - start
     return outcome
 

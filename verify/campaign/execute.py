@@ -4,9 +4,13 @@ The scenario is the one ``verify simulate`` builds for the same settings
 (:func:`verify.sim.command.build_scenario`: bodies within 45 degrees of the identity,
 R_r within 60 degrees, drawn from the run's seed), so the command that a report prints
 for a row rebuilds it exactly. The properties are those of :mod:`verify.sim.properties`
-with their step-doubling tolerances (runs with h and h/2; the same checks as
-``verify simulate --check``). Figures come from the h-run, as ``verify simulate`` prints
-them:
+with their step-doubling tolerances, all read from one pair of runs (h and h/2) by
+:func:`verify.sim.checks.check_scenario`, the same checks as ``verify simulate --check``:
+a run the fixed step cannot resolve is repeated with error-controlled steps, and a
+property no engine resolved is ``unresolved``, never held. The row records the engine
+and, per property, whether its conclusion held whatever the assumptions (``*_conclusion``:
+where the system behaved well outside the paper's premises). Figures come from the
+coarse run of that pair, as ``verify simulate`` prints them (none when unresolved):
 
 * convergence time: the first sample time t* after which |dbar(t) - d_r(t)| stays below
   the spec's threshold up to the end of the run (null if it is above it at the end);
@@ -30,16 +34,18 @@ import numpy as np
 
 from verify.campaign.runs import Human, Run
 from verify.inputs.campaign_spec import PROPERTIES
+from verify.sim.properties import Status
 
-HELD, FAILED, ASSUMPTION, NOT_CHECKED, NOT_APPLICABLE = (
-    "held", "failed", "assumption-failed", "not-checked", "n/a")
+HELD, FAILED, ASSUMPTION, UNRESOLVED = (str(Status.HELD), str(Status.FAILED),
+                                       str(Status.ASSUMPTION_FAILED), str(Status.UNRESOLVED))
+NOT_CHECKED, NOT_APPLICABLE = "not-checked", "n/a"
 
 #: Columns of a row besides the parameters (None until known; a run that raised keeps them so).
-OUTCOME_COLUMNS = ("human_gate", *[c for p in PROPERTIES for c in (
+OUTCOME_COLUMNS = ("human_gate", "engine", "engine_note", *[c for p in PROPERTIES for c in (
     p.replace("-", "_"), f"{p.replace('-', '_')}_violation",
-    f"{p.replace('-', '_')}_tolerance")], "convergence_time", "dbar_error_end",
-    "min_tr_Rbar_r", "max_V_rise", "supply_end", "uses_storage", "error", "wall_time",
-    "worker")
+    f"{p.replace('-', '_')}_tolerance", f"{p.replace('-', '_')}_conclusion")],
+    "convergence_time", "dbar_error_end", "min_tr_Rbar_r", "max_V_rise", "supply_end",
+    "uses_storage", "error", "wall_time", "worker")
 
 _HUMANS: dict[tuple[object, ...], tuple[Any, str]] = {}  # per process: gating costs ~1 s
 
@@ -98,10 +104,6 @@ def parameters(run: Run) -> dict[str, Any]:
     }
 
 
-def _status(holds: bool | None) -> str:
-    return {True: HELD, False: FAILED, None: ASSUMPTION}[holds]
-
-
 def _figures(run: Run, traj, E) -> dict[str, Any]:
     from verify.sim.properties import largest_rise
 
@@ -116,11 +118,16 @@ def _figures(run: Run, traj, E) -> dict[str, Any]:
     }
 
 
+def _finite(x: float) -> float | None:
+    return float(x) if np.isfinite(x) else None
+
+
 def simulate_run(run: Run) -> dict[str, Any]:
     """Simulate and check one run; returns the outcome columns (raises on a bad run)."""
-    from verify.sim import properties as props
+    from verify.sim.checks import check_scenario
     from verify.sim.command import SimulateSettings, build_scenario
     from verify.sim.energy import energy
+    from verify.sim.resolution import step_is_stable
     from verify.sim.run import simulate
 
     made, gate = build_human(run.human)
@@ -133,27 +140,28 @@ def simulate_run(run: Run) -> dict[str, Any]:
         out[column(p)] = NOT_CHECKED
         out[f"{column(p)}_violation"] = None
         out[f"{column(p)}_tolerance"] = None
+        out[f"{column(p)}_conclusion"] = None
     if not run.properties:
-        traj = simulate(scenario, run.seconds, run.step)
-        out.update(_figures(run, traj, energy(traj)))
+        if step_is_stable(scenario, run.step):
+            traj, out["engine"] = simulate(scenario, run.seconds, run.step), "fixed"
+            out.update(_figures(run, traj, energy(traj)))
+        else:
+            out["engine"] = "none"
+            out["engine_note"] = "step beyond CF4's stability bound; no property asked"
         return out
-    pair = props.RunPair.of(scenario, run.seconds, run.step)
-    checks = {
-        "stealthiness": lambda: props.stealthiness(scenario, run.seconds, run.step),
-        "quasi-average": lambda: props.quasi_average_axis(pair),
-        "lemma1": lambda: props.lemma1_invariance(pair),
-        "lyapunov": lambda: props.lyapunov_decrease(pair),
-        "lasalle": lambda: props.lasalle_convergence(pair),
-    }
-    for p in run.properties:
-        if p == "lasalle" and not scenario.reference.is_constant:
+    checked = check_scenario(scenario, run.seconds, run.step, run.properties)
+    out["engine"], out["engine_note"] = checked.engine, checked.note or None
+    for p, result in checked.results.items():
+        if result is None:
             out[column(p)] = NOT_APPLICABLE  # Theorem 1's convergence needs a constant R_r
             continue
-        result = checks[p]()
-        out[column(p)] = _status(result.holds)
-        out[f"{column(p)}_violation"] = float(result.violation)
-        out[f"{column(p)}_tolerance"] = float(result.tolerance)
-    out.update(_figures(run, pair.coarse, pair.energies(True)[0]))
+        out[column(p)] = str(result.status)
+        out[f"{column(p)}_violation"] = _finite(result.violation)
+        out[f"{column(p)}_tolerance"] = _finite(result.tolerance)
+        if result.conclusion is not None:
+            out[f"{column(p)}_conclusion"] = HELD if result.conclusion else FAILED
+    if checked.pair is not None and checked.pair.finite:
+        out.update(_figures(run, checked.pair.coarse, checked.pair.energies(True)[0]))
     return out
 
 
@@ -176,5 +184,6 @@ def execute_run(run: Run) -> dict[str, Any]:
 
 
 __all__ = ["ASSUMPTION", "FAILED", "HELD", "NOT_APPLICABLE", "NOT_CHECKED", "OUTCOME_COLUMNS",
+           "UNRESOLVED",
            "build_human",
            "column", "convergence_time", "execute_run", "parameters", "simulate_run"]

@@ -1,7 +1,9 @@
 """A one-line progress display for a campaign: runs done of the total and the time left.
 
 Written on stderr and redrawn in place on a terminal (at most a few times a second);
-silent when the stream is not a terminal or when asked to be quiet. The time left is
+elsewhere only when asked (``--progress``), as a new line every tenth of the runs, and
+never when asked to be quiet (:func:`verify.sim.terminal.progress_wanted`, the rule of
+``verify simulate`` too). The time left is
 the mean wall time per run finished in this session times the runs still to do (runs
 found in the store from an earlier session are counted as done but not timed).
 """
@@ -11,6 +13,8 @@ from __future__ import annotations
 import sys
 import time
 from typing import TextIO
+
+from verify.sim.terminal import is_terminal, progress_wanted
 
 
 def clock(seconds: float) -> str:
@@ -27,11 +31,12 @@ class CampaignProgress:
     """Call :meth:`update` as rows arrive and :meth:`close` at the end."""
 
     def __init__(self, total: int, already: int, *, stream: TextIO | None = None,
-                 enabled: bool = True) -> None:
+                 enabled: bool = True, forced: bool = False) -> None:
         self.total, self.already = total, already
         self.stream = stream if stream is not None else sys.stderr
-        tty = bool(getattr(self.stream, "isatty", lambda: False)())
-        self.enabled = enabled and tty
+        self.tty = is_terminal(self.stream)
+        self.enabled = progress_wanted(self.stream, forced=forced, quiet=not enabled)
+        self.tenth = -1
         self.start = time.perf_counter()
         self.last = -1.0
         self.done = 0
@@ -62,6 +67,12 @@ class CampaignProgress:
         if not self.enabled:
             return
         now = time.perf_counter()
+        if not self.tty:  # a log: one line per tenth of the runs
+            tenth = 10 * (self.already + self.done) // max(1, self.total)
+            if tenth > self.tenth:
+                self.tenth = tenth
+                print(self.line(now), file=self.stream, flush=True)
+            return
         if not force and now - self.last < 0.2:
             return
         self.last = now
@@ -71,7 +82,7 @@ class CampaignProgress:
         print("\r" + text + " " * pad, end="", file=self.stream, flush=True)
 
     def close(self) -> None:
-        if self.enabled:
+        if self.enabled and self.tty:
             self.update(force=True)
             print(file=self.stream, flush=True)
 

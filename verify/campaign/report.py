@@ -23,8 +23,10 @@ there.
 
 from __future__ import annotations
 
+import functools
 import html
 import math
+import re
 import statistics
 from collections import defaultdict
 from collections.abc import Sequence
@@ -38,6 +40,7 @@ from verify.campaign.execute import (
     HELD,
     NOT_APPLICABLE,
     NOT_CHECKED,
+    UNRESOLVED,
     column,
 )
 from verify.campaign.reproduce import simulate_command
@@ -46,6 +49,7 @@ from verify.inputs.campaign_spec import CampaignSpec
 
 TIMINGS_HEADING = "Timings (not reproducible)"
 MAX_LISTED = 200  # failing runs listed in the report text (all are in commands.txt)
+MAX_ANNOTATED = 300  # cells of the property map written in; beyond, colours only
 
 PROPERTY_TITLE = {
     "stealthiness": "stealthiness (Section 2: dbar unchanged by the autonomous input)",
@@ -107,39 +111,68 @@ class Code:
 Block = tuple[str, Any]  # ("h1" | "h2" | "p", text) or ("table" | "figure" | "code", obj)
 
 
-def _md_cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ")
+#: characters that can open Markdown or HTML constructs anywhere in a line (a link or
+#: image needs "](" or "][" after its text, so "[gate]" labels stay as they read)
+_MD_SPECIAL = re.compile(r"([\\`*<>&|#]|\](?=[(\[]))")
+#: what opens a block (list, quote, heading, rule, ordered list) at a line's start
+_MD_BLOCK_START = re.compile(r"^(\s*)([-+=~_])")
+_MD_ORDERED = re.compile(r"^(\s*\d+)([.)])")
+
+
+def md_text(text: str) -> str:
+    """``text`` as literal Markdown inline text: one line (a spec's name or a human's
+    label cannot open a heading or a block), with HTML and Markdown punctuation
+    backslash-escaped (CommonMark: any ASCII punctuation may be escaped)."""
+    line = " ".join(str(text).split())
+    line = _MD_SPECIAL.sub(r"\\\1", line)
+    if line.startswith("["):  # "[label]: url" at a line's start defines a link
+        line = "\\" + line
+    line = _MD_ORDERED.sub(r"\1\\\2", line)
+    return _MD_BLOCK_START.sub(r"\1\\\2", line)
+
+
+def _fence(text: str) -> str:
+    """A code fence longer than any backtick run in ``text`` (so it cannot be closed)."""
+    runs = [len(m) for m in re.findall(r"`+", text)]
+    return "`" * max(3, 1 + max(runs, default=0))
 
 
 def render_markdown(blocks: Sequence[Block]) -> str:
     out: list[str] = []
     for kind, item in blocks:
         if kind == "h1":
-            out += [f"# {item}", ""]
+            out += [f"# {md_text(item)}", ""]
         elif kind == "h2":
-            out += [f"## {item}", ""]
+            out += [f"## {md_text(item)}", ""]
         elif kind == "p":
-            out += [item, ""]
+            out += [md_text(item), ""]
         elif kind == "table":
-            out.append("| " + " | ".join(_md_cell(h) for h in item.header) + " |")
+            out.append("| " + " | ".join(md_text(h) for h in item.header) + " |")
             out.append("|" + "---|" * len(item.header))
-            out += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in item.rows]
+            out += ["| " + " | ".join(md_text(c) for c in row) + " |" for row in item.rows]
             out.append("")
         elif kind == "figure":
-            out += [f"![{item.alt}]({item.path})", ""]
+            out += [f"![{md_text(item.alt)}](<{item.path}>)", ""]
         elif kind == "code":
-            out += ["```", item.text.rstrip("\n"), "```", ""]
+            fence = _fence(item.text)
+            out += [fence, item.text.rstrip("\n"), fence, ""]
     return "\n".join(out).rstrip("\n") + "\n"
 
 
+#: the campaign report's own additions to the main report's style: code blocks wrap
+#: (a reproducing command is never cut off), figures fit the page, tables keep margins
+_CAMPAIGN_CSS = ("pre{background:#f6f6f6;padding:.6em;white-space:pre-wrap;"
+                 "overflow-wrap:anywhere}img{max-width:100%}table{margin:.6em 0 1em}")
+
+
 def render_html(blocks: Sequence[Block], title: str) -> str:
+    """HTML in the style of the main report (``verify all``'s report.html)."""
+    from verify.report.render import _CSS
+
     e = html.escape
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-           f"<title>{e(title)}</title>",
-           "<style>body{font-family:sans-serif;max-width:72em;margin:2em auto;}"
-           "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;"
-           "padding:2px 6px;text-align:left}pre{background:#f4f4f4;padding:0.6em;"
-           "overflow-x:auto}img{max-width:100%}</style>", "</head><body>"]
+    out = ["<!doctype html>", "<html lang='en'><head><meta charset='utf-8'>",
+           f"<title>{e(title)}</title>", f"<style>{_CSS}{_CAMPAIGN_CSS}</style>",
+           "</head><body>"]
     for kind, item in blocks:
         if kind in ("h1", "h2"):
             out.append(f"<{kind}>{e(item)}</{kind}>")
@@ -185,31 +218,44 @@ def setting(run: Run, axes: Sequence[str]) -> str:
 
 @dataclass
 class Campaign:
-    """Runs and rows of a campaign, and the aggregates the report shows."""
+    """Runs and rows of a campaign, and the aggregates the report shows (each computed
+    once: the report reads them many times, and a sweep may hold 10^5 runs)."""
 
     spec: CampaignSpec
     runs: list[Run]
     rows: dict[str, dict[str, Any]]
 
-    @property
+    @functools.cached_property
     def axes(self) -> list[str]:
         return varying(self.runs)
 
+    @functools.cached_property
+    def _setting_of(self) -> list[str]:
+        axes, labels = self.axes, {}
+        out = []
+        for r in self.runs:  # setting labels per (human, other axes), built once each
+            ident = (r.human.label, *(getattr(r, a) for a in axes))
+            if ident not in labels:
+                labels[ident] = setting(r, axes)
+            out.append(labels[ident])
+        return out
+
     def settings(self) -> list[str]:
-        seen: dict[str, None] = {}
-        for r in self.runs:
-            seen.setdefault(setting(r, self.axes), None)
-        return list(seen)
+        return list(dict.fromkeys(self._setting_of))
 
     def k_values(self) -> list[float]:
         return sorted({r.k_s for r in self.runs})
 
-    def cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
+    @functools.cached_property
+    def _cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
         out: dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]] = defaultdict(list)
-        for r in self.runs:
+        for r, s in zip(self.runs, self._setting_of, strict=True):
             if r.key in self.rows:
-                out[setting(r, self.axes), r.k_s].append((r, self.rows[r.key]))
+                out[s, r.k_s].append((r, self.rows[r.key]))
         return out
+
+    def cells(self) -> dict[tuple[str, float], list[tuple[Run, dict[str, Any]]]]:
+        return self._cells
 
     def humans(self) -> list[Human]:
         seen: dict[tuple[object, ...], Human] = {}
@@ -218,30 +264,47 @@ class Campaign:
         return list(seen.values())
 
 
+ANYWAY, NOT_ANYWAY = "anyway", "not-anyway"  # assumption failed; conclusion held / failed
+
+
 def _counts(pairs: Sequence[tuple[Run, dict[str, Any]]], prop: str) -> dict[str, int]:
-    counts = {HELD: 0, FAILED: 0, ASSUMPTION: 0, "error": 0, NOT_APPLICABLE: 0}
+    counts = {HELD: 0, FAILED: 0, ASSUMPTION: 0, UNRESOLVED: 0, "error": 0,
+              NOT_APPLICABLE: 0, ANYWAY: 0, NOT_ANYWAY: 0}
     for _, row in pairs:
         if row.get("error"):
             counts["error"] += 1
-        else:
-            status = row.get(column(prop)) or NOT_CHECKED
-            if status in counts:
-                counts[status] += 1
+            continue
+        status = row.get(column(prop)) or NOT_CHECKED
+        if status in counts:
+            counts[status] += 1
+        if status == ASSUMPTION:
+            conclusion = row.get(f"{column(prop)}_conclusion")
+            if conclusion == HELD:
+                counts[ANYWAY] += 1
+            elif conclusion == FAILED:
+                counts[NOT_ANYWAY] += 1
     return counts
 
 
 def _cell_text(counts: dict[str, int], total: int) -> str:
+    """Held under the assumptions, failed, and, where an assumption failed, whether the
+    conclusion held anyway (what the system did outside the theorem)."""
     if counts[NOT_APPLICABLE] == total:
         return "n/a"
     text = f"{counts[HELD]}/{total} held"
     notes = [f"{counts[FAILED]} FAILED"] if counts[FAILED] else []
     if counts[ASSUMPTION]:
-        notes.append(f"{counts[ASSUMPTION]} assumption failed")
+        note = (f"conclusion held without the assumption in {counts[ANYWAY]} of "
+                f"{counts[ASSUMPTION]}")
+        notes.append(note + (f", FAILED in {counts[NOT_ANYWAY]}" if counts[NOT_ANYWAY]
+                             else ""))
+    if counts[UNRESOLVED]:
+        notes.append(f"{counts[UNRESOLVED]} UNRESOLVED (integration)")
     if counts["error"]:
         notes.append(f"{counts['error']} raised")
     if counts[NOT_APPLICABLE]:
         notes.append(f"{counts[NOT_APPLICABLE]} n/a")
-    return text + (f" ({', '.join(notes)})" if notes else "")
+    return text + (f"; {'; '.join(notes)}" if notes else "")
 
 
 def convergence_summary(pairs: Sequence[tuple[Run, dict[str, Any]]]) -> tuple[
@@ -274,6 +337,15 @@ def _pyplot():
     return plt
 
 
+@functools.cache
+def _light_map():
+    """Light red to light green (dark text stays readable on every cell)."""
+    from matplotlib.colors import LinearSegmentedColormap
+
+    return LinearSegmentedColormap.from_list("held", ["#f4c7c3", "#fdf2c4", "#cfe8d0"])
+
+
+
 def property_figure(c: Campaign) -> bytes:
     """One panel per checked property: the fraction of runs that held, setting x k_s."""
     import numpy as np
@@ -286,33 +358,41 @@ def property_figure(c: Campaign) -> bytes:
     cells = c.cells()
     cols = min(3, len(props))
     rows = -(-len(props) // cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(2.0 + (0.8 + 0.45 * len(ks)) * cols,
-                                                  (0.9 + 0.3 * len(settings)) * rows + 0.4),
-                             squeeze=False, layout="constrained")
+    size = (2.0 + (0.8 + 0.45 * min(len(ks), 30)) * cols,
+            (0.9 + 0.5 * min(len(settings), 60)) * rows + 0.5)
+    fig, axes = plt.subplots(rows, cols, figsize=size, squeeze=False, layout="constrained")
     for ax in axes.flat[len(props):]:
         ax.set_visible(False)
+    annotate = len(settings) * len(ks) <= MAX_ANNOTATED  # else colours only
+    ticks = range(0, len(ks), max(1, -(-len(ks) // 30)))  # at most 30 k_s labels
     for ax, prop in zip(axes.flat, props, strict=False):
         grid = np.full((len(settings), len(ks)), np.nan)
         for i, s in enumerate(settings):
             for j, k in enumerate(ks):
                 pairs = cells.get((s, k), [])
                 counts = _counts(pairs, prop)
-                judged = counts[HELD] + counts[FAILED]
-                if judged:
-                    grid[i, j] = counts[HELD] / judged
-                label = "n/a" if not pairs else (
-                    f"{counts[HELD]}/{len(pairs)}" + ("*" if counts[ASSUMPTION] else ""))
-                ax.text(j, i, label, ha="center", va="center", fontsize=7)
-        cmap = plt.get_cmap("RdYlGn").with_extremes(bad="0.85")
+                judged = counts[HELD] + counts[FAILED] + counts[ANYWAY] + counts[NOT_ANYWAY]
+                if judged:  # colour: the conclusion, with or without the assumptions
+                    grid[i, j] = (counts[HELD] + counts[ANYWAY]) / judged
+                if not annotate:
+                    continue
+                label = "n/a" if not pairs else f"{counts[HELD]}/{len(pairs)}"
+                if counts[ASSUMPTION]:
+                    label += f"\n+{counts[ANYWAY]}/{counts[ASSUMPTION]} w/o"
+                if counts[UNRESOLVED]:
+                    label += f"\n{counts[UNRESOLVED]} unres."
+                ax.text(j, i, label, ha="center", va="center", fontsize=6)
+        cmap = _light_map().with_extremes(bad="#eeeeee")
         ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
-        ax.set_xticks(range(len(ks)), [f"{k:g}" for k in ks], fontsize=7)
+        ax.set_xticks(list(ticks), [f"{ks[j]:g}" for j in ticks], fontsize=7)
         first = ax in axes[:, 0]
         ax.set_yticks(range(len(settings)), settings if first else [""] * len(settings),
                       fontsize=7)
         ax.set_xlabel("k_s", fontsize=8)
         ax.set_title(prop, fontsize=9)
-    fig.suptitle("runs held / runs (* some had an assumption fail; grey: none judged)",
-                 fontsize=8)
+    fig.suptitle("held / runs; +a/b w/o: an assumption failed in b runs and the conclusion "
+                 "held anyway in a; colour: runs whose conclusion held; grey: none resolved",
+                 fontsize=7)
     return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
 
 
@@ -323,7 +403,9 @@ def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
     plt = _pyplot()
     cells = c.cells()
     fig, ax = plt.subplots(figsize=(6.4, 3.8))
-    top = max(r.seconds for r in c.runs)
+    highest = [max(times) for pairs in cells.values()
+               for times in [convergence_summary(pairs)[0]] if times]
+    top = 1.12 * max(highest) if highest else max(r.seconds for r in c.runs)
     for i, s in enumerate(c.settings()):
         xs, med, lo, hi, miss = [], [], [], [], []
         for k in c.k_values():
@@ -339,12 +421,13 @@ def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
         ax.errorbar(xs, med, yerr=[lo, hi], color=color, marker="o", capsize=3,
                     label=f"{s} [{gates.get(s, '')}]")
         if miss:
-            ax.plot(miss, [top * (1.03 + 0.02 * i)] * len(miss), "x", color=color)
-    ax.axhline(top, color="k", lw=0.5, ls="--")
+            ax.plot(miss, [top * (1.0 + 0.02 * i)] * len(miss), "x", color=color)
+    ax.axhline(top, color="0.6", lw=0.5, ls="--")
+    ax.set_ylim(0.0, top * (1.06 + 0.02 * len(c.settings())))  # fitted to the data
     ax.set_xlabel("k_s")
     ax.set_ylabel("convergence time [s]")
     ax.set_title(f"|dbar - d_r| < {c.spec.convergence_threshold:g} from then on "
-                 "(x: not converged by T)", fontsize=9)
+                 "(x above the dashed line: not converged by T)", fontsize=9)
     ax.legend(fontsize=7)
     return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
 
@@ -382,8 +465,10 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         ("run lengths", spec.seconds), ("steps", spec.step)) if len(v) > 1)
     blocks.append(("p", f"{len(c.runs)} runs ({axes or 'one setting'}); {len(stored)} stored, "
                    f"{len(raised)} raised. Properties checked: "
-                   f"{', '.join(spec.properties) or 'none'}, each with runs at steps h and "
-                   "h/2 (the step-doubling tolerance of verify.sim.properties). Spec "
+                   f"{', '.join(spec.properties) or 'none'}, all from one pair of runs at "
+                   "steps h and h/2 (the step-doubling tolerance of verify.sim.properties; "
+                   "error-controlled steps where the fixed step cannot resolve the loop, "
+                   "and unresolved, never held, where neither can). Spec "
                    f"sha256 {spec.source_sha256[:16] or '-'}."))
 
     gates = {}
@@ -399,7 +484,8 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
                ("table", Table(["human", "file", "sha256", "gate", "reason"], human_rows))]
 
     settings, ks, cells = c.settings(), c.k_values(), c.cells()
-    gate_of = {setting(r, c.axes): gates.get(r.human.label, "") for r in c.runs}
+    gate_of = {s: gates.get(r.human.label, "") for r, s in zip(c.runs, c._setting_of,
+                                                               strict=True)}
     header = ["setting [gate]", *[f"k_s = {k:g}" for k in ks]]
     blocks.append(("h2", "Properties over the swept parameters"))
     if c.axes:
@@ -411,6 +497,7 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
                                          if cells.get((s, k)) else "-" for k in ks]]
                 for s in settings]
         blocks += [("p", PROPERTY_TITLE[prop]), ("table", Table(header, rows))]
+    blocks += findings_blocks(c, gate_of)
     figures: dict[str, bytes] = {}
     if spec.properties and stored:
         figures["figures/properties.png"] = property_figure(c)
@@ -453,6 +540,19 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         blocks.append(("h2", f"Runs that raised ({len(raised)})"))
         blocks.append(("table", Table([*PARAMETER_HEADER, "error"], [
             [*_parameters(r), c.rows[r.key]["error"]] for r in raised[:MAX_LISTED]])))
+    unresolved = [(r, [p for p in spec.properties
+                       if c.rows[r.key].get(column(p)) == UNRESOLVED]) for r in stored]
+    unresolved = [(r, ps) for r, ps in unresolved if ps]
+    if unresolved:
+        blocks.append(("h2", f"Runs the integration did not resolve ({len(unresolved)})"))
+        blocks.append(("p", "Their properties are neither held nor failed: the fixed step is "
+                       "beyond CF4's stability for the loop's rates, or the error estimate "
+                       "exceeds 1 % of the checked quantity's scale, and error-controlled "
+                       "steps did not resolve them within the step budget. Rerun with a "
+                       "smaller step."))
+        blocks.append(("table", Table([*PARAMETER_HEADER, "unresolved", "why"], [
+            [*_parameters(r), ", ".join(ps), c.rows[r.key].get("engine_note") or "-"]
+            for r, ps in unresolved[:MAX_LISTED]])))
     missing = [r for r in c.runs if r.key not in c.rows]
     if missing:
         blocks.append(("p", f"{len(missing)} runs have no row yet (interrupted or lost); "
@@ -464,6 +564,53 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         blocks.append(("code", Code(simulate_command(c.runs[0], cwd=cwd))))
     commands = "".join(f"{r.key}  {simulate_command(r, cwd=cwd)}\n" for r in c.runs)
     return blocks, figures, commands
+
+
+def engine_counts(c: Campaign) -> dict[str, int]:
+    """Stored runs per integration engine (``fixed``, ``adaptive rtol=...``, ``none``)."""
+    counts: dict[str, int] = defaultdict(int)
+    for r in c.runs:
+        row = c.rows.get(r.key)
+        if row is not None and not row.get("error"):
+            counts[row.get("engine") or "-"] += 1
+    return dict(sorted(counts.items()))
+
+
+def findings_blocks(c: Campaign, gate_of: dict[str, str]) -> list[Block]:
+    """Where a conclusion held although an assumption failed (and where it failed)."""
+    cells = c.cells()
+    rows = []
+    for prop in c.spec.properties:
+        for s in c.settings():
+            counts = {ANYWAY: 0, NOT_ANYWAY: 0, ASSUMPTION: 0}
+            ks_anyway, ks_not = [], []
+            for k in c.k_values():
+                got = _counts(cells.get((s, k), []), prop)
+                for name in counts:
+                    counts[name] += got[name]
+                if got[ANYWAY]:
+                    ks_anyway.append(f"{k:g}")
+                if got[NOT_ANYWAY]:
+                    ks_not.append(f"{k:g}")
+            if counts[ASSUMPTION]:
+                rows.append([prop, f"{s} [{gate_of[s]}]", str(counts[ASSUMPTION]),
+                             f"{counts[ANYWAY]} (k_s {', '.join(ks_anyway) or '-'})",
+                             f"{counts[NOT_ANYWAY]} (k_s {', '.join(ks_not) or '-'})"])
+    engines = engine_counts(c)
+    out: list[Block] = [("h2", "What held outside the assumptions")]
+    out.append(("p", "Runs whose assumption failed along the trajectory (for Theorem 1: "
+                "a human without a passivity certificate, sym(R_rl) > 0 lost, a switching "
+                "reference) are outside the paper's guarantees; the conclusion was still "
+                "checked on them, within the same tolerance. Integration engines of the "
+                "stored runs: " + (", ".join(f"{k} {v}" for k, v in engines.items()) or "-")
+                + "."))
+    if rows:
+        out.append(("table", Table(["property", "setting [gate]", "assumption failed",
+                                    "conclusion held without the assumption",
+                                    "conclusion failed"], rows)))
+    else:
+        out.append(("p", "No run had an assumption fail."))
+    return out
 
 
 def timing_blocks(c: Campaign, session: dict[str, str]) -> list[Block]:

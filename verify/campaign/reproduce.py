@@ -43,7 +43,7 @@ def simulate_arguments(run: Run, *, cwd: Path | None = None,
              repr(float(run.step))]
     if run.properties:
         args.append("--check")
-    args += ["--no-plots", "--out", out or f"reports/simulation/{run.key}"]
+    args += ["--no-plots", "--out", out or f"build/simulation/{run.key}"]
     return args
 
 

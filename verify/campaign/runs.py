@@ -19,6 +19,7 @@ import functools
 import hashlib
 import itertools
 import json
+from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
 from pathlib import Path
@@ -28,7 +29,7 @@ import numpy as np
 from verify.inputs.campaign_spec import CampaignSpec, HumanEntry
 from verify.so3 import Array
 
-KEY_VERSION = 1  # bump when the meaning of a row's columns changes
+KEY_VERSION = 2  # bump when the meaning of a row's columns changes
 
 #: The code a row's figures depend on: the simulator, the paper's system, SO(3) maps and
 #: the per-run checks. Their bytes enter every run key, so ``--resume`` after a change of
@@ -101,6 +102,27 @@ def run_key(human: Human, k_s: float, n: int, seed: int, autonomous: str, refere
     return hashlib.sha256(text.encode()).hexdigest()[:24]
 
 
+def spec_fingerprint(spec: CampaignSpec) -> str:
+    """SHA-256 (24 hex digits) of what a spec sweeps: its name, every axis (floats by
+    their exact value), the humans (model files by content) and the checks. Comments,
+    layout and the spec's path do not enter it; the simulator's code does not either
+    (a code change re-runs rows, it does not make the store another campaign's)."""
+    humans = [{"kind": h.kind, "sha256": h.sha256 or "",
+               "gain": None if h.gain is None else float(h.gain).hex(),
+               "family": h.family or "", "count": h.count, "seed": h.seed}
+              for h in spec.humans]
+    payload = {
+        "name": spec.name, "k_s": [float(k).hex() for k in spec.k_s], "n": list(spec.n),
+        "seeds": list(spec.seeds), "autonomous": list(spec.autonomous),
+        "reference": list(spec.reference), "seconds": [float(t).hex() for t in spec.seconds],
+        "step": [float(h).hex() for h in spec.step], "humans": humans,
+        "properties": list(spec.properties),
+        "convergence_threshold": float(spec.convergence_threshold).hex(),
+    }
+    text = json.dumps(payload, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()[:24]
+
+
 def exact_decimal(x: float) -> str:
     """The exact decimal expansion of a float, as a TOML number (it reads back exactly)."""
     if not np.isfinite(x):
@@ -167,43 +189,87 @@ def _distinct_labels(humans: list[Human]) -> list[Human]:
             if len(identities[h.label]) > 1 and h.sha256 else h for h in humans]
 
 
-def expand(spec: CampaignSpec) -> list[Run]:
-    """Every run of ``spec``, in a fixed order (humans, k_s, n, autonomous, reference,
-    seconds, step, seeds), runs with equal keys merged."""
+def _distinct(values: tuple) -> list:
+    """The values in order, repeats dropped (floats by exact value, as in the key)."""
+    seen: dict[object, object] = {}
+    for v in values:
+        seen.setdefault(float(v).hex() if isinstance(v, float) else v, v)
+    return list(seen.values())
+
+
+def distinct_humans(spec: CampaignSpec) -> list[Human]:
+    """The spec's humans, one per identity (equal model files are one human)."""
     humans = _distinct_labels([h for entry in spec.humans for h in _humans(entry)])
-    runs: dict[str, Run] = {}
-    for human, k_s, n, auto, ref, T, h, seed in itertools.product(
-            humans, spec.k_s, spec.n, spec.autonomous, spec.reference, spec.seconds,
-            spec.step, spec.seeds):
+    seen: dict[tuple[object, ...], Human] = {}
+    for h in humans:
+        seen.setdefault(tuple(h.identity().items()), h)
+    return list(seen.values())
+
+
+def _axes(spec: CampaignSpec) -> list[list]:
+    return [_distinct(a) for a in (spec.k_s, spec.n, spec.autonomous, spec.reference,
+                                   spec.seconds, spec.step, spec.seeds)]
+
+
+def run_total(spec: CampaignSpec, humans: list[Human] | None = None) -> int:
+    """How many runs :func:`iter_runs` yields (without expanding them)."""
+    count = len(distinct_humans(spec) if humans is None else humans)
+    for axis in _axes(spec):
+        count *= len(axis)
+    return count
+
+
+def iter_runs(spec: CampaignSpec, humans: list[Human] | None = None) -> Iterator[Run]:
+    """Every run of ``spec``, lazily, in a fixed order (humans, k_s, n, autonomous,
+    reference, seconds, step, seeds). Humans and axis values are made distinct first, so
+    the runs' keys are distinct with no set of keys held. ``humans`` (from
+    :func:`distinct_humans`, e.g. with file paths set) replaces the spec's."""
+    humans = distinct_humans(spec) if humans is None else humans
+    for human, k_s, n, auto, ref, T, h, seed in itertools.product(humans, *_axes(spec)):
         key = run_key(human, k_s, n, seed, auto, ref, T, h, spec.properties,
                       spec.convergence_threshold)
-        runs.setdefault(key, Run(key, human, k_s, n, seed, auto, ref, T, h, spec.properties,
-                                 spec.convergence_threshold))
-    return list(runs.values())
+        yield Run(key, human, k_s, n, seed, auto, ref, T, h, spec.properties,
+                  spec.convergence_threshold)
 
 
-def write_family_files(runs: list[Run], folder: Path) -> list[Run]:
+def expand(spec: CampaignSpec) -> list[Run]:
+    """Every run of ``spec`` as a list (:func:`iter_runs`)."""
+    return list(iter_runs(spec))
+
+
+def place_family_files(humans: list[Human], folder: Path) -> list[Human]:
     """Write the model files of drawn humans into ``folder`` (atomically) and return the
-    runs with those paths set, so that their reproducing commands can name a file."""
+    humans with those paths set, so that their reproducing commands can name a file."""
     from dataclasses import replace
 
     from verify.report.atomic import write_atomic
 
-    placed: dict[str, Path] = {}
     out = []
-    for run in runs:
-        human = run.human
+    for human in humans:
         if human.kind == "model" and human.path is None and human.text is not None:
-            if human.sha256 not in placed:
-                stem = human.label.replace(" ", "-")
-                path = folder / f"{stem}-{human.sha256[:12]}.toml"
-                if not (path.is_file() and path.read_bytes() == human.text):
-                    write_atomic(path, human.text)
-                placed[human.sha256] = path
-            run = replace(run, human=replace(human, path=placed[human.sha256]))
-        out.append(run)
+            stem = human.label.replace(" ", "-")
+            path = folder / f"{stem}-{human.sha256[:12]}.toml"
+            if not (path.is_file() and path.read_bytes() == human.text):
+                write_atomic(path, human.text)
+            human = replace(human, path=path)
+        out.append(human)
     return out
 
 
-__all__ = ["Human", "Run", "exact_decimal", "expand", "family_member", "model_file_text",
-           "run_key", "write_family_files"]
+def write_family_files(runs: list[Run], folder: Path) -> list[Run]:
+    """The runs with their drawn humans' model files written (:func:`place_family_files`)."""
+    from dataclasses import replace
+
+    placed: dict[tuple[object, ...], Human] = {}
+    out = []
+    for run in runs:
+        ident = tuple(run.human.identity().items())
+        if ident not in placed:
+            placed[ident] = place_family_files([run.human], folder)[0]
+        out.append(replace(run, human=placed[ident]))
+    return out
+
+
+__all__ = ["Human", "Run", "distinct_humans", "exact_decimal", "expand", "family_member",
+           "iter_runs", "model_file_text", "place_family_files", "run_key", "run_total",
+           "spec_fingerprint", "write_family_files"]

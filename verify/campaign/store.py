@@ -8,10 +8,15 @@ writer or in an earlier part) are dropped, so a run computed twice (a retried ta
 resumed campaign) is stored once. Reading merges the parts and keeps the first row of a
 key in part-name order (parts are named by time), which also settles the rare case of
 two writers on one folder.
+
+``campaign.json`` in the folder names the campaign the store belongs to (the spec's
+fingerprint, :func:`verify.campaign.runs.spec_fingerprint`, and name): it is written
+with the first part, and a store of another campaign is refused before any run.
 """
 
 from __future__ import annotations
 
+import json
 import time
 import uuid
 from collections.abc import Iterable, Sequence
@@ -28,13 +33,15 @@ from verify.report.atomic import write_atomic
 
 _PROPERTY_FIELDS = [f for p in PROPERTIES for f in (
     pa.field(column(p), pa.string()), pa.field(f"{column(p)}_violation", pa.float64()),
-    pa.field(f"{column(p)}_tolerance", pa.float64()))]
+    pa.field(f"{column(p)}_tolerance", pa.float64()),
+    pa.field(f"{column(p)}_conclusion", pa.string()))]
 
 SCHEMA = pa.schema([
     pa.field("key", pa.string(), nullable=False),
     pa.field("human", pa.string()), pa.field("human_kind", pa.string()),
     pa.field("human_sha256", pa.string()), pa.field("human_gain", pa.float64()),
     pa.field("human_gate", pa.string()),
+    pa.field("engine", pa.string()), pa.field("engine_note", pa.string()),
     pa.field("k_s", pa.float64()), pa.field("n", pa.int64()), pa.field("seed", pa.int64()),
     pa.field("autonomous", pa.string()), pa.field("reference", pa.string()),
     pa.field("seconds", pa.float64()), pa.field("step", pa.float64()),
@@ -56,6 +63,37 @@ class ResultStore:
         if self.folder.exists() and not self.folder.is_dir():
             raise VerifyInputError(f"{self.folder}: the result store must be a folder")
         self._keys: set[str] | None = None
+        self._record: dict[str, str] | None = None  # campaign.json to write (bind)
+
+    MANIFEST = "campaign.json"
+
+    def bind(self, fingerprint: str, name: str) -> None:
+        """Tie the store to one campaign: record ``fingerprint`` in an empty store, and
+        refuse (one line, before any run) a store that belongs to another campaign or
+        holds rows with no record of their campaign."""
+        manifest = self.folder / self.MANIFEST
+        if manifest.is_file():
+            try:
+                found = json.loads(manifest.read_text(encoding="utf-8"))
+                theirs, their_name = str(found["spec_fingerprint"]), str(found["name"])
+            except (OSError, ValueError, KeyError, TypeError, UnicodeDecodeError):
+                raise VerifyInputError(f"{manifest}: not a readable campaign record; this "
+                                       "folder was not written by verify campaign: choose "
+                                       "another --out") from None
+            if theirs != fingerprint:
+                raise VerifyInputError(
+                    f"{self.folder} holds the store of another campaign ({their_name!r}, "
+                    f"spec fingerprint {theirs}; this spec's is {fingerprint}): choose "
+                    "another --out")
+            return
+        if manifest.exists():
+            raise VerifyInputError(f"{manifest}: not a regular file; choose another --out")
+        if self.parts():
+            raise VerifyInputError(f"{self.folder} holds rows with no record of their "
+                                   f"campaign ({self.MANIFEST} is missing): choose another "
+                                   "--out")
+        # written with the first rows, so that a refused or failed start leaves nothing
+        self._record = {"spec_fingerprint": fingerprint, "name": name}
 
     def parts(self) -> list[Path]:
         """The part files, in the order they were written."""
@@ -92,6 +130,9 @@ class ResultStore:
         table = pa.Table.from_pylist([{f.name: r.get(f.name) for f in SCHEMA} for r in fresh],
                                      schema=SCHEMA)
         self.folder.mkdir(parents=True, exist_ok=True)
+        manifest = self.folder / self.MANIFEST
+        if self._record is not None and not manifest.exists():
+            write_atomic(manifest, json.dumps(self._record, sort_keys=True, indent=1) + "\n")
         name = f"part-{time.time_ns():020d}-{uuid.uuid4().hex[:8]}.parquet"
         sink = pa.BufferOutputStream()
         pq.write_table(table, sink)

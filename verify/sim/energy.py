@@ -63,8 +63,8 @@ def _batched(traj: Trajectory, uses: bool) -> tuple[Array, Array | None] | None:
     s = traj.scenario
     human = s.human
     form = fused.human_form(human)
-    if form is None or not fused.laws_unmodified():
-        return None
+    if form is None or form[4] == "noisy" or not fused.laws_unmodified():
+        return None  # the noisy operator's held values are read by the loop below
     A, B, C, D, command = form
     Rb, Rl, Rr, x = traj.R_bar, traj.R_l, traj.R_r, traj.human_state
     T, k = traj.t.shape[0], D.shape[0]
@@ -149,11 +149,12 @@ def energy(traj: Trajectory, prefer_storage: bool = True, *, batched: bool = Tru
 def _energy(traj: Trajectory, Rbar_r: Array, R_rl: Array, storage: Array | None,
             V_dot: Array, uses: bool) -> Energy:
     k_s = traj.scenario.k_s
-    bound = -0.5 * k_s * (lambda_min_sym2(Rbar_r) + lambda_min_sym2(R_rl)) * phi(
+    lmin_rl = lambda_min_sym2(R_rl)
+    bound = -0.5 * k_s * (lambda_min_sym2(Rbar_r) + lmin_rl) * phi(
         transpose(traj.R_l) @ traj.R_bar)
     return Energy(
         h=np.trace(Rbar_r, axis1=-2, axis2=-1) - 1.0,
-        lmin_rl=lambda_min_sym2(R_rl),
+        lmin_rl=lmin_rl,
         S_r=phi(Rbar_r),
         S_rl=phi(R_rl),
         S_h_integral=traj.supply,

@@ -7,7 +7,9 @@ parts the kernels model; a human class or an autonomous input defined elsewhere,
 closed-loop law replaced at run time (as mutation tests do), gets the Python field.
 
 Supported: humans :class:`LTIHuman`, :class:`StaticGainHuman`, :class:`VROperator`,
-:class:`SignalHuman` (exact types); autonomous inputs zero, :class:`Synchronisation`
+:class:`SignalHuman` (exact types), and with ``engine="compiled"`` only,
+:class:`ReactingNoisyHuman` (its held noise added to the output, B e and D e left out
+before the operator reacts); autonomous inputs zero, :class:`Synchronisation`
 and :class:`SignalInput` (a function of time only, e.g. :class:`SmoothRandom`).
 """
 
@@ -21,6 +23,7 @@ from verify.sim import kernels
 from verify.sim.humans import Human, LTIHuman, SignalHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Autonomous, SignalInput, Synchronisation
 from verify.sim.lie_group import cf4_mixed_step
+from verify.sim.noisy_humans import ReactingNoisyHuman
 from verify.sim.scenario import ClosedLoop, Held, Scenario
 from verify.so3 import Array
 from verify.system import laws, stealthy
@@ -51,6 +54,8 @@ def human_form(human: Human) -> tuple[Array, Array, Array, Array, str] | None:
         return _EMPTY2, _EMPTY2, _EMPTY2, _EMPTY2, "held"
     if t is SignalHuman:
         return _EMPTY2, _EMPTY2, _EMPTY2, _EMPTY2, "signal"
+    if t is ReactingNoisyHuman:
+        return human.A, human.B, human.C, human.D, "noisy"
     return None
 
 
@@ -110,6 +115,19 @@ class CompiledStepper(Stepper):
         self.zero_command = np.zeros((4, 3))
         self.rotations = [_c(R) for R in s.reference.rotations]
         self.workspace = kernels.workspace(s.n, s.human.state_size + 1)
+        self.no_add = np.zeros(0)
+        self.zero_B, self.zero_D = np.zeros_like(self.hB), np.zeros_like(self.hD)
+
+    def _human_terms(self, held: Held) -> tuple[Array, Array, Array]:
+        """(B, D, added output) of the period: the noisy operator's held noise, and no
+        B e or D e while it has not reacted (:class:`ReactingNoisyHuman`)."""
+        if self.command != "noisy":
+            return self.hB, self.hD, self.no_add
+        k = self.hD.shape[0]
+        u_add = np.ascontiguousarray(held.human[:k], dtype=float)
+        if held.human[k]:
+            return self.zero_B, self.zero_D, u_add
+        return self.hB, self.hD, u_add
 
     def hold(self, t: float, Y: Array) -> Held:
         R_r = self.rotations[self.reference.segment(t)]
@@ -150,21 +168,59 @@ class CompiledStepper(Stepper):
         c_stage, Oa = self._inputs((t,), held)
         F, g = np.empty((Y.shape[0], 3)), np.empty(x.shape[0])
         Om, work = self.workspace[3], self.workspace[4]
-        if kernels.closed_loop_field(Y, x, self.k_s, held.R_r, c_stage[0], self.hA, self.hB,
-                                     self.hC, self.hD, self.auto, self.gain, Oa[0], self.tol,
-                                     F, g, Om, work) != kernels.OK:
+        B, D, u_add = self._human_terms(held)
+        if kernels.closed_loop_field(Y, x, self.k_s, held.R_r, c_stage[0], self.hA, B,
+                                     self.hC, D, self.auto, self.gain, Oa[0], self.tol,
+                                     F, g, Om, work, u_add) != kernels.OK:
             raise self._undefined()
         return F, g
 
     def step(self, t: float, Y: Array, x: Array, h: float, held: Held) -> tuple[Array, Array]:
         c_stage, Oa = self._inputs((t, t + 0.5 * h, t + h), held)
         Y_out, x_out = np.empty_like(Y), np.empty_like(x)
-        status = kernels.cf4_step(Y, x, h, self.k_s, held.R_r, c_stage, self.hA, self.hB,
-                                  self.hC, self.hD, self.auto, self.gain, Oa, self.tol,
-                                  Y_out, x_out, *self.workspace)
+        B, D, u_add = self._human_terms(held)
+        status = kernels.cf4_step(Y, x, h, self.k_s, held.R_r, c_stage, self.hA, B,
+                                  self.hC, D, self.auto, self.gain, Oa, self.tol,
+                                  Y_out, x_out, *self.workspace, u_add)
         if status != kernels.OK:
             raise self._undefined()
         return Y_out, x_out
+
+
+def run_fixed(stepper: Stepper, rec, Y: Array, x: Array, k0: int, k1: int, dt: float
+              ) -> tuple[Array, Array, int, int]:
+    """Steps k0 .. k1 - 1 in one compiled call when the stepper allows it
+    (:func:`verify.sim.kernels.cf4_run`), recording into ``rec`` (a
+    :class:`verify.sim.run.Recorder`). Returns (Y, x, k, status) with k where it stopped;
+    status -1 when the stepper has no whole-run kernel (nothing done)."""
+    if not (isinstance(stepper, CompiledStepper) and stepper.command in ("none", "held")
+            and stepper.auto != kernels.AUTO_GIVEN):
+        return Y, x, k0, -1
+    h = stepper.human
+    held = stepper.command == "held"
+    if not hasattr(stepper, "_segments"):
+        ref = stepper.reference
+        times = np.arange(rec.t.shape[0]) * dt  # k * dt, as the per-step loop forms it
+        stepper._segments = (np.zeros(times.shape[0], dtype=np.int64) if ref.period is None
+                             else np.minimum(np.floor(times / ref.period + 1e-9),
+                                             len(ref.rotations) - 1).astype(np.int64))
+        stepper._rotations = np.ascontiguousarray(np.stack(stepper.rotations))
+    Y, x = np.array(Y, dtype=float), np.array(x, dtype=float)
+    Y_out, x_out = np.empty_like(Y), np.empty_like(x)
+    s = np.empty((rec.t.shape[0], 3))
+    dirs = rec.d if rec.d is not None else np.empty((0, rec.n, 3))
+    k, status = kernels.cf4_run(
+        Y, x, k0, k1, dt, stepper.k_s, stepper._rotations, stepper._segments, int(held),
+        float(h.k_omega) if held else 0.0, float(h.saturation) if held else 0.0,
+        float(h.tilt) if held else 0.0, stepper.hA, stepper.hB, stepper.hC, stepper.hD,
+        stepper.auto, stepper.gain, stepper.tol, rec.R_bar, rec.R_l, rec.R_r, rec.x, s,
+        dirs, rec.every if rec.d is not None else 0, Y_out, x_out, *stepper.workspace)
+    if k > k0:
+        norm = np.linalg.norm(s[k0:k], axis=1)
+        rec.coherence[k0:k] = norm / rec.n
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rec.dbar[k0:k] = np.where(norm[:, None] > 0, s[k0:k] / norm[:, None], np.nan)
+    return Y, x, k, int(status)
 
 
 def stepper(scenario: Scenario, engine: str = "auto") -> Stepper:
@@ -175,6 +231,10 @@ def stepper(scenario: Scenario, engine: str = "auto") -> Stepper:
         return Stepper(loop)
     h_form = human_form(scenario.human)
     auto_form = _autonomous_form(scenario.autonomous)
+    if h_form is not None and h_form[4] == "noisy" and engine != "compiled":
+        # opt-in only: the shipped experiment logs were generated by the Python field,
+        # and "auto" must keep regenerating them byte for byte
+        h_form = None
     if laws_unmodified() and h_form is not None and auto_form is not None:
         return CompiledStepper(loop, h_form, auto_form)
     if engine == "compiled":

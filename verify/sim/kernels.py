@@ -200,8 +200,11 @@ def consensus(R: Array, gain: float, out: Array) -> None:
 def closed_loop_field(Y: Array, x: Array, k_s: float, R_r: Array, c_s: Array,
                       hA: Array, hB: Array, hC: Array, hD: Array, auto: int, gain: float,
                       Oa: Array, tol: float, F: Array, g: Array, Omega: Array,
-                      work: Array) -> int:
-    """(F, g) of the closed loop at (Y, x): the field of ``ClosedLoop.field`` (see module)."""
+                      work: Array, u_add: Array) -> int:
+    """(F, g) of the closed loop at (Y, x): the field of ``ClosedLoop.field`` (see module).
+
+    ``u_add`` (ports,) is added to the human's output C x + D e (a held operator noise,
+    :class:`verify.sim.noisy_humans.ReactingNoisyHuman`; empty for the other humans)."""
     n = Y.shape[0] - 2
     m = x.shape[0] - 1
     k = hD.shape[0]
@@ -215,6 +218,8 @@ def closed_loop_field(Y: Array, x: Array, k_s: float, R_r: Array, c_s: Array,
     ob = np.zeros(3)  # omega_h^b
     for r in range(k):
         ob[r] = _affine_row(hC, hD, x, e, r, m, k)  # C x + D e
+    for r in range(u_add.shape[0]):
+        ob[r] += u_add[r]
     for r in range(3):
         ob[r] += Rl[0, r] * c_s[0] + Rl[1, r] * c_s[1] + Rl[2, r] * c_s[2]
     l0, l1, l2 = _vee_at_b(Rl, Rb)
@@ -247,7 +252,7 @@ def workspace(n: int, q: int) -> tuple[Array, Array, Array, Array, Array]:
 def cf4_step(Y: Array, x: Array, h: float, k_s: float, R_r: Array, c_stage: Array,
              hA: Array, hB: Array, hC: Array, hD: Array, auto: int, gain: float,
              Oa_stage: Array, tol: float, Y_out: Array, x_out: Array, Ys: Array, Fs: Array,
-             xs: Array, Om: Array, work: Array) -> int:
+             xs: Array, Om: Array, work: Array, u_add: Array) -> int:
     """One CF4 step (Celledoni-Marthinsen-Owren) of the closed loop from (Y, x) over h.
 
     ``c_stage`` (4, 3) and ``Oa_stage`` (4, n, 3) (or (4, 0, 3)) give the spatial human
@@ -264,7 +269,7 @@ def cf4_step(Y: Array, x: Array, h: float, k_s: float, R_r: Array, c_stage: Arra
 
     def field(Ys, xs, s, F, g):
         return closed_loop_field(Ys, xs, k_s, R_r, c_stage[s], hA, hB, hC, hD, auto, gain,
-                                 Oa_stage[s], tol, F, g, Om, work)
+                                 Oa_stage[s], tol, F, g, Om, work, u_add)
 
     if field(Y, x, 0, F1, g1) != OK:
         return DBAR_UNDEFINED
@@ -297,6 +302,65 @@ def cf4_step(Y: Array, x: Array, h: float, k_s: float, R_r: Array, c_stage: Arra
     for j in range(q):
         x_out[j] = x[j] + h / 6.0 * (g1[j] + 2.0 * g2[j] + 2.0 * g3[j] + g4[j])
     return OK
+
+
+#: status of :func:`cf4_run`: the VR command left the kernel's branch (Python takes the step)
+NEEDS_PYTHON = 2
+
+
+@njit(cache=True, fastmath=_CONTRACT)
+def cf4_run(Y: Array, x: Array, k0: int, k1: int, h: float, k_s: float, rotations: Array,
+            segment: Array, held_kind: int, k_omega: float, saturation: float, tilt: float,
+            hA: Array, hB: Array, hC: Array, hD: Array, auto: int, gain: float, tol: float,
+            out_Rbar: Array, out_Rl: Array, out_Rr: Array, out_x: Array, out_s: Array,
+            dirs: Array, every: int, Y_out: Array, x_out: Array, Ys: Array, Fs: Array,
+            xs: Array, Om: Array, work: Array) -> tuple[int, int]:
+    """Steps k0 .. k1 - 1 of a fixed-step run in one call, recording each sample first.
+
+    Step k holds R_r = rotations[segment[k]] and, for the VR operator (``held_kind`` 1),
+    its command from :func:`vr_command`; the stages are those of :func:`cf4_step` with
+    no given input. Sample k stores R-bar, R_l, R_r, x, s = sum_i d_i (summed in body
+    order, as ``sum(axis=0)``) and, every ``every`` samples, the d_i. (Y, x) are advanced
+    in place. Returns (k, status): k = k1 and OK, or the step k where the run stopped
+    (DBAR_UNDEFINED; NEEDS_PYTHON when the VR command left the kernel's branch; sample k
+    is then not recorded).
+    """
+    n = Y.shape[0] - 2
+    q = x.shape[0]
+    c_stage = np.zeros((4, 3))
+    c = np.zeros(3)
+    no_input = np.zeros((4, 0, 3))
+    no_add = np.zeros(0)
+    for k in range(k0, k1):
+        R_r = rotations[segment[k]]
+        if held_kind == 1:
+            if not vr_command(Y[n + 1], R_r, k_omega, saturation, tilt, c):
+                return k, NEEDS_PYTHON
+            for j in range(4):
+                c_stage[j, 0], c_stage[j, 1], c_stage[j, 2] = c[0], c[1], c[2]
+        for r in range(3):
+            for col in range(3):
+                out_Rbar[k, r, col] = Y[n, r, col]
+                out_Rl[k, r, col] = Y[n + 1, r, col]
+                out_Rr[k, r, col] = R_r[r, col]
+        for j in range(q):
+            out_x[k, j] = x[j]
+        s0, s1, s2 = Y[0, 0, 2], Y[0, 1, 2], Y[0, 2, 2]
+        for i in range(1, n):
+            s0 += Y[i, 0, 2]
+            s1 += Y[i, 1, 2]
+            s2 += Y[i, 2, 2]
+        out_s[k, 0], out_s[k, 1], out_s[k, 2] = s0, s1, s2
+        if every > 0 and k % every == 0:
+            for i in range(n):
+                for r in range(3):
+                    dirs[k // every, i, r] = Y[i, r, 2]
+        if cf4_step(Y, x, h, k_s, R_r, c_stage, hA, hB, hC, hD, auto, gain, no_input, tol,
+                    Y_out, x_out, Ys, Fs, xs, Om, work, no_add) != OK:
+            return k, DBAR_UNDEFINED
+        Y[:] = Y_out
+        x[:] = x_out
+    return k1, OK
 
 
 @njit(cache=True, fastmath=_CONTRACT)

@@ -14,6 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from verify.errors import DbarUndefinedError, VerifyInputError
+from verify.sim import kernels
+from verify.sim.fused import run_fixed
 from verify.sim.fused import stepper as make_stepper
 from verify.sim.scenario import LOOP_RATE, Scenario
 from verify.so3 import Array
@@ -182,14 +184,27 @@ def simulate(
         return integrate_adaptive(stepper, rec, Y, x, seconds, rtol=rtol, atol=atol,
                                   progress=progress)
 
-    for k in range(steps):
+    # whole stretches of steps in one compiled call where the stepper allows it (the
+    # same stages and samples as the loop below); one Python step where it does not
+    chunk = steps if progress is None else max(1, steps // 200)
+    k = 0
+    while k < steps:
+        Y, x, k_done, status = run_fixed(stepper, rec, Y, x, k, min(steps, k + chunk), dt)
+        if k_done > k and progress is not None:
+            progress(k_done, steps)
+        k = k_done
+        if status == kernels.OK or k >= steps:
+            continue
+        if status == kernels.DBAR_UNDEFINED:
+            raise dbar_lost(k * dt, stepper._undefined())
         held = stepper.hold(k * dt, Y)
         rec.record(k, Y, x, held.R_r)
         try:
             Y, x = stepper.step(k * dt, Y, x, dt, held)
         except DbarUndefinedError as exc:
             raise dbar_lost(k * dt, exc) from None
+        k += 1
         if progress is not None:
-            progress(k + 1, steps)
+            progress(k, steps)
     rec.record(steps, Y, x, stepper.hold(steps * dt, Y).R_r)
     return rec.trajectory(Y[:scenario.n], steps=steps)
