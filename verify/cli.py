@@ -129,8 +129,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_id.add_argument("--band", metavar="W1:W2",
                       help="robust passivity on W1 <= w <= W2 rad/s (default: all "
                       "frequencies)")
-    p_id.add_argument("--out", type=Path, default=Path("identified"), metavar="DIR",
-                      help="model file, certificates and figures (default identified)")
+    p_id.add_argument("--out", type=Path, default=Path("build/identified"), metavar="DIR",
+                      help="model file, certificates and figures (default build/identified, "
+                      "git-ignored)")
     p_id.add_argument("--name", help="model name (default: the first log's name)")
     p_id.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_id.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")

@@ -1,0 +1,152 @@
+"""Whether the data identify the operator at all: the gate before any verdict (Section 4).
+
+A passivity verdict on an identified H(s) (Section 4, "Human Modeling", then the tests
+of Section 3) is only worth something if the model describes the operator. Before the
+command decides anything, :func:`check` asks four questions of the estimate and the
+data; a "no" to any of them means *cannot identify* with the reason, and no model is
+certified:
+
+1. **Does the model explain the validation data?** The honest validation fit of each
+   output (Section 4's fit ratio of the model simulated on the logged input,
+   :func:`verify.identify.quality.honest_fits`) must beat both the zero model (which
+   predicts u = 0) and the mean of the output: fit > ``MIN_FIT`` = 0 %. A model that
+   does worse than a constant describes nothing of the operator.
+2. **Is the estimate an interior, stable point?** Every denominator coefficient must lie
+   strictly inside the search box of :func:`verify.identify.pem.denominator_bounds`
+   (a_k > 0, the poles in the open left half-plane, and no coefficient within
+   ``BOUND_MARGIN`` of the upper bound). An estimate on the box's edge is not a
+   minimum of the criterion inside the model class, and its covariance is meaningless.
+3. **Is the information matrix well conditioned?** The covariance must be finite and
+   positive definite, and its correlation matrix (the scale-free form of the inverse
+   information matrix) must have condition number at most ``MAX_CONDITION``. A larger
+   one means some combination of parameters is not determined by the data.
+4. **Did the loop stay bounded?** In no trial may the RMS of e or u over the last
+   quarter exceed ``MAX_GROWTH`` times the RMS over the first quarter, and the signals
+   must be finite. A tracking trial settles after its reference change; a loop whose
+   signals grow within trials is diverging and its data do not come from the steady
+   operator Section 4 models.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from verify.errors import VerifyInputError
+from verify.identify.estimate import Estimate
+from verify.identify.experiment import Trial
+from verify.identify.pem import denominator_bounds
+from verify.identify.prediction import element_parameters
+
+__all__ = ["BOUND_MARGIN", "MAX_CONDITION", "MAX_GROWTH", "MIN_FIT", "CannotIdentify",
+           "Identifiability", "check", "condition_number", "growth", "interior"]
+
+MIN_FIT = 0.0  # %, honest validation fit each output must exceed
+BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
+MAX_CONDITION = 1e8  # of the parameters' correlation matrix
+MAX_GROWTH = 10.0  # RMS of the last quarter of a trial over that of its first quarter
+
+
+class CannotIdentify(VerifyInputError):
+    """The data do not determine the model (raised by the estimator when every
+    refinement ends on the search bound); the command reports *cannot identify*."""
+
+
+@dataclass(frozen=True)
+class Identifiability:
+    """The gate's answer: ``identifiable`` and, when not, the reasons (one per failed
+    question); ``figures`` holds the numbers checked (for the JSON summary)."""
+
+    identifiable: bool
+    reasons: tuple[str, ...] = ()
+    figures: dict[str, object] = field(default_factory=dict)
+
+    def to_json(self) -> dict[str, object]:
+        return {"identifiable": self.identifiable, "reasons": list(self.reasons),
+                **self.figures}
+
+
+def condition_number(covariance: np.ndarray) -> float:
+    """Condition number of the correlation matrix of ``covariance`` (inf if it is not
+    finite and positive definite)."""
+    cov = np.asarray(covariance, float)
+    if cov.size == 0 or not np.all(np.isfinite(cov)):
+        return float("inf")
+    d = np.diag(cov)
+    if not np.all(d > 0):
+        return float("inf")
+    corr = cov / np.sqrt(np.outer(d, d))
+    eig = np.linalg.eigvalsh((corr + corr.T) / 2)
+    if not eig[0] > 0:
+        return float("inf")
+    return float(eig[-1] / eig[0])
+
+
+def interior(estimate: Estimate, h: float) -> list[str]:
+    """Reasons why some output's denominator is unstable or on the search box's edge."""
+    out = []
+    structure = estimate.structure
+    upper = denominator_bounds(structure.poles, h)
+    for i in (0, 1):
+        _, a, _ = element_parameters(structure, estimate.theta, i)
+        roots = np.roots(np.concatenate(([1.0], a)))
+        names = structure.names()
+        if not np.all(np.isfinite(a)) or np.any(a <= 0) or np.any(roots.real >= 0):
+            out.append(f"output {i + 1}: the estimated denominator is not stable (poles "
+                       + ", ".join(f"{complex(r):.3g}" for r in roots) + ")")
+        elif np.any(a >= (1 - BOUND_MARGIN) * upper):
+            k = int(np.argmax(a / upper))
+            per = structure.zeros + 1 + structure.poles
+            name = names[i * per + structure.zeros + 1 + k]
+            out.append(f"output {i + 1}: {name} = {a[k]:.4g} sits on the search bound "
+                       f"{upper[k]:.4g} (poles at half the Nyquist frequency)")
+    return out
+
+
+def growth(trials: Sequence[Trial]) -> float:
+    """Largest ratio, over trials and the signals e and u, of the RMS over a trial's last
+    quarter to that over its first quarter (inf for non-finite samples)."""
+    worst = 0.0
+    for tr in trials:
+        for x in (np.asarray(tr.e, float), np.asarray(tr.u, float)):
+            if not np.all(np.isfinite(x)):
+                return float("inf")
+            q = x.shape[0] // 4
+            if q < 1:
+                continue
+            first = float(np.sqrt(np.mean(x[:q] ** 2)))
+            last = float(np.sqrt(np.mean(x[-q:] ** 2)))
+            if last == 0.0:
+                continue
+            worst = max(worst, last / first if first > 0 else float("inf"))
+    return worst
+
+
+def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[Trial],
+          h: float) -> Identifiability:
+    """The four questions of the module docstring, on the estimate, its honest validation
+    fit (per output) and the prepared trials (identification and validation)."""
+    reasons = []
+    fits = [float(x) for x in fit_validation]
+    for i, fit in enumerate(fits):
+        if not fit > MIN_FIT:
+            reasons.append(f"output {i + 1}: the model simulated on the validation input fits "
+                           f"{fit:.2f} %, no better than predicting the output's mean or "
+                           "zero")
+    reasons += interior(estimate, h)
+    cond = condition_number(estimate.covariance)
+    if not cond <= MAX_CONDITION:
+        reasons.append(f"the information matrix is ill-conditioned (condition number of "
+                       f"the parameters' correlation {cond:.3g} > {MAX_CONDITION:.0e}): "
+                       "some combination of parameters is not determined by the data")
+    grow = growth(trials)
+    if not grow <= MAX_GROWTH:
+        reasons.append(f"the loop diverged: a signal's RMS grew {grow:.3g}x from the first "
+                       f"to the last quarter of a trial (limit {MAX_GROWTH:g}x)")
+    figures = {"fit_validation": fits,
+               "condition_number": cond if np.isfinite(cond) else None,
+               "growth": grow if np.isfinite(grow) else None,
+               "min_fit": MIN_FIT, "max_condition": MAX_CONDITION, "max_growth": MAX_GROWTH}
+    return Identifiability(not reasons, tuple(reasons), figures)
