@@ -123,7 +123,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_id.add_argument("--structure", default="paper", metavar="S",
                       help="paper (default), P:Z (poles:zeros per diagonal element) or "
                       "order:N")
-    p_id.add_argument("--rate", metavar="HZ", help="rate after decimation (default 20)")
+    p_id.add_argument("--rate", metavar="HZ", help="rate after decimation in Hz, 'off' (no "
+                      "decimation) or 'auto' (default: 20 Hz for noisy logs, the log's rate "
+                      "for near-exact ones)")
     p_id.add_argument("--split", default="6:6", metavar="A:B",
                       help="trials for identification and validation (default 6:6)")
     p_id.add_argument("--band", metavar="W1:W2",

@@ -81,7 +81,7 @@ class Plan:
 
     logs: tuple[Path, ...]
     structure: Structure
-    rate: float | None
+    rate: float | str
     split: tuple[int, int]
     band: tuple[Fraction, Fraction] | None
     out: Path
@@ -102,12 +102,17 @@ def parse_split(text: str) -> tuple[int, int]:
                            "identification and validation, e.g. --split 6:6")
 
 
-def parse_rate(text: str | None) -> float | None:
-    if text is None:
-        return None
+def parse_rate(text: str | None) -> float | str:
+    """``--rate``: a rate in Hz, "off" (no decimation) or "auto" (the default: decimate
+    only noisy logs, :func:`verify.identify.protocol.chosen_rate`)."""
+    if text is None or str(text).strip() == "auto":
+        return "auto"
+    if str(text).strip() == "off":
+        return "off"
     value = parse_number(text, "--rate", "--rate 20")
     if value <= 0:
-        raise VerifyInputError(f"--rate {text!r} must be a positive rate in Hz, e.g. --rate 20")
+        raise VerifyInputError(f"--rate {text!r} must be a positive rate in Hz, auto or off, "
+                               "e.g. --rate 20")
     return float(value)
 
 
@@ -424,6 +429,7 @@ def summary_json(o: Outcome) -> dict[str, Any]:
         "fit": {"identification": q.fit_identification, "validation": q.fit_validation,
                 "initial_condition": q.initial},
         "trial_joins": list(o.identified.joins),
+        "protocol": list(o.identified.notes),
         "identifiability": o.identified.gate.to_json() if o.identified.gate else None,
         "residual_tests": q.tests,
         "model": str(o.model_path),
@@ -473,6 +479,7 @@ def lines(o: Outcome) -> list[str]:
                                                       q.fit_identification)
                + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
     out.append("  trials joined: " + "; ".join(o.identified.joins))
+    out.append("  protocol: " + "; ".join(o.identified.notes))
     se = np.sqrt(np.clip(np.diag(est.covariance), 0, None))
     out.append("  parameters: " + ", ".join(
         f"{n} = {float(c):.10g} ± {s:.2g}" for n, c, s in zip(est.names, o.ident.center, se,
@@ -591,6 +598,7 @@ def refusal_lines(plan: Plan, identified: Identified) -> list[str]:
         out.append("  estimate (not certified): " + ", ".join(
             f"{n} = {float(x):.4g}" for n, x in zip(est.names, est.theta, strict=True)))
     out.append("  trials joined: " + "; ".join(identified.joins))
+    out.append("  protocol: " + "; ".join(identified.notes))
     return out
 
 
@@ -613,6 +621,7 @@ def refusal_json(plan: Plan, identified: Identified) -> dict[str, Any]:
                                        "initial_condition": q.initial},
         "residual_tests": None if q is None else q.tests,
         "trial_joins": list(identified.joins),
+        "protocol": list(identified.notes),
         "model": None,
         "passed": False,
     }

@@ -58,10 +58,15 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
         N = len(own)
         with np.errstate(over="ignore", invalid="ignore"):  # unstable candidates overflow
             gap = data.gaps[k] if data.initial == "carry" and k < len(data.gaps) else None
-            z0 = None if gap is None or end is None else filt.coast(end, gap)
-            Z = filt.filtered(own, z0)
+            z0 = None if gap is None or end is None else filt.coast(end, max(gap - data.h,
+                                                                            0.0))
+            # one sample period past the last sample, the input linearly extrapolated: the
+            # last sample's input acts until the reference changes, one period later
+            ahead = 2.0 * own[-1] - own[-2] if N >= 2 else own[-1]
+            Z = filt.filtered(np.append(own, ahead), z0)
             free = filt.free(N)
         end = Z[-1, :n]
+        Z = Z[:-1]
         X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
         X[row:row + N, zeros + 1] = other
         col = zeros + 2 + k * n
