@@ -133,7 +133,7 @@ def validate(settings: IdentifySettings) -> Plan:
             raise VerifyInputError(f"{flag} {path}: is a directory; give a file name")
     if not settings.logs:
         raise VerifyInputError("no log files given; pass one or more .csv or .npz logs")
-    name = settings.name or f"{Path(settings.logs[0]).stem} identified"
+    name = settings.name or Path(settings.logs[0]).stem
     return Plan(tuple(Path(p) for p in settings.logs), structure, parse_rate(settings.rate),
                 parse_split(settings.split), band, settings.out, settings.json,
                 settings.junit, name, settings.max_boxes)
@@ -215,7 +215,7 @@ def identify_logs(plan: Plan) -> Identified:
     joins = trial_joins(joined)
     try:
         estimate = estimate_model(prepared.identification, plan.structure)
-    except identifiability.CannotIdentify as exc:
+    except identifiability.CannotIdentifyError as exc:
         gate = identifiability.Identifiability(False, (str(exc),))
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     y_id, y_val = honest_fits(estimate, prepared.identification, prepared.validation)
@@ -312,11 +312,11 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
     """Steps 3 to 6, in a temporary directory; returns the files to write.
 
     ``band_steps`` bounds the bisection for the largest proved band. Only for data the
-    identifiability gate passed (:class:`CannotIdentify` otherwise)."""
-    from verify.identify.identifiability import CannotIdentify
+    identifiability gate passed (:class:`CannotIdentifyError` otherwise)."""
+    from verify.identify.identifiability import CannotIdentifyError
 
     if not identified.identifiable or identified.estimate is None:
-        raise CannotIdentify("cannot identify: " + "; ".join(identified.gate.reasons))
+        raise CannotIdentifyError("cannot identify: " + "; ".join(identified.gate.reasons))
     est = identified.estimate
     q = identified.quality
     extra = {
@@ -471,7 +471,7 @@ def lines(o: Outcome) -> list[str]:
     """What the command prints."""
     est = o.identified.estimate
     q = o.identified.quality
-    out = [f"{o.plan.name}: structure {structure_text(est.structure)}, "
+    out = [f"identified {o.plan.name}: structure {structure_text(est.structure)}, "
            f"{est.method}, {o.identified.rate:g} Hz, trials {o.identified.trials[0]} "
            f"(identification) / {o.identified.trials[1]} (validation)"]
     out.append("  fit (%, model simulated on the logged input, state carried across "

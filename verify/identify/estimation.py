@@ -61,8 +61,8 @@ import numpy as np
 
 from verify.errors import VerifyInputError
 from verify.identify.estimate import Estimate
-from verify.identify.identifiability import CannotIdentify
 from verify.identify.experiment import Trial
+from verify.identify.identifiability import CannotIdentifyError
 from verify.identify.pem import OutputFit, ar_start, denominator_bounds, refine
 from verify.identify.prediction import INITIAL_STATES, fit_linear, lengths
 from verify.identify.quality import whiteness
@@ -169,7 +169,7 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
         if best is None or fit.cost < best.cost:
             best = fit
     if best is None:
-        raise CannotIdentify(
+        raise CannotIdentifyError(
             f"output {data.output + 1}: every refinement ran to the bound of the search "
             f"(poles at half the Nyquist frequency) or failed; the data do not determine a "
             f"{poles}-pole model (try a higher --rate or more trials)")

@@ -42,13 +42,20 @@ identification and the last 6 for validation. :func:`prepare` does the same:
    transients alone would cost them accuracy (on noise-free closed-loop logs: 5e-4
    relative parameter error at 20 Hz, 4e-6 at the logged 120 Hz). ``rate="off"`` never
    decimates.
-4. **Split.** The first ``split[0]`` trials (in log order) identify, the next ``split[1]``
+4. **Per-trial clocks.** A log whose time restarts in each trial (a common way to log
+   trials) is put on one clock first (:func:`one_clock`): each trial whose first sample
+   is not later than the previous trial's last one is shifted to begin one sampling step
+   after it, as in the protocol, where each trial begins at the reference change that
+   ends the previous one. The estimator and the fits then carry the operator's state
+   across the removed dead time (:func:`verify.identify.trial_data.dead_time_gaps`)
+   instead of starting such trials from rest; a note says so.
+5. **Split.** The first ``split[0]`` trials (in log order) identify, the next ``split[1]``
    validate (Section 4: 6 and 6).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from scipy import signal
@@ -89,6 +96,24 @@ class Prepared:
     dead_time: tuple[float, ...] = ()
     decimation: int = 1
     rule: str = "event"
+
+
+def one_clock(trials: tuple[Trial, ...]) -> tuple[tuple[Trial, ...], int]:
+    """The trials on one clock (module docstring, step 4), and how many were shifted.
+
+    A trial is shifted when its id differs from the previous trial's and its first
+    sample is not after the previous trial's last one; its start event moves with it.
+    """
+    out: list[Trial] = []
+    shifted = 0
+    for tr in trials:
+        if out and tr.trial != out[-1].trial and tr.t[0] <= out[-1].t[-1]:
+            offset = float(out[-1].t[-1] + out[-1].step - tr.t[0])
+            tr = replace(tr, t=tr.t + offset,
+                         start=None if tr.start is None else tr.start + offset)
+            shifted += 1
+        out.append(tr)
+    return tuple(out), shifted
 
 
 def chosen_rate(log: ExperimentLog, target: float = DEFAULT_RATE) -> tuple[float, str]:
@@ -245,7 +270,7 @@ def prepare(
                                f"{', '.join(DEAD_TIME_RULES)}")
     if not (isinstance(min_samples, int) and min_samples >= 2):
         raise VerifyInputError(f"min_samples must be an integer >= 2, got {min_samples!r}")
-    trials = log.trials
+    trials, shifted = one_clock(log.trials)
     a, b = _split(split, len(trials))
     why = ""
     if rate == "auto":
@@ -268,6 +293,10 @@ def prepare(
              else f"not decimated ({log.rate:g} Hz)"]
     if why:
         notes.append(f"rate: {why}")
+    if shifted:
+        notes.append(f"the log's clock restarts in {shifted} trial(s): trials taken as logged "
+                     "back to back (each begins one step after the previous one ends, at the "
+                     "reference change), so the operator's state is carried over the dead time")
     if a + b < len(trials):
         notes.append(f"trials {', '.join(str(tr.trial) for tr in trials[a + b:])} unused "
                      f"(split {a}:{b} of {len(trials)})")
