@@ -79,7 +79,7 @@ def differentiator(*, trials: int = 8, seconds: float = 15.0, rate: float = 120.
     return ExperimentLog(tuple(out), rate, "differentiator")
 
 
-def diverging(*, trials: int = 8, seconds: float = 15.0, rate: float = 120.0,
+def diverging(*, trials: int = 8, seconds: float = 10.0, rate: float = 120.0,
               seed: int = 0) -> ExperimentLog:
     """A linear loop theta' = u, e = r - theta, u = -k e + v with k > 0: the operator
     pushes the leader away from the reference and the loop grows within each trial."""
