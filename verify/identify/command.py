@@ -41,6 +41,7 @@ from verify.identify.estimate import Estimate
 from verify.identify.identifiability import Identifiability
 from verify.identify.model_writer import (
     IdentifiedFile,
+    canonical,
     identification_table,
     model_text,
     parse_structure,
@@ -239,13 +240,13 @@ def residual_tests(q: Any) -> dict[str, Any]:
     cross = sorted(q.cross_correlation, key=lambda t: (t.output, t.input))
     out: dict[str, Any] = {"residual_tests_data": "validation"}
     if white:
-        out.update({"whiteness_statistic": [float(t.statistic) for t in white],
-                    "whiteness_threshold": float(white[0].threshold),
+        out.update({"whiteness_statistic": [canonical(t.statistic) for t in white],
+                    "whiteness_threshold": canonical(white[0].threshold),
                     "whiteness_lags": int(white[0].lags)})
     if cross:
         out.update({"cross_correlation_statistic": [
-            [float(t.statistic) for t in cross if t.output == i] for i in (1, 2)],
-            "cross_correlation_threshold": float(cross[0].threshold)})
+            [canonical(t.statistic) for t in cross if t.output == i] for i in (1, 2)],
+            "cross_correlation_threshold": canonical(cross[0].threshold)})
     if white or cross:
         out["residual_tests_level"] = float((white or cross)[0].level)
     if q.not_computed:
@@ -327,9 +328,9 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
         "trials_identification": identified.trials[0],
         "trials_validation": identified.trials[1],
         "samples": int(est.samples),
-        "noise_std": [float(x) for x in est.noise_std],
-        "fit_identification": q.fit_identification,
-        "fit_validation": q.fit_validation,
+        "noise_std": [canonical(x) for x in est.noise_std],
+        "fit_identification": [canonical(x) for x in q.fit_identification],
+        "fit_validation": [canonical(x) for x in q.fit_validation],
         "fit_initial_condition": q.initial,
         "trial_joins": list(identified.joins),
         **{k: v for k, v in q.tests.items()},
@@ -422,11 +423,12 @@ def summary_json(o: Outcome) -> dict[str, Any]:
         "trials": {"identification": o.identified.trials[0],
                    "validation": o.identified.trials[1]},
         "estimate": {"method": est.method, "names": list(est.names),
-                     "theta": [float(x) for x in est.theta],
+                     "theta": [float(x) for x in o.ident.center],
                      "written": [str(x) for x in o.ident.center],
-                     "standard_errors": [float(math.sqrt(max(v, 0.0)))
+                     "standard_errors": [canonical(math.sqrt(max(v, 0.0)))
                                          for v in np.diag(est.covariance)]},
-        "fit": {"identification": q.fit_identification, "validation": q.fit_validation,
+        "fit": {"identification": [canonical(x) for x in q.fit_identification],
+                "validation": [canonical(x) for x in q.fit_validation],
                 "initial_condition": q.initial},
         "trial_joins": list(o.identified.joins),
         "protocol": list(o.identified.notes),
@@ -615,9 +617,11 @@ def refusal_json(plan: Plan, identified: Identified) -> dict[str, Any]:
         "identifiability": identified.gate.to_json(),
         "estimate": None if est is None else {
             "method": est.method, "names": list(est.names),
-            "theta": [float(x) for x in est.theta]},
-        "fit": None if q is None else {"identification": q.fit_identification,
-                                       "validation": q.fit_validation,
+            "theta": [canonical(x, 6) for x in est.theta]},
+        "fit": None if q is None else {"identification": [canonical(x) for x in
+                                                          q.fit_identification],
+                                       "validation": [canonical(x) for x in
+                                                      q.fit_validation],
                                        "initial_condition": q.initial},
         "residual_tests": None if q is None else q.tests,
         "trial_joins": list(identified.joins),

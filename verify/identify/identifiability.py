@@ -67,7 +67,7 @@ __all__ = [
 MIN_FIT = 0.0  # %, honest validation fit each output must exceed
 BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
 LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its bound is on a_k = 0
-MAX_CONDITION = 1e8  # of the parameters' correlation matrix
+MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
 MAX_GROWTH = 10.0  # RMS of the last quarter of a trial over that of its first quarter
 
 
@@ -86,8 +86,14 @@ class Identifiability:
     figures: dict[str, object] = field(default_factory=dict)
 
     def to_json(self) -> dict[str, object]:
+        """The answer with its figures to 4 significant digits (byte-reproducible)."""
+        def four(x):
+            if isinstance(x, list):
+                return [four(v) for v in x]
+            return float(f"{x:.4g}") if isinstance(x, float) else x
+
         return {"identifiable": self.identifiable, "reasons": list(self.reasons),
-                **self.figures}
+                **{k: four(v) for k, v in self.figures.items()}}
 
 
 def condition_number(covariance: np.ndarray) -> float:
