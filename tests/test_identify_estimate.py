@@ -131,7 +131,9 @@ def test_exact_recovery_from_noise_free_open_loop_data():
     est = estimate_model(trials, structure, initial="estimate", burn_in=0.0)
     assert est.names == structure.names()
     assert np.max(np.abs(est.theta - THETA) / np.abs(THETA)) < 1e-6
-    fits = assess(est, trials).fit
+    # open-loop trials from random states: the re-initialised figure (each trial's free
+    # response fitted) is the one that can be 100 % here
+    fits = assess(est, trials, initial="estimate").fit
     assert np.all(fits > 100 - 1e-4)
 
 

@@ -23,12 +23,14 @@ certified:
    one means some combination of parameters is not determined by the data.
 4. **Are e and u the loop's input and output?** The leader integrates the operator's
    command (Section 2: R_l' = R_l ω_l with ω_l containing ω_h^b), so the operator's
-   noise enters u directly and e only through that integration: in every log of the
-   loop e is the smoother signal. With roughness R(x) = ||Δx|| / ||x - mean(x)|| over
-   all trials (Δ the sample-to-sample difference), each component must have
-   R(e_i) < R(u_i); otherwise e and u are swapped or not the loop's signals. (Measured
-   on simulated logs of the paper's loop: R(u_i) / R(e_i) = 4-5 for noise-free data,
-   30-40 with the default noises.)
+   noise enters u directly and e only through that integration: in logs of the loop e
+   is the smoother signal. With roughness R(x) = ||Δx|| / ||x - mean(x)|| over all
+   trials (Δ the sample-to-sample difference), no component may have
+   R(e_i) > ``MAX_ROUGHNESS_RATIO`` R(u_i); otherwise e and u are swapped or not the
+   loop's signals. Measured on the prepared trials of simulated logs of the paper's loop:
+   R(u_i) / R(e_i) = 3.2-3.4 noise-free (120 Hz), about 13 with the default noises
+   (20 Hz), so swapped logs give 3.2-13 and are refused; the ratio 2 leaves room for
+   open-loop logs (e a smooth random input, u = H e: R(e) / R(u) = 1.2 in the tests).
 5. **Did the loop stay bounded?** In no trial may the RMS of e or u over the last
    quarter exceed ``MAX_GROWTH`` times the RMS over the first quarter, and the signals
    must be finite. A tracking trial settles after its reference change; a loop whose
@@ -68,6 +70,7 @@ MIN_FIT = 0.0  # %, honest validation fit each output must exceed
 BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
 LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its bound is on a_k = 0
 MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
+MAX_ROUGHNESS_RATIO = 2.0  # largest admitted R(e_i) / R(u_i)
 MAX_GROWTH = 10.0  # RMS of the last quarter of a trial over that of its first quarter
 
 
@@ -191,9 +194,10 @@ def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[
                        "some combination of parameters is not determined by the data")
     r_e, r_u = roughness(trials, "e"), roughness(trials, "u")
     for i in (0, 1):
-        if not r_e[i] < r_u[i]:
+        if not r_e[i] <= MAX_ROUGHNESS_RATIO * r_u[i]:
             reasons.append(f"component {i + 1}: the input e is rougher than the output u "
-                           f"(R(e) = {r_e[i]:.3g} >= R(u) = {r_u[i]:.3g}); in the loop the "
+                           f"(R(e) = {r_e[i]:.3g} > {MAX_ROUGHNESS_RATIO:g} R(u), R(u) = "
+                           f"{r_u[i]:.3g}); in the loop the "
                            "leader integrates the operator's command, so e is the smoother "
                            "signal: e and u are swapped or not the loop's signals")
     grow = growth(trials)

@@ -54,19 +54,21 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     X = np.zeros((total, zeros + 2 + T * n))
     row = 0
     end = None
+    lead = data.h
     for k, (own, other) in enumerate(zip(data.own, data.other, strict=True)):
         N = len(own)
         with np.errstate(over="ignore", invalid="ignore"):  # unstable candidates overflow
             gap = data.gaps[k] if data.initial == "carry" and k < len(data.gaps) else None
-            z0 = None if gap is None or end is None else filt.coast(end, max(gap - data.h,
+            z0 = None if gap is None or end is None else filt.coast(end, max(gap - lead,
                                                                             0.0))
-            # one sample period past the last sample, the input linearly extrapolated: the
-            # last sample's input acts until the reference changes, one period later
-            ahead = 2.0 * own[-1] - own[-2] if N >= 2 else own[-1]
-            Z = filt.filtered(np.append(own, ahead), z0)
+            Z = filt.filtered(own, z0)
             free = filt.free(N)
-        end = Z[-1, :n]
-        Z = Z[:-1]
+            # the last sample's input acts until the reference changes (data.ahead[k] s
+            # later, one step for undecimated data): the state is carried to there with
+            # the input extrapolated linearly, then coasted over the rest of the gap
+            lead = data.ahead[k] if k < len(data.ahead) else data.h
+            slope = (own[-1] - own[-2]) / data.h if N >= 2 else 0.0
+            end = filt.held(Z[-1, :n], own[-1], lead, slope)
         X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
         X[row:row + N, zeros + 1] = other
         col = zeros + 2 + k * n
