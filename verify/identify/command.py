@@ -323,6 +323,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
     extra = {
         "method": est.method,
         "covariance_kind": getattr(est, "covariance_kind", "asymptotic"),
+        "covariance_inflation": canonical(est.inflation, 6),
         "rate": float(identified.rate),
         "split": f"{plan.split[0]}:{plan.split[1]}",
         "trials_identification": identified.trials[0],

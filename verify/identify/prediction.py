@@ -10,12 +10,14 @@ initial state of each trial, so those are solved by linear least squares and onl
 searched (variable projection, Golub & Pereyra, SIAM J. Numer. Anal. 10(2), 1973).
 
 How a trial starts (``OutputData.initial``): "estimate" fits each trial's free response
-(n numbers per trial; the fit ratios of identification and validation data use it, so a
-transient the model does not explain is not counted against H(s)); "carry" starts each
-trial in the state the model ended the previous trial in, coasted with zero input over
-the dead time the protocol removed (:func:`verify.identify.trial_data.dead_time_gaps`),
-which is what the estimator uses by default (:mod:`verify.identify.estimation`); "zero"
-starts every trial at rest.
+(n numbers per trial; a re-initialised figure that absorbs transients, never what the
+command reports or decides with); "carry" starts each trial in the state the model ended
+the previous trial in, carried with the last sample's input (linearly extrapolated) until
+the trial's end (:attr:`verify.identify.experiment.Trial.end`) and then coasted with
+zero input over the rest of the dead time the protocol removed
+(:func:`verify.identify.trial_data.dead_time_gaps`), which is what the estimator and
+Section 4's fits use by default (:mod:`verify.identify.estimation`,
+:func:`verify.identify.quality.honest_fits`); "zero" starts every trial at rest.
 """
 
 from __future__ import annotations
