@@ -48,7 +48,8 @@ a1 about 3 times less accurate on simulated noisy experiments (benchmarks/
 bench_identify_methods.py), while the edge transient of the anti-aliasing filter it
 guarded against moves noise-free estimates at 20 Hz by about 1e-4 relative only.
 Starting every trial from rest (``initial="zero"``) leaves the operator's state at the
-end of the previous trial as an unexplained transient that resembles the step response, and on simulated experiments it biased the coupling estimates enough to
+end of the previous trial as an unexplained transient that resembles the step response,
+and on simulated experiments it biased the coupling estimates enough to
 lower the coverage of their intervals (the joint 95 % region held the true parameters in
 74 % of 100 experiments from rest, 80 % carried). Estimating each trial's initial state
 instead (``initial="estimate"``) is exact for open-loop data but biased in closed loop:
