@@ -214,10 +214,14 @@ def identify_logs(plan: Plan) -> Identified:
     vals = sorted({t.trial for t in prepared.validation})
     joined = [*prepared.identification, *prepared.validation]
     joins = trial_joins(joined)
+    more, figures = identifiability.data_reasons(joined)
+    if more:  # not the loop's signals, or a diverging loop: nothing to estimate
+        gate = identifiability.Identifiability(False, tuple(more), figures)
+        return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     try:
         estimate = estimate_model(prepared.identification, plan.structure)
     except identifiability.CannotIdentifyError as exc:
-        gate = identifiability.Identifiability(False, (str(exc),))
+        gate = identifiability.Identifiability(False, (str(exc),), figures)
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     y_id, y_val = honest_fits(estimate, prepared.identification, prepared.validation)
     on_id = assess(estimate, prepared.identification, yhat=y_id)

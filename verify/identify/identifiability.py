@@ -177,7 +177,7 @@ def roughness(trials: Sequence[Trial], signal: str) -> np.ndarray:
 
 def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[Trial],
           h: float) -> Identifiability:
-    """The four questions of the module docstring, on the estimate, its honest validation
+    """The five questions of the module docstring, on the estimate, its honest validation
     fit (per output) and the prepared trials (identification and validation)."""
     reasons = []
     fits = [float(x) for x in fit_validation]
@@ -192,6 +192,18 @@ def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[
         reasons.append(f"the information matrix is ill-conditioned (condition number of "
                        f"the parameters' correlation {cond:.3g} > {MAX_CONDITION:.0e}): "
                        "some combination of parameters is not determined by the data")
+    more, data_figures = data_reasons(trials)
+    reasons += more
+    figures = {"fit_validation": fits,
+               "condition_number": cond if np.isfinite(cond) else None,
+               "min_fit": MIN_FIT, "max_condition": MAX_CONDITION, **data_figures}
+    return Identifiability(not reasons, tuple(reasons), figures)
+
+
+def data_reasons(trials: Sequence[Trial]) -> tuple[list[str], dict[str, object]]:
+    """Questions 4 and 5 of the module docstring, which need the data only: the reasons
+    and the figures."""
+    reasons = []
     r_e, r_u = roughness(trials, "e"), roughness(trials, "u")
     for i in (0, 1):
         if not r_e[i] <= MAX_ROUGHNESS_RATIO * r_u[i]:
@@ -204,9 +216,8 @@ def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[
     if not grow <= MAX_GROWTH:
         reasons.append(f"the loop diverged: a signal's RMS grew {grow:.3g}x from the first "
                        f"to the last quarter of a trial (limit {MAX_GROWTH:g}x)")
-    figures = {"fit_validation": fits,
-               "condition_number": cond if np.isfinite(cond) else None,
-               "growth": grow if np.isfinite(grow) else None,
-               "roughness_e": [_finite(x) for x in r_e], "roughness_u": [_finite(x) for x in r_u],
-               "min_fit": MIN_FIT, "max_condition": MAX_CONDITION, "max_growth": MAX_GROWTH}
-    return Identifiability(not reasons, tuple(reasons), figures)
+    figures = {"growth": grow if np.isfinite(grow) else None,
+               "roughness_e": [_finite(x) for x in r_e],
+               "roughness_u": [_finite(x) for x in r_u],
+               "max_roughness_ratio": MAX_ROUGHNESS_RATIO, "max_growth": MAX_GROWTH}
+    return reasons, figures
