@@ -24,8 +24,18 @@ from verify.inputs.experiment_log import write_log
 def logs(tmp_path_factory) -> dict[str, Path]:
     """Short synthetic experiments (4 trials of 15 s) with the shipped operators."""
     d = tmp_path_factory.mktemp("logs")
-    return {ex.name: write_log(open_loop_log(ex.model(), trials=4, seed=ex.seed),
+    return {ex.name: write_log(_apart(open_loop_log(ex.model(), trials=4, seed=ex.seed)),
                                d / f"{ex.name}.npz") for ex in EXAMPLES}
+
+
+def _apart(log):
+    """Each synthetic trial starts at rest: logged 1000 s apart, so the command's carried
+    state has decayed to rest by the next trial (not back to back, as in the loop)."""
+    from dataclasses import replace
+
+    trials = tuple(replace(tr, t=tr.t + 1000.0 * k, start=tr.start + 1000.0 * k)
+                   for k, tr in enumerate(log.trials))
+    return replace(log, trials=trials)
 
 
 @pytest.fixture(scope="module")

@@ -129,14 +129,17 @@ def _build_parser() -> argparse.ArgumentParser:
     p_id.add_argument("--structure", default="paper", metavar="S",
                       help="paper (default), P:Z (poles:zeros per diagonal element) or "
                       "order:N")
-    p_id.add_argument("--rate", metavar="HZ", help="rate after decimation (default 20)")
+    p_id.add_argument("--rate", metavar="HZ", help="rate after decimation in Hz, 'off' (no "
+                      "decimation) or 'auto' (default: 20 Hz for noisy logs, the log's rate "
+                      "for near-exact ones)")
     p_id.add_argument("--split", default="6:6", metavar="A:B",
                       help="trials for identification and validation (default 6:6)")
     p_id.add_argument("--band", metavar="W1:W2",
                       help="robust passivity on W1 <= w <= W2 rad/s (default: all "
                       "frequencies)")
-    p_id.add_argument("--out", type=Path, default=Path("identified"), metavar="DIR",
-                      help="model file, certificates and figures (default identified)")
+    p_id.add_argument("--out", type=Path, default=Path("build/identified"), metavar="DIR",
+                      help="model file, certificates and figures (default build/identified, "
+                      "git-ignored)")
     p_id.add_argument("--name", help="model name (default: the first log's name)")
     p_id.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_id.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")

@@ -38,8 +38,10 @@ import numpy as np
 from verify.errors import VerifyInputError
 from verify.identify import robust_certificate as rc
 from verify.identify.estimate import Estimate
+from verify.identify.identifiability import Identifiability
 from verify.identify.model_writer import (
     IdentifiedFile,
+    canonical,
     identification_table,
     model_text,
     parse_structure,
@@ -53,6 +55,9 @@ from verify.passivity.decision import INCONCLUSIVE
 
 LEVEL = Fraction(19, 20)
 MODEL_FILE = "model.toml"
+#: What ``--out`` holds when the data do not identify the operator (no model, no
+#: certificate).
+REFUSAL_FILE = "CANNOT_IDENTIFY.txt"
 
 
 @dataclass(frozen=True)
@@ -64,7 +69,7 @@ class IdentifySettings:
     rate: str | None = None
     split: str = "6:6"
     band: str | None = None
-    out: Path = Path("identified")
+    out: Path = Path("build/identified")
     json: Path | None = None
     junit: Path | None = None
     name: str | None = None
@@ -77,7 +82,7 @@ class Plan:
 
     logs: tuple[Path, ...]
     structure: Structure
-    rate: float | None
+    rate: float | str
     split: tuple[int, int]
     band: tuple[Fraction, Fraction] | None
     out: Path
@@ -112,10 +117,19 @@ def _check_split(split: tuple[int, int], count: int) -> None:
 MIN_MODEL_SAMPLES = 8  # decimated samples a segment needs (protocol.prepare's default)
 
 
-def _check_lengths(log, rate: float | None) -> None:
+def _check_lengths(log, rate: float | str | None) -> None:
     """Every trial long enough, decimated, for the model (Section 4); shorter is exit 2."""
-    from verify.identify.protocol import DEFAULT_RATE, MIN_FILTER_SAMPLES, decimation_factor
+    from verify.identify.protocol import (
+        DEFAULT_RATE,
+        MIN_FILTER_SAMPLES,
+        chosen_rate,
+        decimation_factor,
+    )
 
+    if rate == "auto":
+        rate = chosen_rate(log)[0]
+    elif rate == "off":
+        rate = log.rate
     q = decimation_factor(log.rate, DEFAULT_RATE if rate is None else rate)
     need = max(MIN_FILTER_SAMPLES, q * (MIN_MODEL_SAMPLES - 1) + 1)
     for tr in log.trials:
@@ -126,12 +140,17 @@ def _check_lengths(log, rate: float | None) -> None:
                 "the trial or record longer")
 
 
-def parse_rate(text: str | None) -> float | None:
-    if text is None:
-        return None
+def parse_rate(text: str | None) -> float | str:
+    """``--rate``: a rate in Hz, "off" (no decimation) or "auto" (the default: decimate
+    only noisy logs, :func:`verify.identify.protocol.chosen_rate`)."""
+    if text is None or str(text).strip() == "auto":
+        return "auto"
+    if str(text).strip() == "off":
+        return "off"
     value = parse_number(text, "--rate", "--rate 20")
     if value <= 0:
-        raise VerifyInputError(f"--rate {text!r} must be a positive rate in Hz, e.g. --rate 20")
+        raise VerifyInputError(f"--rate {text!r} must be a positive rate in Hz, auto or off, "
+                               "e.g. --rate 20")
     return float(value)
 
 
@@ -152,7 +171,7 @@ def validate(settings: IdentifySettings) -> Plan:
             raise VerifyInputError(f"{flag} {path}: is a directory; give a file name")
     if not settings.logs:
         raise VerifyInputError("no log files given; pass one or more .csv or .npz logs")
-    name = settings.name or f"{Path(settings.logs[0]).stem} identified"
+    name = settings.name or Path(settings.logs[0]).stem
     return Plan(tuple(Path(p) for p in settings.logs), structure, parse_rate(settings.rate),
                 parse_split(settings.split), band, settings.out, settings.json,
                 settings.junit, name, settings.max_boxes)
@@ -163,7 +182,10 @@ def validate(settings: IdentifySettings) -> Plan:
 
 @dataclass
 class Quality:
-    """Fit ratios (%) per output on identification and validation data, residual tests."""
+    """Fit ratios (%) per output on identification and validation data (Section 4's fit
+    of the model simulated on the logged input, :func:`verify.identify.quality.honest_fits`:
+    first trial from rest, state carried across trials that follow on), residual tests
+    (diagnostics only)."""
 
     fit_identification: list[float]
     fit_validation: list[float]
@@ -171,61 +193,109 @@ class Quality:
     validation_times: list[np.ndarray] = field(default_factory=list)
     validation_measured: list[np.ndarray] = field(default_factory=list)
     validation_predicted: list[np.ndarray] = field(default_factory=list)
+    initial: str = ("simulated on the logged input e, first trial from rest, each later "
+                    "trial from the state the model left the previous one in")
 
 
 @dataclass
 class Identified:
-    """What the data gave: the estimate, its quality, the protocol's facts."""
+    """What the data gave: the estimate (None when the estimator found no interior
+    minimum), its quality, the identifiability gate, the protocol's facts."""
 
-    estimate: Estimate
-    quality: Quality
+    estimate: Estimate | None
+    quality: Quality | None
     rate: float
     trials: tuple[list[int], list[int]]
     notes: tuple[str, ...] = ()
+    gate: Identifiability | None = None
+    joins: tuple[str, ...] = ()
+
+    @property
+    def identifiable(self) -> bool:
+        return self.gate is None or self.gate.identifiable
+
+
+def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
+    """How consecutive trials were joined by the fit and the estimator (per-trial clocks
+    and dead-time gaps, :func:`verify.identify.trial_data.dead_time_gaps`), one line per
+    kind of join."""
+    from verify.identify.trial_data import dead_time_gaps
+
+    gaps = dead_time_gaps(trials)
+    carried = [g for g in gaps[1:] if g is not None]
+    rest = [tr.trial for tr, g in zip(trials[1:], gaps[1:], strict=True) if g is None]
+    out = [f"trial {trials[0].trial} starts from rest"]
+    if carried:
+        out.append(f"{len(carried)} trial(s) continue from the state the previous one left, "
+                   f"coasted with zero input over a gap of {min(carried):.3g}-"
+                   f"{max(carried):.3g} s")
+    if rest:
+        out.append(f"trial(s) {', '.join(str(t) for t in rest)} start independently from "
+                   "rest (same trial id as the previous segment, or the clock does not "
+                   "move forward)")
+    return tuple(out)
 
 
 def identify_logs(plan: Plan) -> Identified:
-    """Logs -> prepared trials -> estimate and quality (steps 1 and 2)."""
+    """Logs -> prepared trials -> estimate, honest fits and the identifiability gate
+    (steps 1 and 2)."""
+    from verify.identify import identifiability
     from verify.identify.estimation import estimate_model
-    from verify.identify.prediction import predict
     from verify.identify.protocol import MIN_FILTER_SAMPLES, prepare
-    from verify.identify.quality import assess
+    from verify.identify.quality import assess, honest_fits
     from verify.inputs.experiment_log import read_logs
 
     log = read_logs(plan.logs, min_samples=MIN_FILTER_SAMPLES)  # shorter: one line, exit 2
     _check_split(plan.split, len(log.trials))
     _check_lengths(log, plan.rate)
     prepared = prepare(log, rate=plan.rate, split=plan.split)
-    estimate = estimate_model(prepared.identification, plan.structure)
-    on_id = assess(estimate, prepared.identification)
-    on_val = assess(estimate, prepared.validation)
-    predicted = predict(estimate.structure, estimate.theta, prepared.validation,
-                        initial="estimate")
+    ids = sorted({t.trial for t in prepared.identification})
+    vals = sorted({t.trial for t in prepared.validation})
+    joined = [*prepared.identification, *prepared.validation]
+    joins = trial_joins(joined)
+    more, figures = identifiability.data_reasons(joined)
+    if more:  # not the loop's signals, or a diverging loop: nothing to estimate
+        gate = identifiability.Identifiability(False, tuple(more), figures)
+        return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
+    try:
+        estimate = estimate_model(prepared.identification, plan.structure)
+    except identifiability.CannotIdentifyError as exc:
+        gate = identifiability.Identifiability(False, (str(exc),), figures)
+        return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
+    y_id, y_val = honest_fits(estimate, prepared.identification, prepared.validation)
+    on_id = assess(estimate, prepared.identification, yhat=y_id)
+    on_val = assess(estimate, prepared.validation, yhat=y_val)
     quality = Quality(
         [float(x) for x in on_id.fit], [float(x) for x in on_val.fit], residual_tests(on_val),
         [np.asarray(t.t) for t in prepared.validation],
-        [np.asarray(t.u) for t in prepared.validation], list(predicted))
-    ids = sorted({t.trial for t in prepared.identification})
-    vals = sorted({t.trial for t in prepared.validation})
-    return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes)
+        [np.asarray(t.u) for t in prepared.validation], list(y_val))
+    gate = identifiability.check(estimate, quality.fit_validation, joined,
+                                 1.0 / prepared.rate)
+    return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes, gate,
+                      joins)
 
 
 def residual_tests(q: Any) -> dict[str, Any]:
     """The residual tests of :func:`verify.identify.quality.assess` on the validation
-    data, as numbers for the model file's [identification] table."""
+    data, as numbers for the model file's [identification] table (diagnostics: they
+    never stop the command; a test that could not be computed is listed with why)."""
     white = sorted(q.whiteness, key=lambda t: t.output)
     cross = sorted(q.cross_correlation, key=lambda t: (t.output, t.input))
-    return {
-        "residual_tests_data": "validation",
-        "whiteness_statistic": [float(t.statistic) for t in white],
-        "whiteness_threshold": float(white[0].threshold),
-        "whiteness_lags": int(white[0].lags),
-        "cross_correlation_statistic": [[float(t.statistic) for t in cross if t.output == i]
-                                        for i in (1, 2)],
-        "cross_correlation_threshold": float(cross[0].threshold),
-        "residual_tests_level": float(white[0].level),
-        "residual_tests_passed": bool(q.residuals_pass),
-    }
+    out: dict[str, Any] = {"residual_tests_data": "validation"}
+    if white:
+        out.update({"whiteness_statistic": [canonical(t.statistic) for t in white],
+                    "whiteness_threshold": canonical(white[0].threshold),
+                    "whiteness_lags": int(white[0].lags)})
+    if cross:
+        out.update({"cross_correlation_statistic": [
+            [canonical(t.statistic) for t in cross if t.output == i] for i in (1, 2)],
+            "cross_correlation_threshold": canonical(cross[0].threshold)})
+    if white or cross:
+        out["residual_tests_level"] = float((white or cross)[0].level)
+    if q.not_computed:
+        out["residual_tests_not_computed"] = list(q.not_computed)
+    out["residual_tests_passed"] = bool(q.residuals_pass)
+    return out
 
 
 # ------------------------------------------------------------------ estimate -> verdicts
@@ -285,20 +355,28 @@ def _nominal(model, band, certs_dir: Path):
 def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7) -> Outcome:
     """Steps 3 to 6, in a temporary directory; returns the files to write.
 
-    ``band_steps`` bounds the bisection for the largest proved band."""
+    ``band_steps`` bounds the bisection for the largest proved band. Only for data the
+    identifiability gate passed (:class:`CannotIdentifyError` otherwise)."""
+    from verify.identify.identifiability import CannotIdentifyError
+
+    if not identified.identifiable or identified.estimate is None:
+        raise CannotIdentifyError("cannot identify: " + "; ".join(identified.gate.reasons))
     est = identified.estimate
     q = identified.quality
     extra = {
         "method": est.method,
         "covariance_kind": getattr(est, "covariance_kind", "asymptotic"),
+        "covariance_inflation": canonical(est.inflation, 6),
         "rate": float(identified.rate),
         "split": f"{plan.split[0]}:{plan.split[1]}",
         "trials_identification": identified.trials[0],
         "trials_validation": identified.trials[1],
         "samples": int(est.samples),
-        "noise_std": [float(x) for x in est.noise_std],
-        "fit_identification": q.fit_identification,
-        "fit_validation": q.fit_validation,
+        "noise_std": [canonical(x) for x in est.noise_std],
+        "fit_identification": [canonical(x) for x in q.fit_identification],
+        "fit_validation": [canonical(x) for x in q.fit_validation],
+        "fit_initial_condition": q.initial,
+        "trial_joins": list(identified.joins),
         **{k: v for k, v in q.tests.items()},
         "logs": [p.name for p in plan.logs],
         "logs_sha256": [_sha256(p) for p in plan.logs],
@@ -389,11 +467,16 @@ def summary_json(o: Outcome) -> dict[str, Any]:
         "trials": {"identification": o.identified.trials[0],
                    "validation": o.identified.trials[1]},
         "estimate": {"method": est.method, "names": list(est.names),
-                     "theta": [float(x) for x in est.theta],
+                     "theta": [float(x) for x in o.ident.center],
                      "written": [str(x) for x in o.ident.center],
-                     "standard_errors": [float(math.sqrt(max(v, 0.0)))
+                     "standard_errors": [canonical(math.sqrt(max(v, 0.0)))
                                          for v in np.diag(est.covariance)]},
-        "fit": {"identification": q.fit_identification, "validation": q.fit_validation},
+        "fit": {"identification": [canonical(x) for x in q.fit_identification],
+                "validation": [canonical(x) for x in q.fit_validation],
+                "initial_condition": q.initial},
+        "trial_joins": list(o.identified.joins),
+        "protocol": list(o.identified.notes),
+        "identifiability": o.identified.gate.to_json() if o.identified.gate else None,
         "residual_tests": q.tests,
         "model": str(o.model_path),
         "nominal": {**nominal, "passed": o.nominal.passed,
@@ -437,9 +520,12 @@ def lines(o: Outcome) -> list[str]:
     out = [f"identified {o.plan.name}: structure {structure_text(est.structure)}, "
            f"{est.method}, {o.identified.rate:g} Hz, trials {o.identified.trials[0]} "
            f"(identification) / {o.identified.trials[1]} (validation)"]
-    out.append("  fit (%): identification " + ", ".join(f"{x:.2f}" for x in
-                                                       q.fit_identification)
+    out.append("  fit (%, model simulated on the logged input, state carried across "
+               "trials): identification " + ", ".join(f"{x:.2f}" for x in
+                                                      q.fit_identification)
                + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
+    out.append("  trials joined: " + "; ".join(o.identified.joins))
+    out.append("  protocol: " + "; ".join(o.identified.notes))
     se = np.sqrt(np.clip(np.diag(est.covariance), 0, None))
     out.append("  parameters: " + ", ".join(
         f"{n} = {float(c):.10g} ± {s:.2g}" for n, c, s in zip(est.names, o.ident.center, se,
@@ -472,7 +558,7 @@ def _ours(directory: Path) -> bool:
     if not directory.exists():
         return True
     entries = {p.name for p in directory.iterdir()}
-    if not entries:
+    if not entries or entries == {REFUSAL_FILE}:
         return True
     if MODEL_FILE not in entries:
         return False
@@ -487,18 +573,23 @@ def write(o: Outcome) -> None:
     """Every file, after everything is rendered: the output directory is built beside
     ``--out`` and renamed into place (a previous output there is replaced whole, so no
     stale certificate survives); the JSON and JUnit files are written atomically."""
-    import os
-    import shutil
-
-    from verify.report.atomic import write_all_atomic
-
-    out = o.plan.out
-    bundle: dict[Path, bytes | str] = dict(o.files)
     others: dict[Path, bytes | str] = {}
     if o.plan.json is not None:
         others[o.plan.json] = json.dumps(summary_json(o), indent=2) + "\n"
     if o.plan.junit is not None:
         others[o.plan.junit] = junit(o)
+    _write_bundle(o.plan.out, dict(o.files), others)
+
+
+def _write_bundle(out: Path, bundle: dict[Path, bytes | str],
+                  others: dict[Path, bytes | str]) -> None:
+    """``bundle`` (files under ``out``) built beside ``out`` and renamed into place, then
+    ``others`` (JSON, JUnit) atomically (see :func:`write`)."""
+    import os
+    import shutil
+
+    from verify.report.atomic import write_all_atomic
+
     out.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
     try:
@@ -535,12 +626,85 @@ def _umask() -> int:
     return mask
 
 
+# ------------------------------------------------------------------ cannot identify
+
+
+def refusal_lines(plan: Plan, identified: Identified) -> list[str]:
+    """What the command prints when the identifiability gate fails."""
+    out = [f"cannot identify {plan.name}: no model is certified and no certificate is "
+           "written, because:"]
+    out += [f"  - {r}" for r in identified.gate.reasons]
+    q, est = identified.quality, identified.estimate
+    if q is not None:
+        out.append("  fit (%, model simulated on the logged input, state carried across "
+                   "trials): identification " + ", ".join(f"{x:.2f}" for x in
+                                                          q.fit_identification)
+                   + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
+    if est is not None:
+        out.append("  estimate (not certified): " + ", ".join(
+            f"{n} = {float(x):.4g}" for n, x in zip(est.names, est.theta, strict=True)))
+    out.append("  trials joined: " + "; ".join(identified.joins))
+    out.append("  protocol: " + "; ".join(identified.notes))
+    return out
+
+
+def refusal_json(plan: Plan, identified: Identified) -> dict[str, Any]:
+    q, est = identified.quality, identified.estimate
+    return {
+        "logs": [str(p) for p in plan.logs],
+        "structure": structure_text(plan.structure),
+        "rate": identified.rate,
+        "split": list(plan.split),
+        "trials": {"identification": identified.trials[0],
+                   "validation": identified.trials[1]},
+        "verdict": "cannot identify",
+        "identifiability": identified.gate.to_json(),
+        "estimate": None if est is None else {
+            "method": est.method, "names": list(est.names),
+            "theta": [canonical(x, 6) for x in est.theta]},
+        "fit": None if q is None else {"identification": [canonical(x) for x in
+                                                          q.fit_identification],
+                                       "validation": [canonical(x) for x in
+                                                      q.fit_validation],
+                                       "initial_condition": q.initial},
+        "residual_tests": None if q is None else q.tests,
+        "trial_joins": list(identified.joins),
+        "protocol": list(identified.notes),
+        "model": None,
+        "passed": False,
+    }
+
+
+def write_refusal(plan: Plan, identified: Identified) -> None:
+    """``--out`` replaced by a directory holding only :data:`REFUSAL_FILE` (no model
+    file, no certificate), then the JSON and JUnit files."""
+    from verify.passivity.gate import JunitCase, junit_text
+
+    text = "\n".join(refusal_lines(plan, identified)) + "\n"
+    others: dict[Path, bytes | str] = {}
+    if plan.json is not None:
+        others[plan.json] = json.dumps(refusal_json(plan, identified), indent=2) + "\n"
+    if plan.junit is not None:
+        others[plan.junit] = junit_text([JunitCase(
+            "verify.identify", f"identifiability: {plan.name}", str(plan.out), 0.0, False,
+            "cannot identify", "; ".join(identified.gate.reasons))], suite="identification")
+    _write_bundle(plan.out, {plan.out / REFUSAL_FILE: text}, others)
+
+
 def run_identify(settings: IdentifySettings) -> int:
     """The command: 0 if the robust verdict is passive, 1 if not, VerifyInputError on bad
     input (exit 2, nothing written)."""
     start = time.perf_counter()
     plan = validate(settings)
-    outcome = render(plan)
+    identified = identify_logs(plan)
+    if not identified.identifiable:
+        write_refusal(plan, identified)
+        for line in refusal_lines(plan, identified):
+            print(line, flush=True)
+        print(f"FAIL: cannot identify ({time.perf_counter() - start:.1f} s); nothing "
+              f"certified, reasons in {plan.out / REFUSAL_FILE}")
+        return 1
+    outcome = decide_identified(plan, identified)
     write(outcome)
     for line in lines(outcome):
         print(line, flush=True)

@@ -111,6 +111,17 @@ class Filter:
         Ac, _ = companion(self.a)
         return linalg.expm(Ac * float(seconds)) @ np.asarray(z, float)
 
+    def held(self, z: np.ndarray, x: float, seconds: float, slope: float = 0.0
+             ) -> np.ndarray:
+        """The state ``seconds`` after ``z`` with the input x + slope tau (tau from 0):
+        the exponential of the system augmented by the input and its slope."""
+        Ac, Bc = companion(self.a)
+        n = self.n
+        big = np.zeros((n + 2, n + 2))
+        big[:n, :n], big[:n, n], big[n, n + 1] = Ac, Bc[:, 0], 1.0
+        start = np.concatenate([np.asarray(z, float), [float(x), float(slope)]])
+        return (linalg.expm(big * float(seconds)) @ start)[:n]
+
     def free(self, count: int) -> np.ndarray:
         """The n free responses of A(s) at t = k h, k = 0..count-1, shape (count, n).
 

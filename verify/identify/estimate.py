@@ -22,7 +22,9 @@ class Estimate:
     :mod:`verify.identify.bootstrap`); ``noise_model`` per output the whitening filter
     (1, d_1, ..., d_p) at the data's sampling step: the output noise is modelled as
     white noise through 1/D(q) (Box-Jenkins with AR noise); (1.0,) or empty means white
-    output noise (output error).
+    output noise (output error). ``inflation`` is the factor the covariance was
+    multiplied by for few trials (:func:`verify.identify.estimation.few_trials_factor`),
+    1 when none.
     """
 
     structure: Structure
@@ -34,6 +36,7 @@ class Estimate:
     samples: int
     covariance_kind: str = "asymptotic"
     noise_model: tuple[tuple[float, ...], ...] = ()
+    inflation: float = 1.0
 
     def standard_errors(self) -> np.ndarray:
         """Square roots of the covariance's diagonal, in ``names`` order."""

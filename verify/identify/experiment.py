@@ -22,7 +22,9 @@ class Trial:
     ``t`` (N,) seconds, strictly increasing with a constant step; ``e`` and ``u`` (N, 2);
     ``reference`` (N, 3) the reference direction d_r when logged; ``valid`` (N,) a mask of
     usable samples when logged; ``start`` the time of the operator's "start" event after
-    the reference change, when logged.
+    the reference change, when logged; ``end`` the time until which the last sample's
+    input acts (the next sample time of the log the trial was taken from; after
+    decimation later than t[-1] + step would say), None for one step after t[-1].
     """
 
     trial: int
@@ -32,6 +34,7 @@ class Trial:
     reference: np.ndarray | None = None
     valid: np.ndarray | None = None
     start: float | None = None
+    end: float | None = None
 
     @property
     def step(self) -> float:

@@ -7,8 +7,12 @@ decimal denotes itself, :mod:`verify.inputs.numbers`), and the robust verdict's 
 centred on those written values, not on the estimator's floats. The ``[identification]``
 table carries what the estimation found (method, structure, rate, trial split, fit ratios,
 parameter names, values, standard errors, covariance, confidence level, χ² value,
-residual tests); floats are written as their shortest round-trip decimal (``repr``), so
-the covariance read back and rounded to the nearest float is exactly the estimator's.
+residual tests). Every number is written to a canonical precision so that the same data
+give the same bytes on any machine (float noise in the 10th digit, e.g. another BLAS
+thread count, does not show): each coefficient to the decimal place its standard error
+justifies (:func:`coefficient_text`, ``SE_DIGITS`` digits below the error's leading
+one), the covariance to ``COVARIANCE_DIGITS`` significant digits, the other figures to
+``FIGURE_DIGITS``; the region is the file's covariance as written.
 
 :func:`read_identified` returns the model, its structure and the exact centre θc from a
 file of this kind (used to bind robust certificates to their model file).
@@ -33,8 +37,42 @@ from verify.inputs.toml import read_toml
 from verify.passivity.io.model_file import parse_model
 from verify.passivity.model import LTIModel
 
-#: Significant digits of the written coefficients.
+#: Significant digits of a written coefficient whose standard error is unknown or zero.
 DIGITS = 10
+#: A coefficient with standard error s is written to the decimal place of s's leading
+#: digit plus SE_DIGITS more (rounding error below s / 2000: nothing the data support is
+#: lost, and float noise far below it, e.g. another BLAS, does not change the bytes).
+SE_DIGITS = 3
+#: Significant digits of the covariance's entries (positive definiteness survives the
+#: rounding for every condition number the identifiability gate admits).
+COVARIANCE_DIGITS = 8
+#: Significant digits of the other descriptive floats (standard errors, noise levels,
+#: test statistics).
+FIGURE_DIGITS = 4
+
+
+def canonical(x: float, digits: int = FIGURE_DIGITS) -> float:
+    """x rounded to ``digits`` significant digits (the same float on every machine for
+    inputs that differ only far below that precision)."""
+    x = float(x)
+    return float(f"{x:.{digits}g}") if math.isfinite(x) else x
+
+
+def coefficient_text(x: float, standard_error: float | None) -> str:
+    """The literal of a coefficient, to the precision its standard error justifies
+    (``SE_DIGITS``); :func:`decimal_text` when the standard error is unknown or zero."""
+    from decimal import ROUND_HALF_EVEN, Decimal
+
+    if standard_error is None or not (math.isfinite(standard_error) and standard_error > 0):
+        return decimal_text(x)
+    if not math.isfinite(x):
+        raise VerifyInputError(f"parameter value {x} is not finite")
+    place = math.floor(math.log10(standard_error)) - SE_DIGITS
+    d = Decimal(repr(float(x))).quantize(Decimal(1).scaleb(place), rounding=ROUND_HALF_EVEN)
+    if d == 0:
+        return "0"
+    text = f"{d:f}"  # positional: a TOML float or integer literal
+    return text.rstrip("0").rstrip(".") if "." in text else text
 
 
 def decimal_text(x: float, digits: int = DIGITS) -> str:
@@ -109,7 +147,11 @@ def model_text(name: str, structure: Structure, theta: Sequence[float],
     if not structure.diagonal_with_constant_coupling:
         raise VerifyInputError("the model writer handles the structures with constant "
                                "off-diagonal elements (paper, P:Z)")
-    literals = [decimal_text(float(x)) for x in theta]
+    errors = identification.get("standard_errors")
+    errors = list(errors) if errors is not None and len(errors) == len(theta) else \
+        [None] * len(theta)
+    literals = [coefficient_text(float(x), None if e is None else float(e))
+                for x, e in zip(theta, errors, strict=True)]
     num, den = element_values(structure, literals)
 
     def table(rows) -> str:
@@ -189,12 +231,15 @@ def identification_table(structure: Structure, theta: Sequence[float], covarianc
     p = len(theta)
     if cov.shape != (p, p) or not np.all(np.isfinite(cov)):
         raise VerifyInputError(f"covariance: expected a finite {p} x {p} matrix")
+    errors = [float(math.sqrt(max(v, 0.0))) for v in np.diag(cov)]
     return {**dict(extra or {}), "structure": structure_text(structure),
             "parameter_names": list(structure.names()),
-            "parameter_estimates": [float(x) for x in theta],
-            "standard_errors": [float(math.sqrt(max(v, 0.0))) for v in np.diag(cov)],
-            "covariance": cov.tolist(), "confidence_level": float(level),
-            "chi2": chi2_quantile(level, p)}
+            "parameter_estimates": [float(coefficient_text(float(x), e))
+                                    for x, e in zip(theta, errors, strict=True)],
+            "standard_errors": [canonical(e) for e in errors],
+            "covariance": [[canonical(v, COVARIANCE_DIGITS) for v in row] for row in cov],
+            "confidence_level": float(level),
+            "chi2": canonical(chi2_quantile(level, p), 12)}
 
 
 def write_identified_model(path: str | Path, *, name: str, structure: Structure,
@@ -250,6 +295,7 @@ def read_identified(path: str | Path) -> IdentifiedFile:
     return IdentifiedFile(model, structure, center, ident)
 
 
-__all__ = ["DIGITS", "IdentifiedFile", "decimal_text", "identification_table", "model_text",
+__all__ = ["COVARIANCE_DIGITS", "DIGITS", "FIGURE_DIGITS", "SE_DIGITS", "IdentifiedFile",
+           "canonical", "coefficient_text", "decimal_text", "identification_table", "model_text",
            "parse_structure", "read_identified", "structure_coefficients", "structure_text",
            "write_identified_model"]

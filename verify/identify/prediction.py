@@ -10,12 +10,14 @@ initial state of each trial, so those are solved by linear least squares and onl
 searched (variable projection, Golub & Pereyra, SIAM J. Numer. Anal. 10(2), 1973).
 
 How a trial starts (``OutputData.initial``): "estimate" fits each trial's free response
-(n numbers per trial; the fit ratios of identification and validation data use it, so a
-transient the model does not explain is not counted against H(s)); "carry" starts each
-trial in the state the model ended the previous trial in, coasted with zero input over
-the dead time the protocol removed (:func:`verify.identify.trial_data.dead_time_gaps`),
-which is what the estimator uses by default (:mod:`verify.identify.estimation`); "zero"
-starts every trial at rest.
+(n numbers per trial; a re-initialised figure that absorbs transients, never what the
+command reports or decides with); "carry" starts each trial in the state the model ended
+the previous trial in, carried with the last sample's input (linearly extrapolated) until
+the trial's end (:attr:`verify.identify.experiment.Trial.end`) and then coasted with
+zero input over the rest of the dead time the protocol removed
+(:func:`verify.identify.trial_data.dead_time_gaps`), which is what the estimator and
+Section 4's fits use by default (:mod:`verify.identify.estimation`,
+:func:`verify.identify.quality.honest_fits`); "zero" starts every trial at rest.
 """
 
 from __future__ import annotations
@@ -54,14 +56,21 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     X = np.zeros((total, zeros + 2 + T * n))
     row = 0
     end = None
+    lead = data.h
     for k, (own, other) in enumerate(zip(data.own, data.other, strict=True)):
         N = len(own)
         with np.errstate(over="ignore", invalid="ignore"):  # unstable candidates overflow
             gap = data.gaps[k] if data.initial == "carry" and k < len(data.gaps) else None
-            z0 = None if gap is None or end is None else filt.coast(end, gap)
+            z0 = None if gap is None or end is None else filt.coast(end, max(gap - lead,
+                                                                            0.0))
             Z = filt.filtered(own, z0)
             free = filt.free(N)
-        end = Z[-1, :n]
+            # the last sample's input acts until the reference changes (data.ahead[k] s
+            # later, one step for undecimated data): the state is carried to there with
+            # the input extrapolated linearly, then coasted over the rest of the gap
+            lead = data.ahead[k] if k < len(data.ahead) else data.h
+            slope = (own[-1] - own[-2]) / data.h if N >= 2 else 0.0
+            end = filt.held(Z[-1, :n], own[-1], lead, slope)
         X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
         X[row:row + N, zeros + 1] = other
         col = zeros + 2 + k * n

@@ -2,10 +2,16 @@
 
 * Fit ratio per output (Section 4, "Human Modeling", the figure the paper quotes):
   100 (1 - ||y - yhat|| / ||y - mean(y)||), 2-norms over all samples of all trials of
-  the data set, mean(y) over the same samples. yhat is the model simulated from the
-  measured input e with each trial's initial state estimated by least squares
-  (:func:`verify.identify.prediction.predict`), on identification and validation data
-  alike (a trial starts in the operator's state, not at rest).
+  the data set, mean(y) over the same samples. yhat is the model *simulated* from the
+  measured input e from a stated initial condition, never re-fitted to the data:
+  :func:`honest_fits` runs the model over the identification and then the validation
+  trials in log order, the first trial from rest and each later one from the state the
+  model left the previous one in (coasted over the dead time between them, or from rest
+  when the trials do not follow on, :func:`verify.identify.trial_data.dead_time_gaps`).
+  That is the only fit the command reports and decides with.
+* Residual tests are diagnostics: they are reported, never a reason to stop. A test that
+  cannot be computed (e.g. a noise-free input that does not vary enough at the tested
+  lags, or an identically zero residual) is reported as not computed, with the reason.
 * The residual tests take the model's prediction errors: the output error y - yhat,
   filtered by the noise model's whitening filter D(q) when the estimate has one
   (:attr:`Estimate.noise_model`, the first p samples of each trial dropped).
@@ -39,7 +45,7 @@ from verify.identify.experiment import Trial
 from verify.identify.prediction import predict
 
 __all__ = ["CrossCorrelationTest", "Quality", "WhitenessTest", "assess", "cross_correlation",
-           "fit_ratio", "whiteness"]
+           "fit_ratio", "honest_fits", "whiteness"]
 
 LAGS = 20
 LEVEL = 0.95
@@ -86,11 +92,13 @@ class Quality:
     whiteness: tuple[WhitenessTest, ...]
     cross_correlation: tuple[CrossCorrelationTest, ...]
     samples: int
-    initial: str = "estimate"
+    initial: str = "carry"
+    not_computed: tuple[str, ...] = ()
 
     @property
     def residuals_pass(self) -> bool:
-        return all(t.passed for t in (*self.whiteness, *self.cross_correlation))
+        return not self.not_computed and all(
+            t.passed for t in (*self.whiteness, *self.cross_correlation))
 
 
 def fit_ratio(y: np.ndarray, yhat: np.ndarray) -> float:
@@ -154,23 +162,52 @@ def cross_correlation(residuals: Sequence[np.ndarray], inputs: Sequence[np.ndarr
     return CrossCorrelationTest(output, input, M, level, zeta, float(chi2.ppf(level, M)), corr)
 
 
-def assess(estimate: Estimate, trials: Sequence[Trial], *, lags: int = LAGS,
-           level: float = LEVEL) -> Quality:
-    """Fit ratios and residual tests of ``estimate`` on ``trials`` (module docstring)."""
-    yhat = predict(estimate.structure, estimate.theta, trials, initial="estimate")
+def honest_fits(estimate: Estimate, identification: Sequence[Trial],
+                validation: Sequence[Trial] = ()) -> tuple[list[np.ndarray],
+                                                          list[np.ndarray]]:
+    """The model simulated on the logged input (module docstring): (yhat per
+    identification trial, yhat per validation trial), the trials taken in log order,
+    identification first, the state carried across trials that follow on."""
+    trials = [*identification, *validation]
+    yhat = predict(estimate.structure, estimate.theta, trials, initial="carry")
+    return list(yhat[:len(identification)]), list(yhat[len(identification):])
+
+
+def assess(estimate: Estimate, trials: Sequence[Trial], *, yhat: Sequence[np.ndarray] | None
+           = None, initial: str = "carry", lags: int = LAGS, level: float = LEVEL) -> Quality:
+    """Fit ratios and residual tests of ``estimate`` on ``trials`` (module docstring).
+
+    ``yhat``: the model's output per trial (e.g. from :func:`honest_fits`); by default
+    the model simulated on ``trials`` alone from the ``initial`` condition ("carry":
+    from rest, then carried; "zero"; "estimate": each trial's free response re-fitted,
+    a figure that absorbs transients and is never a decision's basis)."""
+    if yhat is None:
+        yhat = predict(estimate.structure, estimate.theta, trials, initial=initial)
+    elif initial == "estimate":
+        raise ValueError("a given yhat is a simulation, not a re-initialised fit")
     u = [np.asarray(tr.u, float) for tr in trials]
     e = [np.asarray(tr.e, float) for tr in trials]
     fits = np.array([fit_ratio(np.concatenate([x[:, i] for x in u]),
-                               np.concatenate([x[:, i] for x in yhat])) for i in (0, 1)])
+                               np.concatenate([np.asarray(x)[:, i] for x in yhat]))
+                     for i in (0, 1)])
     white = []
     cross = []
+    skipped: list[str] = []
     for i in (0, 1):
         w = np.asarray(estimate.noise_model[i] if estimate.noise_model else (1.0,), float)
         lag = len(w) - 1
-        res = [signal.lfilter(w, [1.0], x[:, i] - p[:, i])[lag:]
+        res = [signal.lfilter(w, [1.0], x[:, i] - np.asarray(p)[:, i])[lag:]
                for x, p in zip(u, yhat, strict=True)]
-        white.append(whiteness(res, output=i + 1, lags=lags, level=level))
+        try:
+            white.append(whiteness(res, output=i + 1, lags=lags, level=level))
+        except VerifyInputError as exc:
+            skipped.append(f"whiteness of output {i + 1}: {exc}")
         for j in (0, 1):
-            cross.append(cross_correlation(res, [x[lag:, j] for x in e], output=i + 1,
-                                           input=j + 1, lags=lags, level=level))
-    return Quality(fits, tuple(white), tuple(cross), sum(len(x) for x in u))
+            try:
+                cross.append(cross_correlation(res, [x[lag:, j] for x in e], output=i + 1,
+                                               input=j + 1, lags=lags, level=level))
+            except VerifyInputError as exc:
+                skipped.append(f"cross-correlation of output {i + 1} with input {j + 1}: "
+                               f"{exc}")
+    return Quality(fits, tuple(white), tuple(cross), sum(len(x) for x in u), initial,
+                   tuple(skipped))

@@ -31,7 +31,8 @@ class OutputData:
     start of each trial are left out of the criterion (the model is still simulated
     over them). ``gaps[k]`` is the time in seconds from the last sample of trial k - 1
     to the first of trial k, or None when trial k starts from rest
-    (:func:`dead_time_gaps`).
+    (:func:`dead_time_gaps`). ``ahead[k]`` is how long after its last sample trial k's
+    input still acts (one step unless the trial says otherwise, :attr:`Trial.end`).
     """
 
     output: int
@@ -42,6 +43,7 @@ class OutputData:
     initial: str = "estimate"
     skip: int = 0
     gaps: tuple[float | None, ...] = ()
+    ahead: tuple[float, ...] = ()
 
     @property
     def samples(self) -> int:
@@ -140,4 +142,6 @@ def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "es
         initial,
         skip,
         dead_time_gaps(trials),
+        tuple(h if tr.end is None else max(float(tr.end - np.asarray(tr.t, float)[-1]), 0.0)
+              for tr in trials),
     )
