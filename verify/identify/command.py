@@ -313,6 +313,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
             band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
             files[plan.out / rc.file_name(cert["name"], band, cert["fingerprint"])] = \
                 rc.dumps(cert)
+    files.update(robust.files(plan.out))
     files.update(_figures(plan, identified, region, search))
     return Outcome(plan, identified, model_path, ident, nominal, nominal_cert, robust,
                    search, files, _high_frequency_note(est.structure, ident.center))
@@ -370,12 +371,22 @@ def summary_json(o: Outcome) -> dict[str, Any]:
                     "certificate": None if o.nominal_certificate is None else
                     str(o.plan.out / o.nominal_certificate[0])},
         "robust": {**o.robust.to_json(), "level": str(LEVEL),
-                   "certificate": _cert_path(o, o.robust.certificate)},
+                   "certificate": _cert_path(o, o.robust.certificate),
+                   **_robust_answer(o)},
         "largest_band": {**o.band_search.to_json(),
                          "certificate": _cert_path(o, o.band_search.certificate)},
         "high_frequency": o.high_frequency_note,
         "passed": o.passed,
     }
+
+
+def _robust_answer(o: Outcome) -> dict[str, Any]:
+    """The robust answer's JSON fields: which of the three, and its certificate."""
+    name = o.robust.refutation_name()
+    return {"answer": o.robust.headline(),
+            "refutation_certificate": None if name is None else str(o.plan.out / name),
+            "largest_proved_band": None if o.band_search.w_max is None else
+            [str(o.band_search.w1), str(o.band_search.w_max)]}
 
 
 def _cert_path(o: Outcome, cert: dict | None) -> str | None:
@@ -396,7 +407,7 @@ def junit(o: Outcome) -> str:
                   o.nominal.passed, str(d.verdict), d.reason),
         JunitCase("verify.identify", f"robust ({float(LEVEL):.0%} region) {where}: "
                   f"{o.plan.name}", str(o.model_path), o.robust.seconds, o.robust.passed,
-                  str(o.robust.verdict), o.robust.reason),
+                  str(o.robust.verdict), f"{o.robust.headline()}. {o.robust.reason}"),
     ], suite="identification")
 
 
@@ -420,6 +431,7 @@ def lines(o: Outcome) -> list[str]:
                f": {d.verdict}: {d.reason}")
     out.append(f"  robust, every model of the {float(LEVEL):.0%} region "
                f"{o.robust.where()}: {o.robust.verdict}: {o.robust.reason}")
+    out += _robust_lines(o)
     if o.high_frequency_note:
         out.append(f"  note: {o.high_frequency_note}")
     b = o.band_search
@@ -429,6 +441,18 @@ def lines(o: Outcome) -> list[str]:
                    "prover reached, bisection on w_max)")
     else:
         out.append("  robust passivity proved on no band [w1, w_max] tried")
+    return out
+
+
+def _robust_lines(o: Outcome) -> list[str]:
+    """The robust answer in one line, with its certificate or the largest proved band."""
+    name = o.robust.refutation_name()
+    out = [f"  robust answer: {o.robust.headline()}"]
+    if name is not None:
+        out.append(f"  refutation certificate: {o.plan.out / name}")
+    if o.robust.verdict == INCONCLUSIVE and o.band_search.w_max is not None:
+        out.append(f"  the whole region is proved passive on [{o.band_search.w1}, "
+                   f"{o.band_search.w_max}] rad/s, the largest band proved")
     return out
 
 

@@ -37,11 +37,13 @@ import math
 import time
 from dataclasses import dataclass, field
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 from gmpy2 import mpq
 
+from verify.identify import refutation_certificate as rfc
 from verify.identify import robust_certificate as rc
 from verify.identify.model_writer import structure_text
 from verify.identify.region import Region, half_widths
@@ -99,6 +101,31 @@ class RobustResult:
                 "passive_theta": None if self.passive_theta is None else
                 [str(x) for x in self.passive_theta],
                 "seconds": round(self.seconds, 4)}
+
+    def headline(self) -> str:
+        """The answer in a few words: which of the three, and on what evidence."""
+        if self.verdict == PASSIVE:
+            return "passive: every model of the region is passive (exact certificate)"
+        if self.verdict == NOT_PASSIVE:
+            return ("not passive: no model of the region is passive (exact region-wide "
+                    "refutation certificate)")
+        if self.straddles:
+            return ("inconclusive: the region holds a passive and a non-passive model "
+                    "(both exact); the data cannot decide")
+        return "inconclusive: neither proved nor refuted for the whole region"
+
+    def files(self, out: Path) -> dict[Path, str]:
+        """The region-wide refutation certificate to write into ``out`` (none if absent);
+        the proof certificate is written by the caller as before."""
+        if self.refutation is None:
+            return {}
+        return {out / self.refutation_name(): rfc.dumps(self.refutation)}
+
+    def refutation_name(self) -> str | None:
+        if self.refutation is None:
+            return None
+        return rfc.file_name(self.refutation["name"], Fraction(self.refutation["frequency"]),
+                             self.refutation["fingerprint"])
 
     @property
     def straddles(self) -> bool:
