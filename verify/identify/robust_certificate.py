@@ -37,6 +37,7 @@ from gmpy2 import mpq
 from verify.errors import VerifyInputError
 from verify.identify.region import Region, chi2_refusal
 from verify.inputs.numbers import fraction
+from verify.inputs.numbers import rational as exact_number
 from verify.passivity.check import robust_band as rb
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io.binding import resolve_source, slug
@@ -287,7 +288,8 @@ def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
         ident = read_identified(found)
         cov = ident.covariance()
         chi2 = ident.number("chi2")
-        level = ident.number("confidence_level")
+        level = fraction(exact_number(ident.identification.get("confidence_level"),
+                                      f"{source}: [identification] confidence_level"))
     except VerifyInputError as exc:
         return f"source {source} is not an identified model file ({exc})", ""
     if ident.model.name != data["name"]:
@@ -300,8 +302,7 @@ def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
     if any(mpq(float(v)) != region.covariance[i][j]
            for i, row in enumerate(cov) for j, v in enumerate(row)):
         return "the covariance differs from the source file's [identification] covariance", ""
-    if mpq(chi2) != region.chi2 or Fraction(level).limit_denominator(
-            10**6) != region.level:
+    if mpq(chi2) != region.chi2 or level != region.level:
         return "the level or chi2 differ from the source file's", ""
     return None, f"region bound to {source} (centre = its written coefficients)"
 
