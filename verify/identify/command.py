@@ -154,6 +154,7 @@ class Identified:
     rate: float
     trials: tuple[list[int], list[int]]
     notes: tuple[str, ...] = ()
+    passivity: Any = None  # verify.identify.passive_fit.PassivityTest, or why none
 
 
 def identify_logs(plan: Plan) -> Identified:
@@ -177,7 +178,15 @@ def identify_logs(plan: Plan) -> Identified:
         [np.asarray(t.u) for t in prepared.validation], list(predicted))
     ids = sorted({t.trial for t in prepared.identification})
     vals = sorted({t.trial for t in prepared.validation})
-    return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes)
+    return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes,
+                      _passivity(estimate, prepared.identification))
+
+
+def _passivity(estimate: Estimate, trials) -> Any:
+    """Can the data reject passivity (:mod:`verify.identify.passive_fit`)."""
+    from verify.identify.passive_fit import test_or_reason
+
+    return test_or_reason(estimate, trials)
 
 
 def residual_tests(q: Any) -> dict[str, Any]:
@@ -314,6 +323,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
             files[plan.out / rc.file_name(cert["name"], band, cert["fingerprint"])] = \
                 rc.dumps(cert)
     files.update(robust.files(plan.out))
+    files.update(_passive_files(plan, identified))
     files.update(_figures(plan, identified, region, search))
     return Outcome(plan, identified, model_path, ident, nominal, nominal_cert, robust,
                    search, files, _high_frequency_note(est.structure, ident.center))
@@ -376,8 +386,34 @@ def summary_json(o: Outcome) -> dict[str, Any]:
         "largest_band": {**o.band_search.to_json(),
                          "certificate": _cert_path(o, o.band_search.certificate)},
         "high_frequency": o.high_frequency_note,
+        "passivity_test": _passivity_json(o),
         "passed": o.passed,
     }
+
+
+def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str]:
+    """The best passive model's file, when the passivity test ran."""
+    from verify.identify.passive_fit import PASSIVE_MODEL_FILE, passive_model_text
+
+    test = identified.passivity
+    if test is None or isinstance(test, str):
+        return {}
+    try:
+        text = passive_model_text(f"{plan.name} (best passive fit)", test)
+    except VerifyInputError:
+        return {}
+    return {plan.out / PASSIVE_MODEL_FILE: text}
+
+
+def _passivity_json(o: Outcome) -> Any:
+    from verify.identify.passive_fit import PASSIVE_MODEL_FILE
+
+    test = o.identified.passivity
+    if test is None or isinstance(test, str):
+        return {"ran": False, "reason": test}
+    path = o.plan.out / PASSIVE_MODEL_FILE
+    return {"ran": True, **test.to_json(),
+            "passive_model": str(path) if path in o.files else None}
 
 
 def _robust_answer(o: Outcome) -> dict[str, Any]:
@@ -432,6 +468,7 @@ def lines(o: Outcome) -> list[str]:
     out.append(f"  robust, every model of the {float(LEVEL):.0%} region "
                f"{o.robust.where()}: {o.robust.verdict}: {o.robust.reason}")
     out += _robust_lines(o)
+    out += _passivity_lines(o)
     if o.high_frequency_note:
         out.append(f"  note: {o.high_frequency_note}")
     b = o.band_search
@@ -442,6 +479,13 @@ def lines(o: Outcome) -> list[str]:
     else:
         out.append("  robust passivity proved on no band [w1, w_max] tried")
     return out
+
+
+def _passivity_lines(o: Outcome) -> list[str]:
+    from verify.identify.passive_fit import PASSIVE_MODEL_FILE, summary_lines
+
+    path = o.plan.out / PASSIVE_MODEL_FILE
+    return summary_lines(o.identified.passivity, path if path in o.files else None)
 
 
 def _robust_lines(o: Outcome) -> list[str]:

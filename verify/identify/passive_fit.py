@@ -327,5 +327,44 @@ def passive_model_text(name: str, test: PassivityTest, *, description: str = "")
     return text
 
 
-__all__ = ["ALPHA", "CONSTRAINTS", "LAGS", "PassivityTest", "passive_constraints",
-           "passive_literals", "passive_model_text", "passivity_test"]
+PASSIVE_MODEL_FILE = "passive_model.toml"
+
+
+def test_or_reason(estimate: Any, trials: Sequence[Trial]) -> PassivityTest | str:
+    """The passivity test of an estimate on its identification trials, or why there is
+    none (a structure other than the paper's, or a fit that fails: one line)."""
+    if estimate.structure != Structure.paper():
+        return (f"the passivity test handles the paper's structure only (not "
+                f"{estimate.structure.kind})")
+    try:
+        return passivity_test(trials, estimate.theta)
+    except (VerifyInputError, ValueError, np.linalg.LinAlgError) as exc:
+        return f"no passive fit: {exc}"
+
+
+def summary_lines(test: PassivityTest | str | None, path: Any) -> list[str]:
+    """What ``verify identify`` prints about the test."""
+    if test is None:
+        return []
+    if isinstance(test, str):
+        return [f"  passivity test: {test}"]
+    fits = ", ".join(f"{x:.2f}" for x in test.fit_passive)
+    return [f"  passivity test (best passive model of the class vs the best model, same "
+            f"output-error criterion): {test.sentence()}",
+            f"  best passive model: {path} (fit on identification data {fits} %; "
+            "c12 = -c21, b0 >= 0, a1 b1 >= b0, so `verify gate` certifies it)"]
+
+
+__all__ = [
+    "ALPHA",
+    "CONSTRAINTS",
+    "LAGS",
+    "PASSIVE_MODEL_FILE",
+    "PassivityTest",
+    "passive_constraints",
+    "passive_literals",
+    "passive_model_text",
+    "passivity_test",
+    "summary_lines",
+    "test_or_reason",
+]
