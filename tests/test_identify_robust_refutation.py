@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -130,3 +131,47 @@ def test_direction_bounds_enclose_the_quadratic_form():
             value = D[0] * D[1] / 2 * (vf @ _hermitian_part(th, w).real @ vf)
             scale = 1e-9 * (1 + abs(value))
             assert float(g[0]) - scale <= value <= float(g[1]) + scale
+
+
+@pytest.fixture(scope="module")
+def shipped_passive():
+    """The shipped passive operator's closed-loop log, identified once (the paper's
+    protocol: 20 Hz, 6:6 split)."""
+    from verify.identify.command import IdentifySettings, identify_logs, validate
+
+    logs = Path(__file__).resolve().parents[1] / "verify" / "data" / "logs"
+    return logs / "passive_human.npz", identify_logs(validate(IdentifySettings(
+        logs=(logs / "passive_human.npz",), band="0:10")))
+
+
+def test_the_passive_operator_on_a_band_beyond_its_region_is_inconclusive_not_refuted(
+        shipped_passive, tmp_path):
+    """Issue scenario: a passive operator with --band 0:10; one model inside the 95 %
+    region fails at 10 rad/s, the centre is passive: inconclusive (exit 1), with both
+    sides exact in the message, the JSON and the JUnit message; never 'not passive'."""
+    import json
+    import xml.etree.ElementTree as ET
+
+    from verify.identify.command import (
+        IdentifySettings,
+        decide_identified,
+        junit,
+        lines,
+        summary_json,
+        validate,
+    )
+
+    log, identified = shipped_passive
+    plan = validate(IdentifySettings(logs=(log,), band="0:10", out=tmp_path / "out"))
+    o = decide_identified(plan, identified, band_steps=1)
+    assert o.robust.verdict == "inconclusive" and o.robust.straddles
+    assert not o.passed and o.robust.refutation is None
+    text = "\n".join(lines(o))
+    assert "robust answer: inconclusive: the region holds a passive and a non-passive" in text
+    s = summary_json(o)
+    assert s["robust"]["answer"].startswith("inconclusive") and s["robust"]["straddles"]
+    assert s["robust"]["refutation_certificate"] is None
+    assert json.dumps(s)
+    case = ET.fromstring(junit(o)).findall("testcase")[1]
+    failure = case.find("failure")
+    assert failure is not None and "inconclusive" in failure.get("message")
