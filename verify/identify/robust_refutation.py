@@ -86,19 +86,21 @@ def candidates(phi_c: np.ndarray, cov_phi: np.ndarray, chi2: float, shape: rb.Sh
     with np.errstate(all="ignore"):
         re1, re2 = n1 / d1d2, n2 / d1d2  # (N1 D2)/(D1 D2) = N1/D1
     c = phi_c[-1]
-    scored = []
-    for k, w in enumerate(omega):
-        M = np.array([[2 * re1[k], c], [c, 2 * re2[k]]])
-        if not np.all(np.isfinite(M)):
-            continue
-        _, vecs = np.linalg.eigh(M)
-        v = vecs[:, 0]
-        v = v / np.max(np.abs(v))
-        g, grad, dd = _float_g(phi_c[None, :], np.array([w * w]), v[None, :], shape, dims)
-        spread = math.sqrt(max(float(grad[0] @ cov_phi @ grad[0]) * chi2, 0.0))
-        if not (math.isfinite(float(g[0])) and dd[0] > 0):
-            continue
-        scored.append(((float(g[0]) + spread) / float(dd[0]), float(w), v))
+    M = np.empty((len(omega), 2, 2))
+    M[:, 0, 0], M[:, 1, 1] = 2 * re1, 2 * re2
+    M[:, 0, 1] = M[:, 1, 0] = c
+    finite = np.all(np.isfinite(M), axis=(1, 2)) & (d1d2 > 0)
+    if not np.any(finite):
+        return []
+    omega, M = omega[finite], M[finite]
+    V = np.linalg.eigh(M)[1][:, :, 0]  # the weakest direction per frequency
+    V = V / np.max(np.abs(V), axis=1)[:, None]
+    g, grad, dd = _float_g(np.tile(phi_c, (len(omega), 1)), omega**2, V, shape, dims)
+    spread = np.sqrt(np.maximum(np.einsum("ki,ij,kj->k", grad, cov_phi, grad) * chi2, 0))
+    with np.errstate(all="ignore"):
+        score = (g + spread) / dd
+    scored = [(float(score[k]), float(omega[k]), V[k]) for k in range(len(omega))
+              if np.isfinite(score[k]) and dd[k] > 0]
     scored.sort(key=lambda s: s[0])
     out: list[tuple[mpq, tuple[mpq, mpq]]] = []
     for score, w, v in scored:
