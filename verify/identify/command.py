@@ -396,7 +396,7 @@ def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str
     from verify.identify.passive_fit import PASSIVE_MODEL_FILE, passive_model_text
 
     test = identified.passivity
-    if test is None or isinstance(test, str):
+    if test is None or isinstance(test, str) or not test.informative:
         return {}
     try:
         text = passive_model_text(f"{plan.name} (best passive fit)", test)

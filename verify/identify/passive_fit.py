@@ -43,6 +43,12 @@ mixture of chi-square laws with 0..q degrees of freedom: M. J. Silvapulle and P.
 *Constrained Statistical Inference*, Wiley 2005, Ch. 3); its tail is at most that of
 chi-square with q = 5 (the equality and the four inequalities), which gives a
 conservative p-value: the data reject passivity only when p < ``ALPHA``.
+
+**When the data carry no information** the test is not run: when the free model is not
+distinguishable from no response at all (H = 0, the same likelihood ratio against the
+zero model with 10 degrees of freedom, p >= ``INFORMATIVE``), the denominators are not
+identified, the regularity behind the chi-square law fails (pure noise outputs gave
+p = 0.016 in the hostile tests), and the answer is that the data cannot test passivity.
 """
 
 from __future__ import annotations
@@ -63,6 +69,8 @@ from verify.identify.trial_data import OutputData, check_trials, output_data
 
 #: Significance level of the test.
 ALPHA = 0.05
+#: The free model must beat the zero model at this p-value for the test to run.
+INFORMATIVE = 1e-6
 #: Constraints of the passive class (c12 = -c21, b0_i >= 0, a1_i b1_i >= b0_i).
 CONSTRAINTS = 5
 #: Residual autocorrelation lags of the effective sample size.
@@ -108,13 +116,21 @@ class PassivityTest:
     p_value: float
     fit_free: tuple[float, float]  # % (Section 4 fit ratio on the identification data)
     fit_passive: tuple[float, float]
+    p_zero: float = 0.0  # the free model against H = 0 (module docstring)
+
+    @property
+    def informative(self) -> bool:
+        return self.p_zero < INFORMATIVE
 
     @property
     def rejected(self) -> bool:
-        return self.p_value < ALPHA
+        return self.informative and self.p_value < ALPHA
 
     def sentence(self) -> str:
         p = f"p = {self.p_value:.3g}"
+        if not self.informative:
+            return ("the data cannot test passivity: the best model is not distinguishable "
+                    f"from no response at all (p = {self.p_zero:.3g} against H = 0)")
         if self.rejected:
             return (f"the data reject passivity ({p}, likelihood ratio {self.statistic:.4g}, "
                     f"chi-square bound with {self.dof} degrees of freedom)")
@@ -123,7 +139,8 @@ class PassivityTest:
                 "freedom)")
 
     def to_json(self) -> dict[str, Any]:
-        return {"rejected": self.rejected, "p_value": self.p_value,
+        return {"informative": self.informative, "p_zero": self.p_zero,
+                "rejected": self.rejected, "p_value": self.p_value,
                 "statistic": self.statistic, "dof": self.dof, "alpha": ALPHA,
                 "sentence": self.sentence(),
                 "theta_free": [float(x) for x in self.theta_free],
@@ -271,11 +288,14 @@ def passivity_test(trials: Sequence[Trial], theta: Sequence[float], *,
     stat = max(0.0, _lr(res_pas, res_free, n_eff))
     p_value = float(chi2.sf(stat, CONSTRAINTS))
     ys = [used(np.concatenate(d.y), d, None) for d in data]
+    zero = _lr(ys, res_free, n_eff)
+    p_zero = float(chi2.sf(max(zero, 0.0), 10))
     return PassivityTest(
         free, pas, V_free, V_pas, (len(res_free[0]), len(res_free[1])), n_eff, stat,  # type: ignore[arg-type]
         CONSTRAINTS, p_value,
         tuple(_fit_ratio(y, r) for y, r in zip(ys, res_free, strict=True)),  # type: ignore[arg-type]
-        tuple(_fit_ratio(y, r) for y, r in zip(ys, res_pas, strict=True)))  # type: ignore[arg-type]
+        tuple(_fit_ratio(y, r) for y, r in zip(ys, res_pas, strict=True)),  # type: ignore[arg-type]
+        p_zero)
 
 
 def _lr(res_pas, res_free, n_eff) -> float:
@@ -348,6 +368,8 @@ def summary_lines(test: PassivityTest | str | None, path: Any) -> list[str]:
         return []
     if isinstance(test, str):
         return [f"  passivity test: {test}"]
+    if not test.informative:
+        return [f"  passivity test: {test.sentence()}; no passive model written"]
     fits = ", ".join(f"{x:.2f}" for x in test.fit_passive)
     return [f"  passivity test (best passive model of the class vs the best model, same "
             f"output-error criterion): {test.sentence()}",
@@ -358,6 +380,7 @@ def summary_lines(test: PassivityTest | str | None, path: Any) -> list[str]:
 __all__ = [
     "ALPHA",
     "CONSTRAINTS",
+    "INFORMATIVE",
     "LAGS",
     "PASSIVE_MODEL_FILE",
     "PassivityTest",
