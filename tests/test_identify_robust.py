@@ -117,6 +117,14 @@ def test_all_frequencies_for_the_paper_class_and_a_band_is_given(tmp_path):
     region = f.region()
     r = robust_verdict(region, f.structure, None, name="m", source="")
     assert r.verdict == "inconclusive" and region.contains(r.theta)
+    # both sides exact: a passive model of the region with c12 = -c21, by the gate
+    assert r.straddles and region.contains(r.passive_theta)
+    assert r.passive_theta[-2] == -r.passive_theta[-1]
+    from verify.passivity.decision import decide
+    from verify.passivity.model import from_transfer_function
+
+    num, den = f.structure.transfer_matrix(r.passive_theta)
+    assert decide(from_transfer_function(num, den)).verdict == "passive"
     found = largest_band(region, f.structure, Fraction(0), 100.0, name="m", source="",
                          steps=4, max_boxes=8000)
     assert found.w_max is not None and 2 < found.w_max < 13

@@ -364,8 +364,7 @@ def robust_verdict(region: Region, structure: Structure,
         sides.append(f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = {float(q):.4g} <= "
                      f"chi2 = {float(region.chi2):.4g}, exact) is not passive: {w.summary}")
     if passing is not None:
-        sides.append(f"the region's centre (the written model) is passive {_where(band)} "
-                     f"({passing})")
+        sides.append(passing[1])
     if len(sides) == 2:
         straddle = "the region straddles: " + "; ".join(sides) + ". "
     else:
@@ -373,28 +372,58 @@ def robust_verdict(region: Region, structure: Structure,
     return done(INCONCLUSIVE, f"the data cannot decide {_where(band)}: {straddle}"
                 f"No proof for the whole region ({no_proof}); no refutation of the whole "
                 f"region ({found.reason})", theta=theta, distance=q, witness=w,
-                passive_theta=None if passing is None else list(region.center))
+                passive_theta=None if passing is None else passing[0])
+
+
+def _gate_at(structure: Structure, theta: list[mpq], band) -> Any:
+    """The gate's exact decision on the model at θ (None if θ gives no model)."""
+    from verify.errors import VerifyInputError
+    from verify.passivity.band import decide_band
+    from verify.passivity.decision import decide
+    from verify.passivity.model import from_transfer_function
+
+    num, den = structure.transfer_matrix(list(theta))
+    try:
+        model = from_transfer_function(num, den, name="θ")
+    except VerifyInputError:
+        return None
+    return decide(model) if band is None else decide_band(model, band)
+
+
+def _skew_point(region: Region) -> list[mpq]:
+    """The point of c12 + c21 = 0 nearest the centre in the region's metric (closed form:
+    θc - Σe (eᵀθc)/(eᵀΣe), e summing the couplings; short rationals)."""
+    c, cov = region.float_center(), region.float_covariance()
+    e = np.zeros_like(c)
+    e[-2:] = 1.0
+    theta = c - cov @ e * float(e @ c) / float(e @ cov @ e)
+    out = [short(float(x)) for x in theta]
+    out[-1] = -out[-2]  # exactly skew
+    return out
 
 
 def _passing(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None,
-             nominal: Any) -> str | None:
-    """The exact evidence that the centre of the region is passive on ``band``: the gate's
-    decision on the written model (``nominal``, or made here when not given)."""
+             nominal: Any) -> tuple[list[mpq], str] | None:
+    """A passive model of the region with its exact evidence (the gate's certificate):
+    the centre (``nominal`` is the gate's decision on it, made here when not given), else
+    the nearest model with c12 = -c21 (for the paper's class the couplings can keep a
+    model from passivity only through their sum), when it lies in the region (exactly)."""
     if nominal is None:
-        from verify.errors import VerifyInputError
-        from verify.passivity.band import decide_band
-        from verify.passivity.decision import decide
-        from verify.passivity.model import from_transfer_function
-
-        num, den = structure.transfer_matrix(list(region.center))
-        try:
-            model = from_transfer_function(num, den, name="θc")
-        except VerifyInputError:
-            return None
-        nominal = decide(model) if band is None else decide_band(model, band)
-    if nominal.verdict != PASSIVE:
+        nominal = _gate_at(structure, list(region.center), band)
+    if nominal is not None and nominal.verdict == PASSIVE:
+        return list(region.center), (f"the region's centre (the written model) is passive "
+                                     f"{_where(band)} (the gate's exact certificate: "
+                                     f"{nominal.reason})")
+    theta = _skew_point(region)
+    if not region.contains(theta):
         return None
-    return f"the gate's exact certificate: {nominal.reason}"
+    decision = _gate_at(structure, theta, band)
+    if decision is None or decision.verdict != PASSIVE:
+        return None
+    q = rb.quadratic_form(rb.inverse(region.covariance), region.center, theta)
+    return theta, (f"a model inside the region with c12 = -c21 ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
+                   f"{float(q):.4g}, exact) is passive {_where(band)} (the gate's exact "
+                   f"certificate: {decision.reason})")
 
 
 def _where(band) -> str:
