@@ -58,3 +58,14 @@ def test_a_chi2_lowered_by_5e_10_is_refused_with_the_reason():
     value = mpq(chi2_quantile(level, 10)) - mpq(5, 10**10)
     why = chi2_refusal(level, value, 10)
     assert why is not None and "below the 0.95 quantile" in why
+
+
+def test_a_long_rational_chi2_is_decided_at_short_bounds():
+    """A hostile file's chi2 with a 3000-digit denominator: decided through 40-decimal
+    bounds on each side (the series never sees the long number)."""
+    level = Fraction(19, 20)
+    q = mpq(chi2_quantile(level, 10))
+    long_above = q + mpq(1, 10**3000 + 7)
+    long_below = q - mpq(10**20, 10**3000 + 7) - mpq(1, 10**12)
+    assert level_holds(level, long_above, 10) is True
+    assert level_holds(level, long_below, 10) is False

@@ -36,13 +36,30 @@ def level_holds(level: Fraction | mpq, chi2: mpq, dof: int) -> bool | None:
     I. Stegun, *Handbook of Mathematical Functions*, 26.4.21), so the claim is
     S = sum_{k<m} y^k/k! <= (1 - level) e^y. The partial sums T_N of e^y bound it below;
     T_N + y^(N+1)/(N+1)! (N+2)/(N+2-y), for N + 2 > y, bounds it above. True or False
-    when a bound decides, None when MAX_TERMS terms do not (or dof is odd, or chi2 < 0).
+    when a bound decides, None when MAX_TERMS terms do not (or dof is odd, chi2 < 0 or
+    chi2 > MAX_TERMS / 2, or chi2 lies within 1e-40 of the quantile).
     """
-    if dof <= 0 or dof % 2 or chi2 < 0:
+    if dof <= 0 or dof % 2 or chi2 < 0 or mpq(chi2) > MAX_TERMS // 2:
         return None
-    level, y, m = mpq(level), mpq(chi2) / 2, dof // 2
-    if y > MAX_TERMS // 4:
-        return None
+    # P(X <= c) increases with c: decide at short rationals c_lo <= c <= c_hi (40
+    # decimals), so a hostile file's long numbers cannot make the series costly
+    c = mpq(chi2)
+    scale = 10**40
+    c_lo, c_hi = mpq(_floor(c * scale), scale), mpq(-_floor(-c * scale), scale)
+    if _holds(mpq(level), c_lo, dof):
+        return True
+    if _holds(mpq(level), c_hi, dof) is False:
+        return False
+    return None
+
+
+def _floor(q: mpq) -> int:
+    return int(q.numerator // q.denominator)
+
+
+def _holds(level: mpq, chi2: mpq, dof: int) -> bool | None:
+    """:func:`level_holds` at a short rational ``chi2`` (the series bounds)."""
+    y, m = chi2 / 2, dof // 2
     term, S = mpq(1), mpq(0)
     for k in range(m):
         S += term
