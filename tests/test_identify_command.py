@@ -156,7 +156,8 @@ def test_identification_claim_replaces_its_stale_certificates_in_the_store(tmp_p
     assert not stale.exists() and unrelated.exists()
     unrelated.unlink()
     fresh = sorted(store.glob("*-identified-robust-*.json"))
-    assert [p.name.split("-identified-")[0] for p in fresh] == ["nonpassive_human",
-                                                                "passive_human"]
+    assert [p.name.split("-identified-")[0] for p in fresh] == [
+        "nonpassive_human", "nonpassive_human", "passive_human"]  # + the region refutation
+    assert any("-robust-refuted-" in p.name for p in fresh)
     assert not list((tmp_path / "reports").rglob("*.json"))  # one copy, in the store
     assert main(["certificates", "check", str(store)]) == 0
