@@ -69,3 +69,18 @@ def test_a_long_rational_chi2_is_decided_at_short_bounds():
     long_below = q - mpq(10**20, 10**3000 + 7) - mpq(1, 10**12)
     assert level_holds(level, long_above, 10) is True
     assert level_holds(level, long_below, 10) is False
+
+
+@pytest.mark.parametrize("dof", [4, 10, 18, 26])
+def test_the_exact_decision_agrees_with_50_digit_arithmetic_at_scipys_value(dof):
+    """scipy's 0.95 quantile is sometimes just below the exact one (dof = 10: the
+    chi-square CDF there is 0.95 - 6.7e-18): the exact check and an independent
+    50-digit evaluation (mpmath) give the same side."""
+    import mpmath
+
+    value = float(chi2.ppf(0.95, dof))
+    with mpmath.workdps(50):
+        y = mpmath.mpf(value) / 2
+        cdf = 1 - mpmath.e ** (-y) * sum(y**k / mpmath.factorial(k) for k in range(dof // 2))
+        above = cdf >= mpmath.mpf(19) / 20
+    assert level_holds(Fraction(19, 20), mpq(value), dof) is bool(above)
