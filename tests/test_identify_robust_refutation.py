@@ -172,6 +172,16 @@ def test_the_passive_operator_on_a_band_beyond_its_region_is_inconclusive_not_re
     assert s["robust"]["answer"].startswith("inconclusive") and s["robust"]["straddles"]
     assert s["robust"]["refutation_certificate"] is None
     assert json.dumps(s)
+    # the passivity test rides along: not rejected, its passive model written
+    assert s["passivity_test"]["ran"] and not s["passivity_test"]["rejected"]
+    assert s["passivity_test"]["passive_model"] == str(plan.out / "passive_model.toml")
+    assert "a passive model explains the data as well (p = " in text
+    from verify.passivity.decision import decide
+    from verify.passivity.io.model_file import load_model
+
+    written = tmp_path / "passive_model.toml"
+    written.write_text(o.files[plan.out / "passive_model.toml"])
+    assert decide(load_model(written)).verdict == "passive"
     case = ET.fromstring(junit(o)).findall("testcase")[1]
     failure = case.find("failure")
     assert failure is not None and "inconclusive" in failure.get("message")

@@ -36,6 +36,7 @@ from gmpy2 import mpq
 
 from verify.identify import refutation_certificate as rfc
 from verify.identify.region import Region, half_widths
+from verify.identify.robust_certificate import shape_of
 from verify.identify.robust_search import Ellipsoid, FloatOps, floor_short, short
 from verify.passivity.check import robust_band as rb
 
@@ -219,7 +220,7 @@ def refute_region(region: Region, structure_text: str,
                   max_boxes: int = MAX_BOXES, tries: int = TRIES) -> Refutation:
     """A checked certificate that no model of the region is passive on ``band`` (None:
     all frequencies), or why none was found (module docstring)."""
-    shape = rc_shape(structure_text)
+    shape = shape_of(structure_text)
     phi, cov_phi = rb.reduce_region(region.center, region.covariance)
     r = half_widths(cov_phi, region.chi2)
     S = rb.inverse(cov_phi)
@@ -248,12 +249,6 @@ def refute_region(region: Region, structure_text: str,
         reasons.append(f"w = {float(w):.4g}: the proposed tree fails the exact check "
                        f"({refusal})")
     return Refutation(None, "; ".join(reasons))
-
-
-def rc_shape(structure_text: str) -> rb.Shape:
-    from verify.identify.robust_certificate import shape_of
-
-    return shape_of(structure_text)
 
 
 __all__ = ["MAX_BOXES", "TRIES", "Refutation", "candidates", "refute_region"]
