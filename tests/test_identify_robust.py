@@ -93,22 +93,38 @@ def test_band_proof_writes_a_certificate_that_checks(tmp_path):
     assert rc.dumps(again.certificate) == path.read_text()  # byte-reproducible
 
 
-def test_band_beyond_the_nominal_crossing_is_refuted_with_an_exact_witness(tmp_path):
+def test_band_beyond_the_nominal_crossing_with_a_straddling_region_is_inconclusive(
+        tmp_path):
+    """On [0, 20] the centre fails beyond ~12 rad/s, but the region holds c12 + c21 = 0,
+    where the model is passive at every frequency: the data cannot decide. The failing
+    model is reported with its exact witness; the verdict is not 'not passive'."""
     f = paper_model(tmp_path)
     region = f.region()
     r = robust_verdict(region, f.structure, (Fraction(0), Fraction(20)),
                        name="m", source="")
-    assert r.verdict == "not passive" and r.witness is not None
+    assert r.verdict == "inconclusive" and r.witness is not None
     assert region.contains(r.theta) and r.distance <= region.chi2
     assert 0 <= Fraction(r.witness.data["omega"]) <= 20
+    assert r.refutation is None and r.certificate is None
+    assert "cannot decide" in r.reason
 
 
-def test_all_frequencies_fail_for_the_paper_class_and_a_band_is_given(tmp_path):
-    """c12 + c21 != 0 and Re h_i -> 0: not passive at high frequency, passive on a band."""
+def test_all_frequencies_for_the_paper_class_and_a_band_is_given(tmp_path):
+    """c12 + c21 != 0 and Re h_i -> 0: the centre is not passive at high frequency, but
+    this region holds c12 + c21 = 0 (inconclusive over all frequencies); on a band
+    [0, w_max] every model of it is passive."""
     f = paper_model(tmp_path)
     region = f.region()
     r = robust_verdict(region, f.structure, None, name="m", source="")
-    assert r.verdict == "not passive" and region.contains(r.theta)
+    assert r.verdict == "inconclusive" and region.contains(r.theta)
+    # both sides exact: a passive model of the region with c12 = -c21, by the gate
+    assert r.straddles and region.contains(r.passive_theta)
+    assert r.passive_theta[-2] == -r.passive_theta[-1]
+    from verify.passivity.decision import decide
+    from verify.passivity.model import from_transfer_function
+
+    num, den = f.structure.transfer_matrix(r.passive_theta)
+    assert decide(from_transfer_function(num, den)).verdict == "passive"
     found = largest_band(region, f.structure, Fraction(0), 100.0, name="m", source="",
                          steps=4, max_boxes=8000)
     assert found.w_max is not None and 2 < found.w_max < 13
@@ -136,12 +152,13 @@ def test_unsupported_structure_is_inconclusive_with_the_reason(tmp_path):
 
 
 def test_budget_exhaustion_is_inconclusive_not_passive(tmp_path):
+    """[0, 5] is proved with the default budget; with 3 boxes it is inconclusive, and
+    the reason says the centre is passive (no failing model: not a straddle)."""
     f = paper_model(tmp_path)
-    r = robust_verdict(f.region(), f.structure, (Fraction(0), Fraction(10)), name="m",
-                       source="", max_boxes=50)
-    assert r.verdict in ("inconclusive", "not passive")
-    if r.verdict == "inconclusive":
-        assert "budget" in r.reason
+    r = robust_verdict(f.region(), f.structure, (Fraction(0), Fraction(5)), name="m",
+                       source="", max_boxes=3)
+    assert r.verdict == "inconclusive" and "budget" in r.reason
+    assert r.passive_theta is not None and r.theta is None and not r.straddles
 
 
 def test_first_order_bound_holds_on_the_box_part_of_the_ellipsoid():

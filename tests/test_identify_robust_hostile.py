@@ -206,9 +206,11 @@ def test_duplicate_keys_are_refused(proved, tmp_path):
     assert not check_stored_certificate(path).ok
 
 
-def test_a_region_containing_a_non_passive_model_is_refuted_with_a_witness(tmp_path):
+def test_one_failing_model_inside_the_region_is_never_not_passive(tmp_path):
     """The nominal model is passive on [0, 8] rad/s, but its region is wide enough in
-    c12 + c21 to hold models that are not: refuted with an exact witness."""
+    c12 + c21 to hold models that are not: the region straddles, and the verdict is
+    inconclusive with both sides exact (a failing model with its witness, the passive
+    centre with the gate's certificate); no refutation certificate."""
     theta = list(PAPER_THETA)
     cov = np.diag((0.01 * np.abs(np.asarray(theta))) ** 2)
     cov[-2, -2] = cov[-1, -1] = 0.03**2
@@ -217,12 +219,14 @@ def test_a_region_containing_a_non_passive_model_is_refuted_with_a_witness(tmp_p
     region = f.region()
     band = (Fraction(0), Fraction(8))
     r = robust_verdict(region, f.structure, band, name="wide", source="")
-    assert r.verdict == "not passive"
+    assert r.verdict == "inconclusive" and r.straddles and r.refutation is None
     assert r.distance > 0 and region.contains(r.theta)  # not the centre: inside, exactly
     num, den = f.structure.transfer_matrix(r.theta)
     em = minimal_part(from_transfer_function(num, den).exact).model
     w = Fraction(r.witness.data["omega"])
     assert 0 <= w <= 8 and frequency_witness_at(em, w) is not None
+    assert r.passive_theta == list(region.center)
+    assert "straddles" in r.reason
     assert json.dumps(r.to_json())  # the JSON summary is serialisable
 
 

@@ -209,6 +209,7 @@ class Identified:
     notes: tuple[str, ...] = ()
     gate: Identifiability | None = None
     joins: tuple[str, ...] = ()
+    passivity: Any = None  # verify.identify.passive_fit.PassivityTest, or why none
 
     @property
     def identifiable(self) -> bool:
@@ -271,8 +272,17 @@ def identify_logs(plan: Plan) -> Identified:
         [np.asarray(t.u) for t in prepared.validation], list(y_val))
     gate = identifiability.check(estimate, quality.fit_validation, joined,
                                  1.0 / prepared.rate)
+    passivity = (_passivity(estimate, prepared.identification) if gate.identifiable
+                 else None)
     return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes, gate,
-                      joins)
+                      joins, passivity)
+
+
+def _passivity(estimate: Estimate, trials) -> Any:
+    """Can the data reject passivity (:mod:`verify.identify.passive_fit`)."""
+    from verify.identify.passive_fit import test_or_reason
+
+    return test_or_reason(estimate, trials)
 
 
 def residual_tests(q: Any) -> dict[str, Any]:
@@ -421,6 +431,8 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
             band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
             files[plan.out / rc.file_name(cert["name"], band, cert["fingerprint"])] = \
                 rc.dumps(cert)
+    files.update(robust.files(plan.out))
+    files.update(_passive_files(plan, identified))
     files.update(_figures(plan, identified, region, search))
     return Outcome(plan, identified, model_path, ident, nominal, nominal_cert, robust,
                    search, files, _high_frequency_note(est.structure, ident.center))
@@ -483,12 +495,48 @@ def summary_json(o: Outcome) -> dict[str, Any]:
                     "certificate": None if o.nominal_certificate is None else
                     str(o.plan.out / o.nominal_certificate[0])},
         "robust": {**o.robust.to_json(), "level": str(LEVEL),
-                   "certificate": _cert_path(o, o.robust.certificate)},
+                   "certificate": _cert_path(o, o.robust.certificate),
+                   **_robust_answer(o)},
         "largest_band": {**o.band_search.to_json(),
                          "certificate": _cert_path(o, o.band_search.certificate)},
         "high_frequency": o.high_frequency_note,
+        "passivity_test": _passivity_json(o),
         "passed": o.passed,
     }
+
+
+def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str]:
+    """The best passive model's file, when the passivity test ran."""
+    from verify.identify.passive_fit import PASSIVE_MODEL_FILE, passive_model_text
+
+    test = identified.passivity
+    if test is None or isinstance(test, str) or not test.informative:
+        return {}
+    try:
+        text = passive_model_text(f"{plan.name} (best passive fit)", test)
+    except VerifyInputError:
+        return {}
+    return {plan.out / PASSIVE_MODEL_FILE: text}
+
+
+def _passivity_json(o: Outcome) -> Any:
+    from verify.identify.passive_fit import PASSIVE_MODEL_FILE
+
+    test = o.identified.passivity
+    if test is None or isinstance(test, str):
+        return {"ran": False, "reason": test}
+    path = o.plan.out / PASSIVE_MODEL_FILE
+    return {"ran": True, **test.to_json(),
+            "passive_model": str(path) if path in o.files else None}
+
+
+def _robust_answer(o: Outcome) -> dict[str, Any]:
+    """The robust answer's JSON fields: which of the three, and its certificate."""
+    name = o.robust.refutation_name()
+    return {"answer": o.robust.headline(),
+            "refutation_certificate": None if name is None else str(o.plan.out / name),
+            "largest_proved_band": None if o.band_search.w_max is None else
+            [str(o.band_search.w1), str(o.band_search.w_max)]}
 
 
 def _cert_path(o: Outcome, cert: dict | None) -> str | None:
@@ -509,7 +557,7 @@ def junit(o: Outcome) -> str:
                   o.nominal.passed, str(d.verdict), d.reason),
         JunitCase("verify.identify", f"robust ({float(LEVEL):.0%} region) {where}: "
                   f"{o.plan.name}", str(o.model_path), o.robust.seconds, o.robust.passed,
-                  str(o.robust.verdict), o.robust.reason),
+                  str(o.robust.verdict), f"{o.robust.headline()}. {o.robust.reason}"),
     ], suite="identification")
 
 
@@ -536,6 +584,8 @@ def lines(o: Outcome) -> list[str]:
                f": {d.verdict}: {d.reason}")
     out.append(f"  robust, every model of the {float(LEVEL):.0%} region "
                f"{o.robust.where()}: {o.robust.verdict}: {o.robust.reason}")
+    out += _robust_lines(o)
+    out += _passivity_lines(o)
     if o.high_frequency_note:
         out.append(f"  note: {o.high_frequency_note}")
     b = o.band_search
@@ -545,6 +595,25 @@ def lines(o: Outcome) -> list[str]:
                    "prover reached, bisection on w_max)")
     else:
         out.append("  robust passivity proved on no band [w1, w_max] tried")
+    return out
+
+
+def _passivity_lines(o: Outcome) -> list[str]:
+    from verify.identify.passive_fit import PASSIVE_MODEL_FILE, summary_lines
+
+    path = o.plan.out / PASSIVE_MODEL_FILE
+    return summary_lines(o.identified.passivity, path if path in o.files else None)
+
+
+def _robust_lines(o: Outcome) -> list[str]:
+    """The robust answer in one line, with its certificate or the largest proved band."""
+    name = o.robust.refutation_name()
+    out = [f"  robust answer: {o.robust.headline()}"]
+    if name is not None:
+        out.append(f"  refutation certificate: {o.plan.out / name}")
+    if o.robust.verdict == INCONCLUSIVE and o.band_search.w_max is not None:
+        out.append(f"  the whole region is proved passive on [{o.band_search.w1}, "
+                   f"{o.band_search.w_max}] rad/s, the largest band proved")
     return out
 
 

@@ -22,15 +22,93 @@ from verify.errors import VerifyInputError
 from verify.inputs.numbers import rational
 from verify.passivity.check import robust_band as rb
 
-#: Relative agreement asked of a stored chi-square value with scipy's quantile.
-CHI2_AGREEMENT = 1e-9
+#: Kept for callers that still import it; no check uses a float agreement any more.
+CHI2_AGREEMENT = 0.0
+#: Terms of the exponential series tried before an exact level check gives up.
+MAX_TERMS = 4000
+
+
+def level_holds(level: Fraction | mpq, chi2: mpq, dof: int) -> bool | None:
+    """Decide P(X <= chi2) >= level for X chi-square with an even ``dof``, exactly.
+
+    With dof = 2m and y = chi2/2, P(X > chi2) = e^-y sum_{k<m} y^k/k! (the Poisson sum
+    of the chi-square survival function with even degrees of freedom: M. Abramowitz and
+    I. Stegun, *Handbook of Mathematical Functions*, 26.4.21), so the claim is
+    S = sum_{k<m} y^k/k! <= (1 - level) e^y. The partial sums T_N of e^y bound it below;
+    T_N + y^(N+1)/(N+1)! (N+2)/(N+2-y), for N + 2 > y, bounds it above. True or False
+    when a bound decides, None when MAX_TERMS terms do not (or dof is odd, chi2 < 0 or
+    chi2 > MAX_TERMS / 2, or chi2 lies within 1e-40 of the quantile).
+    """
+    if dof <= 0 or dof % 2 or chi2 < 0 or mpq(chi2) > MAX_TERMS // 2:
+        return None
+    # P(X <= c) increases with c: decide at short rationals c_lo <= c <= c_hi (40
+    # decimals), so a hostile file's long numbers cannot make the series costly
+    c = mpq(chi2)
+    scale = 10**40
+    c_lo, c_hi = mpq(_floor(c * scale), scale), mpq(-_floor(-c * scale), scale)
+    if _holds(mpq(level), c_lo, dof):
+        return True
+    if _holds(mpq(level), c_hi, dof) is False:
+        return False
+    return None
+
+
+def _floor(q: mpq) -> int:
+    return int(q.numerator // q.denominator)
+
+
+def _holds(level: mpq, chi2: mpq, dof: int) -> bool | None:
+    """:func:`level_holds` at a short rational ``chi2`` (the series bounds)."""
+    y, m = chi2 / 2, dof // 2
+    term, S = mpq(1), mpq(0)
+    for k in range(m):
+        S += term
+        term = term * y / (k + 1)
+    # term = y^m/m!; T_{m-1} = S
+    T, N = S, m - 1
+    gap = 1 - level
+    while N < MAX_TERMS:
+        if S <= gap * T:
+            return True
+        if N + 2 > y:
+            tail = term * (N + 2) / (N + 2 - y)  # term = y^(N+1)/(N+1)!
+            if S > gap * (T + tail):
+                return False
+        T += term
+        N += 1
+        term = term * y / (N + 1)
+    return None
 
 
 def chi2_quantile(level: Fraction, dof: int) -> float:
-    """The chi-square ``level`` quantile with ``dof`` degrees of freedom (scipy)."""
+    """The chi-square ``level`` quantile with ``dof`` degrees of freedom as a float.
+
+    scipy's value, raised ulp by ulp for even ``dof`` until :func:`level_holds` proves
+    P(X <= value) >= level exactly: the region it defines contains the exact
+    ``level`` region (odd ``dof``: scipy's value, never used by a certificate)."""
     from scipy.stats import chi2
 
-    return float(chi2.ppf(float(level), dof))
+    value = float(chi2.ppf(float(level), dof))
+    if dof % 2 == 0 and math.isfinite(value):
+        for _ in range(1000):
+            if level_holds(level, mpq(value), dof):
+                break
+            value = math.nextafter(value, math.inf)
+    return value
+
+
+def chi2_refusal(level: Fraction | mpq, chi2: mpq, dof: int) -> str | None:
+    """None if ``chi2`` is at least the ``level`` quantile with ``dof`` degrees of freedom
+    (decided exactly by :func:`level_holds`), else why the label does not hold."""
+    holds = level_holds(level, chi2, dof)
+    if holds:
+        return None
+    if holds is False:
+        return (f"chi2 = {float(chi2):.17g} is below the {float(level)} quantile with {dof} "
+                f"degrees of freedom (exactly: P(X <= chi2) < {level}), so the region is "
+                f"not the {float(level)} confidence region")
+    return (f"chi2 = {float(chi2):.6g} with {dof} degrees of freedom: the confidence level "
+            f"{level} could not be re-derived exactly")
 
 
 @dataclass(frozen=True)
@@ -100,4 +178,5 @@ def make_region(center: Sequence[object], covariance: np.ndarray, level: Fractio
     return Region(c, S, Fraction(level), mpq(value))
 
 
-__all__ = ["CHI2_AGREEMENT", "Region", "chi2_quantile", "half_widths", "make_region"]
+__all__ = ["CHI2_AGREEMENT", "MAX_TERMS", "Region", "chi2_quantile", "chi2_refusal",
+           "half_widths", "level_holds", "make_region"]

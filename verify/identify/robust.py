@@ -9,11 +9,19 @@ verdict, for every θ in the region (:mod:`verify.identify.region`):
   region's image times the frequency piece(s), proposed in floating point
   (:mod:`verify.identify.robust_search`) and checked leaf by leaf in exact arithmetic
   (:func:`verify.identify.robust_certificate.check_leaves`); the certificate is written;
-* **not passive** (refuted): a rational θ whose membership in the ellipsoid is checked
-  exactly and a rational w with the gate's exact witness on the exact model at θ
-  (:func:`verify.passivity.band.band_witness`,
-  :func:`verify.passivity.check.witness.frequency_witness`);
-* **inconclusive**, with the reason (box budget reached, structure not supported, ...).
+* **not passive** (refuted, for the whole region): one rational frequency w of the band
+  and one real direction v with v^T (H_θ(jw) + H_θ(jw)^H) v < 0 for every θ of the
+  region, by an interval branch and bound proposed in floating point
+  (:mod:`verify.identify.robust_refutation`) and checked leaf by leaf in exact arithmetic
+  (:mod:`verify.identify.refutation_certificate`); that certificate is written. One
+  failing model of the region is never enough: the region may hold passive models too;
+* **inconclusive** otherwise: the data cannot decide on that band. The reason names the
+  evidence on each side when there is some, both exact: a model of the region that is not
+  passive (a rational θ whose membership in the ellipsoid is checked exactly, with the
+  gate's exact witness at a rational w: :func:`verify.passivity.band.band_witness`,
+  :func:`verify.passivity.check.witness.frequency_witness`) and a passive one (the
+  region's centre, with the gate's exact certificate); the largest band on which the
+  whole region is proved passive is :func:`largest_band`'s.
 
 All frequencies: for the paper's class the off-diagonal sum c12 + c21 of an identified
 model is never exactly 0, while Re h_i(jw) -> 0 as w -> infinity, so
@@ -29,14 +37,17 @@ import math
 import time
 from dataclasses import dataclass, field
 from fractions import Fraction
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 from gmpy2 import mpq
 
+from verify.identify import refutation_certificate as rfc
 from verify.identify import robust_certificate as rc
 from verify.identify.model_writer import structure_text
 from verify.identify.region import Region, half_widths
+from verify.identify.robust_refutation import refute_region
 from verify.identify.robust_search import Ellipsoid, search, short
 from verify.identify.structure import Structure
 from verify.passivity.check import robust_band as rb
@@ -44,6 +55,8 @@ from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, GateVe
 
 #: Default number of boxes the search may visit per frequency piece.
 MAX_BOXES = 40_000
+#: Boxes the region-wide refutation may visit per candidate frequency.
+REFUTE_BOXES = 6_000
 #: Largest certificate (leaves) the band search keeps.
 MAX_BAND_LEAVES = 2_000
 
@@ -55,11 +68,13 @@ class RobustResult:
     verdict: GateVerdict
     band: tuple[Fraction, Fraction] | None
     reason: str
-    certificate: dict[str, Any] | None = None
-    theta: list[mpq] | None = None  # a refuting parameter vector (exact, in the region)
+    certificate: dict[str, Any] | None = None  # robust passivity of the whole region
+    theta: list[mpq] | None = None  # a non-passive parameter vector (exact, in the region)
     distance: mpq | None = None  # its (θ - θc)^T Σ^-1 (θ - θc), exactly
     witness: Any = None  # the gate's Witness at θ
     seconds: float = 0.0
+    refutation: dict[str, Any] | None = None  # no model of the region is passive
+    passive_theta: list[mpq] | None = None  # a passive model of a straddling region
 
     @property
     def passed(self) -> bool:
@@ -78,7 +93,46 @@ class RobustResult:
                 "witness": None if self.witness is None else {
                     "kind": self.witness.kind, "summary": self.witness.summary,
                     **self.witness.data},
+                "refutation": None if self.refutation is None else {
+                    "frequency": self.refutation["frequency"],
+                    "direction": self.refutation["direction"],
+                    "leaves": self.refutation["leaves"]},
+                "straddles": self.straddles,
+                "passive_theta": None if self.passive_theta is None else
+                [str(x) for x in self.passive_theta],
                 "seconds": round(self.seconds, 4)}
+
+    def headline(self) -> str:
+        """The answer in a few words: which of the three, and on what evidence."""
+        if self.verdict == PASSIVE:
+            return "passive: every model of the region is passive (exact certificate)"
+        if self.verdict == NOT_PASSIVE:
+            return ("not passive: no model of the region is passive (exact region-wide "
+                    "refutation certificate)")
+        if self.straddles:
+            return ("inconclusive: the region holds a passive and a non-passive model "
+                    "(both exact); the data cannot decide")
+        return "inconclusive: neither proved nor refuted for the whole region"
+
+    def files(self, out: Path) -> dict[Path, str]:
+        """The region-wide refutation certificate to write into ``out`` (none if absent);
+        the proof certificate is written by the caller as before."""
+        if self.refutation is None:
+            return {}
+        return {out / self.refutation_name(): rfc.dumps(self.refutation)}
+
+    def refutation_name(self) -> str | None:
+        if self.refutation is None:
+            return None
+        return rfc.file_name(self.refutation["name"], Fraction(self.refutation["frequency"]),
+                             self.refutation["fingerprint"])
+
+    @property
+    def straddles(self) -> bool:
+        """An inconclusive verdict with a passive and a non-passive model of the region,
+        both exact."""
+        return self.verdict == INCONCLUSIVE and self.theta is not None \
+            and self.passive_theta is not None
 
 
 def supported(structure: Structure) -> str | None:
@@ -266,11 +320,14 @@ def refute(region: Region, structure: Structure, band: tuple[Fraction, Fraction]
 
 def robust_verdict(region: Region, structure: Structure,
                    band: tuple[Fraction, Fraction] | None, *, name: str, source: str,
-                   nominal: Any = None, max_boxes: int = MAX_BOXES) -> RobustResult:
+                   nominal: Any = None, max_boxes: int = MAX_BOXES,
+                   refute_boxes: int = REFUTE_BOXES) -> RobustResult:
     """The robust verdict on ``band`` (None: all frequencies; module docstring).
 
-    ``nominal`` is the gate's decision on the written model (θ = θc); a not-passive one
-    refutes at once (θc lies in the region).
+    ``nominal`` is the gate's decision on the written model (θ = θc): a not-passive one
+    shows at once that no proof of the whole region exists (θc lies in the region), a
+    passive one is the passive side of a straddling region. One failing model never
+    makes the verdict *not passive*: that needs the region-wide refutation.
     """
     start = time.perf_counter()
 
@@ -280,29 +337,93 @@ def robust_verdict(region: Region, structure: Structure,
     why = supported(structure)
     if why is not None:
         return done(INCONCLUSIVE, why)
+    failing: tuple | None = None
     if nominal is not None and nominal.verdict == NOT_PASSIVE and nominal.witness is not None:
-        return done(NOT_PASSIVE, "the nominal model (the region's centre) is not passive: "
-                    f"{nominal.witness.summary}", theta=list(region.center),
-                    distance=mpq(0), witness=nominal.witness)
-    found = refute(region, structure, band)  # cheap: a float search, one exact witness
-    if found is not None:
-        theta, q, w = found
-        return done(NOT_PASSIVE, f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
-                    f"{float(q):.4g} <= chi2 = {float(region.chi2):.4g}, exact) is not "
-                    f"passive: {w.summary}", theta=theta, distance=q, witness=w)
-    hints: list = []
-    cert, reason = prove(region, structure, band, name=name, source=source,
-                         max_boxes=max_boxes, hints=hints)
-    if cert is not None:
-        return done(PASSIVE, f"every model of the region is passive {_where(band)}: "
-                    f"{reason}", certificate=cert)
-    found = refute(region, structure, band, hints) if hints else None
-    if found is not None:
-        theta, q, w = found
-        return done(NOT_PASSIVE, f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
-                    f"{float(q):.4g} <= chi2 = {float(region.chi2):.4g}, exact) is not "
-                    f"passive: {w.summary}", theta=theta, distance=q, witness=w)
-    return done(INCONCLUSIVE, f"no proof and no refutation {_where(band)}: {reason}")
+        failing = (list(region.center), mpq(0), nominal.witness)
+    else:
+        failing = refute(region, structure, band)  # cheap: a float search, one witness
+    no_proof = "a model of the region is not passive, so no proof of the whole region exists"
+    if failing is None:
+        hints: list = []
+        cert, no_proof = prove(region, structure, band, name=name, source=source,
+                               max_boxes=max_boxes, hints=hints)
+        if cert is not None:
+            return done(PASSIVE, f"every model of the region is passive {_where(band)}: "
+                        f"{no_proof}", certificate=cert)
+        failing = refute(region, structure, band, hints) if hints else None
+    found = refute_region(region, structure_text(structure), band, name=name,
+                          source=source, max_boxes=refute_boxes)
+    theta, q, w = failing if failing is not None else (None, None, None)
+    if found.certificate is not None:
+        return done(NOT_PASSIVE, f"no model of the region is passive {_where(band)}: "
+                    f"{found.reason}", refutation=found.certificate, theta=theta,
+                    distance=q, witness=w)
+    passing = _passing(region, structure, band, nominal)
+    sides = []
+    if failing is not None:
+        sides.append(f"a model inside the region ((θ-θc)ᵀΣ⁻¹(θ-θc) = {float(q):.4g} <= "
+                     f"chi2 = {float(region.chi2):.4g}, exact) is not passive: {w.summary}")
+    if passing is not None:
+        sides.append(passing[1])
+    if len(sides) == 2:
+        straddle = "the region straddles: " + "; ".join(sides) + ". "
+    else:
+        straddle = ("; ".join(sides) + ". ") if sides else ""
+    return done(INCONCLUSIVE, f"the data cannot decide {_where(band)}: {straddle}"
+                f"No proof for the whole region ({no_proof}); no refutation of the whole "
+                f"region ({found.reason})", theta=theta, distance=q, witness=w,
+                passive_theta=None if passing is None else passing[0])
+
+
+def _gate_at(structure: Structure, theta: list[mpq], band) -> Any:
+    """The gate's exact decision on the model at θ (None if θ gives no model)."""
+    from verify.errors import VerifyInputError
+    from verify.passivity.band import decide_band
+    from verify.passivity.decision import decide
+    from verify.passivity.model import from_transfer_function
+
+    num, den = structure.transfer_matrix(list(theta))
+    try:
+        model = from_transfer_function(num, den, name="θ")
+    except VerifyInputError:
+        return None
+    return decide(model) if band is None else decide_band(model, band)
+
+
+def _skew_point(region: Region) -> list[mpq]:
+    """The point of c12 + c21 = 0 nearest the centre in the region's metric (closed form:
+    θc - Σe (eᵀθc)/(eᵀΣe), e summing the couplings; short rationals)."""
+    c, cov = region.float_center(), region.float_covariance()
+    e = np.zeros_like(c)
+    e[-2:] = 1.0
+    theta = c - cov @ e * float(e @ c) / float(e @ cov @ e)
+    out = [short(float(x)) for x in theta]
+    out[-1] = -out[-2]  # exactly skew
+    return out
+
+
+def _passing(region: Region, structure: Structure, band: tuple[Fraction, Fraction] | None,
+             nominal: Any) -> tuple[list[mpq], str] | None:
+    """A passive model of the region with its exact evidence (the gate's certificate):
+    the centre (``nominal`` is the gate's decision on it, made here when not given), else
+    the nearest model with c12 = -c21 (for the paper's class the couplings can keep a
+    model from passivity only through their sum), when it lies in the region (exactly)."""
+    if nominal is None:
+        nominal = _gate_at(structure, list(region.center), band)
+    if nominal is not None and nominal.verdict == PASSIVE:
+        return list(region.center), (f"the region's centre (the written model) is passive "
+                                     f"{_where(band)} (the gate's exact certificate: "
+                                     f"{nominal.reason})")
+    theta = _skew_point(region)
+    if not region.contains(theta):
+        return None
+    decision = _gate_at(structure, theta, band)
+    if decision is None or decision.verdict != PASSIVE:
+        return None
+    q = rb.quadratic_form(rb.inverse(region.covariance), region.center, theta)
+    return theta, (f"a model inside the region with c12 = -c21 ((θ-θc)ᵀΣ⁻¹(θ-θc) = "
+                   f"{float(q):.4g}, exact) is passive {_where(band)} (the gate's exact "
+                   f"certificate: {decision.reason})")
 
 
 def _where(band) -> str:
@@ -372,6 +493,7 @@ def largest_band(region: Region, structure: Structure, w1: Fraction, cap: float,
 __all__ = [
     "MAX_BAND_LEAVES",
     "MAX_BOXES",
+    "REFUTE_BOXES",
     "BandSearch",
     "RobustResult",
     "candidates",

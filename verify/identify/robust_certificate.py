@@ -13,7 +13,8 @@ square-root bounds of the first-order form on the box's part of the ellipsoid,
 tangent plane shows the box misses the ellipsoid). :func:`check_robust_file` re-derives
 everything and decides it exactly with no solver (:mod:`verify.passivity.check.robust_band`):
 
-* Σ symmetric positive definite, χ² the level's quantile (to 1e-9, scipy), the
+* Σ symmetric positive definite, χ² at least the level's quantile (decided exactly,
+  :func:`verify.identify.region.level_holds`, no float agreement), the
   fingerprint, file name and statement derived from the claim;
 * the enclosure r_i^2 >= χ (A Σ A^T)_ii, the pieces the band asks for (x = w^2 in
   [w1^2, w2^2]; for all frequencies x in [0, 1] and y = 1/w^2 in [0, 1]);
@@ -34,8 +35,9 @@ from typing import Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.identify.region import CHI2_AGREEMENT, Region, chi2_quantile
+from verify.identify.region import Region, chi2_refusal
 from verify.inputs.numbers import fraction
+from verify.inputs.numbers import rational as exact_number
 from verify.passivity.check import robust_band as rb
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io.binding import resolve_source, slug
@@ -180,6 +182,10 @@ def _leaf(node: list, dims: int) -> tuple[str, list[mpq]]:
     raise CertificateFormatError(f"malformed leaf {str(node)[:60]}")
 
 
+parse_region = _region
+parse_band = _band
+
+
 # ------------------------------------------------------------------ checking
 
 
@@ -200,12 +206,9 @@ def check_claim(data: dict[str, Any], path: Path) -> tuple[rb.Shape, Region,
         return shape, region, band, f"level {region.level} is not in (0, 1)"
     if not rb.is_positive_definite([list(r) for r in region.covariance]):
         return shape, region, band, "the covariance is not symmetric positive definite"
-    expected_chi2 = chi2_quantile(region.level, shape.parameters)
-    if abs(float(region.chi2) - expected_chi2) > CHI2_AGREEMENT * expected_chi2:
-        return shape, region, band, (f"chi2 = {float(region.chi2):.12g} is not the "
-                                     f"{float(region.level)} quantile with "
-                                     f"{shape.parameters} degrees of freedom "
-                                     f"({expected_chi2:.12g})")
+    why = chi2_refusal(region.level, region.chi2, shape.parameters)
+    if why is not None:
+        return shape, region, band, why
     fp = fingerprint(structure_text, names, reg_json, data["band"])
     if data["fingerprint"] != fp:
         return shape, region, band, "fingerprint does not match the claim"
@@ -285,7 +288,8 @@ def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
         ident = read_identified(found)
         cov = ident.covariance()
         chi2 = ident.number("chi2")
-        level = ident.number("confidence_level")
+        level = fraction(exact_number(ident.identification.get("confidence_level"),
+                                      f"{source}: [identification] confidence_level"))
     except VerifyInputError as exc:
         return f"source {source} is not an identified model file ({exc})", ""
     if ident.model.name != data["name"]:
@@ -298,8 +302,7 @@ def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
     if any(mpq(float(v)) != region.covariance[i][j]
            for i, row in enumerate(cov) for j, v in enumerate(row)):
         return "the covariance differs from the source file's [identification] covariance", ""
-    if mpq(chi2) != region.chi2 or Fraction(level).limit_denominator(
-            10**6) != region.level:
+    if mpq(chi2) != region.chi2 or level != region.level:
         return "the level or chi2 differ from the source file's", ""
     return None, f"region bound to {source} (centre = its written coefficients)"
 
@@ -321,5 +324,5 @@ def check_robust_file(data: dict[str, Any], path: Path) -> KypCheck:
 
 
 __all__ = ["SCHEMA", "certificate_json", "check_claim", "check_leaves", "check_robust_file",
-           "check_source", "dumps", "file_name", "parameter_names", "pieces_for",
-           "shape_of", "statement"]
+           "check_source", "dumps", "file_name", "parameter_names", "parse_band",
+           "parse_region", "pieces_for", "shape_of", "statement"]

@@ -193,6 +193,79 @@ def leaf_bounds(box: Sequence[Interval], t: Interval, variable: str, shape: Shap
     return Ns[0], Ns[1], det
 
 
+# ------------------------------------------------------------------ one direction, one frequency
+
+
+def direction_bounds(box: Sequence[Interval], x: Interval, v: Sequence[Any], shape: Shape,
+                     ops) -> tuple[Interval, Interval, Interval]:
+    """Enclosures of (g, D_1, D_2) over a box of φ at x = w^2, for a real direction v.
+
+    v^T (H(jw) + H(jw)^H) v = 2 v_1^2 N_1/D_1 + 2 v_2^2 N_2/D_2 + 2 v_1 v_2 c; multiplied by
+    D_1 D_2 / 2 (positive where D_1, D_2 > 0, i.e. no pole at jw):
+
+        g = v_1^2 N_1 D_2 + v_2^2 N_2 D_1 + v_1 v_2 c D_1 D_2.
+
+    g < 0 with D_1, D_2 > 0 at one w shows the model is not passive at w (the Hermitian
+    part has a negative direction); on every point of a box, for every model of the box.
+    """
+    Ns, Ds = [], []
+    for i in range(2):
+        b, a = element(box, i, shape, ops)
+        Ns.append(polynomial(n_coefficients(b, a, shape, ops), x, "x", shape.n_degree, ops))
+        Ds.append(polynomial(d_coefficients(a, shape, ops), x, "x", shape.poles, ops))
+    v1, v2 = ops.const(v[0]), ops.const(v[1])
+    g = ops.add(ops.mul(ops.mul(ops.sqr(v1), Ns[0]), Ds[1]),
+                ops.mul(ops.mul(ops.sqr(v2), Ns[1]), Ds[0]))
+    g = ops.add(g, ops.mul(ops.mul(ops.mul(v1, v2), box[-1]), ops.mul(Ds[0], Ds[1])))
+    return g, Ds[0], Ds[1]
+
+
+def check_negative_leaf(box: list[Interval], x: mpq, v: Sequence[mpq], shape: Shape,
+                        claimed: mpq) -> LeafResult:
+    """Every model of the box fails at x = w^2: the exact enclosure of g lies below the
+    claimed bound < 0 and those of D_1, D_2 above 0 (:func:`direction_bounds`)."""
+    if not claimed < 0:
+        return LeafResult(False, f"claimed upper bound of g {claimed} is not < 0")
+    g, d1, d2 = direction_bounds(box, (x, x), v, shape, ExactOps)
+    if not (d1[0] > 0 and d2[0] > 0):
+        return LeafResult(False, "a denominator |den_i(jw)|^2 is not bounded away from 0")
+    if g[1] > claimed:
+        return LeafResult(False, f"upper bound of g is {g[1]}, above the claimed {claimed}")
+    return LeafResult(True, "")
+
+
+def check_negative_linear_leaf(box: list[Interval], x: mpq, v: Sequence[mpq], shape: Shape,
+                               covariance, phi_c: Sequence[mpq], chi2: mpq, claimed: mpq,
+                               sqrt_bound: mpq) -> LeafResult:
+    """Every model of the box's part of the ellipsoid fails at x = w^2: the first-order
+    form (:func:`linear_bound`) of -g is >= -``claimed`` > 0 there, ``sqrt_bound`` s
+    with s >= 0 and s^2 >= χ m^T Σ m, and D_1, D_2 > 0 on the box."""
+    if not claimed < 0:
+        return LeafResult(False, f"claimed upper bound of g {claimed} is not < 0")
+    dims = len(box)
+    ops = GradOps(ExactOps, dims)
+    centre = [(lo + hi) / 2 for lo, hi in box]
+    t = (x, x)
+    at_centre = direction_bounds([ops.variable((c, c), k) for k, c in enumerate(centre)], t,
+                                 v, shape, ops)[0]
+    over_box = direction_bounds([ops.variable(iv, k) for k, iv in enumerate(box)], t, v,
+                                shape, ops)
+    d1, d2 = over_box[1][0], over_box[2][0]
+    if not (d1[0] > 0 and d2[0] > 0):
+        return LeafResult(False, "a denominator |den_i(jw)|^2 is not bounded away from 0")
+    value = ExactOps.scale(-1, at_centre[0])
+    grad = [ExactOps.scale(-1, gk) for gk in over_box[0][1]]
+    m = gradient_midpoints(grad)
+    quad = sum((m[i] * covariance[i][j] * m[j] for i in range(dims) for j in range(dims)),
+               mpq(0))
+    if sqrt_bound < 0 or sqrt_bound * sqrt_bound < chi2 * quad:
+        return LeafResult(False, f"{sqrt_bound} is not >= sqrt(chi2 m^T Σ m)")
+    low = linear_bound(box, centre, value, grad, phi_c, sqrt_bound)
+    if low < -claimed:
+        return LeafResult(False, f"first-order bound of -g is {low}, below {-claimed}")
+    return LeafResult(True, "")
+
+
 # ------------------------------------------------------------------ first-order form
 
 
@@ -497,9 +570,12 @@ __all__ = [
     "Shape",
     "TreeError",
     "check_linear_leaf",
+    "check_negative_leaf",
+    "check_negative_linear_leaf",
     "check_outside_leaf",
     "check_positive_leaf",
     "d_coefficients",
+    "direction_bounds",
     "element",
     "enclosure_ok",
     "gradient_midpoints",

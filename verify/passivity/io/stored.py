@@ -53,7 +53,15 @@ def _check_robust(data: dict[str, Any], path: Path) -> KypCheck:
     return check_robust_file(data, path)
 
 
+def _check_refutation(data: dict[str, Any], path: Path) -> KypCheck:
+    """Region-wide refutations (:mod:`verify.identify.refutation_certificate`)."""
+    from verify.identify.refutation_certificate import check_refutation_file
+
+    return check_refutation_file(data, path)
+
+
 SCHEMAS: dict[str, Checker] = {
+    "verify-robust-refutation-certificate/1": _check_refutation,
     "verify-robust-band-certificate/1": _check_robust,
     "verify-sos-certificate/1": _check_sos,
     fd_certificate.SCHEMA: fd_certificate.check_pr_file,
