@@ -51,6 +51,19 @@ def test_pure_noise_cannot_be_identified(tmp_path, capsys):
     assert "no better than predicting" in reasons
 
 
+@pytest.mark.parametrize("column", ["e", "u"])
+def test_a_constant_signal_cannot_be_identified(tmp_path, capsys, column):
+    """A log whose input or output never moves is valid but carries no information: the
+    answer is "cannot identify" with that reason, not an error about the fit ratio."""
+    noise = pure_noise()
+    trials = tuple(Trial(tr.trial, tr.t, *(
+        (np.zeros_like(tr.e), tr.u) if column == "e" else (tr.e, np.full_like(tr.u, 0.25))),
+        start=tr.start) for tr in noise.trials)
+    log = write_log(type(noise)(trials, noise.rate, "constant"), tmp_path / "constant.npz")
+    _, reasons = _refused(log, tmp_path, capsys)
+    assert f"{column}_1 is constant" in reasons
+
+
 # --- wiring mistakes ---------------------------------------------------------------------
 
 @pytest.fixture(scope="module")

@@ -200,10 +200,26 @@ def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[
     return Identifiability(not reasons, tuple(reasons), figures)
 
 
+def constant_signals(trials: Sequence[Trial]) -> list[str]:
+    """A component of e or u that never moves (up to the anti-aliasing filter's rounding)
+    carries no information about the operator: the data cannot identify H."""
+    reasons = []
+    for name in ("e", "u"):
+        for i in (0, 1):
+            parts = [np.asarray(getattr(tr, name))[:, i] for tr in trials]
+            x = np.concatenate(parts) if parts else np.zeros(0)
+            if x.size and not np.ptp(x) > 1e-9 * np.max(np.abs(x)):
+                reasons.append(f"{name}_{i + 1} is constant over the trials: the data carry "
+                               "no information about the operator")
+    return reasons
+
+
 def data_reasons(trials: Sequence[Trial]) -> tuple[list[str], dict[str, object]]:
     """Questions 4 and 5 of the module docstring, which need the data only: the reasons
     and the figures."""
-    reasons = []
+    reasons = constant_signals(trials)
+    if reasons:
+        return reasons, {}
     r_e, r_u = roughness(trials, "e"), roughness(trials, "u")
     for i in (0, 1):
         if not r_e[i] <= MAX_ROUGHNESS_RATIO * r_u[i]:

@@ -62,6 +62,7 @@ from typing import Any
 import numpy as np
 
 from verify.errors import VerifyInputError
+from verify.identify.estimation import BURN_IN as ESTIMATOR_BURN_IN
 from verify.identify.experiment import Trial
 from verify.identify.prediction import design, used
 from verify.identify.structure import Structure
@@ -75,8 +76,8 @@ INFORMATIVE = 1e-6
 CONSTRAINTS = 5
 #: Residual autocorrelation lags of the effective sample size.
 LAGS = 20
-#: Burn-in left out of the criterion, seconds (the estimator's default).
-BURN_IN = 1.0
+#: Burn-in left out of the criterion, seconds: the estimator's own default.
+BURN_IN = ESTIMATOR_BURN_IN
 
 
 def passive_constraints(theta: Sequence[Any]) -> list[str]:
