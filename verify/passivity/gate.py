@@ -126,12 +126,15 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
                   certificates_dir: Path) -> list[GateResult]:
     """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
     from verify.passivity.band import decide_band
+    from verify.passivity.check.band_fd import BandFdCertificate, store_band_fd_certificate
 
     results = []
     for model in models:
         d = decide_band(model, band, margin)
         path, kept = None, False
-        if d.certificate is not None:
+        if isinstance(d.certificate, BandFdCertificate):  # the exact band route
+            path, kept = store_band_fd_certificate(d.certificate, certificates_dir)
+        elif d.certificate is not None:
             claim = Claim(Fraction(margin), band)
             H = shifted(d.certificate.model, -claim.margin)  # the model as given
             P, Q = coarse_band(d.certificate.model, d.certificate.P, d.certificate.Q, band)

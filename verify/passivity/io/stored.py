@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 from verify.errors import VerifyInputError
-from verify.passivity.check import fd_certificate
+from verify.passivity.check import band_fd, fd_certificate
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io import certificate_files as cf
 from verify.passivity.io.strict_json import CertificateFormatError, read_strict
@@ -46,6 +46,7 @@ SCHEMAS: dict[str, Checker] = {
     "verify-robust-band-certificate/1": _check_robust,
     "verify-sos-certificate/1": _check_sos,
     fd_certificate.SCHEMA: fd_certificate.check_pr_file,
+    band_fd.SCHEMA: band_fd.check_band_fd_file,
     cf.KYP_V1: cf.check_kyp_file,
     cf.KYP_V2: cf.check_kyp_file,
     cf.BAND_V1: cf.check_band_file,
