@@ -18,7 +18,7 @@ from verify.cli import main
 from verify.passivity.band import decide_band, parse_band
 from verify.passivity.check.gkyp import check_gkyp
 from verify.passivity.check.witness import hermitian_part_at
-from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE
 from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
 from verify.passivity.search.hamiltonian import nu_values

@@ -323,9 +323,22 @@ def _from_json(item: Any) -> IntervalNonnegativity:
         if pts is not None:
             if not isinstance(pts, list) or not all(isinstance(t, str) for t in pts):
                 raise ValueError("breakpoints are a list of 'p/q' strings")
-            pts = [qp.q(Fraction(t)) for t in pts]
-        factors.append((qp.from_strings(f["poly"]), e, pts))
-    return IntervalNonnegativity(qp.q(Fraction(item["content"])), factors)
+            pts = [_rational(t, "breakpoint") for t in pts]
+        factors.append((_poly(f["poly"]), e, pts))
+    return IntervalNonnegativity(_rational(item["content"], "content"), factors)
+
+
+def _rational(text: Any, where: str) -> fmpq:
+    """A canonical 'p' or 'p/q' (no exponents: bounded work on a hostile file)."""
+    from verify.passivity.io.strict_json import rational
+
+    return qp.q(rational(text, where))
+
+
+def _poly(texts: Any) -> fmpq_poly:
+    if not isinstance(texts, list):
+        raise ValueError("a polynomial is a list of 'p/q' strings")
+    return fmpq_poly([_rational(t, "coefficient") for t in texts])
 
 
 def check_band_fd_data(data: Any) -> tuple[KypCheck, ExactModel | None, tuple | None]:
@@ -347,12 +360,13 @@ def check_band_fd_data(data: Any) -> tuple[KypCheck, ExactModel | None, tuple | 
         if not isinstance(band_text, list) or len(band_text) != 2 \
                 or not all(isinstance(t, str) for t in band_text):
             raise ValueError("band is two 'p/q' strings")
-        band = (Fraction(band_text[0]), Fraction(band_text[1]))
+        band = (fraction(_rational(band_text[0], "band")),
+                fraction(_rational(band_text[1], "band")))
         meta = data["meta"]
         if not isinstance(meta, dict) or set(meta) != {"margin"} \
                 or not isinstance(meta["margin"], str):
             raise ValueError("meta must hold exactly the margin nu0")
-        margin = Fraction(meta["margin"])
+        margin = fraction(_rational(meta["margin"], "meta.margin"))
         if not isinstance(data["minor_sums"], list):
             raise ValueError("minor_sums is a list")
         certs = [_from_json(item) for item in data["minor_sums"]]
@@ -394,7 +408,7 @@ def check_band_fd_file(data: dict[str, Any], path: Path) -> KypCheck:
         raise CertificateFormatError(str(exc)) from None
     if not result.ok:
         return result
-    margin = fraction(data["meta"]["margin"])
+    margin = fraction(_rational(data["meta"]["margin"], "meta.margin"))
     given = shifted(model, -margin)
     expected = file_name(data["name"], Claim(margin, band), given.fingerprint())
     if Path(path).name != expected:
