@@ -166,7 +166,7 @@ class PoleFact:
 def pole_fact(entry: tuple[int, int], den: fmpq_poly) -> PoleFact:
     sp = axis_split(den)
     repeated = qp.monic(sp.a.gcd(den / sp.a)) if sp.a.degree() >= 1 else qp.ONE
-    return PoleFact(entry, den, qp.routh_first_column(sp.b), qp.count_roots(sp.rho),
+    return PoleFact(entry, den, qp.routh_first_column(sp.b), qp.count_real_roots(sp.rho),
                     sp.a.degree(), repeated, sp.b.degree())
 
 
@@ -281,20 +281,24 @@ class AxisPole:
 
 
 def axis_poles(sp: AxisSplit, forms: list[fmpq_poly]) -> list[AxisPole]:
+    """The roots w0 >= 0 of rho with the signs of the residue forms there (exact; root
+    isolation by Descartes bisection and sign changes, no Sturm sequence)."""
     out = []
-    for lo, hi in qp.isolate_real_roots(sp.rho):
-        if hi < 0:
+    rho = sp.rho
+    for lo, hi in qp.isolate_real_roots(rho):  # (lo, hi) open with a sign change, or lo == hi
+        if hi < 0 or (lo < hi and hi <= 0):
             continue
-        if lo < 0 <= hi:  # split at 0: the root is 0 itself, negative, or in (0, hi]
-            if qp.count_roots(sp.rho, lo, fmpq(0)) == 1:
-                if sp.rho(0) != 0:
-                    continue
+        if lo < 0 < hi:  # split at 0: the root is 0 itself, negative, or in (0, hi)
+            at0 = rho(0)
+            if at0 == 0:
                 lo = hi = fmpq(0)
+            elif qp.sign(at0) == qp.sign(rho(hi)):
+                continue
             else:
                 lo = fmpq(0)
         if hi > 0:  # a readable enclosure of w0: relative width about 2^-24
-            lo, hi = qp.refine_root(sp.rho, (lo, hi), (1 + hi) / 2**24)
-        out.append(AxisPole(lo, hi, [qp.sign_at_root(g, sp.rho, (lo, hi)) for g in forms]))
+            lo, hi = qp.refine_root(rho, (lo, hi), (1 + hi) / 2**24)
+        out.append(AxisPole(lo, hi, [qp.sign_at_root(g, rho, (lo, hi)) for g in forms]))
     return out
 
 

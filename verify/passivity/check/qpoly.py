@@ -152,56 +152,98 @@ def cauchy_bound(p: Poly) -> fmpq:
     return 1 + max((abs(x) / lead for x in c[:-1]), default=fmpq(0))
 
 
-def isolate_real_roots(p: Poly) -> list[tuple[fmpq, fmpq]]:
-    """Disjoint rational intervals (a, b], each holding exactly one root of squarefree p.
+def count_real_roots(p: Poly) -> int:
+    """Distinct real roots of p != 0, exactly (Descartes bisection inside a root bound)."""
+    from verify.passivity.check.interval_roots import count_roots_inside
 
-    Bisection of half-open intervals driven by Sturm counts (a root at a split point
-    falls in the left half, so nothing is counted twice).
+    if p.degree() < 1:
+        return 0
+    q_ = squarefree_part(p)
+    bound = power_of_two_bound(q_)
+    return count_roots_inside(q_, -bound, bound)
+
+
+def power_of_two_bound(p: Poly) -> fmpq:
+    """A power of two above the Cauchy bound: every root z of p has |z| < it, and
+    bisection points stay dyadic (short) rationals."""
+    bound = cauchy_bound(p)
+    k = max(0, int(bound.p // bound.q).bit_length())
+    return fmpq(2) ** k
+
+
+def isolate_real_roots(p: Poly) -> list[tuple[fmpq, fmpq]]:
+    """Disjoint rational intervals (a, b], each holding exactly one root of squarefree p,
+    in increasing order; a == b for a rational root met exactly.
+
+    Descartes bisection (:mod:`verify.passivity.check.interval_roots`) on (-B, B), B a
+    power of two above the Cauchy bound; each interval is then shrunk until
+    p(a) p(b) < 0 (a simple root inside, found again by sign changes alone). No Sturm
+    sequence is formed.
     """
+    from verify.passivity.check.interval_roots import roots_inside
+
     if p.degree() < 1:
         return []
-    seq = sturm_sequence(p)
-    bound = cauchy_bound(p)
-    out: list[tuple[fmpq, fmpq]] = []
-    stack = [(-bound, bound)]
-    while stack:
-        a, b = stack.pop()
-        k = count_roots(p, a, b, seq)
-        if k == 1:
-            out.append((a, b))
-        elif k > 1:
-            mid = (a + b) / 2
-            stack += [(a, mid), (mid, b)]
-    return sorted(out)
+    bound = power_of_two_bound(p)
+    return [_bracket(p, u, v) for u, v in roots_inside(p, -bound, bound)]
+
+
+def _bracket(p: Poly, u: fmpq, v: fmpq) -> tuple[fmpq, fmpq]:
+    """(a, b) inside the open (u, v), which holds one root of squarefree p, with
+    p(a) p(b) < 0; or (r, r) for a rational root met on the way."""
+    from verify.passivity.check.interval_roots import count_roots_inside
+
+    if u == v:
+        return u, v
+    while p(u) == 0 or p(v) == 0:
+        mid = (u + v) / 2
+        if p(mid) == 0:
+            return mid, mid
+        if count_roots_inside(p, u, mid) == 1:
+            v = mid
+        else:
+            u = mid
+    return u, v
 
 
 def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq]) -> int:
-    """The sign of g at the one root of squarefree rho in the interval (a, b].
+    """The sign of g at the one root w0 of squarefree rho in the interval (a, b].
 
-    g(w0) = 0 iff gcd(g, rho) vanishes at w0, i.e. changes sign across (a, b] (it is
-    squarefree with at most that one root there); otherwise the interval is halved,
-    keeping w0 inside, until g has no root in it, and the sign of g at b is returned.
+    g(w0) = 0 iff h = gcd(g mod rho, rho) vanishes at w0; h divides rho, so it is
+    squarefree with at most that one root in (a, b]. Otherwise (a, b] is halved, keeping
+    w0 inside by the sign of rho, until Descartes' rule shows r = g mod rho has no root
+    in it, and the sign of r at b is returned.
     """
+    from verify.passivity.check.interval_roots import count_roots_inside, sign_variations
+
     a, b = interval
     if a == b:
         return sign(g(a))
     r = g % rho
     if r.is_zero():
         return 0
+    if rho(b) == 0:
+        return sign(r(b))
     h = r.gcd(rho)
-    if h.degree() >= 1 and count_roots(h, a, b) == 1:
+    if h.degree() >= 1 and (h(b) == 0 or count_roots_inside(h, a, b) == 1):
         return 0
-    seq = sturm_sequence(r) if r.degree() >= 1 else None
-    while True:
-        if r.degree() < 1 or (count_roots(r, a, b, seq) == 0 and r(b) != 0):
-            return sign(r(b))
-        mid = (a + b) / 2
-        if rho(mid) == 0:
-            return sign(r(mid))
-        if count_roots(rho, a, mid) == 1:
-            b = mid
-        else:
-            a = mid
+    if r.degree() < 1:
+        return sign(r(b))
+    a, b = _bracket(rho, a, b) if rho(a) == 0 else (a, b)
+    if a == b:
+        return sign(r(a))
+    sb = sign(rho(b))
+    while r(b) == 0 or sign_variations(r, a, b) != 0:
+        for _ in range(8):  # eight cheap halvings per Descartes test (a Taylor shift)
+            mid = (a + b) / 2
+            sm = sign(rho(mid))
+            if sm == 0:
+                return sign(r(mid))
+            if sm == sb:
+                b = mid
+            else:
+                a = mid
+    return sign(r(b))
 
 
 # Routh-Hurwitz -------------------------------------------------------------------------
@@ -272,11 +314,22 @@ def has_real_root(p: Poly) -> bool:
 
 
 def refine_root(p: Poly, interval: tuple[fmpq, fmpq], width: fmpq) -> tuple[fmpq, fmpq]:
-    """Halve the isolating interval (a, b] of a root of squarefree p below ``width``."""
+    """Halve the isolating interval (a, b] of a root of squarefree p below ``width``
+    (sign changes of p; a == b when the root is met exactly)."""
     a, b = interval
+    if a == b or b - a <= width:
+        return a, b
+    if p(b) == 0:
+        return b, b
+    if p(a) == 0:
+        a, b = _bracket(p, a, b)
+    sb = sign(p(b))
     while b - a > width:
         mid = (a + b) / 2
-        if count_roots(p, a, mid) == 1:
+        sm = sign(p(mid))
+        if sm == 0:
+            return mid, mid
+        if sm == sb:
             b = mid
         else:
             a = mid
