@@ -285,6 +285,7 @@ def axis_poles(sp: AxisSplit, forms: list[fmpq_poly]) -> list[AxisPole]:
     isolation by Descartes bisection and sign changes, no Sturm sequence)."""
     out = []
     rho = sp.rho
+    reduced = [qp.reduce_mod(g, rho) for g in forms]  # once per form, not per root
     for lo, hi in qp.isolate_real_roots(rho):  # (lo, hi) open with a sign change, or lo == hi
         if hi < 0 or (lo < hi and hi <= 0):
             continue
@@ -298,7 +299,8 @@ def axis_poles(sp: AxisSplit, forms: list[fmpq_poly]) -> list[AxisPole]:
                 lo = fmpq(0)
         if hi > 0:  # a readable enclosure of w0: relative width about 2^-24
             lo, hi = qp.refine_root(rho, (lo, hi), (1 + hi) / 2**24)
-        out.append(AxisPole(lo, hi, [qp.sign_at_root(g, rho, (lo, hi)) for g in forms]))
+        out.append(AxisPole(lo, hi, [qp.sign_at_root(g, rho, (lo, hi), red)
+                                     for g, red in zip(forms, reduced, strict=True)]))
     return out
 
 

@@ -206,7 +206,15 @@ def _bracket(p: Poly, u: fmpq, v: fmpq) -> tuple[fmpq, fmpq]:
     return u, v
 
 
-def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq]) -> int:
+def reduce_mod(g: Poly, rho: Poly) -> tuple[Poly, Poly]:
+    """(r, h) = (g mod rho, gcd(r, rho)): what :func:`sign_at_root` needs of g, computed
+    once per polynomial and reused at every root of rho."""
+    r = g % rho
+    return r, (r.gcd(rho) if not r.is_zero() else rho)
+
+
+def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq],
+                 reduced: tuple[Poly, Poly] | None = None) -> int:
     """The sign of g at the one root w0 of squarefree rho in the interval (a, b].
 
     g(w0) = 0 iff h = gcd(g mod rho, rho) vanishes at w0; h divides rho, so it is
@@ -219,12 +227,11 @@ def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq]) -> int:
     a, b = interval
     if a == b:
         return sign(g(a))
-    r = g % rho
+    r, h = reduce_mod(g, rho) if reduced is None else reduced
     if r.is_zero():
         return 0
     if rho(b) == 0:
         return sign(r(b))
-    h = r.gcd(rho)
     if h.degree() >= 1 and (h(b) == 0 or count_roots_inside(h, a, b) == 1):
         return 0
     if r.degree() < 1:
