@@ -159,6 +159,8 @@ def count_real_roots(p: Poly) -> int:
     if p.degree() < 1:
         return 0
     q_ = squarefree_part(p)
+    if all_real_brackets(q_) is not None:
+        return q_.degree()
     bound = power_of_two_bound(q_)
     return count_roots_inside(q_, -bound, bound)
 
@@ -184,8 +186,53 @@ def isolate_real_roots(p: Poly) -> list[tuple[fmpq, fmpq]]:
 
     if p.degree() < 1:
         return []
+    fast = all_real_brackets(p)
+    if fast is not None:
+        return fast
     bound = power_of_two_bound(p)
     return [_bracket(p, u, v) for u, v in roots_inside(p, -bound, bound)]
+
+
+def all_real_brackets(p: Poly, max_prec: int = 4096) -> list[tuple[fmpq, fmpq]] | None:
+    """When every root of squarefree p is real (a lossless model's pole polynomial), its
+    isolating intervals proved by sign changes alone; None otherwise.
+
+    arb's certified root balls only propose rational points t_0 < ... < t_D (D = deg p)
+    between them; the proof is exact: p(t_(i-1)) p(t_i) < 0 for each i gives a root in
+    every (t_(i-1), t_i), D roots in all, so exactly one in each and no other.
+    """
+    deg = p.degree()
+    if deg < 1:
+        return None
+    bound = power_of_two_bound(p)
+    prec = 64
+    while prec <= max_prec:
+        with precision(prec):
+            roots = [r for r, _ in p.complex_roots()]
+        if any(not r.imag.contains(0) for r in roots):
+            return None  # a root certainly off the real line: not this case
+        balls = sorted(roots, key=lambda r: float(r.real.mid()))
+        points = [-bound]
+        ok = True
+        for left, right in itertools.pairwise(balls):
+            hi, lo = dyadic_of(left.real.upper()), dyadic_of(right.real.lower())
+            if not hi < lo:
+                ok = False
+                break
+            points.append((hi + lo) / 2)
+        points.append(bound)
+        if ok:
+            signs = [sign(p(t)) for t in points]
+            if all(x * y < 0 for x, y in itertools.pairwise(signs)):
+                return list(itertools.pairwise(points))
+        prec *= 4
+    return None
+
+
+def dyadic_of(x) -> fmpq:
+    """An arb number (exactly a dyadic rational, e.g. a ball's end) as an fmpq."""
+    man, exp = x.mid().man_exp()
+    return fmpq(man) * fmpq(2) ** int(exp) if exp >= 0 else fmpq(man, 2 ** int(-exp))
 
 
 def _bracket(p: Poly, u: fmpq, v: fmpq) -> tuple[fmpq, fmpq]:
@@ -218,11 +265,12 @@ def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq],
     """The sign of g at the one root w0 of squarefree rho in the interval (a, b].
 
     g(w0) = 0 iff h = gcd(g mod rho, rho) vanishes at w0; h divides rho, so it is
-    squarefree with at most that one root in (a, b]. Otherwise (a, b] is halved, keeping
-    w0 inside by the sign of rho, until Descartes' rule shows r = g mod rho has no root
-    in it, and the sign of r at b is returned.
+    squarefree with at most that one root in (a, b]. Otherwise r = g mod rho is expanded
+    exactly about the midpoint c of (a, b), and its value there decides once it exceeds
+    the bound on the other Taylor terms over the interval; until then (a, b) is halved,
+    keeping w0 inside by the sign of rho (exact rational arithmetic throughout).
     """
-    from verify.passivity.check.interval_roots import count_roots_inside, sign_variations
+    from verify.passivity.check.interval_roots import count_roots_inside
 
     a, b = interval
     if a == b:
@@ -240,8 +288,21 @@ def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq],
     if a == b:
         return sign(r(a))
     sb = sign(rho(b))
-    while r(b) == 0 or sign_variations(r, a, b) != 0:
-        for _ in range(8):  # eight cheap halvings per Descartes test (a Taylor shift)
+    while True:
+        # r(w0) for w0 in (a, b): with r(c + t) = sum s_k t^k (one exact Taylor shift),
+        # |r(c + t) - s_0| <= sum_(k >= 1) |s_k| d^k for |t| <= d, so s_0 decides when larger
+        c, d = (a + b) / 2, (b - a) / 2
+        taylor = r(fmpq_poly([c, 1])).coeffs()
+        value = taylor[0]
+        if value != 0 and abs(value) > fmpq_poly([0] + [abs(x) for x in taylor[1:]])(d):
+            return sign(value)
+        slope = taylor[1] if len(taylor) > 1 else fmpq(0)
+        if value != 0 and slope != 0:  # aim at the width the first-order term allows
+            tight = newton_bracket(rho, (a, b), abs(value) / (8 * abs(slope)))
+            if tight is not None:
+                a, b = tight
+                continue
+        for _ in range(16):  # cheap halvings, keeping w0 inside by the sign of rho
             mid = (a + b) / 2
             sm = sign(rho(mid))
             if sm == 0:
@@ -250,7 +311,37 @@ def sign_at_root(g: Poly, rho: Poly, interval: tuple[fmpq, fmpq],
                 b = mid
             else:
                 a = mid
-    return sign(r(b))
+
+
+def _dyadic_round(x: fmpq, bits: int) -> fmpq:
+    return fmpq(int(x.p) * 2**bits // int(x.q), 2**bits)
+
+
+def newton_bracket(rho: Poly, interval: tuple[fmpq, fmpq], width: fmpq
+                   ) -> tuple[fmpq, fmpq] | None:
+    """A sub-interval of (a, b), rho(a) rho(b) < 0, no wider than about ``width`` and
+    still with a sign change of rho (checked exactly), from Newton steps on dyadic
+    points; None when the steps leave (a, b) or do not converge."""
+    a, b = interval
+    bits = max(8, 8 + int(width.q).bit_length() - int(width.p).bit_length())
+    half = fmpq(1, 2**bits) if width >= fmpq(1, 2**bits) else width / 2
+    d = rho.derivative()
+    w = (a + b) / 2
+    sa = sign(rho(a))
+    for _ in range(12):
+        slope = d(w)
+        if slope == 0:
+            return None
+        w = _dyadic_round(w - rho(w) / slope, bits)
+        if not a < w < b:
+            return None
+        lo, hi = max(a, w - half), min(b, w + half)
+        slo, shi = sign(rho(lo)), sign(rho(hi))
+        if slo == 0 or shi == 0:
+            return (lo, lo) if slo == 0 else (hi, hi)
+        if slo == sa and shi != sa:
+            return lo, hi
+    return None
 
 
 # Routh-Hurwitz -------------------------------------------------------------------------
