@@ -18,7 +18,7 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.che
 2. (a) per entry: with q the squarefree part of its denominator, a = gcd(q(s), q(-s))
    holds the roots symmetric about the imaginary axis and b = q / a none, so b is
    Hurwitz (Routh table) or has a root in Re s > 0; a = s^e alpha(s^2) has all roots on
-   the axis iff rho(w) = a(jw) / j^e has deg a real roots (Sturm), else a root and its
+   the axis iff rho(w) = a(jw) / j^e has deg a real roots (exact count), else a root and its
    mirror lie off the axis, one in Re s > 0.
 3. (b) simplicity: a is coprime to den / a in every entry. With d = a c and
    Mt(w) = (-j)^e N(jw) conj(c(jw)) + j^e N(jw)^H c(jw), one has
@@ -26,7 +26,10 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.che
    -j (K - K^H) / (w - w0), so every residue is Hermitian iff rho divides Mt exactly.
    PSD residues: K |d'(jw0)|^2 = T(w0) with T(w) = N(jw) conj(d'(jw)); T(w0) >= 0 iff every
    coefficient E_k of det(lambda I + T_h(w0)) is >= 0 (T_h the Hermitian part), decided as
-   the sign of a polynomial at a real algebraic w0 isolated by Sturm sequences.
+   the sign of a polynomial at a real algebraic w0, isolated by Descartes bisection (or
+   by D sign changes at rational points when all D roots are real) and signed by an exact
+   Taylor expansion with a bound on its remainder (no Sturm sequence, whose coefficients
+   grow quadratically with the degree).
 4. (c) Mh = Mt / rho is a Hermitian polynomial matrix with H(jw) + H(jw)^H = Mh / |c|^2
    and |c(jw)|^2 > 0 on R, so (c) holds iff Mh(w) >= 0 for all real w iff every E_k(w)
    (sum of the k x k principal minors of Mh) is >= 0 on R. E_k is divided by the largest
@@ -36,7 +39,7 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.che
    (:mod:`verify.passivity.check.univariate_sos`).
 
 Negative verdicts carry exact evidence: an entry with a pole in Re s > 0 (the Routh
-column or the Sturm count, and a certified root enclosure), an entry with a repeated
+column or the real-root count, and a certified root enclosure), an entry with a repeated
 imaginary-axis pole, a residue whose Hermitian form has E_k(w0) < 0, or a rational
 frequency w* with an exact vector v, v^H (H(jw*) + H(jw*)^H) v < 0.
 """
@@ -144,7 +147,7 @@ class PoleFact:
     entry: tuple[int, int]
     den: fmpq_poly
     routh: list[fmpq]  # first column of the Routh table of b
-    axis_real_roots: int  # Sturm count of rho over R (all on the axis iff = deg a)
+    axis_real_roots: int  # real roots of rho (all on the axis iff = deg a), exact count
     axis_degree: int
     repeated_axis: fmpq_poly  # gcd(a, den / a): non-constant iff a repeated axis pole
 
