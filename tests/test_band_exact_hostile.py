@@ -18,6 +18,7 @@ from verify.passivity.check.band_fd import (
     IntervalNonnegativity,
     analyse_band,
     check_band_fd_data,
+    negative_points,
     nonnegative_on,
     statement,
 )
@@ -129,6 +130,16 @@ class TestEdgesOnRoots:
         assert isinstance(nonnegative_on(F_, fmpq(1), fmpq(2)), IntervalFailure)
         assert isinstance(nonnegative_on(F_, fmpq(2), fmpq(5)), IntervalNonnegativity)
         assert isinstance(nonnegative_on(F_, fmpq(0), fmpq(1)), IntervalNonnegativity)
+
+    def test_a_sign_change_next_to_a_root_on_the_edge(self):
+        # F = w (w - 1/3) on [0, 1]: a root at the edge w1 = 0, negative on (0, 1/3)
+        F_ = fmpq_poly([0, fmpq(-1, 3), 1])
+        fail = nonnegative_on(F_, fmpq(0), fmpq(1))
+        assert isinstance(fail, IntervalFailure)
+        (w,) = list(negative_points(F_, fail, fmpq(0), fmpq(1), lambda _: False))
+        assert 0 < w < fmpq(1, 3) and F_(w) < 0
+        u, v = ir.refine(F_, (fmpq(0), fmpq(1)), fmpq(1, 100))  # the end 0 is a root too
+        assert u == v == fmpq(1, 3) or (u < fmpq(1, 3) < v and v - u <= fmpq(1, 100))
 
     def test_a_root_exactly_at_a_bisection_point(self):
         # roots 1/2 and 1/4 of the unit interval: bisection midpoints

@@ -167,11 +167,20 @@ def check_no_root(h: fmpq_poly, a, b, breakpoints: list[fmpq]) -> str | None:
 
 
 def refine(h: fmpq_poly, interval: tuple[fmpq, fmpq], width: fmpq) -> tuple[fmpq, fmpq]:
-    """Halve (u, v), holding one simple root of h with h(u) h(v) < 0 or a rational root,
-    until it is narrower than ``width`` (sign changes only; exact)."""
+    """Shrink the open (u, v), holding exactly one root of squarefree h (or u == v, a
+    rational root), below ``width``; the ends may be roots of h themselves. Exact:
+    root counts until both ends are non-roots, then sign changes."""
     u, v = interval
     if u == v:
         return u, v
+    while h(u) == 0 or h(v) == 0:
+        mid = (u + v) / 2
+        if h(mid) == 0:
+            return mid, mid
+        if count_roots_inside(h, u, mid) == 1:
+            v = mid
+        else:
+            u = mid
     su = h(u)
     while v - u > width:
         mid = (u + v) / 2
