@@ -158,6 +158,18 @@ class TestBands:
         assert d.verdict == NOT_PASSIVE
         assert_witness_exact(d, model, (F(9), F(11)))
 
+    def test_poles_twelve_decades_apart(self):
+        # H = (s + 1e12 + 1e-4) / ((s + 1e12)(s + 1e-4)) = 1/(s + 1e-4) + 1/(s + 1e12)
+        den = [1, F(10**12) + F(1, 10**4), 10**8]
+        model = from_transfer_function([[[1, F(10**12) + F(1, 10**4)]]], [[den]],
+                                       name="decades")
+        for band in ((F(0), F(1)), (F(0), F(10**12))):
+            assert decide_band(model, band).verdict == PASSIVE
+        neg = from_transfer_function([[[-1, 0]]], [[den]], name="decades, negative")
+        d = decide_band(neg, (F(1, 10**6), F(1)))
+        assert d.verdict == NOT_PASSIVE
+        assert_witness_exact(d, neg, (F(1, 10**6), F(1)))
+
     def test_band_with_a_margin_equal_to_nu_at_the_edge(self):
         from verify.passivity.io.model_file import load_model
 
