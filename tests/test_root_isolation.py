@@ -10,8 +10,12 @@ import random
 import numpy as np
 import pytest
 from flint import arb, fmpq, fmpq_poly
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
+from verify.passivity.check import exact as ex
 from verify.passivity.check import qpoly as qp
+from verify.passivity.check.certificate import ExactModel
 from verify.passivity.check.frequency_domain import analyse
 from verify.passivity.check.realization import minimal_part
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
@@ -134,3 +138,70 @@ def test_lossless_and_flipped_lossless(n):
     assert decide(model).verdict == PASSIVE
     flipped = from_state_space(model.A, model.B, -model.C, model.D, name="flipped")
     assert decide(flipped).verdict == NOT_PASSIVE
+
+
+# cross-check of the axis-pole facts against the former Sturm-sequence route -------------
+
+def _sturm_sign_at_root(g: fmpq_poly, rho: fmpq_poly, interval) -> int:
+    """The former implementation: Sturm counts to halve (a, b] until g has no root in it."""
+    a, b = interval
+    if a == b:
+        return qp.sign(g(a))
+    r = g % rho
+    if r.is_zero():
+        return 0
+    h = r.gcd(rho)
+    if h.degree() >= 1 and qp.count_roots(h, a, b) == 1:
+        return 0
+    seq = qp.sturm_sequence(r) if r.degree() >= 1 else None
+    while True:
+        if r.degree() < 1 or (qp.count_roots(r, a, b, seq) == 0 and r(b) != 0):
+            return qp.sign(r(b))
+        mid = (a + b) / 2
+        if rho(mid) == 0:
+            return qp.sign(r(mid))
+        if qp.count_roots(rho, a, mid) == 1:
+            b = mid
+        else:
+            a = mid
+
+
+@st.composite
+def axis_models(draw):
+    """Integer models x' = (J - R) x + B u, y = C x + D u with J skew: R = 0 gives
+    imaginary-axis poles, C = B^T lossless; other draws give anything."""
+    n, m = draw(st.integers(1, 5)), draw(st.integers(1, 2))
+    small = st.integers(-3, 3)
+    J = [[0] * n for _ in range(n)]
+    for i in range(n):
+        for j in range(i + 1, n):
+            J[i][j] = draw(small)
+            J[j][i] = -J[i][j]
+    damp = draw(st.sampled_from([0, 0, 1]))
+    A = [[J[i][j] - (damp if i == j else 0) for j in range(n)] for i in range(n)]
+    B = [[draw(small) for _ in range(m)] for _ in range(n)]
+    C = [[B[j][i] for j in range(n)] for i in range(m)] if draw(st.booleans()) else \
+        [[draw(small) for _ in range(n)] for _ in range(m)]
+    D = [[draw(st.integers(0, 2)) if i == j else 0 for j in range(m)] for i in range(m)]
+    return ExactModel(*(ex.to_rational(np.array(x, dtype=float).reshape(r, c))
+                        for x, r, c in ((A, n, n), (B, n, m), (C, m, n), (D, m, m))))
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(axis_models())
+def test_axis_pole_facts_agree_with_the_sturm_route(model):
+    an = analyse(model, certify=False)
+    if an.split is None or an.split.a.degree() < 1 or not an.residue_forms:
+        return
+    rho = an.split.rho
+    assert len(qp.isolate_real_roots(rho)) == qp.count_roots(rho)
+    nonnegative = qp.count_roots(rho, fmpq(0), "+inf") + (rho(0) == 0)
+    assert len(an.poles_on_axis) == nonnegative
+    for pole in an.poles_on_axis:
+        interval = (pole.lo, pole.hi)
+        if pole.lo != pole.hi:
+            assert qp.count_roots(rho, pole.lo, pole.hi) == 1 and pole.lo >= 0
+        else:
+            assert rho(pole.lo) == 0
+        assert pole.signs == [_sturm_sign_at_root(g, rho, interval)
+                              for g in an.residue_forms]
