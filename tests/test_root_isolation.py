@@ -205,3 +205,41 @@ def test_axis_pole_facts_agree_with_the_sturm_route(model):
             assert rho(pole.lo) == 0
         assert pole.signs == [_sturm_sign_at_root(g, rho, interval)
                               for g in an.residue_forms]
+
+
+def _routh_rational(p: fmpq_poly) -> list:
+    """The former Routh table over Q (the reference for the integer-row version)."""
+    c = p.coeffs()[::-1]
+    if c and c[0] < 0:
+        c = [-x for x in c]
+    r0, r1 = c[0::2], c[1::2]
+    column = [r0[0]] if r0 else []
+    rows = [r0, r1]
+    for _ in range(len(c) - 1):
+        top, bottom = rows[-2], rows[-1]
+        if not bottom or bottom[0] <= 0:
+            column.append(bottom[0] if bottom else fmpq(0))
+            return column
+        column.append(bottom[0])
+        nxt = []
+        for k in range(len(top) - 1):
+            below = bottom[k + 1] if k + 1 < len(bottom) else fmpq(0)
+            nxt.append((bottom[0] * top[k + 1] - top[0] * below) / bottom[0])
+        rows.append(nxt)
+    return column
+
+
+def test_routh_column_is_the_exact_rational_column():
+    rng = random.Random(9)
+    for _ in range(300):
+        if rng.random() < 0.5:
+            p = fmpq_poly([fmpq(rng.randint(-20, 20), rng.randint(1, 6))
+                           for _ in range(rng.randint(1, 10))])
+        else:  # Hurwitz products, where the table runs to the end
+            p = fmpq_poly([1])
+            for _ in range(rng.randint(1, 7)):
+                p *= fmpq_poly([fmpq(rng.randint(1, 9), rng.randint(1, 5)), 1])
+        if p.is_zero():
+            continue
+        assert qp.routh_first_column(p) == _routh_rational(p)
+        assert qp.routh_first_column(-p) == _routh_rational(-p)

@@ -14,12 +14,13 @@ References: Sturm's theorem and the Routh-Hurwitz criterion as in Basu, Pollack 
 from __future__ import annotations
 
 import itertools
+import math
 from collections.abc import Sequence
 from contextlib import contextmanager
 from fractions import Fraction
 
 import flint
-from flint import fmpq, fmpq_poly
+from flint import fmpq, fmpq_poly, fmpz_poly
 from gmpy2 import mpq
 
 Poly = fmpq_poly
@@ -351,24 +352,37 @@ def routh_first_column(p: Poly) -> list[fmpq]:
 
     p is Hurwitz (every root in Re s < 0) iff this column has deg p + 1 entries, all
     positive; the table stops at the first entry that is not positive.
+
+    The rows are kept as integer vectors R_i with the row r_i = R_i / c_i (c_i > 0
+    rational): the next row's cross-multiplied entries are divided by their gcd, so
+    entries grow like the Hurwitz determinants instead of like a rational remainder
+    sequence, and the column entries r_i[0] = R_i[0] / c_i are the exact values.
     """
     c = p.coeffs()[::-1]  # descending
     if c and c[0] < 0:
         c = [-x for x in c]
-    r0, r1 = c[0::2], c[1::2]
-    column = [r0[0]] if r0 else []
-    rows = [r0, r1]
+    if not c:
+        return []
+    scale = fmpq(1)
+    for x in c:
+        scale = scale * (x.q // math.gcd(int(scale.p), int(x.q)))
+    ints = [int((x * scale).p) for x in c]
+    # a row is (integer vector as an fmpz_poly in the column index, its length, c_i)
+    rows = [(fmpz_poly(ints[0::2]), len(ints[0::2]), scale),
+            (fmpz_poly(ints[1::2]), len(ints[1::2]), scale)]
+    column = [fmpq(ints[0]) / scale]
     for _ in range(len(c) - 1):
-        top, bottom = rows[-2], rows[-1]
-        if not bottom or bottom[0] <= 0:
-            column.append(bottom[0] if bottom else fmpq(0))
+        (top, nt, ct), (bottom, nb, cb) = rows[-2], rows[-1]
+        b0 = bottom[0] if nb else 0
+        if not nb or b0 <= 0:
+            column.append(fmpq(b0) / cb if nb else fmpq(0))
             return column
-        column.append(bottom[0])
-        nxt = []
-        for k in range(len(top) - 1):
-            below = bottom[k + 1] if k + 1 < len(bottom) else fmpq(0)
-            nxt.append((bottom[0] * top[k + 1] - top[0] * below) / bottom[0])
-        rows.append(nxt)
+        column.append(fmpq(b0) / cb)
+        # entries k < nt - 1: b0 top[k + 1] - top[0] bottom[k + 1]
+        cross = b0 * top.right_shift(1) - top[0] * bottom.right_shift(1)
+        g = cross.content() if not cross.is_zero() else 1
+        rows.append((fmpz_poly([x // g for x in cross.coeffs()]), nt - 1,
+                     ct * fmpq(b0) / g))
     return column
 
 
