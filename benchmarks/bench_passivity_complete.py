@@ -15,8 +15,8 @@ rationals, so the exact model is the intended one):
 - ``tangent``: port 1 a dissipative port-Hamiltonian part (n - 3 states), port 2 the
   3-state H_t = (s^2/2 + s/2 + 1) / (s + 1)^3 whose Re H_t(jw) = (w^2 - 1)^2 / (1 + w^2)^3
   touches 0 at w = 1: passive, nu = 0 at w = 1 and at infinity;
-- ``nonpassive``: ``tangent`` with D_22 = -2^-100: nu < 0 only within about 1e-15 of
-  w = 1 (no float grid or float eigenvalue test sees it).
+- ``nonpassive``: ``tangent`` with port 2 H_t - eps/(s + 1), eps = 2^-40: nu < 0 only
+  within about 1e-6 of w = 1, down to -eps/2 (below any float tolerance of the gate).
 
 Columns: ``decide`` is :func:`verify.passivity.decision.decide` (what ``verify gate`` runs),
 ``band`` :func:`verify.passivity.band.decide_band` on ``--band``, ``ctl`` python-control's
@@ -60,13 +60,13 @@ def build(family: str, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.n
     At = np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, -3.0, -3.0]])
     Bt = np.array([[0.0], [0.0], [1.0]])
     Ct = np.array([[1.0, 0.5, 0.5]])
+    if family == "nonpassive":  # H_t - eps / (s + 1), eps = 2^-40
+        eps = 2.0**-40
+        Ct = np.array([[1.0 - eps, 0.5 - 2 * eps, 0.5 - eps]])
     A = np.block([[A1, np.zeros((n - 3, 3))], [np.zeros((3, n - 3)), At]])
     B = np.block([[B1, np.zeros((n - 3, 1))], [np.zeros((3, 1)), Bt]])
     C = np.block([[C1, np.zeros((1, 3))], [np.zeros((1, n - 3)), Ct]])
-    D = np.zeros((2, 2))
-    if family == "nonpassive":
-        D[1, 1] = -(2.0**-100)
-    return A, B, C, D
+    return A, B, C, np.zeros((2, 2))
 
 
 def run_one(tool: str, family: str, n: int, band: str) -> dict:

@@ -247,8 +247,8 @@ def test_large_resonant_model_uses_the_verified_solve():
 
 def complete_family(family: str, n: int, seed: int = 5):
     """lossless (J Q, G, G^T Q, 0); tangent: a dissipative port-Hamiltonian 1-port beside
-    H_t = (s^2/2 + s/2 + 1)/(s + 1)^3, whose nu touches 0 at w = 1; nonpassive: tangent
-    with D_22 = -2^-100 (nu < 0 only within ~1e-15 of w = 1)."""
+    H_t = (s^2/2 + s/2 + 1)/(s + 1)^3, whose nu touches 0 at w = 1; nonpassive: port 2
+    H_t - 2^-40/(s + 1) (nu < 0 only within ~1e-6 of w = 1, at least -2^-41)."""
     rng = np.random.default_rng([seed, n])
     if family == "lossless":
         J = rng.standard_normal((n, n))
@@ -260,11 +260,10 @@ def complete_family(family: str, n: int, seed: int = 5):
     At = np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, -3.0, -3.0]])
     A = np.block([[A1, np.zeros((n - 3, 3))], [np.zeros((3, n - 3)), At]])
     B = np.block([[B1, np.zeros((n - 3, 1))], [np.zeros((3, 1)), np.array([[0], [0], [1.0]])]])
-    C = np.block([[C1, np.zeros((1, 3))], [np.zeros((1, n - 3)), np.array([[1.0, 0.5, 0.5]])]])
-    D = np.zeros((2, 2))
-    if family == "nonpassive":
-        D[1, 1] = -(2.0**-100)
-    return from_state_space(A, B, C, D, name=f"{family} {n}")
+    eps = 2.0**-40 if family == "nonpassive" else 0.0  # H_t - eps / (s + 1)
+    Ct = np.array([[1.0 - eps, 0.5 - 2 * eps, 0.5 - eps]])
+    C = np.block([[C1, np.zeros((1, 3))], [np.zeros((1, n - 3)), Ct]])
+    return from_state_space(A, B, C, np.zeros((2, 2)), name=f"{family} {n}")
 
 
 EXPECTED_FAMILY = {"lossless": PASSIVE, "tangent": PASSIVE, "nonpassive": NOT_PASSIVE}

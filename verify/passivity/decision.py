@@ -45,7 +45,7 @@ from verify.passivity.check.witness import (
     real_axis_witness,
 )
 from verify.passivity.search.hamiltonian import nu_minimum, nu_values
-from verify.passivity.search.kyp import find_certificate
+from verify.passivity.search.kyp import SDP_STATE_LIMIT, find_certificate
 from verify.passivity.search.scaling import rescale, restore
 
 if TYPE_CHECKING:
@@ -265,7 +265,8 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         out.seconds = time.perf_counter() - start
         return out
     A, B, C, D = float_views(em)
-    search = propose(find_certificate, em, A, B, C, D)
+    frugal = SDP_STATE_LIMIT < em.n <= FREQUENCY_DOMAIN_LIMIT  # the exact route follows
+    search = propose(lambda: find_certificate(em, A, B, C, D, frugal=frugal))
     if search is not None and search.P is not None:
         cert = Certificate(model.name, model.source, em, search.P,
                            {"margin": str(margin), "numerical_margin": search.margin,
