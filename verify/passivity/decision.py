@@ -26,9 +26,9 @@ from __future__ import annotations
 
 import enum
 import time
-from functools import partial
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import partial
 from typing import TYPE_CHECKING
 
 import numpy as np
