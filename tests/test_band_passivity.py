@@ -18,7 +18,7 @@ from verify.cli import main
 from verify.passivity.band import decide_band, parse_band
 from verify.passivity.check.gkyp import check_gkyp
 from verify.passivity.check.witness import hermitian_part_at
-from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
+from verify.passivity.decision import NOT_PASSIVE, PASSIVE
 from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
 from verify.passivity.search.hamiltonian import nu_values
@@ -67,8 +67,14 @@ def test_band_witness_lies_inside_the_band_and_is_exact(ks25):
 def test_narrow_bands_near_the_boundary(ks25):
     assert decide_band(ks25, (F(0), F(199, 100))).verdict == PASSIVE
     assert decide_band(ks25, (F(201, 100), F(3))).verdict == NOT_PASSIVE
-    # nu(2) = 0 exactly: no strict certificate exists and no witness either
-    assert decide_band(ks25, (F(0), F(2))).verdict == INCONCLUSIVE
+    # nu(2) = 0 exactly at the band's edge: no strict GKYP certificate exists, the exact
+    # route decides it (a tangency at the edge is allowed); one step past 2 it fails
+    d = decide_band(ks25, (F(0), F(2)))
+    assert d.verdict == PASSIVE and d.certificate.to_json()["schema"] == \
+        "verify-band-fd-certificate/1"
+    d = decide_band(ks25, (F(0), F(2) + F(1, 10**30)))
+    assert d.verdict == NOT_PASSIVE
+    assert F(2) < Fraction(d.witness.data["omega"]) <= F(2) + F(1, 10**30)
 
 
 def test_certificate_does_not_transfer_to_another_band(ks25):

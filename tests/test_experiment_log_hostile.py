@@ -554,7 +554,8 @@ def test_a_trial_too_short_for_the_model_after_decimation_is_exit_2(tmp_path, ca
 
     rows = [*_fixed(200, 9), *_fixed(40, 9, trial=1, t0=5.0), *_fixed(200, 9, trial=2, t0=9.0)]
     path = _csv(tmp_path, [HEADER, *rows])
-    assert main(["identify", str(path), "--split", "2:1", "--rate", "20", "--out", str(tmp_path / "o")]) == 2
+    assert main(["identify", str(path), "--split", "2:1", "--rate", "20",
+                 "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err
     assert "trial 1 has 40 samples; at least 43 are needed (8 after decimation by 6" in err
     assert err.count("\n") == 1

@@ -1,6 +1,8 @@
 """Hostile numbers at the gate's edges: no crash on any number the input layer accepts.
 
-Grouped by class: exact numbers too long for Python's int-to-str limit (4300 digits),
+Grouped by class: exact numbers too long for Python's int-to-str limit (4300 digits; model
+entries sit at the input layer's own limit of 4000 digits, 1e3999, and the gate's exact
+work on them produces numbers of tens of thousands of digits),
 numbers beyond the float range in file names, messages and JSON, and negative values in
 both spellings of ``--margin``, ``--tolerance`` and ``--band``. Exit 3 (an internal error)
 is a failure in every case.
@@ -85,13 +87,13 @@ def test_unlimited_int_text_restores_the_limit():
 
 
 @pytest.mark.parametrize("body", [
-    # witness mapped back from the rescaled model: alpha has more than 4300 digits
-    "A = [[-1e-4300]]\nB = [[1.0]]\nC = [[-1e4300]]\nD = [[0.0]]",
-    # witness frequency times beta = 2^14285: more than 4300 digits
-    "A = [[-1e-4300, 0.0], [0.0, -1e4300]]\nB = [[1.0], [1.0]]\nC = [[1.0, -1.0]]\n"
+    # witness mapped back from the rescaled model (alpha = 2^26569)
+    "A = [[-1e-3999]]\nB = [[1.0]]\nC = [[-1e3999]]\nD = [[0.0]]",
+    # witness frequency times beta: more than 4300 digits (21596 without the guard)
+    "A = [[-1e-3999, 0.0], [0.0, -1e3999]]\nB = [[1.0], [1.0]]\nC = [[1.0, -1.0]]\n"
     "D = [[0.0]]",
 ])
-def test_not_passive_model_with_entries_1e4300_apart_gets_a_witness(tmp_path, body, capsys):
+def test_not_passive_model_with_entries_1e3999_apart_gets_a_witness(tmp_path, body, capsys):
     model = _model(tmp_path, body)
     out = tmp_path / "g.json"
     code = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
@@ -101,8 +103,8 @@ def test_not_passive_model_with_entries_1e4300_apart_gets_a_witness(tmp_path, bo
     assert entry["verdict"] == "not passive" and entry["witness"]
 
 
-def test_passive_model_with_entries_1e4300_apart_writes_a_checked_certificate(tmp_path):
-    model = _model(tmp_path, "A = [[-1e-4300, 0.0], [0.0, -1e4300]]\nB = [[1.0], [1.0]]\n"
+def test_passive_model_with_entries_1e3999_apart_writes_a_checked_certificate(tmp_path):
+    model = _model(tmp_path, "A = [[-1e-3999, 0.0], [0.0, -1e3999]]\nB = [[1.0], [1.0]]\n"
                    "C = [[1.0, 1.0]]\nD = [[0.0]]")
     certs = tmp_path / "c"
     assert main(["gate", str(model), "--certificates", str(certs)]) == 0
@@ -113,7 +115,7 @@ def test_passive_model_with_entries_1e4300_apart_writes_a_checked_certificate(tm
 
 
 @pytest.mark.parametrize("margin, name", [("-1e400", "margin-minus1e+400"),
-                                          ("-1e4300", "margin-minus1e+4300")])
+                                          ("-1e3999", "margin-minus1e+3999")])
 def test_margin_beyond_the_float_range_names_its_certificate(tmp_path, margin, name, capsys):
     certs = tmp_path / "c"
     assert main(["gate", str(EXAMPLE), f"--margin={margin}", "--certificates", str(certs),
@@ -125,12 +127,12 @@ def test_margin_beyond_the_float_range_names_its_certificate(tmp_path, margin, n
 
 
 def test_margin_beyond_the_float_range_refutes_with_a_witness(tmp_path, capsys):
-    assert main(["gate", str(EXAMPLE), "--margin=1e4300", "--certificates",
+    assert main(["gate", str(EXAMPLE), "--margin=1e3999", "--certificates",
                  str(tmp_path), "--json", str(tmp_path / "g.json")]) == 1
     assert "not passive" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("tolerance", ["1e309", "1e4300"])
+@pytest.mark.parametrize("tolerance", ["1e309", "1e3999"])
 def test_tolerance_beyond_the_float_range(tmp_path, tolerance, capsys):
     with unlimited_int_text():  # the JSON's exact fields have more than 4300 digits
         _tolerance_beyond_the_float_range(tmp_path, tolerance, capsys)
@@ -154,10 +156,10 @@ def _tolerance_beyond_the_float_range(tmp_path, tolerance, capsys):
 
 def test_band_beyond_the_float_range_at_the_bottom(tmp_path, capsys):
     certs = tmp_path / "c"
-    assert main(["gate", str(EXAMPLE), "--band", "1e-4300:1e-4299",
+    assert main(["gate", str(EXAMPLE), "--band", "1e-3999:1e-3998",
                  "--certificates", str(certs)]) == 0
     (path,) = certs.glob("*.json")
-    assert "band-1e-4300-1e-4299" in path.name
+    assert "band-1e-3999-1e-3998" in path.name
     assert main(["certificates", "check", str(certs)]) == 0
 
 
@@ -192,7 +194,7 @@ def test_the_gate_from_python_is_safe_for_any_size_too(tmp_path):
     from verify.passivity.gate import run_gate, write_json
     from verify.passivity.io.model_file import load_model
 
-    model = _model(tmp_path, "A = [[-1e-4300, 0.0], [0.0, -1e4300]]\nB = [[1.0], [1.0]]\n"
+    model = _model(tmp_path, "A = [[-1e-3999, 0.0], [0.0, -1e3999]]\nB = [[1.0], [1.0]]\n"
                    "C = [[1.0, -1.0]]\nD = [[0.0]]")
     limit = sys.get_int_max_str_digits()
     for margin in (Fraction(0), -Fraction(10) ** 4300):

@@ -241,3 +241,52 @@ def test_large_resonant_model_uses_the_verified_solve():
     v = np.array([float(Fraction(x)) + 1j * float(Fraction(y))
                   for x, y in zip(w.data["a"], w.data["b"], strict=True)])
     assert float(np.real(v.conj() @ _float_form(model, float(Fraction(w.data["omega"]))) @ v)) < 0
+
+
+# the complete route on the families of benchmarks/bench_passivity_complete.py -----------
+
+def complete_family(family: str, n: int, seed: int = 5):
+    """lossless (J Q, G, G^T Q, 0); tangent: a dissipative port-Hamiltonian 1-port beside
+    H_t = (s^2/2 + s/2 + 1)/(s + 1)^3, whose nu touches 0 at w = 1; nonpassive: port 2
+    H_t - 2^-40/(s + 1) (nu < 0 only within ~1e-6 of w = 1, at least -2^-41)."""
+    rng = np.random.default_rng([seed, n])
+    if family == "lossless":
+        J = rng.standard_normal((n, n))
+        J = J - J.T
+        Q = np.diag(2.0 ** rng.integers(-2, 3, n))
+        G = rng.standard_normal((n, 2))
+        return from_state_space(J @ Q, G, G.T @ Q, np.zeros((2, 2)), name=f"lossless {n}")
+    A1, B1, C1, _ = random_port_hamiltonian(n - 3, 1, rng)
+    At = np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, -3.0, -3.0]])
+    A = np.block([[A1, np.zeros((n - 3, 3))], [np.zeros((3, n - 3)), At]])
+    B = np.block([[B1, np.zeros((n - 3, 1))], [np.zeros((3, 1)), np.array([[0], [0], [1.0]])]])
+    eps = 2.0**-40 if family == "nonpassive" else 0.0  # H_t - eps / (s + 1)
+    Ct = np.array([[1.0 - eps, 0.5 - 2 * eps, 0.5 - eps]])
+    C = np.block([[C1, np.zeros((1, 3))], [np.zeros((1, n - 3)), Ct]])
+    return from_state_space(A, B, C, np.zeros((2, 2)), name=f"{family} {n}")
+
+
+EXPECTED_FAMILY = {"lossless": PASSIVE, "tangent": PASSIVE, "nonpassive": NOT_PASSIVE}
+
+
+@pytest.mark.parametrize("family", sorted(EXPECTED_FAMILY))
+def test_complete_route_families_small(family):
+    from verify.passivity.band import decide_band
+    from verify.passivity.check.fd_certificate import PrCertificate
+
+    model = complete_family(family, 12)
+    d = decide(model)
+    assert d.verdict == EXPECTED_FAMILY[family], d.reason
+    if isinstance(d.certificate, PrCertificate):  # the complete route's certificate
+        assert check_pr_certificate_data(d.certificate.to_json()).ok
+    band = decide_band(model, (Fraction(0), Fraction(3, 2)))
+    assert band.verdict == EXPECTED_FAMILY[family], band.reason
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("n", [60, 120])
+@pytest.mark.parametrize("family", sorted(EXPECTED_FAMILY))
+def test_complete_route_families_at_scale(family, n):
+    """Decided, never inconclusive, up to the complete route's limit (timings:
+    benchmarks/bench_passivity_complete.py)."""
+    assert decide(complete_family(family, n)).verdict == EXPECTED_FAMILY[family]

@@ -1,17 +1,23 @@
 """Passivity over a finite frequency band [w1, w2]: verdict, certificate or witness.
 
-`verify gate MODEL --band W1:W2` asks whether nu(w) >= 0 (paper, Section 4) for every w
-in [w1, w2] only. Untrusted search, trusted check, as for the full axis:
+`verify gate MODEL --band W1:W2` asks whether nu(w) >= nu0 (paper, Section 4) for every w
+in [w1, w2] where H(jw) is defined. Untrusted search, trusted check:
 
 1. nu is minimised over the band by Hamiltonian level crossings
    (:mod:`verify.passivity.search.hamiltonian`); where it is negative, a rational w* inside the
    band and a rational vector v with v^H (H(jw*) + H(jw*)^H) v < 0 are checked exactly
    (:func:`verify.passivity.check.witness.frequency_witness_at`): not passive on the band.
-2. Otherwise the generalized KYP LMI (:mod:`verify.passivity.check.gkyp`) is solved with
-   cvxpy + Clarabel for Hermitian P, Q with a margin (:mod:`verify.passivity.search.gkyp_sdp`),
-   rounded to Gaussian rationals and checked exactly: passive on the band.
-3. If neither is exact (rounding broke strict feasibility, a boundary case), the verdict
-   is inconclusive with the reason.
+2. Small models (up to ``GKYP_STATES`` states): the generalized KYP LMI
+   (:mod:`verify.passivity.check.gkyp`) is solved with cvxpy + Clarabel for Hermitian P, Q
+   with a margin (:mod:`verify.passivity.search.gkyp_sdp`), rounded to Gaussian rationals
+   and checked exactly: passive on the band.
+3. Up to ``EXACT_BAND_LIMIT`` states, whatever is still open is decided completely and
+   exactly (:mod:`verify.passivity.check.band_fd`): the principal-minor sums of the
+   Hermitian part, cleared of a positive denominator, are >= 0 on [w1, w2] by exact root
+   counting on the interval (a ``verify-band-fd-certificate/1`` with Descartes
+   breakpoints), or one is negative at a rational w* of the band (exact vector witness).
+   Tangencies inside or at the edges and poles anywhere on the band are decided too.
+4. Above that size a band the first two steps do not settle is inconclusive.
 """
 
 from __future__ import annotations
@@ -27,6 +33,7 @@ from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
 from verify.inputs.numbers import parse_number
+from verify.passivity.check.band_fd import BandFdCertificate
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.check.gkyp import BandCertificate
 from verify.passivity.check.realization import minimal_part
@@ -36,6 +43,7 @@ from verify.passivity.decision import (
     NOT_PASSIVE,
     PASSIVE,
     GateVerdict,
+    clearly_negative,
     decision_json,
     float_views,
     propose,
@@ -46,6 +54,12 @@ from verify.passivity.search.hamiltonian import nu_minimum
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel
+
+#: states up to which a generalized KYP certificate is sought first (a small SDP)
+GKYP_STATES = 20
+#: states up to which a band is decided exactly and completely (never inconclusive); at
+#: 120 states (2 ports) 1-27 s and under 200 MB (benchmarks/bench_passivity_complete.py)
+EXACT_BAND_LIMIT = 120
 
 
 def parse_band(text: str) -> tuple[Fraction, Fraction]:
@@ -71,7 +85,7 @@ class BandDecision:
     band: tuple[Fraction, Fraction]
     verdict: GateVerdict
     reason: str
-    certificate: BandCertificate | None = None
+    certificate: BandCertificate | BandFdCertificate | None = None
     witness: Witness | None = None
     nu_min: tuple[float, float] | None = None
     margin: Fraction = Fraction(0)
@@ -149,7 +163,9 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
 
     low = propose(lambda: nu_minimum(A, B, C, D, band=(float(band[0]), float(band[1]))))
     nu_min = (low.omega, low.value) if low is not None and math.isfinite(low.value) else None
-    if low is not None and low.value < 0:
+    exact_follows = em.n <= EXACT_BAND_LIMIT  # complete: float dips rounding explains skip
+    if low is not None and low.value < 0 and (not exact_follows or propose(
+            clearly_negative, A, B, C, D, low.omega, default=True)):
         # the minimiser first; then band points, in case it sits next to a pole (where nu
         # tends to -infinity and its rational neighbours hit the pole itself)
         lo, hi = float(band[0]), float(band[1])
@@ -159,7 +175,9 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
             if w is not None:
                 return done(NOT_PASSIVE, f"not passive on {where}: {w.summary}", witness=w,
                             nu_min=nu_min)
-    found = propose(band_certificate, em, A, B, C, D, band)
+    found = None
+    if em.n <= GKYP_STATES or em.n > EXACT_BAND_LIMIT:
+        found = propose(band_certificate, em, A, B, C, D, band)
     if found is not None:
         P, Q, num_margin, label = found
         cert = BandCertificate(model.name, model.source, em, band, P, Q,
@@ -174,11 +192,38 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
             "frequencies")
         return done(PASSIVE, f"passive on {where}: generalized KYP certificate checked "
                     f"exactly ({label} rounding){caveat}", certificate=cert, nu_min=nu_min)
+    if em.n <= EXACT_BAND_LIMIT:
+        return _exact(model, em, band, margin, where, nu_min, done)
     smallest = "" if nu_min is None else f"; smallest ν found {nu_min[1]:.3g} at ω = " \
         f"{nu_min[0]:.4g}"
     return done(INCONCLUSIVE, f"on {where}: no exactly checked band certificate (the "
                 "rounded solver solution fails the exact check, or none was found) and no "
                 f"exact witness{smallest}", nu_min=nu_min)
+
+
+def _exact(model: LTIModel, em: ExactModel, band: tuple[Fraction, Fraction],
+           margin: Fraction, where: str, nu_min, done) -> BandDecision:
+    """The complete exact band decision (:mod:`verify.passivity.check.band_fd`)."""
+    from verify.passivity.check.band_fd import analyse_band, band_witness, poles_in_band
+
+    an = analyse_band(em, band)
+    if not an.passive:
+        k, fail = an.failure
+        w = band_witness(em, an.polys, k, fail, an.band)
+        return done(NOT_PASSIVE, f"not passive on {where}: {w.summary} (decided exactly: "
+                    f"E_{k} of the Hermitian part is negative inside the band)", witness=w,
+                    nu_min=nu_min)
+    poles = poles_in_band(an.polys, an.band)
+    caveat = "" if not poles else (
+        "; H has imaginary-axis poles at ω ≈ " + ", ".join(
+            f"{float((u + v) / 2):.6g}" for u, v in poles)
+        + " in the band, where H(jω) is undefined: the statement covers the other "
+        "frequencies")
+    cert = BandFdCertificate(model.name, model.source, em, band, margin, an)
+    return done(PASSIVE, f"passive on {where}: decided exactly by root counting on the band "
+                f"(every principal-minor sum of the Hermitian part is >= 0 on it; "
+                f"certificate with Descartes breakpoints){caveat}", certificate=cert,
+                nu_min=nu_min)
 
 
 __all__ = ["BandDecision", "band_witness", "decide_band", "parse_band"]

@@ -28,6 +28,7 @@ import enum
 import time
 from dataclasses import dataclass
 from fractions import Fraction
+from functools import partial
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -45,7 +46,7 @@ from verify.passivity.check.witness import (
     real_axis_witness,
 )
 from verify.passivity.search.hamiltonian import nu_minimum, nu_values
-from verify.passivity.search.kyp import find_certificate
+from verify.passivity.search.kyp import SDP_STATE_LIMIT, find_certificate
 from verify.passivity.search.scaling import rescale, restore
 
 if TYPE_CHECKING:
@@ -73,8 +74,10 @@ class GateVerdict(enum.StrEnum):
 
 PASSIVE, NOT_PASSIVE, INCONCLUSIVE, PASSIVE_WITHIN = GateVerdict
 # states up to which the exact frequency-domain decision (verify.passivity.fd_decision)
-# runs when the KYP route and the floating-point witness search both fail
-FREQUENCY_DOMAIN_LIMIT = 60
+# runs when the KYP route and the floating-point witness search both fail: at 120 states
+# (2 ports) about 20-70 s and under 350 MB peak RSS on a loaded 2-core machine
+# (benchmarks/bench_passivity_complete.py)
+FREQUENCY_DOMAIN_LIMIT = 120
 
 
 @dataclass
@@ -157,6 +160,16 @@ def hamiltonian_candidates(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.nd
     if not np.isfinite(found.value) or np.isinf(found.omega):
         return [], None
     return ([found.omega] if found.value < 0 else []), (found.omega, found.value)
+
+
+def clearly_negative(A, B, C, D, omega: float, rel: float = 1e-9) -> bool:
+    """nu(omega) < -rel ||H(j omega)||_2 in floating point: a dip that rounding cannot
+    explain (a lossless H has nu = 0 up to rounding, and its exact checks would only fail).
+    """
+    n = A.shape[0]
+    H = D + (C @ np.linalg.solve(1j * omega * np.eye(n) - A, B) if n else 0)
+    value = float(np.linalg.eigvalsh((H + H.conj().T) / 2)[0])
+    return bool(value < -rel * float(np.linalg.norm(H, 2)))
 
 
 #: What a floating-point proposal may raise on extreme data (entries near the float
@@ -260,7 +273,11 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         out.seconds = time.perf_counter() - start
         return out
     A, B, C, D = float_views(em)
-    search = propose(find_certificate, em, A, B, C, D)
+    # between the SDP's limit and the complete route's, a frugal search (the exact route
+    # follows): no costly exact check of a candidate that floating point already rejects
+    frugal = SDP_STATE_LIMIT < em.n <= FREQUENCY_DOMAIN_LIMIT
+    search = propose(partial(find_certificate, frugal=True) if frugal else find_certificate,
+                     em, A, B, C, D)
     if search is not None and search.P is not None:
         cert = Certificate(model.name, model.source, em, search.P,
                            {"margin": str(margin), "numerical_margin": search.margin,
@@ -280,6 +297,9 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         best = swept_best
     if best is not None and not (np.isfinite(best[0]) and np.isfinite(best[1])):
         best = None
+    if em.n <= FREQUENCY_DOMAIN_LIMIT:  # the exact route follows and is complete
+        candidates = [w for w in candidates if propose(clearly_negative, A, B, C, D, w,
+                                                        default=True)]
     for omega in candidates:
         w = propose(frequency_witness, em, omega)
         if w is not None:

@@ -11,7 +11,7 @@ it runs; a JSON summary and a JUnit XML file (one test case per model) are optio
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
@@ -146,12 +146,19 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
                   certificates_dir: Path) -> list[GateResult]:
     """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
     from verify.passivity.band import decide_band
+    from verify.passivity.check.band_fd import BandFdCertificate, store_band_fd_certificate
 
     results = []
     for model in models:
         with unlimited_int_text():
-            results.append(_band_one(decide_band(model, band, margin), model, band, margin,
-                                     certificates_dir))
+            d = decide_band(model, band, margin)
+            if isinstance(d.certificate, BandFdCertificate):  # the exact band route
+                cert = replace(d.certificate,
+                               source=relative_source(d.certificate.source, certificates_dir))
+                path, kept = store_band_fd_certificate(cert, certificates_dir)
+                results.append(GateResult(d, path, kept=kept))
+            else:
+                results.append(_band_one(d, model, band, margin, certificates_dir))
     return results
 
 

@@ -2,8 +2,8 @@
 
 A certificate of schema ``verify-pr-certificate/1`` holds the exact model and every
 fact the frequency-domain decision (:mod:`verify.passivity.check.frequency_domain`) derived
-from it: the reduced transfer matrix, per-entry pole evidence (Routh column, Sturm
-count), the imaginary-axis poles with isolating intervals and the signs of their residue
+from it: the reduced transfer matrix, per-entry pole evidence (Routh column, exact
+real-root count), the imaginary-axis poles with isolating intervals and the signs of their residue
 forms, the principal-minor sums E_k of the Hermitian part, and for each E_k an exact
 sum-of-squares decomposition. :func:`check_pr_certificate` re-derives every fact from
 the stored model with exact polynomial arithmetic (no solver, no floating point),
@@ -151,8 +151,8 @@ def check_pr_certificate_data(data: Any, path: Path | None = None) -> KypCheck:
         problem = check_nonnegativity(Q, cert)
         if problem is not None:
             return KypCheck(False, f"E_{k}: {problem}")
-    return KypCheck(True, "H(s) positive real: transfer matrix, pole evidence (Routh, Sturm), "
-                    "residue signs and principal-minor sums re-derived exactly; every sum "
+    return KypCheck(True, "H(s) positive real: transfer matrix, pole evidence (Routh, root "
+                    "counts), residue signs and principal-minor sums re-derived exactly; every sum "
                     "of squares re-expanded exactly")
 
 

@@ -18,7 +18,7 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.che
 2. (a) per entry: with q the squarefree part of its denominator, a = gcd(q(s), q(-s))
    holds the roots symmetric about the imaginary axis and b = q / a none, so b is
    Hurwitz (Routh table) or has a root in Re s > 0; a = s^e alpha(s^2) has all roots on
-   the axis iff rho(w) = a(jw) / j^e has deg a real roots (Sturm), else a root and its
+   the axis iff rho(w) = a(jw) / j^e has deg a real roots (exact count), else a root and its
    mirror lie off the axis, one in Re s > 0.
 3. (b) simplicity: a is coprime to den / a in every entry. With d = a c and
    Mt(w) = (-j)^e N(jw) conj(c(jw)) + j^e N(jw)^H c(jw), one has
@@ -26,7 +26,10 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.che
    -j (K - K^H) / (w - w0), so every residue is Hermitian iff rho divides Mt exactly.
    PSD residues: K |d'(jw0)|^2 = T(w0) with T(w) = N(jw) conj(d'(jw)); T(w0) >= 0 iff every
    coefficient E_k of det(lambda I + T_h(w0)) is >= 0 (T_h the Hermitian part), decided as
-   the sign of a polynomial at a real algebraic w0 isolated by Sturm sequences.
+   the sign of a polynomial at a real algebraic w0, isolated by Descartes bisection (or
+   by D sign changes at rational points when all D roots are real) and signed by an exact
+   Taylor expansion with a bound on its remainder (no Sturm sequence, whose coefficients
+   grow quadratically with the degree).
 4. (c) Mh = Mt / rho is a Hermitian polynomial matrix with H(jw) + H(jw)^H = Mh / |c|^2
    and |c(jw)|^2 > 0 on R, so (c) holds iff Mh(w) >= 0 for all real w iff every E_k(w)
    (sum of the k x k principal minors of Mh) is >= 0 on R. E_k is divided by the largest
@@ -36,7 +39,7 @@ Every step is exact (python-flint polynomials over Q, :mod:`verify.passivity.che
    (:mod:`verify.passivity.check.univariate_sos`).
 
 Negative verdicts carry exact evidence: an entry with a pole in Re s > 0 (the Routh
-column or the Sturm count, and a certified root enclosure), an entry with a repeated
+column or the real-root count, and a certified root enclosure), an entry with a repeated
 imaginary-axis pole, a residue whose Hermitian form has E_k(w0) < 0, or a rational
 frequency w* with an exact vector v, v^H (H(jw*) + H(jw*)^H) v < 0.
 """
@@ -144,7 +147,7 @@ class PoleFact:
     entry: tuple[int, int]
     den: fmpq_poly
     routh: list[fmpq]  # first column of the Routh table of b
-    axis_real_roots: int  # Sturm count of rho over R (all on the axis iff = deg a)
+    axis_real_roots: int  # real roots of rho (all on the axis iff = deg a), exact count
     axis_degree: int
     repeated_axis: fmpq_poly  # gcd(a, den / a): non-constant iff a repeated axis pole
 
@@ -166,7 +169,7 @@ class PoleFact:
 def pole_fact(entry: tuple[int, int], den: fmpq_poly) -> PoleFact:
     sp = axis_split(den)
     repeated = qp.monic(sp.a.gcd(den / sp.a)) if sp.a.degree() >= 1 else qp.ONE
-    return PoleFact(entry, den, qp.routh_first_column(sp.b), qp.count_roots(sp.rho),
+    return PoleFact(entry, den, qp.routh_first_column(sp.b), qp.count_real_roots(sp.rho),
                     sp.a.degree(), repeated, sp.b.degree())
 
 
@@ -281,20 +284,26 @@ class AxisPole:
 
 
 def axis_poles(sp: AxisSplit, forms: list[fmpq_poly]) -> list[AxisPole]:
+    """The roots w0 >= 0 of rho with the signs of the residue forms there (exact; root
+    isolation by Descartes bisection and sign changes, no Sturm sequence)."""
     out = []
-    for lo, hi in qp.isolate_real_roots(sp.rho):
-        if hi < 0:
+    rho = sp.rho
+    reduced = [qp.reduce_mod(g, rho) for g in forms]  # once per form, not per root
+    for lo, hi in qp.isolate_real_roots(rho):  # (lo, hi) open with a sign change, or lo == hi
+        if hi < 0 or (lo < hi and hi <= 0):
             continue
-        if lo < 0 <= hi:  # split at 0: the root is 0 itself, negative, or in (0, hi]
-            if qp.count_roots(sp.rho, lo, fmpq(0)) == 1:
-                if sp.rho(0) != 0:
-                    continue
+        if lo < 0 < hi:  # split at 0: the root is 0 itself, negative, or in (0, hi)
+            at0 = rho(0)
+            if at0 == 0:
                 lo = hi = fmpq(0)
+            elif qp.sign(at0) == qp.sign(rho(hi)):
+                continue
             else:
                 lo = fmpq(0)
         if hi > 0:  # a readable enclosure of w0: relative width about 2^-24
-            lo, hi = qp.refine_root(sp.rho, (lo, hi), (1 + hi) / 2**24)
-        out.append(AxisPole(lo, hi, [qp.sign_at_root(g, sp.rho, (lo, hi)) for g in forms]))
+            lo, hi = qp.refine_root(rho, (lo, hi), (1 + hi) / 2**24)
+        out.append(AxisPole(lo, hi, [qp.sign_at_root(g, rho, (lo, hi), red)
+                                     for g, red in zip(forms, reduced, strict=True)]))
     return out
 
 

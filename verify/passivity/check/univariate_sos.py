@@ -130,8 +130,10 @@ def check_sos(p: fmpq_poly, sos: Sos) -> bool:
 
 @dataclass(frozen=True)
 class SturmCount:
-    """Positivity of a factor without an SOS: it has no real root by Sturm's theorem and a
-    positive leading coefficient, both re-decided by the checker (JSON: ``"sturm"``)."""
+    """Positivity of a factor without an SOS: it has no real root and a positive leading
+    coefficient, both re-decided exactly by the checker (JSON: ``"sturm"``, the historical
+    name; the root count is an exact real-root count,
+    :func:`verify.passivity.check.qpoly.count_real_roots`)."""
 
     def to_json(self) -> str:
         return "sturm"
@@ -175,11 +177,11 @@ def nonnegativity_certificate(f: fmpq_poly) -> Nonnegativity | None:
     return Nonnegativity(content, out)
 
 
-SOS_DEGREE_LIMIT = 400  # above it, Sturm counts (root approximation gets slow)
+SOS_DEGREE_LIMIT = 400  # above it, exact root counts (root approximation gets slow)
 
 
 def _positivity(g: fmpq_poly) -> Sos | SturmCount:
-    """An SOS of g > 0, or a :class:`SturmCount` (no real root by Sturm's theorem,
+    """An SOS of g > 0, or a :class:`SturmCount` (no real root by an exact count,
     re-counted by the checker) when the SOS search gives up or g is of high degree."""
     if g.degree() <= SOS_DEGREE_LIMIT:
         try:
@@ -201,8 +203,8 @@ def check_nonnegativity(f: fmpq_poly, cert: Nonnegativity) -> str | None:
             return "a factor has exponent < 1"
         if e % 2:
             if isinstance(s, SturmCount):
-                if g.leading_coefficient() <= 0 or qp.count_roots(g) != 0:
-                    return "an odd-exponent factor is not positive (Sturm count)"
+                if g.leading_coefficient() <= 0 or qp.count_real_roots(g) != 0:
+                    return "an odd-exponent factor is not positive (exact root count)"
             elif s is None or not check_sos(g, s):
                 return "an odd-exponent factor lacks a valid sum of squares"
         product *= g ** e

@@ -27,7 +27,7 @@ from typing import Any
 
 from verify.errors import VerifyInputError
 from verify.inputs.number_text import unlimited_int_text
-from verify.passivity.check import fd_certificate
+from verify.passivity.check import band_fd, fd_certificate
 from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io import certificate_files as cf
 from verify.passivity.io.binding import UNVERIFIED_KEYS, locate_source
@@ -65,6 +65,7 @@ SCHEMAS: dict[str, Checker] = {
     "verify-robust-band-certificate/1": _check_robust,
     "verify-sos-certificate/1": _check_sos,
     fd_certificate.SCHEMA: fd_certificate.check_pr_file,
+    band_fd.SCHEMA: band_fd.check_band_fd_file,
     cf.KYP_V1: cf.check_kyp_file,
     cf.KYP_V2: cf.check_kyp_file,
     cf.BAND_V1: cf.check_band_file,
@@ -89,7 +90,9 @@ def _robust_labels(data: dict[str, Any]) -> tuple[str, ...]:
 #: bind to no model file).
 SOURCE_LABELS: dict[str, Callable[[dict[str, Any]], tuple[str, ...]]] = {
     "verify-robust-band-certificate/1": _robust_labels,
+    "verify-robust-refutation-certificate/1": _robust_labels,
     fd_certificate.SCHEMA: _model_labels,
+    band_fd.SCHEMA: _model_labels,
     cf.KYP_V1: _model_labels,
     cf.KYP_V2: _model_labels,
     cf.BAND_V1: _model_labels,

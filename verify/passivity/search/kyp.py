@@ -15,7 +15,8 @@
    B u = 0 are dropped first (:func:`verify.passivity.search.reduce.equality_directions`). The
    fallback is skipped when nu(w) is clearly negative in floating point (no certificate
    can exist; the caller seeks a witness), and the SDP above :data:`SDP_STATE_LIMIT`
-   states (642 MB and 14 s at 60 states, over 3.6 GB at 100).
+   states (642 MB and 14 s at 60 states on an idle machine, over 3.6 GB at 100; the
+   exact frequency-domain route decides those sizes instead).
 4. Every candidate is checked exactly (:func:`verify.passivity.check.certificate.check_kyp`):
    P > 0 and M(P) <= 0. The solvers' status never decides anything.
 """
@@ -31,7 +32,7 @@ from gmpy2 import mpq
 
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
-from verify.passivity.check.certificate import ExactModel, check_kyp
+from verify.passivity.check.certificate import ExactModel, check_kyp, kyp_matrix
 from verify.passivity.search.reduce import (
     NoCertificate,
     NotReducible,
@@ -183,9 +184,10 @@ def _symmetric_rounding(Y: np.ndarray, bits: int) -> ex.RationalMatrix:
 
 
 #: Above this many states the SDP fallback is not tried: Clarabel's memory and time grow
-#: like n^4 and n^6 (a 100-state SDP alone takes minutes), while the gate must stay within
-#: a bounded budget. Such models end inconclusive instead, never with a wrong verdict.
-SDP_STATE_LIMIT = 60
+#: like n^4 and n^6 (a 60-state tangent model: minutes and 700 MB on a loaded machine),
+#: while the exact frequency-domain route (verify.passivity.fd_decision) decides such
+#: models completely up to 120 states, in seconds, with less memory.
+SDP_STATE_LIMIT = 20
 #: nu(w) below -this x (1 + |H(jw)|) in floating point: no KYP certificate can exist
 NEGATIVE_NU = 1e-6
 
@@ -215,7 +217,30 @@ def _clearly_not_passive(A, B, C, D) -> str:
 FAST_CANDIDATES = 3  # Riccati margins tried before the fallback
 
 
-def reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | NotReducible:
+def _worth_checking(model: ExactModel, P: ex.RationalMatrix, frugal: bool) -> bool:
+    """Whether to run the exact check on P. Always, unless ``frugal``: then not when P has
+    a non-positive or M(P) a positive eigenvalue beyond rounding (1e-12 of its largest
+    entry) in floating point. Such a candidate (on a lossless or tangent model) fails the
+    exact check after a costly exact LDL^T (about 12 s each at 60 states); skipping it
+    loses nothing when the complete frequency-domain route decides the model next."""
+    if not frugal:
+        return True
+    try:
+        with np.errstate(all="ignore"):
+            Pf = np.array([[float(x) for x in row] for row in P])
+            M = np.array([[float(x) for x in row] for row in kyp_matrix(model, P)])
+            if not (np.all(np.isfinite(Pf)) and np.all(np.isfinite(M))):
+                return True
+            p_low = np.linalg.eigvalsh((Pf + Pf.T) / 2)[0]
+            m_high = np.linalg.eigvalsh((M + M.T) / 2)[-1]
+    except (np.linalg.LinAlgError, ValueError, OverflowError):
+        return True
+    scale = max(float(np.max(np.abs(M), initial=0.0)), 1e-300)
+    return bool(p_low > 0 and m_high <= 1e-12 * scale)
+
+
+def reduced_search(model: ExactModel, scaling: np.ndarray, frugal: bool = False
+                   ) -> KypSearch | NotReducible:
     """The fast path: a KypSearch when it decides (certificate, or none can exist), else
     the reason it does not apply."""
     try:
@@ -232,6 +257,9 @@ def reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | NotRed
             break
         for bits in (52, 40):
             P = _unbalance(red.assemble(_symmetric_rounding(Y, bits)), scaling)
+            if not _worth_checking(model, P, frugal):
+                last = "candidate skipped: no clear margin in floating point"
+                continue
             result = check_kyp(model, P)
             if result.ok:
                 margin = lmi_margin(red.Aa, red.Ba, red.Ca, red.Sa, Y)
@@ -242,14 +270,17 @@ def reduced_search(model: ExactModel, scaling: np.ndarray) -> KypSearch | NotRed
     return NotReducible(last)
 
 
-def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
-    """Search, round, project and check; returns an exactly checked P or the reason."""
+def find_certificate(model: ExactModel, A, B, C, D, *, frugal: bool = False) -> KypSearch:
+    """Search, round, project and check; returns an exactly checked P or the reason.
+
+    ``frugal``: a complete exact route follows, so candidates without a clear margin in
+    floating point are not checked exactly (:func:`_worth_checking`)."""
     n, m = model.n, model.m
     if n == 0:
         ok = check_kyp(model, [])
         return KypSearch([] if ok.ok else None, None, "static", ok.reason)
     scaling = _balance(A)
-    fast = reduced_search(model, scaling)
+    fast = reduced_search(model, scaling, frugal)
     if isinstance(fast, KypSearch):
         return fast
     negative = _clearly_not_passive(A, B, C, D)
@@ -296,6 +327,9 @@ def find_certificate(model: ExactModel, A, B, C, D) -> KypSearch:
             P = [[(P[i][j] + P[j][i]) / 2 for j in range(n)] for i in range(n)]
             if k:
                 P = _project_equalities(P, G, target)
+            if not _worth_checking(model, P, frugal):
+                last = f"{method}: candidate skipped, no clear margin in floating point"
+                continue
             result = check_kyp(model, P)
             if result.ok:
                 return KypSearch(P, margin, status,
