@@ -40,8 +40,16 @@ class ClaimRegistry:
         statement: str,
         method: str,
         scope: str,
+        latex: str = "",
+        paper_latex: str = "",
+        repair_latex: str = "",
     ) -> Callable[[CheckFunction], CheckFunction]:
-        """Decorator registering a check function under a claim id."""
+        """Decorator registering a check function under a claim id.
+
+        ``latex``, ``paper_latex`` and ``repair_latex`` are the LaTeX forms (text with
+        ``$...$`` formulas) of ``statement``, ``paper_says`` and the repaired statement,
+        used by the typeset reports.
+        """
 
         def register(check: CheckFunction) -> CheckFunction:
             if id in self._claims:
@@ -55,6 +63,9 @@ class ClaimRegistry:
                 method=method,
                 scope=scope,
                 check=check,
+                latex=latex,
+                paper_latex=paper_latex,
+                repair_latex=repair_latex,
             )
             return check
 
