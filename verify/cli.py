@@ -39,6 +39,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_all.add_argument("--seed", type=int, default=20261121, help="seed of the random samples")
     p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
                        metavar="DIR", help="where certificates are written (default certificates)")
+    p_all.add_argument("--latex", action="store_true",
+                       help="also write DIR/appendix.tex, the report as a LaTeX appendix for "
+                            "the paper (pdflatex appendix.tex in DIR builds it)")
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
@@ -233,7 +236,7 @@ def _cmd_all(args: argparse.Namespace) -> int:
 
     print(f"verify all: {len(claims)} claims (seed {args.seed})")
     run = run_claims(claims, context, progress=progress, jobs=args.jobs)
-    paths = write_report(run, args.out, info)
+    paths = write_report(run, args.out, info, latex=args.latex)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))

@@ -59,6 +59,7 @@ _ACCENTS = {"\u0304": r"\bar", "\u0305": r"\bar", "\u0303": r"\tilde", "\u0307":
 _TWO = {">=": r"\geq", "<=": r"\leq", "!=": r"\neq", "->": r"\to", "=>": r"\Rightarrow",
         "<-": r"\leftarrow"}
 _LETTER = re.compile(r"[A-Za-z\u0370-\u03ff]")
+_TRAIL = ".,;:"
 _FRACTION = re.compile(r"\((-?)(\d+)/(\d+)\)")
 
 
@@ -67,7 +68,23 @@ def _is_letter(ch: str) -> bool:
 
 
 def latex_text(text: str) -> str:
-    """``text`` as LaTeX text mode (special characters escaped, ASCII only)."""
+    """``text`` as LaTeX text mode (special characters escaped, ASCII only); a word with
+    characters beyond ASCII (a stray ``ξ``, ``Ṡ_rl``) is set as a formula."""
+    words = []
+    text = text.replace("—", "---").replace("–", "--").replace("’", "'").replace("‘", "'")
+    text = text.replace("\u00a0", " ").replace("≈", "~")
+    for word in text.split(" "):
+        core = word.rstrip(_TRAIL + ")")
+        if word.isascii() or not core:
+            words.append(_escape_ascii(word))
+        else:
+            lead = "(" if core.startswith("(") and core.count("(") > core.count(")") else ""
+            core = core[len(lead):]
+            words.append(f"{lead}${to_latex(core)}${_escape_ascii(word[len(lead) + len(core):])}")
+    return " ".join(words)
+
+
+def _escape_ascii(text: str) -> str:
     out = []
     for ch in text:
         if ch in "\\":
@@ -89,7 +106,7 @@ def latex_text(text: str) -> str:
         elif ord(ch) < 128:
             out.append(ch)
         else:
-            out.append(f"${to_latex(ch)}$")
+            out.append("?")
     return "".join(out)
 
 
@@ -280,7 +297,7 @@ class _Scanner:
             return f"^{{{_SUPERSCRIPTS[ch]}}}"
         if ch in "^_":
             self.i += 1
-            return r"\^{}" if ch == "^" else r"\_"
+            return r"{}^{\wedge}" if ch == "^" else r"\_"
         self.i += 1
         if ord(ch) < 128:
             return ch
@@ -399,7 +416,7 @@ def to_latex(text: str) -> str:
     notation; ``to_latex("tr(R̄_rᵀ) >= 1")`` is ``\\operatorname{tr}(\\bar{R}_{r}^{\\top})
     \\geq 1``."""
     tokens = _Scanner(text).run()
-    out = _merge_text(tokens)
+    out = _merge_text(tokens) or "{}"
     return out.encode("ascii", "replace").decode("ascii")
 
 
@@ -412,7 +429,6 @@ _STRONG = re.compile(
     r"|^\(?e3\b|^\(?[abc]\d{1,2}\b"
 )
 _WEAK = re.compile(r"^[-+=<>*/x·×]$|^\(?-?[A-Za-z0-9]\)?$|^\(?-?\d+(\.\d+)?\)?$|^[()]+$")
-_TRAIL = ".,;:"
 
 
 def _is_math_word(word: str) -> bool:
