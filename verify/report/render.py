@@ -238,7 +238,8 @@ def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
     ]
     for r in run.results:
         lines.append(
-            f"| [`{r.claim.id}`](#{r.claim.id.replace('.', '')}) | {_md_escape(r.claim.paper_ref)}"
+            f"| [`{r.claim.id}`](#{r.claim.id.replace('.', '')}) | "
+            f"{markdown_prose(prose_to_latex(r.claim.paper_ref))}"
             f" | **{VERDICT_MARK[r.outcome.verdict]}** |"
         )
     counts = ", ".join(f"{v} {k}" for k, v in data["counts"].items() if v)
@@ -263,7 +264,8 @@ def _claim_markdown(r: ClaimResult) -> list[str]:
     out = [
         f"### `{c.id}` — {VERDICT_MARK[o.verdict]}",
         "",
-        f"- **Paper** ({c.paper_ref}): {markdown_prose(tex['paper'])}",
+        f"- **Paper** ({markdown_prose(prose_to_latex(c.paper_ref))}): "
+        f"{markdown_prose(tex['paper'])}",
         f"- **Checked**: {markdown_prose(tex['statement'])}",
         f"- **How**: {markdown_prose(tex['method'])}",
         f"- **Scope**: {markdown_prose(tex['scope'])}",
@@ -380,7 +382,8 @@ def _claim_html(r: ClaimResult) -> str:
     return (
         f"<div class='claim' id='{esc(c.id)}'><h3><code>{esc(c.id)}</code> — "
         f"<span class='{o.verdict.value}'>{esc(VERDICT_MARK[o.verdict])}</span></h3>"
-        f"<dl><dt>Paper ({esc(c.paper_ref)})</dt><dd>{prose_html(tex['paper'])}</dd>"
+        f"<dl><dt>Paper ({prose_html(prose_to_latex(c.paper_ref))})</dt>"
+        f"<dd>{prose_html(tex['paper'])}</dd>"
         f"<dt>Checked</dt><dd>{prose_html(tex['statement'])}</dd>"
         f"<dt>How</dt><dd>{prose_html(tex['method'])}</dd>"
         f"<dt>Scope</dt><dd>{prose_html(tex['scope'])}</dd>"
@@ -397,7 +400,8 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
     data = report_data(run, info)
     rows = "".join(
         f"<tr><td><a href='#{esc(r.claim.id)}'><code>{esc(r.claim.id)}</code></a></td>"
-        f"<td>{esc(r.claim.paper_ref)}</td><td class='{r.outcome.verdict.value}'>"
+        f"<td>{prose_html(prose_to_latex(r.claim.paper_ref))}</td>"
+        f"<td class='{r.outcome.verdict.value}'>"
         f"{esc(VERDICT_MARK[r.outcome.verdict])}</td></tr>"
         for r in run.results
     )
