@@ -125,9 +125,13 @@ def _claim(r: ClaimResult) -> list[str]:
         out.append(r"\item[Repaired statement] " + tex["repair"])
     figures: list[str] = []
     items = [_evidence(e, figures) for e in o.evidence]
-    out.append(r"\item[Evidence]\mbox{}\begin{itemize}")
-    out += [r"\item{} " + item for item in items]
-    out += [r"\end{itemize}", r"\end{description}"]
+    if items:
+        out.append(r"\item[Evidence]\mbox{}\begin{itemize}")
+        out += [r"\item{} " + item for item in items]
+        out.append(r"\end{itemize}")
+    else:
+        out.append(r"\item[Evidence] none recorded")
+    out.append(r"\end{description}")
     for e in o.evidence:
         href = _figure_href(e)
         if href:
