@@ -26,9 +26,11 @@ def _build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"verify {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
-    p_all = sub.add_parser("all", help="run every registered claim check and write reports/")
+    p_all = sub.add_parser("all", help="run every registered claim check and write reports/ "
+                           "(and certificates/)")
     p_all.add_argument(
-        "--out", type=Path, default=Path("reports"), help="report directory (default: reports)"
+        "--out", type=Path, default=Path("reports"), metavar="DIR",
+        help="report directory (default: reports)"
     )
     p_all.add_argument(
         "--strict", action="store_true", help="exit 1 unless every claim is 'verified'"
@@ -36,12 +38,14 @@ def _build_parser() -> argparse.ArgumentParser:
     p_all.add_argument(
         "--quick", action="store_true", help="fewer random samples in the numerical cross-checks"
     )
-    p_all.add_argument("--seed", type=int, default=20261121, help="seed of the random samples")
+    p_all.add_argument("--seed", type=int, default=20261121,
+                       help="seed of the random samples (default: 20261121)")
     p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
                        metavar="DIR", help="where certificates are written (default certificates)")
     p_all.add_argument("--latex", action="store_true",
-                       help="also write DIR/appendix.tex, the report as a LaTeX appendix for "
-                            "the paper (pdflatex appendix.tex in DIR builds it)")
+                       help="also write appendix.tex in the report directory: the report as "
+                            "a LaTeX appendix for the paper (pdflatex appendix.tex there "
+                            "builds it)")
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
@@ -148,7 +152,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "inequalities. Exit 0 if all are valid, 1 if one is refused or none is found, 2 if "
         "a path does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
-                      default=[Path("certificates")])
+                      default=[Path("certificates")],
+                      help="certificate files or folders of them (default: certificates)")
 
     p_sim = sub.add_parser(
         "simulate",
@@ -176,7 +181,8 @@ def _build_parser() -> argparse.ArgumentParser:
                        help="initial attitudes from a network file (as for 'verify network')")
     p_sim.add_argument("--out", type=Path, default=Path("reports/simulation"),
                        help="output directory (default reports/simulation)")
-    p_sim.add_argument("--format", choices=("npz", "csv"), default="npz", dest="fmt")
+    p_sim.add_argument("--format", choices=("npz", "csv"), default="npz", dest="fmt",
+                       help="trajectory file format (default: npz)")
     p_sim.add_argument("--no-plots", action="store_true", help="write the trajectory only")
     p_sim.add_argument("--check", action="store_true",
                        help="also check stealthiness, R-bar e3 = dbar, Lemma 1, V decrease and "
