@@ -437,6 +437,9 @@ def _is_math_word(word: str) -> bool:
         return False  # hyphenated words ("rank-1" excepted below) are prose
     if re.fullmatch(r"\(?eqs?\.|\(\d+[a-z]?\)[,.;:)]*|\d+(\.\d+)?\s*%?", core):
         return False  # equation numbers and plain numbers read as text
+    snake = re.fullmatch(r"\(?([A-Za-z]{2,})(_[A-Za-z0-9]+)+\)?", core)
+    if snake and snake.group(1) not in _WORDS:
+        return False  # an identifier such as passive_human is a name, not a subscript
     return bool(_STRONG.search(core))
 
 
