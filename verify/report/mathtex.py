@@ -281,6 +281,9 @@ class _Scanner:
                 j += 1
             num = s[self.i:j]
             self.i = j
+            if self.peek() == "x" and self.peek(1).isdigit():  # 3x3: a matrix size
+                self.i += 1
+                return f"{num} \\times "
             return self.suffixes(num)
         if _is_letter(ch):
             return self.identifier()
