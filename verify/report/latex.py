@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from pathlib import PurePosixPath
 
-from verify.claims.model import ClaimResult, EvidenceKind
+from verify.claims.model import ClaimResult
 from verify.claims.registry import RunResult
 from verify.report.mathtex import latex_text, prose_to_latex
 from verify.report.render import (
@@ -183,8 +183,3 @@ def render_latex(run: RunResult, info: RunInfo | None = None) -> str:
               "% end appendix", r"\end{document}"]
     text = "\n".join(lines) + "\n"
     return text.encode("ascii", "replace").decode("ascii")
-
-
-def has_figures(run: RunResult) -> bool:
-    """Whether any claim of the run drew a figure (the appendix then needs its folder)."""
-    return any(e.kind is EvidenceKind.FIGURE for r in run.results for e in r.outcome.evidence)

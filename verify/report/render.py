@@ -181,9 +181,8 @@ def _evidence_line(e) -> str:
     return f"- [{e.kind.value}, {status}] {summary}{path}"
 
 
-def _verdict_cell(row: StepRow, common: str) -> str:
-    cell = row.verdict + (f", {row.proved_by}" if row.proved_by else "")
-    return cell
+def _verdict_cell(row: StepRow) -> str:
+    return row.verdict + (f", {row.proved_by}" if row.proved_by else "")
 
 
 def _steps_markdown(results, twins) -> list[str]:
@@ -209,7 +208,7 @@ def _steps_markdown(results, twins) -> list[str]:
             if row.evidence and row.evidence not in (common, own):
                 why += "; exact check: " + _md_escape(row.evidence)
             out.append(f"| {row.step} | ${row.relation_latex}$ | |")
-            out.append(f"| | {why} | **{_verdict_cell(row, common)}** |")
+            out.append(f"| | {why} | **{_verdict_cell(row)}** |")
         if own:
             out.append(f"| | exact check of each step above: {_md_escape(own)} | |")
         out.append("")

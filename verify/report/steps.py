@@ -16,7 +16,7 @@ from collections import Counter
 from dataclasses import dataclass
 
 from verify.claims.model import ClaimResult, EvidenceKind
-from verify.report.mathtex import latex_text, prose_to_latex, to_latex
+from verify.report.mathtex import prose_to_latex, to_latex
 
 __all__ = ["DerivationTable", "StepRow", "common_evidence", "derivation_tables", "sos_twins",
            "table_evidence"]
@@ -137,8 +137,3 @@ def table_evidence(table: DerivationTable, common: str) -> str:
         (text,) = texts
         return "" if text == common else text
     return ""
-
-
-def evidence_latex(text: str) -> str:
-    """An evidence sentence as LaTeX text (certificate names and numbers kept verbatim)."""
-    return prose_to_latex(text) if text else latex_text(text)
