@@ -298,6 +298,7 @@ math{font-size:1.12em}table.proof tr.rel math{font-size:1.2em}
 details{margin:.3em 0}pre{white-space:pre-wrap;overflow-wrap:anywhere;max-height:24em;
 overflow:auto;background:#fafafa;padding:.4em}img{max-width:100%;height:auto}
 dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
+table.summary td:first-child,table.summary td:last-child{white-space:nowrap}
 """
 
 
@@ -412,7 +413,8 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
         "<h1>Verification report</h1>",
         f"<p>By <code>verify all</code> (seed {run.seed}). Date and timings are in the last "
         "section, Run.</p>",
-        "<h2>Summary</h2><table><tr><th>claim</th><th>paper</th><th>verdict</th>"
+        "<h2>Summary</h2><table class='summary'><tr><th>claim</th><th>paper</th>"
+        "<th>verdict</th>"
         f"</tr>{rows}</table>",
         "<ul>"
         + "".join(
