@@ -310,7 +310,6 @@ class _Scanner:
         return rf"\text{{[{name}]}}"
 
     def identifier(self) -> str:
-        start = self.i
         w = self.word()
         parts = _split_accents(w)
         plain = "".join(c for c, _ in parts)
@@ -350,11 +349,8 @@ class _Scanner:
             if re.fullmatch(r"[A-Za-z]\d+", plain) and w == plain:
                 return self.suffixes(f"{plain[0]}_{{{plain[1:]}}}")
             return self.suffixes("".join(_decorate(c) for c in parts))
-        if w == "x" or (w == plain and len(plain) == 1):
-            pass
         if len(plain) == 2 and w == plain:  # 'AB', 'jw': a product of two symbols
             return self.suffixes(plain)
-        self.i = start + len(w)
         return rf"\text{{{w}}}"
 
 
