@@ -217,3 +217,13 @@ def test_chromium_parses_the_formulas_as_mathml(tmp_path):
     subprocess.run([*common, f"--screenshot={shot}", "--window-size=1000,1400", page.as_uri()],
                    capture_output=True, timeout=180, check=True)
     assert shot.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize(("prose", "formula"), [
+    ("equals <-2 sk(R̄_r)^∨, ω>: the gradient",
+     r"$\langle -2 \operatorname{sk}(\bar{R}_{r})^{\vee}, \omega \rangle$"),
+    ("so <grad h, grad h> = 4 on it",
+     r"$\langle \operatorname{grad} h, \operatorname{grad} h\rangle = 4$"),
+])
+def test_an_inner_product_in_prose_is_one_formula(prose, formula):
+    assert formula in prose_to_latex(prose)

@@ -252,7 +252,7 @@ class _Scanner:
         if s.startswith("d/dt", self.i):
             self.i += 4
             return r"\tfrac{d}{dt}"
-        if two in _TWO:
+        if two in _TWO and not (two == "<-" and ">" in s[self.i:]):
             self.i += 2
             return f" {_TWO[two]} "
         if ch == "<":
@@ -425,7 +425,7 @@ _STRONG = re.compile(
     r"[_^ᵀᴴ²≥≤⪰⪯≻≺≠⟺⇔→∞∫∂≈≡∈‖∨⊥]|[\u0370-\u03ff]|[\u0300-\u036f]|>=|<=|!=|->"
     r"|^(tr|sk|sym|hat|vee|rank|null|grad|det|cos|sin|exp|lambda_min|λmin|nu|Re|Im)\("
     r"|^[A-Za-z]\(|^\(?(dbar|Omega|omega|lambda|xi|theta)\b|\)\^|^[A-Za-z]'$|-bar\b|-dot\b"
-    r"|^\(?e3\b|^\(?[abc]\d{1,2}\b"
+    r"|^\(?e3\b|^\(?[abc]\d{1,2}\b|^<[^\s=]|[^\s<=-]>[.,;:]*$"
 )
 _WEAK = re.compile(r"^[-+=<>*/x·×]$|^\(?-?[A-Za-z0-9]\)?$|^\(?-?\d+(\.\d+)?\)?$|^[()]+$")
 
@@ -481,7 +481,8 @@ def prose_to_latex(text: str) -> str:
         run = []
         while j < n and joined[j]:
             run.append(words[j])
-            if words[j].endswith(tuple(_TRAIL)) and j + 1 < n and not _weak_op(words[j + 1]):
+            if words[j].endswith(tuple(_TRAIL)) and j + 1 < n and not _weak_op(words[j + 1]) \
+                    and not _open_angle(" ".join(run)):
                 j += 1
                 break
             j += 1
@@ -511,6 +512,13 @@ def _extend(words: list[str], joined: list[bool]) -> None:
     def short(w: str) -> bool:
         return bool(re.fullmatch(r"-?(\d+(\.\d+)?|[A-Za-z])[,.;:]?", w))
 
+    for i, word in enumerate(words):  # an inner product <a, b> is one formula
+        if len(word) > 1 and word[0] == "<" and word[1] not in " =":
+            for j in range(i, min(i + 5, n)):
+                if len(words[j]) > 1 and words[j].rstrip(_TRAIL).endswith(">"):
+                    for k in range(i, j + 1):
+                        joined[k] = True
+                    break
     for k in range(1, n - 1):
         if words[k] in _RELATIONS and not joined[k]:
             if joined[k - 1] and not words[k - 1].endswith(tuple(_TRAIL)) \
@@ -519,6 +527,13 @@ def _extend(words: list[str], joined: list[bool]) -> None:
             elif joined[k + 1] and short(words[k - 1]) \
                     and not words[k - 1].endswith(tuple(_TRAIL)):
                 joined[k] = joined[k - 1] = True
+
+
+def _open_angle(text: str) -> bool:
+    """Whether ``text`` opens an inner product ``<a, b>`` that it does not close."""
+    opened = len(re.findall(r"<(?=[^\s=])", text))
+    closed = len(re.findall(r"(?<=\S)>", text))
+    return opened > closed
 
 
 def _weak_op(word: str) -> bool:
