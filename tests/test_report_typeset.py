@@ -172,8 +172,18 @@ def _pdflatex(tex: str, where) -> subprocess.CompletedProcess:
 def test_appendix_compiles_with_pdflatex(tmp_path):
     from report_fixtures import registry_run
 
+    from verify.claims.evidence import figure
+    from verify.report.figures import _pyplot, _save
+
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(3, 2))
+    ax.plot([0, 1], [0, 1])
+    _save(fig, tmp_path / "figures" / "line.png")
+    drawn = claim("sec9.figure", "9 Other", evidence=[
+        figure("a line, $5 & 100% of it", path="figures/line.png")])
     run = registry_run()
-    tex = render_latex(run_of(*_run().results, *run.results), FIXED)
+    tex = render_latex(run_of(*_run().results, drawn, *run.results), FIXED)
+    assert r"\includegraphics[width=0.8\linewidth]{figures/line.png}" in tex
     done = _pdflatex(tex, tmp_path)
     assert done.returncode == 0, done.stdout[-2000:]
     assert (tmp_path / "appendix.pdf").read_bytes()[:5] == b"%PDF-"
