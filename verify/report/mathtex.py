@@ -512,6 +512,14 @@ def _extend(words: list[str], joined: list[bool]) -> None:
     def short(w: str) -> bool:
         return bool(re.fullmatch(r"-?(\d+(\.\d+)?|[A-Za-z])[,.;:]?", w))
 
+    for k in range(n - 1):  # a capital before a formula is its factor: 'R hat(w)'
+        if re.fullmatch(r"[A-Z]", words[k]) and joined[k + 1] and not joined[k] \
+                and words[k + 1][0] not in "=<>≤≥+-":
+            joined[k] = True
+    for k in range(1, n - 1):  # and a letter between a formula and a relation: 'R_i w = 0'
+        if re.fullmatch(r"[A-Za-z]", words[k]) and joined[k - 1] and not joined[k] \
+                and not words[k - 1].endswith(tuple(_TRAIL)) and words[k + 1] in _RELATIONS:
+            joined[k] = True
     for i, word in enumerate(words):  # an inner product <a, b> is one formula
         if len(word) > 1 and word[0] == "<" and word[1] not in " =":
             for j in range(i, min(i + 5, n)):
