@@ -101,3 +101,78 @@ def test_jobs_below_one_is_bad_input(tmp_path, capsys):
 
     assert main(["all", "--jobs", "0", "--out", str(tmp_path)]) == 2
     assert "--jobs must be at least 1" in capsys.readouterr().err
+
+
+# ---------------------------------------------------------------- another machine, emulated
+#
+# A lab's CI and a colleague's laptop differ in BLAS threads and in the BLAS kernels their
+# CPU selects, which changes the order of floating-point sums. Both are emulated in child
+# processes: OPENBLAS_NUM_THREADS / OMP_NUM_THREADS 1 against 2, and OpenBLAS's kernels for
+# the machine against those of another core type (OPENBLAS_CORETYPE, which changes the
+# last bits of products and solves). The artefacts written must not change.
+
+FAST_CLAIMS = ("sec4.nu-curves-indices", "sec4.reconstructed-models", "thm1.phi")
+
+
+def _verify_all_in_child(where: Path, *, threads: int, coretype: str | None,
+                         claims: tuple[str, ...], quick: bool) -> dict[str, bytes]:
+    import os
+    import subprocess
+    import sys
+
+    where.mkdir(parents=True)
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("OPENBLAS", "OMP_", "MKL_"))}
+    env.update(SOURCE_DATE_EPOCH="1795431493", OPENBLAS_NUM_THREADS=str(threads),
+               OMP_NUM_THREADS=str(threads), MKL_NUM_THREADS=str(threads),
+               PYTHONPATH=str(Path(__file__).resolve().parents[1]))
+    if coretype:
+        env["OPENBLAS_CORETYPE"] = coretype
+    args = [sys.executable, "-m", "verify.cli", "all", "--latex", "--jobs", "1",
+            "--out", "reports", "--certificates", "certificates"]
+    args += ["--quick"] * quick
+    for claim in claims:
+        args += ["--only", claim]
+    done = subprocess.run(args, cwd=where, env=env, capture_output=True, text=True,
+                          timeout=1200, check=False)
+    if done.returncode != 0:  # not an AssertionError: the expected failure is the bytes
+        raise RuntimeError(done.stdout[-2000:] + done.stderr[-2000:])
+    return snapshot(where)
+
+
+def _differences(a: dict[str, bytes], b: dict[str, bytes]) -> list[str]:
+    return sorted({*a, *b} - {n for n in a.keys() & b.keys() if a[n] == b[n]})
+
+
+#: What still differs on another BLAS (measured): the exact witness rational found from a
+#: float search (in the reports' sec4.nu-curves-indices evidence), the rounded band
+#: certificate of the k_s = 2.5 reconstruction, and (whole run) the identified models'
+#: last digits with their robust-band certificates. Canonical forms for these are being
+#: built in parallel; strict, so that this marker fails once they land and must go.
+NOT_YET_CANONICAL = pytest.mark.xfail(
+    strict=True, raises=AssertionError,
+    reason="witness rationals, band certificates and identified coefficients still follow "
+    "the float path (reports, certificates/, identification/*/model.toml)")
+
+
+@NOT_YET_CANONICAL
+def test_another_blas_gives_the_same_bytes(tmp_path):
+    """Fast claims that write certificates, figures, derivations and the appendix."""
+    here = _verify_all_in_child(tmp_path / "here", threads=1, coretype=None,
+                                claims=FAST_CLAIMS, quick=True)
+    there = _verify_all_in_child(tmp_path / "there", threads=2, coretype="Sandybridge",
+                                 claims=FAST_CLAIMS, quick=True)
+    assert any(n.startswith("certificates/") for n in here)
+    assert {"reports/appendix.tex", "reports/figures/nu_reconstructed.png"} <= here.keys()
+    assert _differences(here, there) == []
+
+
+@pytest.mark.slow
+@NOT_YET_CANONICAL
+def test_another_blas_gives_the_same_bytes_for_every_claim(tmp_path):
+    """The whole `verify all` (with the identification from simulated logs), twice."""
+    here = _verify_all_in_child(tmp_path / "here", threads=1, coretype=None, claims=(),
+                                quick=False)
+    there = _verify_all_in_child(tmp_path / "there", threads=2, coretype="Sandybridge",
+                                 claims=(), quick=False)
+    assert _differences(here, there) == []

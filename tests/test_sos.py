@@ -333,14 +333,17 @@ def test_report_marks_steps_proved_by_hand_terms_and_by_sos(tmp_path):
     run = run_claims(claims, CheckContext(quick=True, out_dir=tmp_path,
                                           certificates_dir=tmp_path / "certs"))
     text = render_markdown(run)
-    assert "| proved by |" in text
-    rows = [line for line in text.splitlines() if line.startswith("| `lemma1.trace-inequality")]
-    psd = [r for r in rows if r.startswith("| `lemma1.trace-inequality-psd` | 1 |")]
-    assert psd and "| hand terms + SOS |" in psd[0]
-    twin = [r for r in rows if r.startswith("| `lemma1.trace-inequality-psd.step1-sos` | 1 |")]
-    assert twin and "| SOS |" in twin[0]
-    quoted = [r for r in rows if r.startswith("| `lemma1.trace-inequality-as-quoted` | 1 |")]
-    assert quoted and "| citation |" in quoted[0]
+
+    def verdicts(name: str) -> list[str]:
+        """The verdict cells of one derivation's step table."""
+        block = text.split(f"**`{name}`**", 1)[1].split("\n\n", 2)[1]
+        return [line.rsplit("|", 2)[1].strip() for line in block.splitlines()
+                if line.startswith("| |") and line.rstrip().endswith("** |")]
+
+    assert verdicts("lemma1.trace-inequality-psd") == ["**verified, hand terms + SOS**"]
+    assert verdicts("lemma1.trace-inequality-psd.step1-sos") == ["**verified, SOS**"]
+    (quoted,) = verdicts("lemma1.trace-inequality-as-quoted")
+    assert quoted.endswith("citation**")
 
 
 def test_an_assumption_on_a_partial_chart_is_not_a_multiplier():

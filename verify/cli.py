@@ -29,9 +29,11 @@ def _build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"verify {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
-    p_all = sub.add_parser("all", help="run every registered claim check and write reports/")
+    p_all = sub.add_parser("all", help="run every registered claim check and write reports/ "
+                           "(and certificates/)")
     p_all.add_argument(
-        "--out", type=Path, default=Path("reports"), help="report directory (default: reports)"
+        "--out", type=Path, default=Path("reports"), metavar="DIR",
+        help="report directory (default: reports)"
     )
     p_all.add_argument(
         "--strict", action="store_true", help="exit 1 unless every claim is 'verified'"
@@ -39,9 +41,14 @@ def _build_parser() -> argparse.ArgumentParser:
     p_all.add_argument(
         "--quick", action="store_true", help="fewer random samples in the numerical cross-checks"
     )
-    p_all.add_argument("--seed", type=int, default=20261121, help="seed of the random samples")
+    p_all.add_argument("--seed", type=int, default=20261121,
+                       help="seed of the random samples (default: 20261121)")
     p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
                        metavar="DIR", help="where certificates are written (default certificates)")
+    p_all.add_argument("--latex", action="store_true",
+                       help="also write appendix.tex in the report directory: the report as "
+                            "a LaTeX appendix for the paper (pdflatex appendix.tex there "
+                            "builds it)")
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
@@ -259,7 +266,7 @@ def _cmd_all(args: argparse.Namespace) -> int:
 
     print(f"verify all: {len(claims)} claims (seed {args.seed})")
     run = run_claims(claims, context, progress=progress, jobs=args.jobs)
-    paths = write_report(run, args.out, info)
+    paths = write_report(run, args.out, info, latex=args.latex)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))

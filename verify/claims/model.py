@@ -101,6 +101,13 @@ class Claim:
     method: str
     scope: str
     check: CheckFunction
+    #: the statement as LaTeX text with ``$...$`` formulas (the typeset reports use it;
+    #: the plain ``statement`` stays for JSON and terminals); empty: derived from it
+    latex: str = ""
+    #: what the paper writes, the same way
+    paper_latex: str = ""
+    #: the repaired statement, the same way, for claims whose check gives one
+    repair_latex: str = ""
 
 
 @dataclass(frozen=True)

@@ -40,8 +40,16 @@ class ClaimRegistry:
         statement: str,
         method: str,
         scope: str,
+        latex: str = "",
+        paper_latex: str = "",
+        repair_latex: str = "",
     ) -> Callable[[CheckFunction], CheckFunction]:
-        """Decorator registering a check function under a claim id."""
+        """Decorator registering a check function under a claim id.
+
+        ``latex``, ``paper_latex`` and ``repair_latex`` are the LaTeX forms (text with
+        ``$...$`` formulas) of ``statement``, ``paper_says`` and the repaired statement,
+        used by the typeset reports.
+        """
 
         def register(check: CheckFunction) -> CheckFunction:
             if id in self._claims:
@@ -55,6 +63,9 @@ class ClaimRegistry:
                 method=method,
                 scope=scope,
                 check=check,
+                latex=latex,
+                paper_latex=paper_latex,
+                repair_latex=repair_latex,
             )
             return check
 
@@ -135,6 +146,9 @@ def run_claims(
     only on the context (its seed, its output folders), never on another check, so the
     results, and the report rendered from them, are the same as a run with one job;
     ``progress`` still sees them in order.
+    The workers are fresh interpreters (the ``forkserver`` start method), so a script
+    that calls this with ``jobs`` > 1 needs the usual ``if __name__ == "__main__":``
+    guard.
     """
     claims = list(claims)
     start = time.perf_counter()
@@ -147,9 +161,15 @@ def run_claims(
             if progress is not None:
                 progress(result)
         return RunResult(tuple(results), time.perf_counter() - start, context.seed)
+    import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
 
-    with ProcessPoolExecutor(max_workers=min(jobs, len(claims))) as pool:
+    # workers start from a fresh interpreter (forkserver), not a fork of this process: a
+    # fork keeps locks of native thread pools (clarabel's rayon pool once a solver ran
+    # here) whose threads it does not copy, and the worker's first solve then waits forever
+    start_method = multiprocessing.get_context("forkserver")
+    with ProcessPoolExecutor(max_workers=min(jobs, len(claims)),
+                             mp_context=start_method) as pool:
         futures = [pool.submit(_run_by_id, c.id, context) for c in claims]
         for claim, future in zip(claims, futures, strict=True):
             outcome, seconds = future.result()

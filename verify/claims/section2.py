@@ -58,6 +58,12 @@ SECTION = "2 Scenario and stealthy control"
     "free vector w; numerically: central differences along exp-flows.",
     scope="Every n: S is block-diagonal, so the identity is per body; it holds for every "
     "3x3 matrix R_i, not only rotations.",
+    latex=r"For every body, $\tfrac{d}{dt}(R_i e_3) = -R_i \hat{e}_3\, \omega_i$.",
+    paper_latex=(
+        r"With $d_i = R_i e_3$ and $\dot{R}_i = R_i \hat{\omega}_i$, the stacked "
+        r"directions obey $\dot{d} = S(d)\, \Omega$ with $S(d)$ block-diagonal, blocks "
+        r"$-R_i \hat{e}_3$."
+    ),
 )
 def check_d_dot(ctx: CheckContext) -> Outcome:
     R = alg.matrix_symbols("R")
@@ -111,6 +117,11 @@ def check_d_dot(ctx: CheckContext) -> Outcome:
     method="Implicit assumption made explicit; the conditioning of A(d) as |s| -> 0 is "
     "measured on exact near-cancelling networks.",
     scope="Every n.",
+    latex=(
+        r"$\bar{d} = s / \lVert s \rVert$ with $s = \sum_i d_i$ is defined exactly when "
+        r"$s \neq 0$; the tool rejects networks with $\lVert s \rVert \leq 10^{-9} n$."
+    ),
+    paper_latex=r"$\bar{d}$ is the normalised sum of the $d_i$; no condition is stated.",
 )
 def check_dbar_defined(ctx: CheckContext) -> Outcome:
     rows = []
@@ -159,6 +170,14 @@ def check_dbar_defined(ctx: CheckContext) -> Outcome:
     "of dbar(d) for n = 1, 2, 3 with free symbols; CasADi automatic differentiation at "
     "random and near-cancelling networks.",
     scope="Every n: ds/dd_i = I for every i, so each block is the Jacobian of s/|s|.",
+    latex=(
+        r"$\partial \bar{d} / \partial d_i = (I - \bar{d} \bar{d}^{\top}) / \lVert s "
+        r"\rVert$ for every $i$."
+    ),
+    paper_latex=(
+        r"The Jacobian of $\bar{d}$ with respect to the stacked $d$ enters $W(d)$ and "
+        "eq. (3); no formula is given."
+    ),
 )
 def check_dbar_jacobian(ctx: CheckContext) -> Outcome:
     s = alg.vector_symbols("s")
@@ -219,6 +238,12 @@ def check_dbar_jacobian(ctx: CheckContext) -> Outcome:
     method="Exact: P s = 0 for symbolic s gives W dbar = 0 for every block; exact rational "
     "networks give det(W^T W) = 0 with kernel vector s; numerically s3/s1 of W ~ eps.",
     scope="Every n: W_i dbar = hat(e3) R_i^T P dbar / |s| = 0 holds block by block.",
+    latex=r"$W^{\top} W$ is invertible (so $A(d)$ as written is defined).",
+    paper_latex=r"$A(d)$ is built with the inverse of the $3 \times 3$ matrix $W^{\top} W$.",
+    repair_latex=(
+        r"$A(d) = I - W W^{+}$, equivalently $I - W (W^{\top} W + c\, \bar{d} "
+        r"\bar{d}^{\top})^{-1} W^{\top}$ for any $c > 0$."
+    ),
 )
 def check_wtw_invertible(ctx: CheckContext) -> Outcome:
     s = alg.vector_symbols("s")
@@ -280,6 +305,11 @@ def check_wtw_invertible(ctx: CheckContext) -> Outcome:
     "Lagrange identity |v|^2 |d|^2 - (d.v)^2 = |d x v|^2; an argument for every n; exact "
     "rank on rational networks including near-cancelling ones.",
     scope="Every n by the argument; exact instances n = 1..6 and two adversarial networks.",
+    latex=r"$\operatorname{rank} W = 2$ exactly whenever $\sum_i d_i \neq 0$.",
+    paper_latex=(
+        "Not stated; the repair with $W^{+}$ is smooth in $d$ only if "
+        r"$\operatorname{rank} W$ is constant."
+    ),
 )
 def check_w_rank_two(ctx: CheckContext) -> Outcome:
     R = alg.generic_rotation("q")
@@ -380,6 +410,18 @@ def _instance_checks() -> dict[str, dict[str, bool | int]]:
     "structured projector on random and near-cancelling networks, n = 1..200.",
     scope="Every n by the Gram reduction (n enters only through W, which is arbitrary "
     "apart from W dbar = 0 and rank 2).",
+    latex=(
+        r"With the repaired $A(d) = I - W W^{+}$, $\frac{\partial \bar{d}}{\partial d} "
+        "S(d) A(d) = 0$."
+    ),
+    paper_latex=(
+        r"$\frac{\partial \bar{d}}{\partial d} S(d) A(d) = 0$, so the autonomous input "
+        r"does not move $\bar{d}$."
+    ),
+    repair_latex=(
+        r"$A(d) = I - W W^{+}$ (Moore-Penrose) gives $\frac{\partial \bar{d}}{\partial "
+        r"d} S(d) A(d) = 0$ whenever $\sum_i d_i \neq 0$."
+    ),
 )
 def check_stealthiness(ctx: CheckContext) -> Outcome:
     stealth_ok, _ = _gram_reduction()
@@ -441,6 +483,19 @@ def check_stealthiness(ctx: CheckContext) -> Outcome:
     method="Exact Gram reduction (every n); exact rational instances (symmetry, "
     "idempotence, rank, range); numerical idempotence and symmetry of the dense A.",
     scope="Every n by the Gram reduction and rank W = 2.",
+    latex=(
+        r"The repaired $A(d)$ is an orthogonal projector ($A = A^{\top} = A^{2}$) of "
+        r"rank $3n - 2$ whose range is the whole null space of $\frac{\partial "
+        r"\bar{d}}{\partial d} S(d)$."
+    ),
+    paper_latex=(
+        "$A(d)$ has the form of the orthogonal projector onto the complement of "
+        r"$\operatorname{range} W$."
+    ),
+    repair_latex=(
+        "$A(d) = I - W W^{+}$ is an orthogonal projector of rank $3n - 2$ with range "
+        r"$\operatorname{null}(\frac{\partial \bar{d}}{\partial d} S(d))$."
+    ),
 )
 def check_projector(ctx: CheckContext) -> Outcome:
     _, idem_ok = _gram_reduction()
@@ -500,6 +555,18 @@ def check_projector(ctx: CheckContext) -> Outcome:
     "d_i; s^T (omega~ x s) = 0 gives P (omega~ x s) = omega~ x s; the autonomous part is "
     "removed by sec2.stealthiness. Numerically: (d dbar/d d) S Omega at random states.",
     scope="Every n: each body contributes omega~ x d_i, and only s enters dbar.",
+    latex=(
+        r"With $\Omega_h = (R_i^{\top} \tilde{\omega})_i$ and $\Omega_a = A(d)\, "
+        r"\tilde{\Omega}_a$, $\dot{\bar{d}} = \tilde{\omega} \times \bar{d}$."
+    ),
+    paper_latex=(
+        r"With $\omega_{h,i} = R_i^{\top} \tilde{\omega}_h^s$ the average direction "
+        "turns with the human's spatial command, unaffected by the autonomous part."
+    ),
+    repair_latex=(
+        r"With $A(d) = I - W W^{+}$, $\dot{\bar{d}} = \tilde{\omega}_h^s \times \bar{d}$"
+        " for every autonomous input."
+    ),
 )
 def check_dbar_dot(ctx: CheckContext) -> Outcome:
     R = alg.generic_rotation("q")
@@ -553,6 +620,11 @@ def check_dbar_dot(ctx: CheckContext) -> Outcome:
     "autonomous input that lies in the range of A(d) (checked exactly) and shrinks |s| at "
     "a constant rate; numerical closed-loop run reaching |s| ~ 1e-4.",
     scope="A witness for n = 2; pairs of such bodies give one for every even n.",
+    latex=r"For every admissible $\tilde{\Omega}_a$, $\sum_i d_i(t)$ stays non-zero.",
+    paper_latex=(
+        r"Implicitly: $\bar{d}$ stays defined along the closed loop for any autonomous "
+        r"signal $\tilde{\Omega}_a$."
+    ),
 )
 def check_dbar_stays_defined(ctx: CheckContext) -> Outcome:
     # d_1 = (sin a, 0, cos a), d_2 = (-sin a, 0, cos a) at the rational point
@@ -643,6 +715,15 @@ def _closed_loop_shrinkage(ctx: CheckContext) -> Evidence:
     "solve y' = omega~(t) x y (uniqueness). Numerically: closed-loop runs with the "
     "order-4 Lie-group integrator, the gap shrinking at order 4 with the step.",
     scope="Every n.",
+    latex=(
+        r"Under eq. (4), $\bar{R}(0) e_3 = \bar{d}(0)$ implies $\bar{R}(t) e_3 = "
+        r"\bar{d}(t)$ while $\bar{d}$ is defined."
+    ),
+    paper_latex=r"If $\bar{R} e_3 = \bar{d}$ at the initial time, it stays equal to $\bar{d}$.",
+    repair_latex=(
+        r"With $A(d) = I - W W^{+}$, $\bar{R} e_3 = \bar{d}$ on every interval where "
+        r"$\sum_i d_i \neq 0$."
+    ),
 )
 def check_rbar_e3(ctx: CheckContext) -> Outcome:
     Rb = alg.generic_rotation("q")

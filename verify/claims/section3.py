@@ -38,6 +38,16 @@ def _kernel_evidence() -> Evidence:
     "tr R = 1 + 2cosθ.",
     method=EXACT,
     scope="every rotation (axis ξ by stereographic parameters, angle by tan(θ/2))",
+    latex=(
+        r"$R + R^{\top} = 2 \xi \xi^{\top} + 2 \cos\theta\, (I - \xi \xi^{\top})$ with "
+        r"$\xi \xi^{\top}$ a rank-1 orthogonal projector; $\operatorname{tr} R = 1 + 2 "
+        r"\cos\theta$."
+    ),
+    paper_latex=(
+        r"$\bar{R}_r + \bar{R}_r^{\top}$ has eigenvalues $\{2, 2\cos\theta, "
+        r"2\cos\theta\}$; it is positive semidefinite iff $\operatorname{tr} \bar{R}_r "
+        r"\geq 1$."
+    ),
 )
 def rodrigues_spectrum(context: CheckContext) -> Outcome:
     results = check_all(lemma1.rodrigues_spectrum(), context, 1)
@@ -56,6 +66,15 @@ def rodrigues_spectrum(context: CheckContext) -> Outcome:
     statement="hat(k_s R̄ sk(R̄ᵀR_l)^∨) R̄ = k_s R̄ sk(R̄ᵀR_l) for all rotations.",
     method=EXACT,
     scope="all R̄, R_l in SO(3), k_s > 0",
+    latex=(
+        r"$\widehat{k_s \bar{R} \operatorname{sk}(\bar{R}^{\top} R_l)^{\vee}}\, \bar{R} "
+        r"= k_s \bar{R} \operatorname{sk}(\bar{R}^{\top} R_l)$ for all rotations."
+    ),
+    paper_latex=(
+        r"With $\tilde{\omega}_h^s = k_s \bar{R} \operatorname{sk}(\bar{R}^{\top} "
+        r"R_l)^{\vee}$, $\dot{\bar{R}} = k_s \bar{R} \operatorname{sk}(\bar{R}^{\top} "
+        "R_l)$."
+    ),
 )
 def rbar_dot_form(context: CheckContext) -> Outcome:
     results = check_all(lemma1.rbar_dot_form(), context, 2)
@@ -72,6 +91,16 @@ def rbar_dot_form(context: CheckContext) -> Outcome:
     "constant.",
     method=EXACT,
     scope="all R_r, R̄, R_l in SO(3), k_s > 0",
+    latex=(
+        r"Each equality of the chain, with $\dot{h}$ formed from the dynamics (13) and "
+        "$R_r$ constant."
+    ),
+    paper_latex=(
+        r"$\dot{h} = k_s \operatorname{tr}\{R_r^{\top} \bar{R} "
+        r"\operatorname{sk}(\bar{R}^{\top} R_l)\} = k_s \operatorname{tr}\{\bar{R}_r "
+        r"\operatorname{sk}(\bar{R}_r^{\top} R_{rl})\} = \frac{k_s}{2} "
+        r"\operatorname{tr}(R_{rl} - R_{rl}^{\top} \bar{R}_r^{2})$."
+    ),
 )
 def h_dot(context: CheckContext) -> Outcome:
     results = check_all(lemma1.h_dot(), context, 3)
@@ -89,6 +118,19 @@ def h_dot(context: CheckContext) -> Outcome:
     "paper's closing argument (trace of a product of PSD matrices).",
     method=EXACT + " The boundary enters as the exact side condition 1 - tan²(θ/2) = 0.",
     scope="R̄_r = exp(θ hat ξ) with cosθ = 0, any R_rl, k_s > 0",
+    latex=(
+        r"$\bar{R}_r^{2}$ on the boundary; the rewriting of $\dot{h}$; the "
+        r"trace-inequality step with its premise $I - \xi \xi^{\top} = \hat{\xi}^{\top} "
+        r"\hat{\xi} \succeq 0$; the sign under $\lambda_{\min}(\operatorname{sym} "
+        "R_{rl}) > 0$; and the paper's closing argument (trace of a product of positive"
+        " semidefinite matrices)."
+    ),
+    paper_latex=(
+        r"On $\cos\theta = 0$, $\bar{R}_r^{2} = 2 \xi \xi^{\top} - I$ and $\dot{h} = k_s"
+        r" \operatorname{tr}\{\operatorname{sym}(R_{rl})(I - \xi \xi^{\top})\} \geq k_s "
+        r"\lambda_{\min}(\operatorname{sym} R_{rl}) \operatorname{tr}(I - \xi "
+        r"\xi^{\top}) \geq 0$ under Assumption 1, item 2."
+    ),
 )
 def boundary(context: CheckContext) -> Outcome:
     results = check_all(lemma1.boundary(), context, 4)
@@ -111,6 +153,15 @@ def boundary(context: CheckContext) -> Outcome:
     method=EXACT + " The quoted form has no decidable premise, so it is only falsified; a "
     "counterexample is confirmed exactly (λmin as an isolated algebraic number).",
     scope="3x3 matrices",
+    latex=r"The inequality as quoted; and with the premise $\operatorname{sym}(B) \succeq 0$.",
+    paper_latex=(
+        r"$\operatorname{tr}(AB) \geq \lambda_{\min}(A) \operatorname{tr}(B)$ for $A$ "
+        "real symmetric and $B$ any square matrix."
+    ),
+    repair_latex=(
+        r"$\operatorname{tr}(AB) \geq \lambda_{\min}(A) \operatorname{tr}(B)$ for $A$ "
+        r"symmetric and $\operatorname{sym}(B) \succeq 0$."
+    ),
 )
 def trace_inequality(context: CheckContext) -> Outcome:
     results = check_all(lemma1.trace_inequality(), context, 5)
@@ -136,6 +187,21 @@ def trace_inequality(context: CheckContext) -> Outcome:
     method=EXACT + " Side conditions tr R̄_r = 1 and tr R̄_r = -1 enter exactly (ideal "
     "membership).",
     scope="all R̄_r in SO(3)",
+    latex=(
+        r"The gradient of $h$ on $SO(3)$ is $-2 \operatorname{sk}(\bar{R}_r)^{\vee}$ "
+        r"with $\lVert \operatorname{grad} h \rVert^{2} = (3 - \operatorname{tr} "
+        r"\bar{R}_r)(1 + \operatorname{tr} \bar{R}_r)$: 4 on the boundary, 0 at angle "
+        r"$\pi$."
+    ),
+    paper_latex=(
+        r"$\partial h / \partial \bar{R}_r = I_3 \neq 0$ globally on $SO(3)$, so the "
+        "boundary is regular."
+    ),
+    repair_latex=(
+        r"On the boundary $\operatorname{tr} \bar{R}_r = 1$ the Riemannian gradient $-2 "
+        r"\operatorname{sk}(\bar{R}_r)^{\vee}$ of $h$ has norm 2, so the boundary is a "
+        "regular level set of $h$ on $SO(3)$."
+    ),
 )
 def nagumo_gradient(context: CheckContext) -> Outcome:
     results = check_all(lemma1.gradient(), context, 6)
@@ -161,6 +227,14 @@ def nagumo_gradient(context: CheckContext) -> Outcome:
     method="Assembly of the checked claims above; Nagumo's theorem itself is not "
     "machine-checked.",
     scope="closed loop (9), (12), (13) with any human command",
+    latex=(
+        r"Premises of Nagumo's theorem: $\dot{h} \geq 0$ on the boundary, a regular "
+        "boundary, unique solutions."
+    ),
+    paper_latex=(
+        r"By Nagumo's theorem, $\bar{R}_r + \bar{R}_r^{\top}$ stays positive "
+        "semidefinite if it is so initially."
+    ),
 )
 def invariance(context: CheckContext) -> Outcome:
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
@@ -185,6 +259,7 @@ def invariance(context: CheckContext) -> Outcome:
     statement="The identity for every rotation.",
     method=EXACT,
     scope="all R in SO(3)",
+    paper_latex=r"$\varphi(R) = \operatorname{tr}(I - R)/2 = \lVert I - R \rVert_F^{2} / 4$.",
 )
 def phi(context: CheckContext) -> Outcome:
     results = check_all(theorem1.phi_identity(), context, 7)
@@ -201,6 +276,15 @@ def phi(context: CheckContext) -> Outcome:
     "eq. (16) and S_h.",
     method=EXACT,
     scope="all R_r, R̄, R_l in SO(3), every human command ω_h^s, k_s > 0",
+    latex=(
+        "Every equality and inequality of both chains; the sign relation between eq. "
+        "(16) and $S_h$."
+    ),
+    paper_latex=(
+        r"The chains for $\dot{S}_r$ and $\dot{S}_{rl}$, ending in bounds with "
+        r"$\lambda_{\min}$ terms, and $S_h = \beta - \int "
+        r"\operatorname{sk}(R_{rl})^{\vee\top} \omega_h^b \geq 0$ from eq. (16)."
+    ),
 )
 def storage_derivatives(context: CheckContext) -> Outcome:
     loop = theorem1.ClosedLoop()
@@ -225,6 +309,16 @@ def storage_derivatives(context: CheckContext) -> Outcome:
     method=EXACT + " S_h-dot is the integrand of S_h (its definition).",
     scope="all rotations, every human command, k_s > 0; the last step assumes λ1 ≥ 0 "
     "(Lemma 1) and λ2 > 0 (Assumption 1, item 2)",
+    latex=(
+        r"The exact identity $\dot{V} = -\frac{k_s}{4} [\operatorname{tr}\{(\bar{R}_r + "
+        r"\bar{R}_r^{\top})(I - \bar{R}^{\top} R_l)\} + \operatorname{tr}\{(R_{rl} + "
+        r"R_{rl}^{\top})(I - R_l^{\top} \bar{R})\}]$, the bound, and $\dot{V} \leq 0$."
+    ),
+    paper_latex=(
+        r"$\dot{V} \leq -\frac{k_s}{2} \{\lambda_{\min}(\bar{R}_r + \bar{R}_r^{\top}) + "
+        r"\lambda_{\min}(R_{rl} + R_{rl}^{\top})\}\, \varphi(R_l^{\top} \bar{R}) \leq "
+        "0$."
+    ),
 )
 def v_dot(context: CheckContext) -> Outcome:
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
@@ -251,6 +345,15 @@ def v_dot(context: CheckContext) -> Outcome:
     statement="The derivative on R_l = R̄; and what it is if only sk(R_lᵀR̄) = 0.",
     method=EXACT,
     scope="all rotations and commands",
+    latex=(
+        r"The derivative on $R_l = \bar{R}$; and what it is if only "
+        r"$\operatorname{sk}(R_l^{\top} \bar{R}) = 0$."
+    ),
+    paper_latex=(
+        r"On $\dot{V} \equiv 0$ (so $\operatorname{sk}(R_l^{\top} \bar{R})^{\vee} = 0$),"
+        r" $\frac{d}{dt}(R_l^{\top} \bar{R}) = -R_l^{\top} \hat{\omega}_h^s R_l = O$, "
+        r"hence $\omega_h^s = 0$."
+    ),
 )
 def lasalle_derivative(context: CheckContext) -> Outcome:
     results = check_all(theorem1.lasalle(), context, 10)
@@ -273,6 +376,11 @@ def lasalle_derivative(context: CheckContext) -> Outcome:
     "autonomous system.",
     method="Reading of the argument (not decidable by computation).",
     scope="the closed loop with a human operator",
+    latex=(
+        "LaSalle's invariance principle needs $V$ as a function of the state of an "
+        "autonomous system."
+    ),
+    paper_latex=r"$V = S_r + S_{rl} + S_h \geq 0$ with $\dot{V} \leq 0$, then LaSalle's principle.",
 )
 def lasalle_storage(context: CheckContext) -> Outcome:
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence

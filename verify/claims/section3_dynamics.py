@@ -101,6 +101,15 @@ def _figure(ctx: CheckContext, name: str, found: cx.Found, title: str) -> str:
     "R-bar' from eq. (9). Illustration: a closed-loop run found and shrunk by hypothesis "
     "where tr(R-bar_r) falls below 1, re-run with half the step to bound the error.",
     scope="R_r = I, any k_s > 0 (h' scales with k_s)",
+    latex=(
+        r"Item 2 cannot be dropped: there is a state with $\operatorname{tr} \bar{R}_r ="
+        r" 1$ and $\operatorname{sym}(R_{rl})$ not positive definite where $\dot{h} < "
+        r"0$, so $\operatorname{tr} \bar{R}_r$ drops below 1 at once."
+    ),
+    paper_latex=(
+        "Lemma 1 is stated under Assumption 1, whose item 2 keeps "
+        r"$\operatorname{sym}(R_{rl}) \succ 0$."
+    ),
 )
 def premise_needed(ctx: CheckContext) -> Outcome:
     witness = cx.lemma1_boundary_witness()
@@ -142,6 +151,14 @@ def premise_needed(ctx: CheckContext) -> Outcome:
     "for a lagging model c/(s + a)^2 and for the reconstructed k_s = 2.5 model (not "
     "passive above 2 rad/s, sec4).",
     scope="one body (the bodies do not act on R-bar, R_l), R_r = I",
+    latex=(
+        r"With a non-passive human the conclusion $\lVert \bar{d} - d_r \rVert \to 0$ "
+        "can fail; a non-passive model does not always make it fail."
+    ),
+    paper_latex=(
+        r"Theorem 1 assumes the human passive from $\operatorname{sk}(R_l^{\top} "
+        r"R_r)^{\vee}$ to $\omega_h^b$."
+    ),
 )
 def passivity_needed(ctx: CheckContext) -> Outcome:
     from verify.passivity.io.model_file import load_model

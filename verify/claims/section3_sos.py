@@ -60,6 +60,11 @@ def _run(prefix: str, context: CheckContext, salt: int) -> Outcome:
     "certificate found without hand-written terms.",
     method=METHOD,
     scope="as the hand-written steps",
+    paper_latex=(
+        r"$\dot{h} \geq k_s \lambda_{\min}(\operatorname{sym} R_{rl}) "
+        r"\operatorname{tr}(I - \xi \xi^{\top}) \geq 0$ on the boundary; the trace "
+        "inequality."
+    ),
 )
 def lemma1_sos(context: CheckContext) -> Outcome:
     return _run("lemma1.", context, 31)
@@ -74,6 +79,7 @@ def lemma1_sos(context: CheckContext) -> Outcome:
     "reaches hold by exact SOS certificates found without hand-written terms.",
     method=METHOD,
     scope="as the hand-written steps",
+    paper_latex=r"The bounds of $\dot{S}_r$ and $\dot{S}_{rl}$, and $\dot{V} \leq 0$.",
 )
 def theorem1_sos(context: CheckContext) -> Outcome:
     return _run("thm1.", context, 32)

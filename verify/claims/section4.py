@@ -65,6 +65,16 @@ def model_class_conditions() -> dict[str, bool]:
     "det(D + D^T) = -(c12 + c21)^2; off-diagonals of H + H^H cancel iff c21 = -c12. "
     "Cross-checked by the gate (exact certificates or witnesses) on instances.",
     scope="2x2 models of the paper's class with stable denominators",
+    latex=(
+        "For $a_0, a_1 > 0$ such a model is passive iff $c_{12} + c_{21} = 0$, $b_0 "
+        r"\geq 0$ and $a_1 b_1 \geq b_0$; if $b_0 > a_1 b_1 \geq 0$ and $b_0 > 0$, "
+        r"$\nu(\omega) < 0$ exactly for $\omega^{2} > a_0 b_0 / (b_0 - a_1 b_1)$."
+    ),
+    paper_latex=(
+        r"Human models are $2 \times 2$ with diagonal $\frac{b_1 s + b_0}{s^{2} + a_1 s "
+        "+ a_0}$ and constant off-diagonal entries; passivity is read from "
+        r"$\nu(\omega)$."
+    ),
 )
 def model_class(context: CheckContext) -> Outcome:
     facts = model_class_conditions()
@@ -111,6 +121,20 @@ def model_class(context: CheckContext) -> Outcome:
     method="Gate on s/(s-1) (exact RHP-pole witness) and -1/s (nu = 0 everywhere, residue "
     "-1 at s = 0); 1/s as the admissible imaginary-axis case (exact KYP certificate).",
     scope="SISO instances; the conditions are those of the positive-real lemma",
+    latex=(
+        r"$\nu(\omega) \geq 0$ for all $\omega$ implies passivity only with stability "
+        "conditions."
+    ),
+    paper_latex=(
+        r"An LTI human model is passive when $\nu(\omega) = \lambda_{\min}(H(j\omega) + "
+        r"H(j\omega)^{H})/2 \geq 0$ for all $\omega$."
+    ),
+    repair_latex=(
+        r"$H$ is passive iff it has no poles in $\operatorname{Re} s > 0$, its "
+        "imaginary-axis poles are simple with Hermitian positive semidefinite residues,"
+        r" and $\nu(\omega) \geq 0$ wherever $H(j\omega)$ is defined; the gate decides "
+        "this with an exact KYP certificate or an exact witness."
+    ),
 )
 def nu_criterion(context: CheckContext) -> Outcome:
     def ss(a, b, c, d, name):
@@ -156,6 +180,10 @@ def _shipped_model(file_name: str):
     statement="The shipped RECONSTRUCTIONS (verify/data/models) have these features.",
     method="verify gate: exact KYP certificate (written to certificates/) or exact witness.",
     scope="the reconstructed models only; the paper's own models cannot be checked",
+    paper_latex=(
+        "The model for $k_s = 2.5$ is not passive (above about 2 rad/s); the one for "
+        "$k_s = 3.0$ is passive. No coefficients are published."
+    ),
 )
 def reconstructed_models(context: CheckContext) -> Outcome:
     m25, m30 = (_shipped_model(f) for f in ("reconstructed_ks2p5.toml",
@@ -199,6 +227,17 @@ def reconstructed_models(context: CheckContext) -> Outcome:
     "from the same models.",
     scope="the reconstructed models only (the paper publishes no coefficients); the figures "
     "illustrate, the verdict rests on the exact evidence",
+    latex=(
+        r"For the shipped RECONSTRUCTIONS: the minimum of $\nu(\omega)$ over all "
+        r"$\omega$ (including $\omega \to \infty$) located without a grid; the passivity"
+        r" indices $\nu_{\mathrm{IFP}}$ and $\rho_{\mathrm{OFP}}$ with exact bounds; "
+        "$k_s = 2.5$ is passive on the band $[0, 3/2]$ rad/s and not passive on $[1, "
+        "10]$ rad/s."
+    ),
+    paper_latex=(
+        r"Figures show $\nu(\omega) \geq 0$ for $k_s = 3.0$ and $\nu(\omega) < 0$ for "
+        "$k_s = 2.5$ above about 2 rad/s; Bode diagrams of both models."
+    ),
 )
 def nu_curves_indices(context: CheckContext) -> Outcome:
     m25, m30 = (_shipped_model(f) for f in ("reconstructed_ks2p5.toml",

@@ -44,10 +44,10 @@ def validation_figure(times: Sequence[np.ndarray], measured: Sequence[np.ndarray
         for ax in axes:
             ax.axvline(offset, color="0.85", lw=0.5)
     for i, ax in enumerate(axes):
-        ax.set_ylabel(f"u_h,{i + 1} (rad/s)")
+        ax.set_ylabel(f"u_h,{i + 1} [rad/s]")
         ax.set_title(f"output {i + 1}: validation fit {fits[i]:.2f} %", fontsize=9)
         ax.legend(loc="upper right", fontsize=8)
-    axes[-1].set_xlabel("time over the validation trials (s)")
+    axes[-1].set_xlabel("time over the validation trials [s]")
     fig.tight_layout()
     return figure_bytes(fig)
 
@@ -98,7 +98,7 @@ def bode_figure(structure: Structure, center: np.ndarray, covariance: np.ndarray
             ax.semilogx(omega, nom, color="C0", lw=1.2, label="identified")
             ax.grid(True, which="both", lw=0.3)
         axes[0, i].set_title(f"h_{i + 1}(jω)", fontsize=9)
-        axes[1, i].set_xlabel("ω (rad/s)")
+        axes[1, i].set_xlabel("ω [rad/s]")
     axes[0, 0].set_ylabel("magnitude (dB)")
     axes[1, 0].set_ylabel("phase (deg)")
     axes[0, 0].legend(fontsize=7, loc="lower left")
@@ -125,7 +125,7 @@ def nu_figure(structure: Structure, center: np.ndarray, omega: np.ndarray,
                    label=f"robustly passive (proved) up to {proved[1]:.4g} rad/s")
     if requested is not None:
         ax.axvline(requested[1], color="C3", lw=0.8, ls="--", label="requested band end")
-    ax.set_xlabel("ω (rad/s)")
+    ax.set_xlabel("ω [rad/s]")
     ax.set_ylabel("ν(ω)")
     ax.grid(True, which="both", lw=0.3)
     ax.legend(fontsize=8)

@@ -10,10 +10,13 @@ from verify.report.render import render_html, render_json, render_markdown
 from verify.report.run_info import RunInfo
 
 REPORT_FILES = ("report.md", "report.html", "report.json")
+APPENDIX_FILE = "appendix.tex"
 
 
-def write_report(run: RunResult, out_dir: Path, info: RunInfo | None = None) -> list[Path]:
-    """Render every format in memory first, then write each file atomically."""
+def write_report(run: RunResult, out_dir: Path, info: RunInfo | None = None, *,
+                 latex: bool = False) -> list[Path]:
+    """Render every format in memory first, then write each file atomically; with
+    ``latex`` also ``appendix.tex`` (:mod:`verify.report.latex`)."""
     info = info or RunInfo.from_environment()
     out_dir = Path(out_dir)
     rendered = {
@@ -21,8 +24,12 @@ def write_report(run: RunResult, out_dir: Path, info: RunInfo | None = None) -> 
         out_dir / "report.html": render_html(run, info),
         out_dir / "report.json": render_json(run, info),
     }
+    if latex:
+        from verify.report.latex import render_latex
+
+        rendered[out_dir / APPENDIX_FILE] = render_latex(run, info)
     write_all_atomic(rendered)
     return list(rendered)
 
 
-__all__ = ["REPORT_FILES", "RunInfo", "write_atomic", "write_report"]
+__all__ = ["APPENDIX_FILE", "REPORT_FILES", "RunInfo", "write_atomic", "write_report"]

@@ -38,6 +38,11 @@ def _pyplot():
     return plt
 
 
+def _math_name(name: str) -> str:
+    """A model name for a legend, its gain written as mathtext (``$k_s$``)."""
+    return name.replace("k_s", "$k_s$")
+
+
 def _save(fig, path: Path) -> Path:
     write_atomic(path, figure_bytes(fig, "png", dpi=110))
     return path
@@ -52,37 +57,41 @@ def frequency_grid(models: Sequence[LTIModel], lo: float = 1e-2, hi: float = 1e2
 
 
 def nu_figure(curves: Sequence[tuple[LTIModel, NuMinimum]], path: Path) -> Path:
-    """nu(w) of each model on a log frequency axis, its minimum marked (paper, Section 4)."""
+    """nu(w) of each model on a log frequency axis, its minimum marked (paper, Section 4).
+
+    The located minimum of each curve is named in the legend (below the axes), not in
+    annotations that could cover each other, a curve or the zero line.
+    """
     plt = _pyplot()
     w = frequency_grid([m for m, _ in curves])
-    fig, ax = plt.subplots(figsize=(7, 4))
+    fig, ax = plt.subplots(figsize=(7, 4.6))
     for model, low in curves:
         values = nu_values(model.A, model.B, model.C, model.D, w)
-        (line,) = ax.semilogx(w, values, label=model.name)
         if math.isinf(low.omega):
-            ax.annotate(f"inf ν = {low.value:.3g} as ω → ∞", xy=(w[-1], low.value),
-                        xytext=(-150, 18), textcoords="offset points", color=line.get_color(),
-                        arrowprops={"arrowstyle": "->", "color": line.get_color()})
+            where = r"$\inf\,\nu$" + f" = {low.value:.3g} as " + r"$\omega\to\infty$"
         else:
+            where = r"$\min\,\nu$" + f" = {low.value:.4g} at " + r"$\omega$" \
+                + f" = {low.omega:.4g} rad/s"
+        (line,) = ax.semilogx(w, values, label=f"{_math_name(model.name)}: {where}")
+        if not math.isinf(low.omega):
             ax.plot([low.omega], [low.value], "o", color=line.get_color())
-            ax.annotate(f"min ν = {low.value:.4g} at ω = {low.omega:.4g}",
-                        xy=(low.omega, low.value), xytext=(12, 14), textcoords="offset points",
-                        color=line.get_color())
     ax.axhline(0.0, color="k", lw=0.8)
-    ax.set_xlabel("ω [rad/s]")
-    ax.set_ylabel("ν(ω) = λ_min(H + Hᴴ)/2")
-    ax.set_title("ν(ω) of the reconstructions; minima by Hamiltonian crossings")
-    ax.legend()
+    ax.set_xlabel(r"$\omega$ [rad/s]")
+    ax.set_ylabel(r"$\nu(\omega) = \lambda_{\min}(H + H^{\mathsf{H}})/2$")
+    ax.set_title(r"$\nu(\omega)$ of the reconstructions; minima by Hamiltonian crossings",
+                 fontsize=10)
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=8, frameon=False)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     return _save(fig, path)
 
 
 def bode_figure(models: Sequence[LTIModel], path: Path) -> Path:
-    """Magnitude (dB) and phase (deg) of every element H_ij(jw) of each model."""
+    """Magnitude (dB) and phase (deg) of every element H_ij(jw) of each model; the legend
+    stands beside the axes, not on the curves."""
     plt = _pyplot()
     w = frequency_grid(models)
-    fig, (mag, phase) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    fig, (mag, phase) = plt.subplots(2, 1, figsize=(8.5, 6), sharex=True)
     styles = ["-", "--", ":", "-."]
     for k, model in enumerate(models):
         H = model.frequency_response(w)
@@ -91,16 +100,16 @@ def bode_figure(models: Sequence[LTIModel], path: Path) -> Path:
                 h = H[:, i, j]
                 if not np.any(np.abs(h) > 0):
                     continue
-                label = f"{model.name}: H[{i + 1},{j + 1}]"
+                label = f"{_math_name(model.name)}: " + f"$H_{{{i + 1}{j + 1}}}$"
                 ls = styles[(i * model.m + j) % len(styles)]
                 color = f"C{k}"
                 mag.semilogx(w, 20 * np.log10(np.abs(h)), ls, color=color, label=label)
                 phase.semilogx(w, np.degrees(np.unwrap(np.angle(h))), ls, color=color)
     mag.set_ylabel("magnitude [dB]")
     phase.set_ylabel("phase [deg]")
-    phase.set_xlabel("ω [rad/s]")
-    mag.set_title("Bode diagrams of the reconstructed 2x2 human models")
-    mag.legend(fontsize=7, ncol=2)
+    phase.set_xlabel(r"$\omega$ [rad/s]")
+    mag.set_title(r"Bode diagrams of the reconstructed $2\times 2$ human models", fontsize=10)
+    mag.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
     for ax in (mag, phase):
         ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()

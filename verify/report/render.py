@@ -17,13 +17,21 @@ import html
 import json
 import platform
 from importlib import metadata
-from itertools import groupby
 from typing import Any
 
 from verify import __version__
 from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.registry import RunResult
+from verify.report.mathml import markdown_prose, mathml, prose_html
+from verify.report.mathtex import prose_to_latex
 from verify.report.run_info import RunInfo
+from verify.report.steps import (
+    StepRow,
+    common_evidence,
+    derivation_tables,
+    sos_twins,
+    table_evidence,
+)
 
 REPORT_SCHEMA = "verify-report/2"
 
@@ -46,9 +54,19 @@ VERDICT_MEANING = {
 }
 
 
+#: every library whose version can change a result, a certificate or an artefact's bytes
+RESULT_LIBRARIES = ("numpy", "scipy", "sympy", "python-flint", "casadi", "cvxpy", "clarabel",
+                    "control", "numba", "hypothesis", "matplotlib", "pyarrow", "latex2mathml")
+
+ENVIRONMENT_NOTE = ("The libraries whose versions can change a verdict, a certificate or the "
+                    "bytes of an artefact (solvers propose, exact arithmetic decides; "
+                    "matplotlib draws the figures, pyarrow writes campaign stores, "
+                    "latex2mathml typesets this page):")
+
+
 def _versions() -> dict[str, str]:
     out = {"python": platform.python_version(), "verify": __version__}
-    for pkg in ("numpy", "scipy", "sympy", "casadi", "cvxpy", "clarabel", "hypothesis"):
+    for pkg in RESULT_LIBRARIES:
         try:
             out[pkg] = metadata.version(pkg)
         except metadata.PackageNotFoundError:
@@ -117,8 +135,12 @@ def _md_escape(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
 
 
-def _sections(run: RunResult):
-    return groupby(run.results, key=lambda r: r.claim.section)
+def sections(results) -> list[tuple[str, list[ClaimResult]]]:
+    """Claims grouped by section, each section once, in order of first appearance."""
+    groups: dict[str, list[ClaimResult]] = {}
+    for r in results:
+        groups.setdefault(r.claim.section, []).append(r)
+    return list(groups.items())
 
 
 def _figure_href(e) -> str | None:
@@ -133,118 +155,80 @@ def _evidence_data(e) -> Any:
     return _timeless(data) if e.kind is EvidenceKind.DERIVATION else data
 
 
-def _evidence_line(e) -> str:
-    status = "pass" if e.passed else "FAIL"
-    href = _figure_href(e)
-    if href:
-        return (f"- [{e.kind.value}, {status}] {e.summary} (`{href}`)\n\n"
-                f"    ![{_md_escape(e.summary)[:80]}]({href})\n")
-    path = f" (`{e.path}`)" if e.path else ""
-    return f"- [{e.kind.value}, {status}] {e.summary}{path}"
-
-
-def _step_rows(results, twins: set[tuple[str, int]] | None = None) -> list[dict[str, str]]:
-    """One row per derivation step of a section's claims; ``twins`` are the verified SOS
-    twins of the whole run (they may sit in another claim's table)."""
-    rows = []
-    twins = _sos_twins(results) if twins is None else twins
-    for r in results:
-        for e in r.outcome.evidence:
-            if e.kind is not EvidenceKind.DERIVATION:
-                continue
-            d = e.data
-            rows.append(
-                {"claim": r.claim.id, "derivation": d["name"], "step": "start",
-                 "relation": d["start"],
-                 "justification": d["statement"], "assumptions": "", "verdict": d["verdict"],
-                 "evidence": f"derivation {d['verdict']}", "proved by": ""}
-            )
-            for step in d["steps"]:
-                if step["counterexample"]:
-                    vals = step["counterexample"]["values"]
-                    proof = "counterexample: " + "; ".join(
-                        f"{k} = {v['value']}" for k, v in vals.items()
-                    )
-                else:
-                    proof = step["exact"]
-                extra = []
-                if step["conditions"]:
-                    extra.append("where " + ", ".join(step["conditions"]))
-                rows.append(
-                    {
-                        "claim": r.claim.id,
-                        "derivation": d["name"],
-                        "step": str(step["index"]),
-                        "relation": f"{step['relation']} {step['rhs']}",
-                        "justification": step["justification"]
-                        + (f" [{'; '.join(extra)}]" if extra else ""),
-                        "assumptions": ", ".join(step["assumptions"]) or "none",
-                        "verdict": step["verdict"],
-                        "evidence": proof,
-                        "proved by": _proved_by(d["name"], step, twins),
-                    }
-                )
-    return rows
-
-
-def _sos_twins(results) -> set[tuple[str, int]]:
-    """(derivation, step) pairs whose SOS twin (``<name>.step<k>-sos``) was verified."""
-    out = set()
-    for r in results:
-        for e in r.outcome.evidence:
-            if e.kind is EvidenceKind.DERIVATION and e.data["verdict"] == "verified":
-                name = e.data["name"]
-                head, _, tail = name.rpartition(".step")
-                if tail.endswith("-sos") and tail[:-4].isdigit():
-                    out.add((head, int(tail[:-4])))
+def claim_latex(r: ClaimResult) -> dict[str, str]:
+    """The LaTeX text (``$...$`` formulas) of a claim's fields, for the typeset formats."""
+    c, o = r.claim, r.outcome
+    out = {
+        "paper": c.paper_latex or prose_to_latex(c.paper_says),
+        "statement": c.latex or prose_to_latex(c.statement),
+        "method": prose_to_latex(c.method),
+        "scope": prose_to_latex(c.scope),
+        "finding": prose_to_latex(o.finding),
+    }
+    if o.repaired_statement:
+        out["repair"] = c.repair_latex or prose_to_latex(o.repaired_statement)
     return out
 
 
-def _proved_by(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
-    """How an inequality step is proved: hand terms, SOS, or both (equalities: empty)."""
-    if step["relation"] == "=":
-        return ""
-    if "SOS certificate" in step["justification"]:
-        return "SOS"
-    if step["justification"].startswith("cited:"):
-        return "citation"
-    return "hand terms + SOS" if (name, step["index"]) in twins else "hand terms"
+def _evidence_line(e) -> str:
+    status = "pass" if e.passed else "FAIL"
+    summary = markdown_prose(prose_to_latex(e.summary))
+    href = _figure_href(e)
+    if href:
+        return (f"- [{e.kind.value}, {status}] {summary} (`{href}`)\n\n"
+                f"    ![{_md_escape(e.summary)[:80]}]({href})\n")
+    path = f" (`{e.path}`)" if e.path else ""
+    return f"- [{e.kind.value}, {status}] {summary}{path}"
 
 
-_STEP_COLUMNS = ("derivation", "step", "relation", "justification", "assumptions", "verdict",
-                 "proved by", "evidence")
+def _verdict_cell(row: StepRow) -> str:
+    return row.verdict + (f", {row.proved_by}" if row.proved_by else "")
 
 
-def _section_steps_markdown(results, twins=None) -> list[str]:
-    rows = _step_rows(results, twins)
-    if not rows:
+def _steps_markdown(results, twins) -> list[str]:
+    tables = derivation_tables(results, twins)
+    if not tables:
         return []
-    out = [
-        f"Every step of this proof ({len(rows)} steps; each "
-        "derivation starts from its first expression, and each row relates the previous "
-        "expression to the one shown):",
-        "",
-        "| " + " | ".join(_STEP_COLUMNS) + " |",
-        "|" + "---|" * len(_STEP_COLUMNS),
-    ]
-    for row in rows:
-        cells = [_md_escape(row[c]) for c in _STEP_COLUMNS]
-        cells[0] = f"`{cells[0]}`"
-        cells[5] = f"**{cells[5]}**"  # the verdict
-        out.append("| " + " | ".join(cells) + " |")
-    out.append("")
+    common = common_evidence(tables)
+    n = sum(len(t.rows) for t in tables)
+    out = [f"Every step of this part of the proof ({n} steps in {len(tables)} derivations). "
+           "Each derivation starts from its first expression; each step relates the previous "
+           "expression to the one on its row, with its justification and verdict below it.",
+           ""]
+    for t in tables:
+        own = table_evidence(t, common)
+        out += [f"**`{t.name}`** (claim `{t.claim}`): {markdown_prose(t.statement_latex)} "
+                f"— **{t.verdict}**", "",
+                "| step | expression; justification | verdict |", "|---|---|---|",
+                f"| start | ${t.start_latex}$ | |"]
+        for row in t.rows:
+            why = markdown_prose(row.justification_latex)
+            if row.assumptions != "none":
+                why += "; assumes " + markdown_prose(row.assumptions_latex)
+            if row.evidence and row.evidence not in (common, own):
+                why += "; exact check: " + _md_escape(row.evidence)
+            out.append(f"| {row.step} | ${row.relation_latex}$ | |")
+            out.append(f"| | {why} | **{_verdict_cell(row)}** |")
+        if own:
+            out.append(f"| | exact check of each step above: {_md_escape(own)} | |")
+        out.append("")
+    if common:
+        out += [f"Exact check of every step unless its row says otherwise: {common}.", ""]
     return out
 
 
 def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
+    """The Markdown report; formulas are ``$...$`` LaTeX (GitHub and most viewers typeset
+    them), one heading per section of the paper."""
     info = info or RunInfo.from_environment()
     data = report_data(run, info)
     lines = [
         "# Verification report",
         "",
         "Machine checks of *Passivity-based Semi-autonomous Rotational Motion Navigation for "
-        "Rigid-body Networks* (the paper in `shared/paper/paper.tex`), by `verify all` "
-        f"(seed {run.seed}). Date and timings are in the last section, Run.",
+        "Rigid-body Networks* (the paper's LaTeX source is not distributed with this "
+        f"repository), by `verify all` (seed {run.seed}). Date and timings are in the last "
+        "section, Run.",
         "",
         "## Summary",
         "",
@@ -253,19 +237,20 @@ def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
     ]
     for r in run.results:
         lines.append(
-            f"| [`{r.claim.id}`](#{r.claim.id.replace('.', '')}) | {_md_escape(r.claim.paper_ref)}"
+            f"| [`{r.claim.id}`](#{r.claim.id.replace('.', '')}) | "
+            f"{markdown_prose(prose_to_latex(r.claim.paper_ref))}"
             f" | **{VERDICT_MARK[r.outcome.verdict]}** |"
         )
     counts = ", ".join(f"{v} {k}" for k, v in data["counts"].items() if v)
     lines += ["", f"Totals: {counts}.", "", "Verdicts mean:", ""]
     lines += [f"- **{VERDICT_MARK[v]}**: {m}." for v, m in VERDICT_MEANING.items()]
-    for section, results in _sections(run):
-        results = list(results)
+    twins = sos_twins(run.results)
+    for section, results in sections(run.results):
         lines += ["", f"## Section {section}", ""]
-        lines += _section_steps_markdown(results, _sos_twins(run.results))
+        lines += _steps_markdown(results, twins)
         for r in results:
             lines += _claim_markdown(r)
-    lines += ["", "## Environment", ""]
+    lines += ["", "## Environment", "", ENVIRONMENT_NOTE, ""]
     lines += [f"- {k}: {v}" for k, v in data["environment"].items()]
     lines += ["", "## Run", ""]
     lines += _run_lines(run, info)
@@ -274,17 +259,19 @@ def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
 
 def _claim_markdown(r: ClaimResult) -> list[str]:
     c, o = r.claim, r.outcome
+    tex = claim_latex(r)
     out = [
         f"### `{c.id}` — {VERDICT_MARK[o.verdict]}",
         "",
-        f"- **Paper** ({c.paper_ref}): {c.paper_says}",
-        f"- **Checked**: {c.statement}",
-        f"- **How**: {c.method}",
-        f"- **Scope**: {c.scope}",
-        f"- **Finding**: {o.finding}",
+        f"- **Paper** ({markdown_prose(prose_to_latex(c.paper_ref))}): "
+        f"{markdown_prose(tex['paper'])}",
+        f"- **Checked**: {markdown_prose(tex['statement'])}",
+        f"- **How**: {markdown_prose(tex['method'])}",
+        f"- **Scope**: {markdown_prose(tex['scope'])}",
+        f"- **Finding**: {markdown_prose(tex['finding'])}",
     ]
-    if o.repaired_statement:
-        out.append(f"- **Repaired statement**: {o.repaired_statement}")
+    if "repair" in tex:
+        out.append(f"- **Repaired statement**: {markdown_prose(tex['repair'])}")
     out += ["- **Evidence**:", ""]
     out += ["  " + _evidence_line(e) for e in o.evidence]
     out.append("")
@@ -292,14 +279,26 @@ def _claim_markdown(r: ClaimResult) -> list[str]:
 
 
 _CSS = """
-body{font-family:system-ui,sans-serif;max-width:1000px;margin:2em auto;padding:0 1em;
+body{font-family:system-ui,sans-serif;max-width:960px;margin:2em auto;padding:0 1em;
 line-height:1.45;color:#222}
-table{border-collapse:collapse;width:100%}td,th{border:1px solid #ccc;padding:4px 8px;
-text-align:left;vertical-align:top}th{background:#f3f3f3}
+h2{border-bottom:2px solid #ccc;padding-bottom:.2em;margin-top:2em}
+table{border-collapse:collapse;width:100%;margin:.6em 0;table-layout:auto}
+td,th{border:1px solid #ccc;padding:4px 8px;text-align:left;vertical-align:top;
+overflow-wrap:anywhere}th{background:#f3f3f3}
+table.proof{table-layout:fixed;font-size:.95em}table.proof col.k{width:4em}
+table.proof col.v{width:11em}
+table.proof tr.head th{background:#eef2f7;font-weight:normal}
+table.proof tr.rel td{border-bottom:none;padding-top:6px;overflow-x:auto}
+table.proof tr.why td{border-top:none;color:#444;font-size:.93em}
+math{font-size:1.12em}table.proof tr.rel math{font-size:1.2em}
 .verified{color:#176a1e;font-weight:bold}.verified-with-repair{color:#8a5a00;font-weight:bold}
 .refuted{color:#b00020;font-weight:bold}.assumption{color:#555;font-weight:bold}
 .inconclusive{color:#b00020;font-weight:bold}.claim{border-top:1px solid #ddd;padding-top:.5em}
-.fail{color:#b00020}code{background:#f6f6f6;padding:0 3px}details{margin:.3em 0}
+.fail{color:#b00020}code{background:#f6f6f6;padding:0 3px;overflow-wrap:anywhere}
+details{margin:.3em 0}pre{white-space:pre-wrap;overflow-wrap:anywhere;max-height:24em;
+overflow:auto;background:#fafafa;padding:.4em}img{max-width:100%;height:auto}
+dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
+table.summary td:first-child,table.summary td:last-child{white-space:nowrap}
 """
 
 
@@ -317,24 +316,105 @@ def _run_html(run: RunResult, info: RunInfo) -> str:
             f"<table><tr><th>claim</th><th>seconds</th></tr>{rows}</table>")
 
 
+def _steps_html(results, twins) -> str:
+    esc = html.escape
+    tables = derivation_tables(results, twins)
+    if not tables:
+        return ""
+    common = common_evidence(tables)
+    n = sum(len(t.rows) for t in tables)
+    parts = [f"<p>Every step of this part of the proof ({n} steps in {len(tables)} "
+             "derivations). Each derivation starts from its first expression; each step "
+             "relates the previous expression to the one on its row, with its justification "
+             "and verdict below it.</p>"]
+    for t in tables:
+        own = table_evidence(t, common)
+        rows = [f"<tr class='head'><th colspan='3'><code>{esc(t.name)}</code> (claim "
+                f"<a href='#{esc(t.claim)}'><code>{esc(t.claim)}</code></a>): "
+                f"{prose_html(t.statement_latex)} — <span class='{esc(t.verdict)}'>"
+                f"{esc(t.verdict)}</span></th></tr>",
+                f"<tr class='rel'><td>start</td><td colspan='2'>{mathml(t.start_latex)}</td></tr>"]
+        for row in t.rows:
+            why = prose_html(row.justification_latex)
+            if row.assumptions != "none":
+                why += "; assumes " + prose_html(row.assumptions_latex)
+            if row.evidence and row.evidence not in (common, own):
+                why += f"<br>exact check: {esc(row.evidence)}"
+            rows.append(f"<tr class='rel'><td>{esc(row.step)}</td><td colspan='2'>"
+                        f"{mathml(row.relation_latex)}</td></tr>")
+            rows.append(f"<tr class='why'><td></td><td>{why}</td><td><span "
+                        f"class='{esc(row.verdict)}'>{esc(row.verdict)}</span>"
+                        + (f" · {esc(row.proved_by)}" if row.proved_by else "")
+                        + "</td></tr>")
+        if own:
+            rows.append(f"<tr class='why'><td></td><td colspan='2'>exact check of each step "
+                        f"above: {esc(own)}</td></tr>")
+        parts.append("<table class='proof'><colgroup><col class='k'><col><col class='v'>"
+                     "</colgroup>" + "".join(rows) + "</table>")
+    if common:
+        parts.append(f"<p>Exact check of every step unless its row says otherwise: "
+                     f"{esc(common)}.</p>")
+    return "\n".join(parts)
+
+
+def _evidence_html(e) -> str:
+    esc = html.escape
+    href = _figure_href(e)
+    return (
+        f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
+        f"{'pass' if e.passed else 'FAIL'}] {prose_html(prose_to_latex(e.summary))}"
+        + (f" (<code>{esc(e.path)}</code>)" if e.path and not href else "")
+        + (f"<br><img src='{esc(href)}' alt='{esc(e.summary)}'>" if href else "")
+        + (f"<details><summary>data</summary><pre>"
+           f"{esc(json.dumps(_evidence_data(e), indent=1, ensure_ascii=False))}</pre>"
+           "</details>" if e.data else "")
+        + "</li>"
+    )
+
+
+def _claim_html(r: ClaimResult) -> str:
+    esc = html.escape
+    c, o = r.claim, r.outcome
+    tex = claim_latex(r)
+    repair = (f"<dt>Repaired statement</dt><dd>{prose_html(tex['repair'])}</dd>"
+              if "repair" in tex else "")
+    ev = "".join(_evidence_html(e) for e in o.evidence)
+    return (
+        f"<div class='claim' id='{esc(c.id)}'><h3><code>{esc(c.id)}</code> — "
+        f"<span class='{o.verdict.value}'>{esc(VERDICT_MARK[o.verdict])}</span></h3>"
+        f"<dl><dt>Paper ({prose_html(prose_to_latex(c.paper_ref))})</dt>"
+        f"<dd>{prose_html(tex['paper'])}</dd>"
+        f"<dt>Checked</dt><dd>{prose_html(tex['statement'])}</dd>"
+        f"<dt>How</dt><dd>{prose_html(tex['method'])}</dd>"
+        f"<dt>Scope</dt><dd>{prose_html(tex['scope'])}</dd>"
+        f"<dt>Finding</dt><dd>{prose_html(tex['finding'])}</dd>{repair}"
+        f"<dt>Evidence</dt><dd><ul>{ev}</ul></dd></dl></div>"
+    )
+
+
 def render_html(run: RunResult, info: RunInfo | None = None) -> str:
+    """The HTML report: formulas as MathML (rendered natively by current browsers), one
+    heading per section, one table per derivation."""
     esc = html.escape
     info = info or RunInfo.from_environment()
     data = report_data(run, info)
     rows = "".join(
         f"<tr><td><a href='#{esc(r.claim.id)}'><code>{esc(r.claim.id)}</code></a></td>"
-        f"<td>{esc(r.claim.paper_ref)}</td><td class='{r.outcome.verdict.value}'>"
+        f"<td>{prose_html(prose_to_latex(r.claim.paper_ref))}</td>"
+        f"<td class='{r.outcome.verdict.value}'>"
         f"{esc(VERDICT_MARK[r.outcome.verdict])}</td></tr>"
         for r in run.results
     )
     parts = [
         "<!doctype html><html lang='en'><head><meta charset='utf-8'>",
+        "<meta name='viewport' content='width=device-width, initial-scale=1'>",
         "<title>Verification report</title>",
         f"<style>{_CSS}</style></head><body>",
         "<h1>Verification report</h1>",
         f"<p>By <code>verify all</code> (seed {run.seed}). Date and timings are in the last "
         "section, Run.</p>",
-        "<h2>Summary</h2><table><tr><th>claim</th><th>paper</th><th>verdict</th>"
+        "<h2>Summary</h2><table class='summary'><tr><th>claim</th><th>paper</th>"
+        "<th>verdict</th>"
         f"</tr>{rows}</table>",
         "<ul>"
         + "".join(
@@ -343,56 +423,14 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
         )
         + "</ul>",
     ]
-    for section, results in _sections(run):
-        results = list(results)
+    twins = sos_twins(run.results)
+    for section, results in sections(run.results):
         parts.append(f"<h2>Section {esc(section)}</h2>")
-        rows = _step_rows(results, _sos_twins(run.results))
-        if rows:
-            head = "".join(f"<th>{c}</th>" for c in _STEP_COLUMNS)
-            body = "".join(
-                "<tr>" + "".join(
-                    f"<td class='{esc(row[c])}'>{esc(row[c])}</td>" if c == "verdict"
-                    else f"<td>{esc(row[c])}</td>" for c in _STEP_COLUMNS
-                ) + "</tr>"
-                for row in rows
-            )
-            parts.append(f"<p>Every step of this proof ({len(rows)} steps):</p>"
-                         f"<table><tr>{head}</tr>{body}</table>")
-        for r in results:
-            c, o = r.claim, r.outcome
-            ev = "".join(
-                f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
-                f"{'pass' if e.passed else 'FAIL'}] {esc(e.summary)}"
-                + (
-                    f"<br><img src='{esc(_figure_href(e))}' alt='{esc(e.summary)}' "
-                    "style='max-width:100%'>"
-                    if _figure_href(e)
-                    else ""
-                )
-                + (
-                    f"<details><summary>data</summary><pre>"
-                    f"{esc(json.dumps(_evidence_data(e), indent=1))}</pre></details>"
-                    if e.data
-                    else ""
-                )
-                + "</li>"
-                for e in o.evidence
-            )
-            repair = (
-                f"<dt>Repaired statement</dt><dd>{esc(o.repaired_statement)}</dd>"
-                if o.repaired_statement
-                else ""
-            )
-            parts.append(
-                f"<div class='claim' id='{esc(c.id)}'><h3><code>{esc(c.id)}</code> — "
-                f"<span class='{o.verdict.value}'>{esc(VERDICT_MARK[o.verdict])}</span></h3>"
-                f"<dl><dt>Paper ({esc(c.paper_ref)})</dt><dd>{esc(c.paper_says)}</dd>"
-                f"<dt>Checked</dt><dd>{esc(c.statement)}</dd>"
-                f"<dt>How</dt><dd>{esc(c.method)}</dd><dt>Scope</dt><dd>{esc(c.scope)}</dd>"
-                f"<dt>Finding</dt><dd>{esc(o.finding)}</dd>{repair}"
-                f"<dt>Evidence</dt><dd><ul>{ev}</ul></dd></dl></div>"
-            )
+        steps = _steps_html(results, twins)
+        if steps:
+            parts.append(steps)
+        parts += [_claim_html(r) for r in results]
     env = "".join(f"<li>{esc(k)}: {esc(v)}</li>" for k, v in data["environment"].items())
-    parts.append(f"<h2>Environment</h2><ul>{env}</ul>")
+    parts.append(f"<h2>Environment</h2><p>{esc(ENVIRONMENT_NOTE)}</p><ul>{env}</ul>")
     parts.append(_run_html(run, info) + "</body></html>")
     return "\n".join(parts) + "\n"

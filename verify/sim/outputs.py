@@ -145,14 +145,16 @@ def counterexample_figure(traj: Trajectory, E: Energy, title: str) -> bytes:
     import matplotlib.pyplot as plt
 
     s = series(traj, E)
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.4, 4.8), sharex=True)
-    top.plot(s["t"], s["tr_Rbar_r"], label="tr(R-bar_r)")
-    top.plot(s["t"], 1.0 + s["lambda_min_sym_R_rl"], lw=0.8, label="1 + lambda_min(sym R_rl)")
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8.4, 4.8), sharex=True)
+    top.plot(s["t"], s["tr_Rbar_r"], label=r"$\mathrm{tr}\,\bar R_r$")
+    top.plot(s["t"], 1.0 + s["lambda_min_sym_R_rl"], lw=0.8,
+             label=r"$1 + \lambda_{\min}(\mathrm{sym}\,R_{rl})$")
     top.axhline(1.0, color="k", lw=0.6, ls="--")
-    top.legend(fontsize=8)
     top.set_title(title, fontsize=10)
-    bottom.plot(s["t"], s["dbar_error"], label="|dbar - d_r|")
-    bottom.plot(s["t"], traj.supply, lw=0.8, label="int e^T omega_h^b dt")
+    bottom.plot(s["t"], s["dbar_error"], label=r"$\Vert\bar d - d_r\Vert$")
+    bottom.plot(s["t"], traj.supply, lw=0.8, label=r"$\int e^{\top}\omega_h^b\,dt$")
     bottom.set_xlabel("t [s]")
-    bottom.legend(fontsize=8)
+    for ax in (top, bottom):  # legends beside the axes, never on the curves
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+    fig.tight_layout()
     return _png(fig)

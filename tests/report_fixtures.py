@@ -1,0 +1,62 @@
+"""Runs of the claim registry for report tests, built without running the checks."""
+
+from __future__ import annotations
+
+from verify.claims.model import (
+    CheckContext,
+    Claim,
+    ClaimResult,
+    Evidence,
+    EvidenceKind,
+    Outcome,
+    Verdict,
+)
+from verify.claims.registry import RunResult
+
+
+def _never(_: CheckContext) -> Outcome:  # the claims below are rendered, never checked
+    raise AssertionError("not run")
+
+
+def step(index: int, relation: str, rhs: str, justification: str = "algebra", *,
+         conditions=(), assumptions=(), exact: str = "lhs - rhs = 0 exactly",
+         verdict: str = "verified") -> dict:
+    """One step as the proof checker's JSON has it."""
+    return {"index": index, "relation": relation, "lhs": "", "rhs": rhs,
+            "justification": justification, "verdict": verdict, "exact": exact,
+            "conditions": list(conditions), "assumptions": list(assumptions),
+            "counterexample": None}
+
+
+def derivation(name: str, start: str, steps: list[dict], statement: str = "a chain") -> Evidence:
+    data = {"name": name, "statement": statement, "cite": "", "start": start,
+            "conclusion": statement, "verdict": "verified", "conditions": [],
+            "assumptions": [], "vacuous": "", "seconds": 0.5, "steps": steps}
+    return Evidence(EvidenceKind.DERIVATION, f"{name}: verified", data)
+
+
+def claim(cid: str, section: str, *, statement: str = "a statement", paper: str = "the paper",
+          latex: str = "", finding: str = "Holds.", evidence=(), repaired: str | None = None,
+          verdict: Verdict = Verdict.VERIFIED) -> ClaimResult:
+    c = Claim(id=cid, section=section, paper_ref="Section 9", paper_says=paper,
+              statement=statement, method="by hand", scope="every n", check=_never,
+              latex=latex)
+    return ClaimResult(c, Outcome(verdict, finding, tuple(evidence), repaired), 0.25)
+
+
+def run_of(*results: ClaimResult) -> RunResult:
+    return RunResult(tuple(results), 1.0, 7)
+
+
+def registry_run() -> RunResult:
+    """Every registered claim with a placeholder outcome (its repair when it has one)."""
+    import verify.claims.catalog  # noqa: F401
+    from verify.claims.registry import REGISTRY
+
+    results = []
+    for c in REGISTRY:
+        repaired = "repaired as stated" if c.repair_latex else None
+        verdict = Verdict.REPAIRED if repaired else Verdict.ASSUMPTION
+        results.append(ClaimResult(c, Outcome(verdict, "placeholder finding", (), repaired),
+                                   0.0))
+    return RunResult(tuple(results), 0.0, 7)
