@@ -73,8 +73,8 @@ def _detached(data: dict) -> dict:
     return out
 
 
-def _check(directory: Path, data: dict):
-    return check_stored_certificate(_write(directory, data))
+def _check(directory: Path, data: dict, *, allow_unbound: bool = False):
+    return check_stored_certificate(_write(directory, data), allow_unbound=allow_unbound)
 
 
 # ------------------------------------------------------------------ untouched
@@ -83,7 +83,9 @@ def _check(directory: Path, data: dict):
 def test_the_untouched_refutation_passes_bound_and_detached(refuted, tmp_path):
     d, data = refuted
     assert _check(d, data).ok
-    assert _check(tmp_path, _detached(data)).ok
+    detached = _check(tmp_path, _detached(data))  # no source file: its labels are unchecked
+    assert not detached.ok and detached.status == "unbound" and "name" in detached.unchecked
+    assert _check(tmp_path, _detached(data), allow_unbound=True).ok
 
 
 # ------------------------------------------------------------------ the tree
