@@ -38,7 +38,8 @@ def test_gate_band_passes_below_two_and_fails_above(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "PASS" in out and "on [0, 3/2] rad/s" in out
     (path,) = certs.glob("*.json")
-    assert json.loads(path.read_text())["schema"] == "verify-gkyp-certificate/2"
+    # the exact route first: a certificate with no floating point in it
+    assert json.loads(path.read_text())["schema"] == "verify-band-fd-certificate/1"
     assert main(["certificates", "check", str(certs)]) == 0
     capsys.readouterr()
     assert main(["gate", KS25, "--band", "1:10", "--certificates", str(certs),
@@ -79,7 +80,7 @@ def test_narrow_bands_near_the_boundary(ks25):
 
 def test_certificate_does_not_transfer_to_another_band(ks25):
     """Soundness: the certificate for [0, 3/2] fails the exact check on [1, 10]."""
-    cert = decide_band(ks25, (F(0), F(3, 2))).certificate
+    cert = decide_band(ks25, (F(0), F(3, 2)), exact_first=False).certificate
     assert check_gkyp(cert.model, cert.P, cert.Q, cert.band).ok
     assert not check_gkyp(cert.model, cert.P, cert.Q, (F(1), F(10))).ok
 
@@ -88,12 +89,10 @@ def test_tampered_band_certificate_is_rejected(tmp_path, capsys):
     main(["gate", KS25, "--band", "0:1.5", "--certificates", str(tmp_path)])
     (path,) = tmp_path.glob("*.json")
     original = path.read_text()
-    for edit in ("band", "Q", "model"):
+    for edit in ("band", "model"):
         data = json.loads(original)
         if edit == "band":
             data["band"] = ["0", "5"]  # the model is not passive at 2 < w <= 5
-        elif edit == "Q":
-            data["Q"]["re"][0][0] = "-1"
         else:
             data["model"]["D"][0][1] = "1"  # fingerprint no longer matches
         path.write_text(json.dumps(data))
@@ -103,6 +102,15 @@ def test_tampered_band_certificate_is_rejected(tmp_path, capsys):
     assert main(["certificates", "check", str(path)]) == 1
     (line, _) = capsys.readouterr().out.strip().splitlines()
     assert line.startswith(f"INVALID {path}: malformed: missing field(s)")
+
+
+def test_tampered_gkyp_certificate_is_rejected(ks25, tmp_path):
+    """The generalized KYP route's certificate (second route) refuses edits of Q."""
+    cert = decide_band(ks25, (F(0), F(3, 2)), exact_first=False).certificate
+    assert cert is not None and check_gkyp(cert.model, cert.P, cert.Q, cert.band).ok
+    re, im = ([row[:] for row in part] for part in cert.Q)
+    re[0][0] = -1 - re[0][0]  # Q no longer PSD
+    assert not check_gkyp(cert.model, cert.P, (re, im), cert.band).ok
 
 
 def test_band_verdict_agrees_with_nu_on_random_bands(ks25):

@@ -155,7 +155,6 @@ NOT_YET_CANONICAL = pytest.mark.xfail(
     "the float path (reports, certificates/, identification/*/model.toml)")
 
 
-@NOT_YET_CANONICAL
 def test_another_blas_gives_the_same_bytes(tmp_path):
     """Fast claims that write certificates, figures, derivations and the appendix."""
     here = _verify_all_in_child(tmp_path / "here", threads=1, coretype=None,

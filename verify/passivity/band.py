@@ -7,17 +7,20 @@ in [w1, w2] where H(jw) is defined. Untrusted search, trusted check:
    (:mod:`verify.passivity.search.hamiltonian`); where it is negative, a rational w* inside the
    band and a rational vector v with v^H (H(jw*) + H(jw*)^H) v < 0 are checked exactly
    (:func:`verify.passivity.check.witness.frequency_witness_at`): not passive on the band.
-2. Small models (up to ``GKYP_STATES`` states): the generalized KYP LMI
-   (:mod:`verify.passivity.check.gkyp`) is solved with cvxpy + Clarabel for Hermitian P, Q
-   with a margin (:mod:`verify.passivity.search.gkyp_sdp`), rounded to Gaussian rationals
-   and checked exactly: passive on the band.
-3. Up to ``EXACT_BAND_LIMIT`` states, whatever is still open is decided completely and
+2. Up to ``EXACT_BAND_LIMIT`` states, whatever is still open is decided completely and
    exactly (:mod:`verify.passivity.check.band_fd`): the principal-minor sums of the
    Hermitian part, cleared of a positive denominator, are >= 0 on [w1, w2] by exact root
    counting on the interval (a ``verify-band-fd-certificate/1`` with Descartes
    breakpoints), or one is negative at a rational w* of the band (exact vector witness).
-   Tangencies inside or at the edges and poles anywhere on the band are decided too.
-4. Above that size a band the first two steps do not settle is inconclusive.
+   Tangencies inside or at the edges and poles anywhere on the band are decided too. No
+   floating point enters this certificate, so its bytes are the same on every machine.
+3. Small models (up to ``GKYP_STATES`` states) that step 2 leaves open, and models above
+   ``EXACT_BAND_LIMIT`` states: the generalized KYP LMI (:mod:`verify.passivity.check.gkyp`)
+   is solved with cvxpy + Clarabel for Hermitian P, Q with a margin
+   (:mod:`verify.passivity.search.gkyp_sdp`), rounded to Gaussian rationals and checked
+   exactly: passive on the band.
+4. Above ``EXACT_BAND_LIMIT`` states a band the first and third steps do not settle is
+   inconclusive.
 """
 
 from __future__ import annotations
@@ -126,7 +129,7 @@ def _poles_in_band(A: np.ndarray, band: tuple[Fraction, Fraction]) -> list[float
 
 
 def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
-                margin: Fraction = Fraction(0)) -> BandDecision:
+                margin: Fraction = Fraction(0), *, exact_first: bool = True) -> BandDecision:
     """Verdict for H(jw) + H(jw)^H >= 2 margin I on w1 <= w <= w2 (paper, Section 4).
 
     Parameters
@@ -137,6 +140,9 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
         ``(w1, w2)`` in rad/s with 0 <= w1 < w2 (as from :func:`parse_band`).
     margin : Fraction, default 0
         nu0 in nu(w) >= nu0 on the band.
+    exact_first : bool, default True
+        Decide by the exact route (step 2 of the module docstring) before the generalized
+        KYP SDP; False tries the SDP first (small models), as a second route to compare.
 
     Returns
     -------
@@ -175,6 +181,10 @@ def decide_band(model: LTIModel, band: tuple[Fraction, Fraction],
             if w is not None:
                 return done(NOT_PASSIVE, f"not passive on {where}: {w.summary}", witness=w,
                             nu_min=nu_min)
+    if exact_first and em.n <= EXACT_BAND_LIMIT:  # complete; its certificate is canonical
+        decided = _exact(model, em, band, margin, where, nu_min, done)
+        if decided.verdict != INCONCLUSIVE or em.n > GKYP_STATES:
+            return decided
     found = None
     if em.n <= GKYP_STATES or em.n > EXACT_BAND_LIMIT:
         found = propose(band_certificate, em, A, B, C, D, band)

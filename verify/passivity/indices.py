@@ -45,8 +45,9 @@ from scipy.optimize import minimize_scalar
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, kyp_matrix
 from verify.passivity.check.realization import minimal_part
-from verify.passivity.check.witness import hermitian_part_at, response_at
+from verify.passivity.check.witness import hermitian_part_at, response_at, simplest_certified
 from verify.passivity.decision import float_views, propose
+from verify.passivity.search.canonical import coarse_kyp
 from verify.passivity.search.hamiltonian import nu_minimum
 from verify.passivity.search.kyp import find_certificate
 
@@ -88,8 +89,8 @@ class IndexBounds:
     def to_json(self) -> dict:
         return {
             "kind": self.kind,
-            "estimate": self.estimate,
-            "estimate_at": self.estimate_at,
+            "estimate": _digits(self.estimate),
+            "estimate_at": _digits(self.estimate_at),
             "exact": self.exact,
             "lower": None if self.lower is None else str(self.lower),
             "upper": None if self.upper is None else str(self.upper),
@@ -101,6 +102,29 @@ class IndexBounds:
 
 
 # --------------------------------------------------------------------------- shared pieces
+
+
+#: Significant digits of the floating-point estimates written to artefacts: far above
+#: what a float search resolves reproducibly across BLAS builds, far below its noise.
+ESTIMATE_DIGITS = 6
+
+
+def _digits(x: float | None) -> float | None:
+    """A float estimate as written: ``ESTIMATE_DIGITS`` significant digits of max(1, |x|),
+    so an estimate of 0 that the search found as 3e-10 on one machine and -2e-10 on
+    another is written 0.0 on both."""
+    if x is None or not math.isfinite(x):
+        return x
+    if abs(x) < 1:
+        return float(f"{x:.{ESTIMATE_DIGITS}f}") + 0.0  # + 0.0: no negative zero
+    return float(f"{x:.{ESTIMATE_DIGITS}g}")
+
+
+def _coarse_ofp(em: ExactModel, loop: ExactModel, P: ex.RationalMatrix,
+                rho: Fraction) -> ex.RationalMatrix:
+    """The coarsest rounding of an OFP certificate that the OFP check still accepts."""
+    candidate = coarse_kyp(loop, P)
+    return candidate if check_ofp(em, candidate, rho) else P
 
 
 def _lower_candidates(estimate: float) -> list[Fraction]:
@@ -140,6 +164,25 @@ def _frequencies(omega: float) -> list[Fraction | None]:
     near = [omega, omega * (1 - 1e-6), omega * (1 + 1e-6)] if omega > 0 else [omega, 1e-6]
     return list(dict.fromkeys(Fraction(w).limit_denominator(k) for w in near
                               for k in (1000, 10**6)))
+
+
+def _canonical_point(model: LTIModel, em: ExactModel, best: Fraction | None,
+                     upper: Fraction | None, rayleigh) -> str | None:
+    """Where the upper bound is witnessed, canonical: the simplest rational on the
+    Stern-Brocot path to the best point found whose exact Rayleigh quotient is still at
+    most the (rounded-up) bound, so float noise in the search does not change the text."""
+    if upper is None:
+        return None
+    if best is None:
+        return "ω → ∞"
+
+    def certify(r: Fraction) -> Fraction | None:
+        bound = propose(rayleigh, model, em, r)
+        return r if bound is not None and bound <= upper else None
+
+    w = abs(best)
+    found = simplest_certified(w, certify, reach=w / 10) if w else None
+    return f"ω = {found if found is not None else best}"
 
 
 def _response(em: ExactModel, w: Fraction | None):
@@ -187,20 +230,21 @@ def ifp_index(model: LTIModel) -> IndexBounds:
             search = propose(find_certificate, _shift(em, nu), A, B, C,
                              D - float(nu) * np.eye(model.m))
             if search is not None and search.P is not None:
-                lower, P = nu, search.P
+                lower, P = nu, coarse_kyp(_shift(em, nu), search.P)
                 break
         else:
             notes.append("no KYP certificate for H - ν I below the estimate (unstable or "
                          "non-minimal realisation?)")
-    upper, upper_at = None, None
+    upper, best = None, None
     points = [math.inf] + ([found.omega] if estimate is not None and math.isfinite(
         found.omega) else [])
     for omega in points:
         for w in _frequencies(omega):
             bound = propose(_ifp_rayleigh, model, em, w)
             if bound is not None and (upper is None or bound < upper):
-                upper, upper_at = bound, "ω → ∞" if w is None else f"ω = {w}"
+                upper, best = bound, w
     upper = None if upper is None else round_up(upper)
+    upper_at = _canonical_point(model, em, best, upper, _ifp_rayleigh)
     return IndexBounds("IFP", estimate, found.omega if estimate is not None else None,
                        lower, upper, upper_at, P, tuple(notes))
 
@@ -369,7 +413,7 @@ def ofp_index(model: LTIModel) -> IndexBounds:
                 continue
             search = propose(find_certificate, loop, *float_views(loop))
             if search is not None and search.P is not None and check_ofp(em, search.P, rho):
-                lower, P = rho, search.P
+                lower, P = rho, _coarse_ofp(em, loop, search.P, rho)
                 break
         else:
             notes.append("no certificate for OFP(ρ) below the estimate")
@@ -377,12 +421,13 @@ def ofp_index(model: LTIModel) -> IndexBounds:
         notes.append("the SDP found no feasible ρ >= -1e6 (with a storage P > 0, OFP(ρ) "
                      "needs the loop u = ρ y to be stable)")
     omega = propose(_ofp_witness_frequency, model, default=math.inf)
-    upper, upper_at = None, None
+    upper, best = None, None
     for w in [None, *_frequencies(omega)]:
         bound = propose(_ofp_rayleigh, model, em, w)
         if bound is not None and (upper is None or bound < upper):
-            upper, upper_at = bound, "ω → ∞" if w is None else f"ω = {w}"
+            upper, best = bound, w
     upper = None if upper is None else round_up(upper)
+    upper_at = _canonical_point(model, em, best, upper, _ofp_rayleigh)
     if lower is None:
         unstable = propose(unstable_loop, em, upper)
         if unstable is not None:

@@ -27,8 +27,10 @@ x = (sI - A)^-1 B u.)
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
+from typing import TypeVar
 
 import flint
 import gmpy2
@@ -216,6 +218,8 @@ def vector_witness(w: object, approx: float, shown_value: str, v: list, value: o
     )
 
 
+T = TypeVar("T")
+
 #: The canonical witness looks at most this far (relative) from the float frequency.
 CANONICAL_REACH = Fraction(1, 10)
 #: and makes at most this many exact checks before the plain rounding of omega.
@@ -233,34 +237,26 @@ def _continued_fraction(x: Fraction) -> list[int]:
     return terms
 
 
-def canonical_frequency_witness(model: ExactModel, omega: float) -> Witness | None:
-    """The witness at the simplest rational on the way to ``omega`` that the exact check
-    certifies, so that float noise in ``omega`` does not change it (paper, Section 4: the
-    gate's *not passive* evidence is a rational frequency and vector).
+def simplest_certified(x: Fraction, certify: Callable[[Fraction], T | None], *,
+                       reach: Fraction, max_checks: int = CANONICAL_CHECKS) -> T | None:
+    """The first rational on the Stern-Brocot path to ``x >= 0`` (within ``reach`` of it)
+    that ``certify`` accepts, with what it returned; None after ``max_checks`` calls.
 
-    The rationals are visited in Stern-Brocot order along the path to omega's exact
-    binary value (one run of semiconvergents (p' + j p)/(q' + j q), j = 1..a, per
-    partial quotient a), keeping those within :data:`CANONICAL_REACH` of omega. Within
-    a run, the last node (a convergent) is checked first; when it is a witness, the
-    first certified node of the run is found by bisection over j. Let J be the interval
-    of frequencies around omega where nu < 0: the simplest rational in J is a Stern-Brocot
-    ancestor of every point of J, so the path to any omega' in J (omega plus noise) visits
-    the same nodes up to it, and the result is the same rational. The exact check of
-    :func:`frequency_witness_at` decides each node; nothing float is trusted. None after
-    :data:`CANONICAL_CHECKS` checks without a witness.
+    The path is walked one run of semiconvergents (p' + j p)/(q' + j q), j = 1..a, per
+    partial quotient a. Within a run the last node (a convergent) is tried first; when it
+    is accepted, the first accepted node of the run is found by bisection over j (the
+    accepted set is taken to be an interval around x). If J is an interval of accepted
+    points around x, the simplest rational of J is a Stern-Brocot ancestor of every point
+    of J, so the walk towards any x' in J (x plus float noise) stops at the same rational.
     """
-    x = abs(Fraction(omega))
-    if x == 0:
-        return frequency_witness_at(model, Fraction(0))
-    reach = CANONICAL_REACH * x
     checks = 0
 
-    def certified(r: Fraction) -> Witness | None:
+    def tried(r: Fraction) -> T | None:
         nonlocal checks
         if abs(r - x) > reach:
             return None
         checks += 1
-        return frequency_witness_at(model, r)
+        return certify(r)
 
     p2, q2, p1, q1 = 0, 1, 1, 0  # the two previous convergents
     for a in _continued_fraction(x):
@@ -268,21 +264,38 @@ def canonical_frequency_witness(model: ExactModel, omega: float) -> Witness | No
             return Fraction(p2 + j * p1, q2 + j * q1)
 
         if a > 0:
-            found = certified(node(a))
+            found = tried(node(a))
             if found is not None:
-                lo, hi = 1, a  # node(hi) is certified; find the first such j
-                while lo < hi and checks < CANONICAL_CHECKS:
+                lo, hi = 1, a  # node(hi) is accepted; find the first such j
+                while lo < hi and checks < max_checks:
                     mid = (lo + hi) // 2
-                    at_mid = certified(node(mid))
+                    at_mid = tried(node(mid))
                     if at_mid is not None:
                         hi, found = mid, at_mid
                     else:
                         lo = mid + 1
                 return found
-        if checks >= CANONICAL_CHECKS:
+        if checks >= max_checks:
             return None
         p2, q2, p1, q1 = p1, q1, p2 + a * p1, q2 + a * q1
     return None
+
+
+def canonical_frequency_witness(model: ExactModel, omega: float) -> Witness | None:
+    """The witness at the simplest rational on the way to ``omega`` that the exact check
+    certifies, so that float noise in ``omega`` does not change it (paper, Section 4: the
+    gate's *not passive* evidence is a rational frequency and vector).
+
+    :func:`simplest_certified` walks the Stern-Brocot path to omega's exact binary value,
+    keeping to :data:`CANONICAL_REACH` of omega; the exact check of
+    :func:`frequency_witness_at` decides each node, nothing float is trusted. None after
+    :data:`CANONICAL_CHECKS` checks without a witness.
+    """
+    x = abs(Fraction(omega))
+    if x == 0:
+        return frequency_witness_at(model, Fraction(0))
+    return simplest_certified(x, lambda r: frequency_witness_at(model, r),
+                              reach=CANONICAL_REACH * x)
 
 
 def frequency_witness(model: ExactModel, omega: float) -> Witness | None:
