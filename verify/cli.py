@@ -85,6 +85,11 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--certificates", type=Path, default=Path("certificates"),
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
                          "certificates (default certificates)")
+    p_check.add_argument("--budget-seconds", type=float, default=120.0, metavar="S",
+                         help="time for loading the file, and for each step, before it is "
+                         "inconclusive: budget exceeded (default 120)")
+    p_check.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
+                         help="memory for loading the file, and for each step (default 4)")
 
     p_gate = sub.add_parser(
         "gate",
@@ -245,20 +250,30 @@ def _cmd_all(args: argparse.Namespace) -> int:
 
 def _cmd_check(args: argparse.Namespace) -> int:
     import json
+    import math
 
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
-    from verify.proof import certificate_store, check
-    from verify.proof.user_file import contained, load_derivations
+    from verify.proof import ProofSyntaxError, certificate_store, check
+    from verify.proof.budget import Budget
+    from verify.proof.isolate import load_isolated
     from verify.report.atomic import write_atomic
 
-    derivations = load_derivations(args.file)
+    seconds, memory = args.budget_seconds, args.budget_memory
+    if not (math.isfinite(seconds) and 0 < seconds <= 86400 and math.isfinite(memory)
+            and 0 < memory <= 1024):
+        raise VerifyInputError("--budget-seconds is in (0, 86400] and --budget-memory in "
+                               "(0, 1024] GB")
+    budget = Budget(seconds, int(memory * 2**30))
+    derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
-        with contained(args.file, f"checking derivation {k + 1}"), \
-                certificate_store(args.certificates, source=f"file:{args.file.name}"):
-            r = check(d, search_settings(context, 101 * k))
+        with certificate_store(args.certificates, source=f"file:{args.file.name}"):
+            try:
+                r = check(d, search_settings(context, 101 * k), budget=budget)
+            except ProofSyntaxError as exc:
+                raise VerifyInputError(f"{args.file}: {exc}") from None
         results.append(r)
         print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.conclusion}")
         if r.vacuous:
