@@ -316,8 +316,9 @@ def charts_defined(problem: StepProblem, xp: ExactPoint, atoms: dict) -> bool:
 
 def declarations_hold(problem: StepProblem, xp: ExactPoint, atoms: dict) -> bool:
     """Every declaration holds exactly at the point, all at once: every chart is defined
-    there (:func:`charts_defined`), positive scalars are > 0, every side condition is 0, every assumption holds (pd by Sylvester's leading
-    minors, psd by all principal minors)."""
+    there (:func:`charts_defined`), positive scalars are > 0, every side condition is 0,
+    every assumption holds (pd by Sylvester's leading minors, psd by all principal
+    minors)."""
     from verify.proof.exact import KnownFraction
 
     alg_den = problem.exact_slack[0].den
