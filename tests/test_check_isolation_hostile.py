@@ -166,6 +166,13 @@ def test_no_exact_witness_at_the_zero_quaternion():
                                    seed=3)).verdict != "verified"
 
 
+# four dense conditions in four unknowns: their Groebner basis takes minutes
+DENSE = ("def dense(k):\n    e = k - 7\n    for i, a in enumerate(ys):\n"
+         "        for j, b in enumerate(ys):\n"
+         "            e = e + ((i * 7 + j * 3 + k) % 5 - 2) * a * a * b * (a + b + k)\n"
+         "    return e\n")
+
+
 # -- 5. bounded work -----------------------------------------------------------------------------
 def test_a_doubling_tree_prints_and_checks_quickly(tmp_path, capsys):
     body = ("y = x\nfor _ in range(64):\n    y = y + y\n"
@@ -197,10 +204,42 @@ def test_oversized_steps_are_inconclusive_before_the_work(tmp_path, capsys, body
 
 def test_dense_conditions_stop_at_the_step_budget(tmp_path, capsys):
     body = ("ys = [ctx.scalar(f'y{i}') for i in range(4)]\n"
-            "def dense(k):\n    e = k\n    for i, a in enumerate(ys):\n"
-            "        for b in ys[i:]:\n            e = e + (i + 3) * a * b * a * b * a\n"
-            "    return e\n"
+            + DENSE +
             "cs = [ctx.condition(f'c{k}', dense(k + 1), 0) for k in range(4)]\n"
             "d = Derivation('dense', ys[0], ctx, where=tuple(cs)).equals(0, by_algebra())\n")
-    assert run(tmp_path, body, "--budget-seconds", "8") == 1
-    assert "inconclusive" in capsys.readouterr().out
+    assert run(tmp_path, body, "--budget-seconds", "6") == 1
+    assert "budget exceeded" in capsys.readouterr().out
+
+
+def test_the_file_budget_covers_every_step(tmp_path, capsys):
+    """A file whose steps each take long: the later ones find no time left."""
+    body = ("ys = [ctx.scalar(f'y{i}') for i in range(4)]\n"
+            + DENSE +
+            "cs = [ctx.condition(f'c{k}', dense(k + 1), 0) for k in range(4)]\n"
+            "d = Derivation('dense', ys[0], ctx, where=tuple(cs))"
+            ".equals(0, by_algebra()).equals(0, by_algebra()).equals(0, by_algebra())\n")
+    assert run(tmp_path, body, "--budget-seconds", "6") == 1
+    out = capsys.readouterr().out
+    assert out.count("time budget is spent") == 2
+
+
+def test_check_budget_options_are_validated(tmp_path, capsys):
+    path = tmp_path / "ok.py"
+    path.write_text(HEADER + "d = Derivation('d', tr(R), ctx).equals(tr(R.T), by_algebra())\n")
+    assert main(["check", str(path), "--budget-seconds", "0"]) == 2
+    assert main(["check", str(path), "--budget-memory", "inf"]) == 2
+    assert len(capsys.readouterr().err.strip().splitlines()) == 2
+
+
+def test_a_unit_of_work_past_its_memory_or_killed_is_budget_exceeded():
+    import os
+
+    from verify.proof.budget import Budget, BudgetExceededError, run_bounded
+
+    assert run_bounded(lambda: 6 * 7, Budget(10, 2**28)) == 42
+    with pytest.raises(BudgetExceededError, match="memory"):
+        run_bounded(lambda: len(bytearray(2**31)), Budget(10, 2**28))
+    with pytest.raises(BudgetExceededError):
+        run_bounded(os.abort, Budget(10, 2**28))  # as FLINT does on a huge exponent
+    with pytest.raises(BudgetExceededError, match="time"):
+        run_bounded(lambda: [0 for _ in iter(int, 1)], Budget(1, 2**28))

@@ -92,3 +92,20 @@ def test_a_file_name_that_is_not_the_key_is_refused(tmp_path, honest, capsys):
     assert main(["certificates", "check",
                  str(_write(tmp_path, honest, "sos-00000000000000000000.json"))]) != 0
     assert "file name" in capsys.readouterr().out
+
+
+def test_a_factor_raised_to_the_power_64_is_refused_before_the_work(tmp_path, honest, capsys):
+    """The issue's 17 KB certificate: a many-term factor to the 64th power (2.7 GB)."""
+    data = json.loads(json.dumps(honest))
+    n = len(data["variables"])
+    square_terms = [[[2 if j == i else 0 for j in range(n)], "1"] for i in range(n)]
+    data["factors"] = [{"polynomial": [[[0] * n, "1"], *square_terms], "power": 64}]
+    assert main(["certificates", "check", str(_write(tmp_path, data))]) != 0
+    assert "too large" in capsys.readouterr().out
+
+
+def test_certificates_check_budget_options_are_validated(tmp_path, honest, capsys):
+    path = _write(tmp_path, honest)
+    assert main(["certificates", "check", str(path), "--budget-seconds", "-1"]) == 2
+    assert main(["certificates", "check", str(path), "--budget-seconds", "nan"]) == 2
+    assert main(["certificates", "check", str(path), "--budget-memory", "0.5"]) == 0

@@ -86,8 +86,9 @@ def _build_parser() -> argparse.ArgumentParser:
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
                          "certificates (default certificates)")
     p_check.add_argument("--budget-seconds", type=float, default=120.0, metavar="S",
-                         help="time for loading the file, and for each step, before it is "
-                         "inconclusive: budget exceeded (default 120)")
+                         help="time for the whole file (loading it and checking every "
+                         "step); a step past it is inconclusive: budget exceeded "
+                         "(default 120)")
     p_check.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
                          help="memory for loading the file, and for each step (default 4)")
 
@@ -151,6 +152,11 @@ def _build_parser() -> argparse.ArgumentParser:
         "a path does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
                       default=[Path("certificates")])
+    p_cc.add_argument("--budget-seconds", type=float, default=120.0, metavar="S",
+                      help="time for checking each file; past it the file is refused "
+                      "(default 120)")
+    p_cc.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
+                      help="memory for checking each file (default 4)")
 
     p_sim = sub.add_parser(
         "simulate",
@@ -248,30 +254,40 @@ def _cmd_all(args: argparse.Namespace) -> int:
     return 0
 
 
-def _cmd_check(args: argparse.Namespace) -> int:
-    import json
+def _budget(args: argparse.Namespace):
+    """The --budget-seconds / --budget-memory options as a Budget (bad values: exit 2)."""
     import math
 
-    from verify.claims.model import CheckContext, to_jsonable
-    from verify.claims.proofs import search_settings
-    from verify.proof import ProofSyntaxError, certificate_store, check
     from verify.proof.budget import Budget
-    from verify.proof.isolate import load_isolated
-    from verify.report.atomic import write_atomic
 
     seconds, memory = args.budget_seconds, args.budget_memory
     if not (math.isfinite(seconds) and 0 < seconds <= 86400 and math.isfinite(memory)
             and 0 < memory <= 1024):
         raise VerifyInputError("--budget-seconds is in (0, 86400] and --budget-memory in "
                                "(0, 1024] GB")
-    budget = Budget(seconds, int(memory * 2**30))
+    return Budget(seconds, int(memory * 2**30))
+
+
+def _cmd_check(args: argparse.Namespace) -> int:
+    import json
+    import time
+
+    from verify.claims.model import CheckContext, to_jsonable
+    from verify.claims.proofs import search_settings
+    from verify.proof import ProofSyntaxError, certificate_store, check
+    from verify.proof.isolate import load_isolated
+    from verify.report.atomic import write_atomic
+
+    budget = _budget(args)
+    deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
     derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
         with certificate_store(args.certificates, source=f"file:{args.file.name}"):
             try:
-                r = check(d, search_settings(context, 101 * k), budget=budget)
+                r = check(d, search_settings(context, 101 * k), budget=budget,
+                          deadline=deadline)
             except ProofSyntaxError as exc:
                 raise VerifyInputError(f"{args.file}: {exc}") from None
         results.append(r)
@@ -336,8 +352,11 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
+    from verify.passivity.check.certificate import KypCheck
     from verify.passivity.io.stored import certificate_files, check_stored_certificate
+    from verify.proof.budget import BudgetExceededError, run_bounded
 
+    budget = _budget(args)
     files = certificate_files(args.paths)
     if not files:
         where = ", ".join(str(p) for p in args.paths)
@@ -345,7 +364,12 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
         return 1
     bad = 0
     for f in files:
-        c = check_stored_certificate(f)
+        try:  # each file in a forked process within the budget (a crash refuses it)
+            c = run_bounded(lambda f=f: check_stored_certificate(f), budget)
+        except BudgetExceededError as exc:
+            c = KypCheck(False, f"not checked: budget exceeded ({exc})")
+        except RuntimeError as exc:
+            c = KypCheck(False, f"not checked: {exc}")
         bad += not c.ok
         print(f"{'ok     ' if c.ok else 'INVALID'} {f}: {c.reason}", flush=True)
     print(f"{len(files) - bad} of {len(files)} certificate(s) valid (bound to their claims, "

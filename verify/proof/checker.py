@@ -310,9 +310,20 @@ class _TooLargeError(Exception):
     """A step over the size limits of :mod:`verify.proof.size`."""
 
 
+def _within(budget: Budget, deadline: float | None) -> Budget:
+    """The budget, its time cut to what is left before ``deadline`` (time.monotonic)."""
+    if deadline is None:
+        return budget
+    left = deadline - time.monotonic()
+    if left <= 0:
+        raise BudgetExceededError("the file's time budget is spent")
+    return Budget(min(budget.seconds, left), budget.memory)
+
+
 def bounded_step(d: Derivation, index: int, cfg: SearchSettings,
-                 budget: Budget | None) -> StepResult:
-    """:func:`check_step` within ``budget`` (in a forked process; None: in this one).
+                 budget: Budget | None, deadline: float | None = None) -> StepResult:
+    """:func:`check_step` within ``budget`` (in a forked process; None: in this one) and
+    before ``deadline`` (time.monotonic; a file's whole budget).
 
     A step that runs out of time or memory is *inconclusive: budget exceeded*.
     """
@@ -320,7 +331,7 @@ def bounded_step(d: Derivation, index: int, cfg: SearchSettings,
         return check_step(d, index, cfg)
     start = time.perf_counter()
     try:
-        return run_bounded(lambda: check_step(d, index, cfg), budget)
+        return run_bounded(lambda: check_step(d, index, cfg), _within(budget, deadline))
     except (BudgetExceededError, RuntimeError) as exc:
         step = d.steps[index]
         exceeded = isinstance(exc, BudgetExceededError)
@@ -493,7 +504,7 @@ def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
 
 
 def check(d: Derivation, cfg: SearchSettings | None = None, *,
-          budget: Budget | None = None) -> DerivationResult:
+          budget: Budget | None = None, deadline: float | None = None) -> DerivationResult:
     """Check every step of ``d``, then that its conditions and assumptions can hold together.
 
     Parameters
@@ -509,6 +520,9 @@ def check(d: Derivation, cfg: SearchSettings | None = None, *,
         Time and memory of each step and of the joint check, each run in a forked process
         (:mod:`verify.proof.budget`); past it the step is inconclusive: budget exceeded.
         None (the default, used for the paper's own derivations) runs in this process.
+    deadline : float, optional
+        With a budget: no step runs past this ``time.monotonic()`` value (a file's whole
+        time budget); a step with no time left is inconclusive: budget exceeded.
 
     Returns
     -------
@@ -533,25 +547,26 @@ def check(d: Derivation, cfg: SearchSettings | None = None, *,
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, 10 * MAX_DEPTH))  # trees are walked recursively
     try:
-        return _check(d, cfg, budget)
+        return _check(d, cfg, budget, deadline)
     finally:
         sys.setrecursionlimit(limit)
 
 
-def _check(d: Derivation, cfg: SearchSettings | None, budget: Budget | None
-           ) -> DerivationResult:
+def _check(d: Derivation, cfg: SearchSettings | None, budget: Budget | None,
+           deadline: float | None = None) -> DerivationResult:
     cfg = cfg or SearchSettings()
     start = time.perf_counter()
     d = _snapshot(d)
     _validate(d)
-    steps = [bounded_step(d, i, cfg, budget) for i in range(len(d.steps))]
+    steps = [bounded_step(d, i, cfg, budget, deadline) for i in range(len(d.steps))]
     problems = [_problem(d, step) for step in d.steps]
     conditions, _ = _union(problems)
     joint = ""
     if steps and all(s.verdict == VERIFIED for s in steps):
         try:
             joint = (_joint(d, problems, cfg) if budget is None
-                     else run_bounded(lambda: _joint(d, problems, cfg), budget))
+                     else run_bounded(lambda: _joint(d, problems, cfg),
+                                      _within(budget, deadline)))
         except ProofSyntaxError:
             raise
         except BudgetExceededError as exc:

@@ -192,7 +192,38 @@ class Parsed:
             self.grams.append([[pl.rational(x, what) for x in row] for row in gram])
 
 
+MAX_DEGREE = 64  # of the numerator a certificate may state
+MAX_TERMS = 2_000_000  # bound on the terms the expansions may produce
+
+
+def _too_large(c: Parsed) -> str:
+    """Why expanding the certificate's identities would be too much work, or "" (decided
+    from degrees and term counts alone, before any multiplication)."""
+    from math import comb
+
+    top = pl.degree(c.numerator) if c.numerator else 0
+    if top > MAX_DEGREE:
+        return f"the numerator's degree {top} exceeds {MAX_DEGREE}"
+    stated = (pl.degree(c.target) if c.target else 0) + sum(
+        k * pl.degree(f) for f, k in c.factors)
+    if c.numerator and c.target and stated != top:
+        return "numerator is not prod(factor^power) * target (degrees differ)"
+    terms = max(len(c.target), 1)
+    for f, k in c.factors:
+        terms *= comb(len(f) + k - 1, k)
+        if terms > MAX_TERMS:
+            return f"prod(factor^power) * target would expand to more than {MAX_TERMS} terms"
+    work = sum(b.gram_size ** 2 * max((len(e) for row in b.multiplier.matrix for e in row),
+                                      default=1) for b in c.blocks)
+    if work > 25 * MAX_TERMS:
+        return "the Gram expansion would take more than the certificate check's budget"
+    return ""
+
+
 def _identity(c: Parsed) -> SosCheck:
+    too_large = _too_large(c)
+    if too_large:
+        raise ValueError(f"too large to check: {too_large}")
     rebuilt = c.target
     for f, k in c.factors:
         rebuilt = pl.mul(rebuilt, pl.power(f, k, c.n))
@@ -205,8 +236,11 @@ def check_bound(data: dict, sp) -> SosCheck:
     """Exact check of a certificate against the step it claims (re-derived as ``sp``)."""
     try:
         c = Parsed(data)
+        too_large = _too_large(c)
     except ValueError as exc:
         return SosCheck(False, f"malformed SOS certificate: {exc}")
+    if too_large:
+        return SosCheck(False, f"SOS certificate too large to check: {too_large}")
     if c.variables != sp.program.variables or c.numerator != sp.numerator:
         return SosCheck(False, "the certificate is about another polynomial than this step's")
     if c.target != sp.program.target or c.factors != sp.factors:
@@ -247,8 +281,11 @@ def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
     """
     try:
         c = Parsed(data)
+        too_large = _too_large(c)
     except ValueError as exc:
         raise ValueError(f"{path}: malformed SOS certificate: {exc}") from None
+    if too_large:
+        raise ValueError(f"{path}: SOS certificate too large to check: {too_large}")
     if not all(_nonneg_factor(f) for f, _k in c.factors):
         return SosCheck(False, "a factor is not visibly non-negative")
     plain = _plain_sos_multipliers(c)
