@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from verify.cli import main
-from verify.proof import Context, Derivation, by_sos, check, certificate_store, tr
+from verify.proof import Context, Derivation, by_sos, certificate_store, check, tr
 from verify.proof.falsify import SearchSettings
 from verify.sos.certificate import file_name
 

@@ -12,6 +12,7 @@ step *inconclusive: budget exceeded*. The defaults (120 s, 4 GB) are those of
 
 from __future__ import annotations
 
+import faulthandler
 import os
 import pickle
 import select
@@ -65,6 +66,10 @@ def run_bounded(work: Callable[[], Any], budget: Budget) -> Any:
         status = 0
         try:
             os.close(r)
+            faulthandler.disable()  # a crash here is reported by the parent, in one line
+            null = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(null, 1)
+            os.dup2(null, 2)  # e.g. FLINT's message before it aborts
             resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
             cpu = max(1, int(budget.seconds + 0.999))
             resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
