@@ -243,3 +243,8 @@ def test_a_unit_of_work_past_its_memory_or_killed_is_budget_exceeded():
         run_bounded(os.abort, Budget(10, 2**28))  # as FLINT does on a huge exponent
     with pytest.raises(BudgetExceededError, match="time"):
         run_bounded(lambda: [0 for _ in iter(int, 1)], Budget(1, 2**28))
+
+
+def test_a_huge_power_is_refused_where_it_is_written(tmp_path, capsys):
+    assert run(tmp_path, "d = Derivation('p', x ** (10**9), ctx).equals(x, by_algebra())\n") == 2
+    assert "powers are at most" in capsys.readouterr().err

@@ -180,8 +180,11 @@ class Expr:
         return _product(as_expr(Fraction(1) / _exact(other)), self)
 
     def __pow__(self, power: int) -> Expr:
-        if not isinstance(power, int) or power < 1:
+        if not isinstance(power, int) or isinstance(power, bool) or power < 1:
             raise ProofSyntaxError("only positive integer powers are supported")
+        if power > MAX_POWER:
+            raise ProofSyntaxError(f"powers are at most {MAX_POWER} (the checker's degree "
+                                   "limit is 48)")
         if self.shape not in (SCALAR, MATRIX):
             raise ProofSyntaxError(f"cannot raise a {_shape_name(self.shape)} to a power")
         result = self
@@ -515,6 +518,7 @@ def validate_tree(*exprs: Any) -> None:
 
 
 MAX_DEPTH = 1000
+MAX_POWER = 64  # e ** k: a larger power would exceed every step's degree limit
 
 
 def _well_formed(e: Expr) -> bool:
