@@ -156,13 +156,21 @@ class Nonneg:
         _require_issued(self)
         return _made(_issue(
             as_expr(c) * self.value,
-            f"{c} * ({self.reason})",
+            f"{_number(c)} * ({self.reason})",
             self.premises,
             self.assumptions,
             self.kernel | {"products"},
         ), "scale", c, self)
 
     __rmul__ = __mul__
+
+
+def _number(c: Fraction) -> str:
+    from verify.proof.printing import integer_text
+
+    if c.denominator == 1:
+        return integer_text(c.numerator)
+    return f"{integer_text(c.numerator)}/{integer_text(c.denominator)}"
 
 
 def square(g: Expr) -> Nonneg:
@@ -220,7 +228,8 @@ def _psd_by_gram(label: str, b: Expr, gram: Expr, scale: Nonneg | int | Fraction
         _require_issued(scale)
         c_term = scale
     else:
-        c_term = _issue(as_expr(Fraction(scale)), f"{scale} >= 0", kernel=frozenset({"positive"}))
+        c_term = _issue(as_expr(Fraction(scale)), f"{_number(Fraction(scale))} >= 0",
+                        kernel=frozenset({"positive"}))
         if Fraction(scale) < 0:
             raise ProofSyntaxError("a Gram scale must be >= 0")
     premise = ExactPremise(f"{label}: sym({b}) = c G^T G", sym(b) - c_term.value * (gram.T * gram))

@@ -592,7 +592,14 @@ def decode(data: Any) -> list[Derivation]:
     Raises ProofSyntaxError (with a one-line reason) for anything malformed, over a
     limit, or refused by the constructors (shapes, floats, kernel terms, dynamics).
     """
-    out = _Decoder(data).objects()
+    try:
+        out = _Decoder(data).objects()
+    except ProofSyntaxError:
+        raise
+    except (ValueError, TypeError, KeyError, ArithmeticError, RecursionError,
+            AttributeError, IndexError) as exc:  # anything the data can provoke
+        raise WireError(f"malformed derivations data ({type(exc).__name__}: "
+                        f"{str(exc)[:200]})") from None
     if not out:
         raise WireError("no derivation")
     return out
