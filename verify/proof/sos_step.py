@@ -267,6 +267,13 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
         if stored is not None:
             result = cert.check_bound(stored, sp)
             if result.ok:
+                if "step" not in stored and source != cert.PAPER:
+                    # written before certificates carried their step: renew it, so that
+                    # `verify certificates check` can bind it again
+                    step_data = _step_data(step, problem)
+                    if step_data is not None:
+                        with contextlib.suppress(OSError):
+                            cert.write(store, {**stored, "step": step_data})
                 return True, f"{result.reason}; certificate {cert.file_name(key)}"
     found = find_certificate(sp.program, sp.groups, max_degree=step.because.degree)
     if not found.check.ok:
