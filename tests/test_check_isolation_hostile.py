@@ -248,3 +248,10 @@ def test_a_unit_of_work_past_its_memory_or_killed_is_budget_exceeded():
 def test_a_huge_power_is_refused_where_it_is_written(tmp_path, capsys):
     assert run(tmp_path, "d = Derivation('p', x ** (10**9), ctx).equals(x, by_algebra())\n") == 2
     assert "powers are at most" in capsys.readouterr().err
+
+
+def test_a_scale_of_an_expression_is_no_term():
+    data = _data()
+    data["terms"].append({"make": "scale", "args": [{"const": ["2", "1"]}, {"node": 0}]})
+    with pytest.raises(ProofSyntaxError, match="non-negative term"):
+        decode(data)

@@ -477,7 +477,10 @@ class _Decoder:
                 raise WireError(f"{what}: unknown constructor or wrong number of arguments")
             if make in ("add", "mul") and not all(type(a) is Nonneg for a in args):
                 raise WireError(f"{what}: {make} combines two non-negative terms")
-            out.append(_MAKERS[make][1](args))  # the kernel's own checks apply
+            term = _MAKERS[make][1](args)  # the kernel's own checks apply
+            if type(term) is not Nonneg:
+                raise WireError(f"{what}: {make} did not make a non-negative term")
+            out.append(term)
         return out
 
     def _argument(self, a: Any, made: list[Nonneg], what: str) -> Any:
