@@ -109,3 +109,39 @@ def test_certificates_check_budget_options_are_validated(tmp_path, honest, capsy
     assert main(["certificates", "check", str(path), "--budget-seconds", "-1"]) == 2
     assert main(["certificates", "check", str(path), "--budget-seconds", "nan"]) == 2
     assert main(["certificates", "check", str(path), "--budget-memory", "0.5"]) == 0
+
+
+def _negate(poly: list) -> list:
+    return [[m, c[1:] if c.startswith("-") else "-" + c] for m, c in poly]
+
+
+def _false_claim(honest: dict, grounds: str, keep_step: bool) -> dict:
+    """tr(R) >= 3 (false): a consistent identity numerator = (-1) * SOS, the block's
+    multiplier -1 labelled ``grounds``; optionally with the step changed to match."""
+    data = json.loads(json.dumps(honest))
+    n = len(data["variables"])
+    data["claim"]["statement"] = "tr(R) >= 3"
+    data["numerator"] = _negate(data["numerator"])
+    data["target"] = _negate(data["target"])
+    data["blocks"][0]["grounds"] = grounds
+    data["blocks"][0]["multiplier"] = [[[[[0] * n, "-1"]]]]
+    if keep_step:
+        data["step"]["derivations"][0]["steps"][0]["relation"] = ">="
+    else:
+        data.pop("step")
+    return data
+
+
+@pytest.mark.parametrize("grounds", ["1 (plain SOS)", "k > 0 (declared)"])
+@pytest.mark.parametrize("keep_step", [True, False])
+def test_a_consistent_certificate_of_a_false_claim_is_refused(tmp_path, honest, grounds,
+                                                             keep_step, capsys):
+    """The identity holds exactly and the Gram matrix is PSD: only the multiplier -1,
+    not what its label says and not one the step allows, makes it false."""
+    from verify.sos.certificate import Parsed, _identity
+
+    data = _false_claim(honest, grounds, keep_step)
+    assert _identity(Parsed(data)).ok  # the forgery is internally consistent
+    assert main(["certificates", "check", str(_write(tmp_path, data))]) == 1
+    out = capsys.readouterr().out
+    assert "INVALID" in out and ("multiplier" in out or "step" in out or "key" in out)
