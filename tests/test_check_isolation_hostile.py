@@ -22,7 +22,8 @@ from verify.proof.confirm import exact_witness
 from verify.proof.expr import ProofSyntaxError
 from verify.proof.falsify import SearchSettings
 from verify.proof.printing import to_text
-from verify.proof.wire import decode, encode
+from verify.proof.rebuild import decode
+from verify.proof.wire import encode
 
 HEADER = """
 from fractions import Fraction

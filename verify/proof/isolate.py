@@ -24,7 +24,8 @@ from verify.errors import VerifyInputError
 from verify.proof.budget import DEFAULT_BUDGET, Budget
 from verify.proof.derivation import Derivation
 from verify.proof.expr import ProofSyntaxError
-from verify.proof.wire import LIMITS, loads
+from verify.proof.rebuild import loads
+from verify.proof.wire import LIMITS
 
 
 def _limits(budget: Budget):

@@ -315,7 +315,7 @@ def program_of_step(data: object) -> StepProgram | str:
     """The SOS program of the one-step derivation in ``data`` (rebuilt with our own
     classes, :func:`verify.proof.wire.decode`), or why there is none."""
     from verify.proof.checker import _problem, _validate
-    from verify.proof.wire import decode
+    from verify.proof.rebuild import decode
 
     try:
         (d,) = decode(data)

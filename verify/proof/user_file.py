@@ -2,9 +2,10 @@
 
 The file is Python the user wrote (it is run as a module, like a test file; no text is
 evaluated from anywhere else). ``verify check`` calls this only in a child process
-(:mod:`verify.proof.child`), never in the checker's (see :mod:`verify.proof.isolate`). It lists its derivations in ``DERIVATIONS``; without
-that name, every :class:`~verify.proof.Derivation` bound at module level (alone, or in
-a list or tuple) is checked, in order of appearance.
+(:mod:`verify.proof.child`), never in the checker's (see :mod:`verify.proof.isolate`).
+It lists its derivations in ``DERIVATIONS``; without that name, every
+:class:`~verify.proof.Derivation` bound at module level (alone, or in a list or tuple)
+is checked, in order of appearance.
 """
 
 from __future__ import annotations
