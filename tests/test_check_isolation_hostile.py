@@ -256,3 +256,14 @@ def test_a_scale_of_an_expression_is_no_term():
     data["terms"].append({"make": "scale", "args": [{"const": ["2", "1"]}, {"node": 0}]})
     with pytest.raises(ProofSyntaxError, match="non-negative term"):
         decode(data)
+
+
+def test_a_file_that_forges_a_huge_handover_is_refused(tmp_path, capsys):
+    """The file writes the output file itself (it can: it runs in the child) and exits."""
+    body = ("import sys, ctypes\nout = sys.argv[-1]\n"
+            "with open(out, 'w') as f:\n"
+            "    f.write('{\"derivations\":' + ' ' * (70 * 2**20) + '}')\n"
+            "ctypes.CDLL(None).exit(0)\n")
+    assert run(tmp_path, body) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "bytes of data" in err

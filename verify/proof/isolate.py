@@ -2,8 +2,8 @@
 
 ``verify check FILE`` never runs FILE's code in the checker process: a child process
 (:mod:`verify.proof.child`, a fresh interpreter) loads the file under resource limits
-(CPU time and address space by ``resource.setrlimit``, a wall-clock timeout, its own
-process group killed at the end) and writes the derivations in the schema of
+(CPU time, address space and file size by ``resource.setrlimit``, a wall-clock timeout,
+its own process group killed at the end) and writes the derivations in the schema of
 :mod:`verify.proof.wire`. The checker rebuilds them with its own classes. The child's
 output and exit code are discarded; an early exit, a crash, a timeout or missing data is
 a malformed file (one line, exit 2). See ``verify/proof/TRUSTED.md``.
@@ -36,6 +36,8 @@ def _limits(budget: Budget):
         resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
         resource.setrlimit(resource.RLIMIT_AS, (budget.memory, budget.memory))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+        written = 2 * LIMITS["bytes"]  # no file the child writes grows past this
+        resource.setrlimit(resource.RLIMIT_FSIZE, (written, written))
 
     return apply
 
@@ -71,9 +73,13 @@ def load_isolated(path: Path, *, budget: Budget = DEFAULT_BUDGET) -> list[Deriva
             raise VerifyInputError(f"{path}: loading the file exceeded its budget of "
                                    f"{budget.seconds:g} s (raise it with --budget-seconds)")
         try:
-            if out.stat().st_size > LIMITS["bytes"]:
-                raise VerifyInputError(f"{path}: the file's derivations exceed "
-                                       f"{LIMITS['bytes']} bytes of data")
+            size = out.stat().st_size
+        except OSError:
+            size = 0
+        if size > LIMITS["bytes"]:
+            raise VerifyInputError(f"{path}: the file's derivations exceed "
+                                   f"{LIMITS['bytes']} bytes of data")
+        try:
             text = out.read_text(encoding="ascii")
             payload = json.loads(text) if text.startswith('{"error"') else None
         except (OSError, UnicodeDecodeError, ValueError):
