@@ -61,7 +61,12 @@ def run_bounded(work: Callable[[], Any], budget: Budget) -> Any:
 
     limit = _mapped_bytes() + budget.memory
     r, w = os.pipe()
-    pid = os.fork()
+    try:
+        pid = os.fork()
+    except OSError as exc:
+        os.close(r)
+        os.close(w)
+        raise BudgetExceededError(f"no process for the work ({exc.strerror or exc})") from None
     if pid == 0:  # the child: compute, hand the result over, exit without cleanup
         status = 0
         try:
@@ -113,10 +118,14 @@ def run_bounded(work: Callable[[], Any], budget: Budget) -> Any:
         _, status = os.waitpid(pid, 0)
     if timed_out:
         raise BudgetExceededError(f"time budget of {budget.seconds:g} s exceeded")
-    if os.WIFSIGNALED(status) or not chunks:
-        raise BudgetExceededError(f"memory or time budget ({budget.describe()}) exceeded, or the "
-                             "work's process died")
-    kind, value = pickle.loads(b"".join(chunks))
+    died = BudgetExceededError(f"memory or time budget ({budget.describe()}) exceeded, or "
+                               "the work's process died")
+    if os.WIFSIGNALED(status) or os.waitstatus_to_exitcode(status) != 0 or not chunks:
+        raise died
+    try:
+        kind, value = pickle.loads(b"".join(chunks))
+    except Exception:
+        raise died from None
     if kind == "memory":
         raise BudgetExceededError(f"memory budget of {budget.memory / 2**30:g} GB exceeded")
     if kind == "error":

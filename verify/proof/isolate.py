@@ -55,10 +55,14 @@ def load_isolated(path: Path, *, budget: Budget = DEFAULT_BUDGET) -> list[Deriva
         env.setdefault(name, "1")
     with tempfile.TemporaryDirectory(prefix="verify-check-") as tmp:
         out = Path(tmp) / "derivations.json"
-        proc = subprocess.Popen(
-            [sys.executable, "-m", "verify.proof.child", str(path), str(out)],
-            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-            env=env, preexec_fn=_limits(budget), start_new_session=True)
+        try:
+            proc = subprocess.Popen(
+                [sys.executable, "-m", "verify.proof.child", str(path), str(out)],
+                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                stderr=subprocess.DEVNULL, env=env, preexec_fn=_limits(budget),
+                start_new_session=True)
+        except (OSError, subprocess.SubprocessError) as exc:
+            raise VerifyInputError(f"{path}: no process to load the file in ({exc})") from None
         try:
             code = proc.wait(timeout=budget.seconds)
         except subprocess.TimeoutExpired:
