@@ -267,3 +267,18 @@ def test_a_file_that_forges_a_huge_handover_is_refused(tmp_path, capsys):
     assert run(tmp_path, body) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and "bytes of data" in err
+
+
+def test_no_counterexample_at_the_zero_quaternion():
+    """tr R = 4 ⇒ tr R = 5 is vacuously true; q = 0 meets the condition's numerator
+    (0 = 0) and breaks the step, but q = 0 is no rotation: no counterexample there."""
+    from verify.proof.confirm import confirm
+
+    ctx = Context("q0")
+    R = ctx.rotation("R")
+    c = ctx.condition("tr R = 4", tr(R), 4)
+    d = Derivation("vacuous", tr(R), ctx, where=(c,)).equals(5, by_algebra())
+    problem = _problem(d, d.steps[0])
+    assert confirm(problem, {R.data.uid: np.zeros(4)}) is None  # not a point at all
+    assert check(d, SearchSettings(samples=64, hypothesis_examples=10, ipopt_starts=1,
+                                   seed=3)).verdict != "refuted"
