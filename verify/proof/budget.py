@@ -8,6 +8,11 @@ limit (``resource.setrlimit``) and a wall-clock and CPU deadline; when the child
 of either, dies, or is killed, the caller gets :class:`BudgetExceededError` and reports the
 step *inconclusive: budget exceeded*. The defaults (120 s, 4 GB) are those of
 ``verify check``; see ``verify/proof/TRUSTED.md``.
+
+A fork copies one thread: a solver whose thread pool was started in the parent (Clarabel's
+rayon pool, after an SOS search ran there) waits forever in the child, until the budget
+ends it. ``verify check`` and ``verify certificates check`` never run a solver in the
+parent; a library caller of ``check(..., budget=...)`` should not either.
 """
 
 from __future__ import annotations
