@@ -530,7 +530,7 @@ d = Derivation("cyclic", tr(R), ctx).equals(tr(R.T), by_algebra())
             "    def __format__(self, spec):\n"
             "        raise SystemExit(0)\n"
             "d = Derivation('evil', tr(R), ctx).equals(tr(R.T), by_algebra(Note()))\n",
-            "exited while checking",
+            "expected a string",
         ),
     ],
 )

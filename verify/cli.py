@@ -95,6 +95,12 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--certificates", type=Path, default=Path("certificates"),
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
                          "certificates (default certificates)")
+    p_check.add_argument("--budget-seconds", type=float, default=120.0, metavar="S",
+                         help="time for the whole file (loading it and checking every "
+                         "step); a step past it is inconclusive: budget exceeded "
+                         "(default 120)")
+    p_check.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
+                         help="memory for loading the file, and for each step (default 4)")
 
     p_gate = sub.add_parser(
         "gate",
@@ -169,6 +175,11 @@ def _build_parser() -> argparse.ArgumentParser:
     p_cc.add_argument("--allow-unbound", action="store_true",
                       help="accept certificates whose source file is not found (their proof "
                       "is re-checked; the summary lists the labels left unchecked)")
+    p_cc.add_argument("--budget-seconds", type=float, default=120.0, metavar="S",
+                      help="time for checking each file; past it the file is refused "
+                      "(default 120)")
+    p_cc.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
+                      help="memory for checking each file (default 4)")
 
     p_sim = sub.add_parser(
         "simulate",
@@ -276,22 +287,42 @@ def _cmd_all(args: argparse.Namespace) -> int:
     return 0
 
 
+def _budget(args: argparse.Namespace):
+    """The --budget-seconds / --budget-memory options as a Budget (bad values: exit 2)."""
+    import math
+
+    from verify.proof.budget import Budget
+
+    seconds, memory = args.budget_seconds, args.budget_memory
+    if not (math.isfinite(seconds) and 0 < seconds <= 86400 and math.isfinite(memory)
+            and 0 < memory <= 1024):
+        raise VerifyInputError("--budget-seconds is in (0, 86400] and --budget-memory in "
+                               "(0, 1024] GB")
+    return Budget(seconds, int(memory * 2**30))
+
+
 def _cmd_check(args: argparse.Namespace) -> int:
     import json
+    import time
 
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
-    from verify.proof import certificate_store, check
-    from verify.proof.user_file import contained, load_derivations
+    from verify.proof import ProofSyntaxError, certificate_store, check
+    from verify.proof.isolate import load_isolated
     from verify.report.atomic import write_atomic
 
-    derivations = load_derivations(args.file)
+    budget = _budget(args)
+    deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
+    derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
-        with contained(args.file, f"checking derivation {k + 1}"), \
-                certificate_store(args.certificates, source=f"file:{args.file.name}"):
-            r = check(d, search_settings(context, 101 * k))
+        with certificate_store(args.certificates, source=f"file:{args.file.name}"):
+            try:
+                r = check(d, search_settings(context, 101 * k), budget=budget,
+                          deadline=deadline)
+            except ProofSyntaxError as exc:
+                raise VerifyInputError(f"{args.file}: {exc}") from None
         results.append(r)
         print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.conclusion}")
         if r.vacuous:
@@ -362,11 +393,14 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
     from verify.passivity.io.stored import (
+        CertificateCheck,
         CertificateStatus,
         certificate_files,
         check_stored_certificate,
     )
+    from verify.proof.budget import BudgetExceededError, run_bounded
 
+    budget = _budget(args)
     paths = args.paths or [p for p in (Path("certificates"), GATE_CERTIFICATES)
                            if p.is_dir()] or [Path("certificates")]
     files = certificate_files(paths)
@@ -378,7 +412,14 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
              CertificateStatus.INVALID: "INVALID"}
     checks = []
     for f in files:
-        c = check_stored_certificate(f, allow_unbound=args.allow_unbound)
+        try:  # each file in a forked process within the budget (a crash refuses it)
+            c = run_bounded(lambda f=f: check_stored_certificate(
+                f, allow_unbound=args.allow_unbound), budget)
+        except BudgetExceededError as exc:
+            c = CertificateCheck(CertificateStatus.INVALID,
+                                 f"not checked: budget exceeded ({exc})")
+        except RuntimeError as exc:
+            c = CertificateCheck(CertificateStatus.INVALID, f"not checked: {exc}")
         checks.append((f, c))
         print(f"{marks[c.status]} {f}: {c.reason}", flush=True)
     valid = sum(c.status is CertificateStatus.VALID for _, c in checks)

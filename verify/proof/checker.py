@@ -27,6 +27,7 @@ import sys
 import time
 from dataclasses import dataclass, field
 
+from verify.proof.budget import Budget, BudgetExceededError, run_bounded
 from verify.proof.confirm import confirm, exact_witness
 from verify.proof.derivation import RELATIONS, Assumption, Condition, Derivation, Step
 from verify.proof.expr import (
@@ -40,6 +41,7 @@ from verify.proof.expr import (
 from verify.proof.falsify import SearchReport, SearchSettings, random_search, search
 from verify.proof.justify import KERNEL, ByAlgebra, ByBound, ByCitation, Justification, issued
 from verify.proof.problem import StepProblem
+from verify.proof.size import over_limits
 from verify.proof.sos_step import BySos
 from verify.proof.sos_step import exact_check as sos_exact_check
 
@@ -245,10 +247,17 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
     problem = _problem(d, step)
     settings = SearchSettings(cfg.samples, cfg.hypothesis_examples, cfg.ipopt_starts,
                               cfg.seed + 7919 * index)
+    too_large = over_limits(*problem.all_exprs)
     try:
+        if too_large:  # decided before any algebra is done
+            raise _TooLargeError(too_large)
         ok, exact_text, report, counterexample, vacuous = _decide(step, problem, settings)
     except ProofSyntaxError:
         raise
+    except _TooLargeError as exc:
+        ok, vacuous, counterexample = False, "", None
+        exact_text = f"not decided: budget exceeded before the work ({exc})"
+        report = SearchReport()
     except Exception as exc:  # never an internal error as the answer: say what failed
         ok, vacuous, counterexample = False, "", None
         exact_text = f"not decided: {type(exc).__name__} while checking ({exc})"
@@ -295,6 +304,44 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
         note=step.note,
         seconds=time.perf_counter() - start,
     )
+
+
+class _TooLargeError(Exception):
+    """A step over the size limits of :mod:`verify.proof.size`."""
+
+
+def _within(budget: Budget, deadline: float | None) -> Budget:
+    """The budget, its time cut to what is left before ``deadline`` (time.monotonic)."""
+    if deadline is None:
+        return budget
+    left = deadline - time.monotonic()
+    if left <= 0:
+        raise BudgetExceededError("the file's time budget is spent")
+    return Budget(min(budget.seconds, left), budget.memory)
+
+
+def bounded_step(d: Derivation, index: int, cfg: SearchSettings,
+                 budget: Budget | None, deadline: float | None = None) -> StepResult:
+    """:func:`check_step` within ``budget`` (in a forked process; None: in this one) and
+    before ``deadline`` (time.monotonic; a file's whole budget).
+
+    A step that runs out of time or memory is *inconclusive: budget exceeded*.
+    """
+    if budget is None:
+        return check_step(d, index, cfg)
+    start = time.perf_counter()
+    try:
+        return run_bounded(lambda: check_step(d, index, cfg), _within(budget, deadline))
+    except (BudgetExceededError, RuntimeError) as exc:
+        step = d.steps[index]
+        exceeded = isinstance(exc, BudgetExceededError)
+        return StepResult(
+            index=index + 1, relation=step.relation, lhs=str(step.lhs), rhs=str(step.rhs),
+            justification=step.because.describe(), verdict=INCONCLUSIVE,
+            exact=(f"not decided: budget exceeded ({exc})" if exceeded
+                   else f"not decided: {exc}"),
+            conditions=[c.label for c in (*d.where, *step.where)],
+            note=step.note, seconds=time.perf_counter() - start)
 
 
 def _decide(step: Step, problem: StepProblem, settings: SearchSettings):
@@ -456,7 +503,8 @@ def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
     return tuple(conditions), tuple(assumptions)
 
 
-def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
+def check(d: Derivation, cfg: SearchSettings | None = None, *,
+          budget: Budget | None = None, deadline: float | None = None) -> DerivationResult:
     """Check every step of ``d``, then that its conditions and assumptions can hold together.
 
     Parameters
@@ -468,6 +516,13 @@ def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
     cfg : SearchSettings, optional
         Budget and seed of the falsification search beside the exact check (samples,
         hypothesis examples, IPOPT starts). Never decides a positive verdict.
+    budget : Budget, optional
+        Time and memory of each step and of the joint check, each run in a forked process
+        (:mod:`verify.proof.budget`); past it the step is inconclusive: budget exceeded.
+        None (the default, used for the paper's own derivations) runs in this process.
+    deadline : float, optional
+        With a budget: no step runs past this ``time.monotonic()`` value (a file's whole
+        time budget); a step with no time left is inconclusive: budget exceeded.
 
     Returns
     -------
@@ -492,25 +547,30 @@ def check(d: Derivation, cfg: SearchSettings | None = None) -> DerivationResult:
     limit = sys.getrecursionlimit()
     sys.setrecursionlimit(max(limit, 10 * MAX_DEPTH))  # trees are walked recursively
     try:
-        return _check(d, cfg)
+        return _check(d, cfg, budget, deadline)
     finally:
         sys.setrecursionlimit(limit)
 
 
-def _check(d: Derivation, cfg: SearchSettings | None) -> DerivationResult:
+def _check(d: Derivation, cfg: SearchSettings | None, budget: Budget | None,
+           deadline: float | None = None) -> DerivationResult:
     cfg = cfg or SearchSettings()
     start = time.perf_counter()
     d = _snapshot(d)
     _validate(d)
-    steps = [check_step(d, i, cfg) for i in range(len(d.steps))]
+    steps = [bounded_step(d, i, cfg, budget, deadline) for i in range(len(d.steps))]
     problems = [_problem(d, step) for step in d.steps]
     conditions, _ = _union(problems)
     joint = ""
     if steps and all(s.verdict == VERIFIED for s in steps):
         try:
-            joint = _joint(d, problems, cfg)
+            joint = (_joint(d, problems, cfg) if budget is None
+                     else run_bounded(lambda: _joint(d, problems, cfg),
+                                      _within(budget, deadline)))
         except ProofSyntaxError:
             raise
+        except BudgetExceededError as exc:
+            joint = f"joint satisfiability not decided: budget exceeded ({exc})"
         except Exception as exc:
             joint = f"joint satisfiability not decided: {type(exc).__name__} ({exc})"
     return DerivationResult(

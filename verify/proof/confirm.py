@@ -293,13 +293,37 @@ def _is_zero_at(value, xp: ExactPoint) -> bool:
     return uni.rem(minimal).is_zero
 
 
+def charts_defined(problem: StepProblem, xp: ExactPoint, atoms: dict) -> bool:
+    """Every variable at the point is what its kind says: a rotation's quaternion is not
+    0 (|q|^2 > 0, so R is a rotation), a unit vector has norm 1 (decided exactly). The
+    half-angle and stereographic denominators 1 + t^2, 1 + a^2 + b^2 never vanish."""
+    from verify.proof.exact import KnownFraction
+    from verify.proof.expr import dot, var
+
+    alg_den = problem.exact_slack[0].den
+    for v in problem.variables:
+        if v.kind == "rotation":
+            q = problem.space.param_gens[v.uid]
+            norm = sum((g * g for g in q[1:]), q[0] * q[0])
+            if _sign_at(KnownFraction(norm, (), alg_den), xp, atoms) != 1:
+                return False
+        elif v.kind == "unit_vector":
+            (value,) = problem.exact(dot(var(v), var(v)) - 1)
+            if not _is_zero_at(value, xp):
+                return False
+    return True
+
+
 def declarations_hold(problem: StepProblem, xp: ExactPoint, atoms: dict) -> bool:
-    """Every declaration holds exactly at the point, all at once: positive scalars are
-    > 0, every side condition is 0, every assumption holds (pd by Sylvester's leading
-    minors, psd by all principal minors)."""
+    """Every declaration holds exactly at the point, all at once: every chart is defined
+    there (:func:`charts_defined`), positive scalars are > 0, every side condition is 0,
+    every assumption holds (pd by Sylvester's leading minors, psd by all principal
+    minors)."""
     from verify.proof.exact import KnownFraction
 
     alg_den = problem.exact_slack[0].den
+    if not charts_defined(problem, xp, atoms):
+        return False
     for v in problem.variables:
         if v.kind == "scalar" and v.positive:
             gen = problem.space.param_gens[v.uid][0]

@@ -98,6 +98,9 @@ class Context:
         self._dynamics: dict[int, Expr | None] = {}
         self._declared: set[int] = set()
         self.variables: list[Variable] = []
+        # (result, argument) of every ddt call: a derivation file hands over "ddt of this
+        # expression", and the checker process differentiates again (verify.proof.wire)
+        self._derived: list[tuple[Expr, Expr]] = []
 
     # -- variables ----------------------------------------------------------------------
     def _new(self, name: str, kind: str, positive: bool = False) -> Expr:
@@ -168,6 +171,7 @@ class Context:
         """
         out = ddt(e, self._dynamics)
         self._declared.update(v.uid for v in variables_of(e))
+        self._derived.append((out, e))
         return out
 
     # -- side conditions and assumptions ---------------------------------------------------

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import enum
 import itertools
+import weakref
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
@@ -179,8 +180,11 @@ class Expr:
         return _product(as_expr(Fraction(1) / _exact(other)), self)
 
     def __pow__(self, power: int) -> Expr:
-        if not isinstance(power, int) or power < 1:
+        if not isinstance(power, int) or isinstance(power, bool) or power < 1:
             raise ProofSyntaxError("only positive integer powers are supported")
+        if power > MAX_POWER:
+            raise ProofSyntaxError(f"powers are at most {MAX_POWER} (the checker's degree "
+                                   "limit is 48)")
         if self.shape not in (SCALAR, MATRIX):
             raise ProofSyntaxError(f"cannot raise a {_shape_name(self.shape)} to a power")
         result = self
@@ -389,6 +393,25 @@ def nodes(*exprs: Expr):
         stack.extend(reversed(e.args))
 
 
+def postorder(*exprs: Expr) -> list[Expr]:
+    """Every node of the trees once, each after all of its children (no recursion)."""
+    out: list[Expr] = []
+    done: set[int] = set()
+    stack: list[tuple[Expr, bool]] = [(e, False) for e in reversed(exprs)]
+    while stack:
+        e, expanded = stack.pop()
+        if id(e) in done:
+            continue
+        if expanded:
+            done.add(id(e))
+            out.append(e)
+            continue
+        stack.append((e, True))
+        stack.extend((a, False) for a in reversed(e.args)
+                     if type(a) is Expr and id(a) not in done)
+    return out
+
+
 def variables_of(*exprs: Expr) -> list[Variable]:
     """The free variables of expressions, in first-appearance order."""
     seen: dict[int, Variable] = {}
@@ -398,13 +421,29 @@ def variables_of(*exprs: Expr) -> list[Variable]:
     return list(seen.values())
 
 
+# Structural keys are interned: each distinct structure gets one small integer, computed
+# once per node (a shared subtree is not walked again, so a tree that doubles at every
+# level costs its number of nodes, not its printed size).
+_INTERN: dict[tuple, int] = {}
+_KEYS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def structural_key(e: Expr) -> tuple:
     """A hashable key equal for structurally equal trees (labels ignored)."""
-    if e.op == "var":
-        return ("var", e.data.uid)
-    if e.op == "const":
-        return ("const", e.data)
-    return (e.op, *(structural_key(a) for a in e.args))
+    if e in _KEYS:
+        return ("tree", _KEYS[e])
+    for node in postorder(e):
+        if node in _KEYS:
+            continue
+        if node.op == "var":
+            raw: tuple = ("var", node.data.uid)
+        elif node.op == "const":
+            raw = ("const", node.data)
+        else:
+            raw = (node.op, node.shape, node.data if node.op == "chart_gap" else None,
+                   *(_KEYS[a] for a in node.args))
+        _KEYS[node] = _INTERN.setdefault(raw, len(_INTERN))
+    return ("tree", _KEYS[e])
 
 
 def substitute(e: Expr, mapping: dict) -> Expr:
@@ -468,7 +507,7 @@ def validate_tree(*exprs: Any) -> None:
         if type(e) is not Expr:
             raise ProofSyntaxError(f"expected an expression, got {type(e).__name__}")
     depth: dict[int, int] = {}
-    for e in reversed(list(nodes(*exprs))):  # children before parents
+    for e in postorder(*exprs):
         if not all(type(a) is Expr for a in e.args) or not _well_formed(e):
             raise ProofSyntaxError(f"malformed expression node {e.op!r} (build expressions "
                                    "with operators and the functions of verify.proof)")
@@ -479,6 +518,7 @@ def validate_tree(*exprs: Any) -> None:
 
 
 MAX_DEPTH = 1000
+MAX_POWER = 64  # e ** k: a larger power would exceed every step's degree limit
 
 
 def _well_formed(e: Expr) -> bool:

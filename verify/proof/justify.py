@@ -61,6 +61,20 @@ class ExactPremise:
 # when it was issued: the checker accepts a term only if it is here, unchanged.
 _ISSUED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _issuing = [0]
+# How each issued term was made (constructor name and arguments): the serialisation of a
+# derivation file (:mod:`verify.proof.wire`) hands over this recipe, and the checker
+# process issues the term again with its own constructors.
+_RECIPES: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def recipe(term: Nonneg) -> tuple | None:
+    """(constructor, arguments...) of an issued, unaltered term; None otherwise."""
+    return _RECIPES.get(term) if issued(term) else None
+
+
+def _made(term: Nonneg, *how: object) -> Nonneg:
+    _RECIPES[term] = how
+    return term
 
 
 def _fingerprint(t: Nonneg) -> tuple:
@@ -128,26 +142,35 @@ class Nonneg:
     def __add__(self, other: Nonneg) -> Nonneg:
         if not isinstance(other, Nonneg):
             raise ProofSyntaxError("only non-negative terms can be added to a non-negative term")
-        return self._merge(other, self.value + other.value, f"({self.reason}) + ({other.reason})")
+        return _made(self._merge(other, self.value + other.value,
+                                 f"({self.reason}) + ({other.reason})"), "add", self, other)
 
     def __mul__(self, other) -> Nonneg:
         if isinstance(other, Nonneg):
-            return self._merge(
+            return _made(self._merge(
                 other, self.value * other.value, f"({self.reason}) * ({other.reason})"
-            )
+            ), "mul", self, other)
         c = Fraction(other) if isinstance(other, int | Fraction) else None
         if c is None or isinstance(other, bool) or c < 0:
             raise ProofSyntaxError("a non-negative term can be scaled by a constant >= 0 only")
         _require_issued(self)
-        return _issue(
+        return _made(_issue(
             as_expr(c) * self.value,
-            f"{c} * ({self.reason})",
+            f"{_number(c)} * ({self.reason})",
             self.premises,
             self.assumptions,
             self.kernel | {"products"},
-        )
+        ), "scale", c, self)
 
     __rmul__ = __mul__
+
+
+def _number(c: Fraction) -> str:
+    from verify.proof.printing import integer_text
+
+    if c.denominator == 1:
+        return integer_text(c.numerator)
+    return f"{integer_text(c.numerator)}/{integer_text(c.denominator)}"
 
 
 def square(g: Expr) -> Nonneg:
@@ -165,7 +188,7 @@ def square(g: Expr) -> Nonneg:
         value = g * g
     else:
         raise ProofSyntaxError("square() needs a matrix, vector or scalar")
-    return _issue(value, f"square of {g}", kernel=frozenset({"squares"}))
+    return _made(_issue(value, f"square of {g}", kernel=frozenset({"squares"})), "square", g)
 
 
 def positive(k: Expr) -> Nonneg:
@@ -176,7 +199,8 @@ def positive(k: Expr) -> Nonneg:
             "declare it with ctx.scalar(name, positive=True); a constant c >= 0 scales a "
             "term instead (c * term)",
             detail=f"{k} is not a variable declared positive" if isinstance(k, Expr) else ""))
-    return _issue(k, f"{k} > 0 (declared)", kernel=frozenset({"positive"}))
+    return _made(_issue(k, f"{k} > 0 (declared)", kernel=frozenset({"positive"})),
+                 "positive", k)
 
 
 def assumed(assumption: Assumption) -> Nonneg:
@@ -184,7 +208,8 @@ def assumed(assumption: Assumption) -> Nonneg:
     _require_assumption(assumption)
     if assumption.kind not in ("pos", "nonneg"):
         raise ProofSyntaxError("assumed() takes a scalar assumption (pos or nonneg)")
-    return _issue(assumption.expr, f"assumed: {assumption.label}", assumptions=(assumption,))
+    return _made(_issue(assumption.expr, f"assumed: {assumption.label}",
+                        assumptions=(assumption,)), "assumed", assumption)
 
 
 def _require_assumption(a: object) -> None:
@@ -203,7 +228,8 @@ def _psd_by_gram(label: str, b: Expr, gram: Expr, scale: Nonneg | int | Fraction
         _require_issued(scale)
         c_term = scale
     else:
-        c_term = _issue(as_expr(Fraction(scale)), f"{scale} >= 0", kernel=frozenset({"positive"}))
+        c_term = _issue(as_expr(Fraction(scale)), f"{_number(Fraction(scale))} >= 0",
+                        kernel=frozenset({"positive"}))
         if Fraction(scale) < 0:
             raise ProofSyntaxError("a Gram scale must be >= 0")
     premise = ExactPremise(f"{label}: sym({b}) = c G^T G", sym(b) - c_term.value * (gram.T * gram))
@@ -229,13 +255,13 @@ def trace_lower_bound(
         )
     premise, c_term = _psd_by_gram("B", b, gram, gram_scale)
     premises.append(premise)
-    return _issue(
+    return _made(_issue(
         value,
         f"trace inequality tr(AB) >= lambda_min(A) tr(B), A = {a}, B = {b}",
         tuple(premises) + c_term.premises,
         c_term.assumptions,
         frozenset({"spectral", "congruence"}) | c_term.kernel,
-    )
+    ), "trace_lower_bound", a, b, gram, gram_scale)
 
 
 def trace_psd_product(
@@ -262,13 +288,13 @@ def trace_psd_product(
         raise ProofSyntaxError("trace_psd_product needs a_psd= or a_gram=")
     premise, c_term = _psd_by_gram("B", b, b_gram, b_scale)
     premises.append(premise)
-    return _issue(
+    return _made(_issue(
         tr(a * b),
         f"trace of a product of PSD matrices, A = {a}, B = {b}",
         tuple(premises) + c_term.premises,
         assumptions + c_term.assumptions,
         frozenset({"congruence"}) | c_term.kernel,
-    )
+    ), "trace_psd_product", a, b, a_psd, a_gram, b_gram, b_scale)
 
 
 class Justification:

@@ -1,10 +1,20 @@
-"""Plain-text rendering of expressions for reports and error messages."""
+"""Plain-text rendering of expressions for reports and error messages.
+
+Rendering is memoised over shared subtrees (each node's text is made once) and bounded:
+a subexpression whose text would exceed :data:`MAX_TEXT` characters is shown as
+``…``, so a tree that doubles at every level (``x = x + x`` sixty-four
+times) prints in linear time. Integers too long for a decimal string are shown by
+their size (``⟨integer of 5001 digits⟩``), never converted.
+"""
 
 from __future__ import annotations
 
 from fractions import Fraction
 
 from verify.proof.expr import Expr
+
+MAX_TEXT = 4000  # characters of one rendered expression before it is abbreviated
+MAX_DIGITS = 4000  # digits of an integer printed in full (Python converts up to 4300)
 
 _FUNCS = {
     "trace": "tr",
@@ -19,39 +29,70 @@ _FUNCS = {
 
 
 def to_text(e: Expr) -> str:
-    return _text(e, 0)
+    return _Printer().text(e, 0)
+
+
+def integer_text(n: int) -> str:
+    """Decimal digits of ``n``, or its size when it has more than MAX_DIGITS digits."""
+    if n.bit_length() <= MAX_DIGITS * 3:  # below 10^(0.9 MAX_DIGITS): safe to convert
+        return str(n)
+    digits = _digits(abs(n))
+    if digits <= MAX_DIGITS:
+        return str(n)
+    return f"{'-' if n < 0 else ''}⟨integer of {digits} digits⟩"
+
+
+def _digits(n: int) -> int:
+    k = max(1, int(n.bit_length() * 0.30102999566398120) - 1)
+    while 10**k <= n:
+        k += 1
+    return k
 
 
 def _wrap(s: str, inner: int, outer: int) -> str:
     return f"({s})" if inner < outer else s
 
 
-def _text(e: Expr, prec: int) -> str:
-    if e.label is not None:
-        return e.label
-    op = e.op
-    if op == "const":
-        v: Fraction = e.data
-        s = str(v.numerator) if v.denominator == 1 else f"{v.numerator}/{v.denominator}"
-        return _wrap(s, 2 if v.denominator == 1 and v >= 0 else 1, prec)
-    if op == "zero":
-        return "0"
-    if op == "add":
-        a, b = e.args
-        if b.op == "neg":
-            return _wrap(f"{_text(a, 1)} - {_text(b.args[0], 2)}", 1, prec)
-        return _wrap(f"{_text(a, 1)} + {_text(b, 1)}", 1, prec)
-    if op == "neg":
-        return _wrap(f"-{_text(e.args[0], 2)}", 1, prec)
-    if op in ("scale", "matmul"):
-        a, b = e.args
-        return _wrap(f"{_text(a, 2)} {_text(b, 2)}", 2, prec)
-    if op == "transpose":
-        return f"{_text(e.args[0], 3)}ᵀ"
-    if op in _FUNCS:
-        return f"{_FUNCS[op]}({_text(e.args[0], 0)})"
-    if op == "dot":
-        return f"<{_text(e.args[0], 0)}, {_text(e.args[1], 0)}>"
-    if op == "outer":
-        return f"{_text(e.args[0], 3)} {_text(e.args[1], 3)}ᵀ"
-    return op
+class _Printer:
+    def __init__(self) -> None:
+        self.memo: dict[tuple[int, int], str] = {}
+
+    def text(self, e: Expr, prec: int) -> str:
+        key = (id(e), prec)
+        if key not in self.memo:
+            s = self._text(e, prec)
+            if len(s) > MAX_TEXT:
+                s = "…"
+            self.memo[key] = s
+        return self.memo[key]
+
+    def _text(self, e: Expr, prec: int) -> str:
+        if e.label is not None:
+            return e.label
+        op, t = e.op, self.text
+        if op == "const":
+            v: Fraction = e.data
+            s = (integer_text(v.numerator) if v.denominator == 1
+                 else f"{integer_text(v.numerator)}/{integer_text(v.denominator)}")
+            return _wrap(s, 2 if v.denominator == 1 and v >= 0 else 1, prec)
+        if op == "zero":
+            return "0"
+        if op == "add":
+            a, b = e.args
+            if b.op == "neg":
+                return _wrap(f"{t(a, 1)} - {t(b.args[0], 2)}", 1, prec)
+            return _wrap(f"{t(a, 1)} + {t(b, 1)}", 1, prec)
+        if op == "neg":
+            return _wrap(f"-{t(e.args[0], 2)}", 1, prec)
+        if op in ("scale", "matmul"):
+            a, b = e.args
+            return _wrap(f"{t(a, 2)} {t(b, 2)}", 2, prec)
+        if op == "transpose":
+            return f"{t(e.args[0], 3)}ᵀ"
+        if op in _FUNCS:
+            return f"{_FUNCS[op]}({t(e.args[0], 0)})"
+        if op == "dot":
+            return f"<{t(e.args[0], 0)}, {t(e.args[1], 0)}>"
+        if op == "outer":
+            return f"{t(e.args[0], 3)} {t(e.args[1], 3)}ᵀ"
+        return op

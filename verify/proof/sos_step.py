@@ -94,7 +94,7 @@ def by_sos(*assumptions: Assumption, degree: int | None = None, note: str = "") 
     >>> d = Derivation("tr R <= 3", tr(R), ctx).le(3, by_sos())
     """
     for a in assumptions:
-        if not isinstance(a, Assumption):
+        if type(a) is not Assumption:  # a subclass could answer == and hash as it likes
             raise ProofSyntaxError(
                 f"by_sos() takes assumptions made with ctx.assume(...), got "
                 f"{type(a).__name__}; did you mean by_sos(ctx.assume(...))?")
@@ -267,11 +267,19 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
         if stored is not None:
             result = cert.check_bound(stored, sp)
             if result.ok:
+                if "step" not in stored and source != cert.PAPER:
+                    # written before certificates carried their step: renew it, so that
+                    # `verify certificates check` can bind it again
+                    step_data = _step_data(step, problem)
+                    if step_data is not None:
+                        with contextlib.suppress(OSError):
+                            cert.write(store, {**stored, "step": step_data})
                 return True, f"{result.reason}; certificate {cert.file_name(key)}"
     found = find_certificate(sp.program, sp.groups, max_degree=step.because.degree)
     if not found.check.ok:
         return False, f"no SOS certificate: {found.check.reason}"
-    data = cert.to_data(sp, found.blocks, found.grams, key, source)
+    data = cert.to_data(sp, found.blocks, found.grams, key, source,
+                        step=_step_data(step, problem))
     result = cert.check_bound(data, sp)  # the same trusted check a stored file gets
     if not result.ok:
         return False, f"SOS certificate rejected: {result.reason}"
@@ -285,5 +293,46 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
     return True, f"{result.reason}; certificate {cert.file_name(key)}{where}"
 
 
+def _step_data(step, problem: StepProblem) -> dict | None:
+    """The step as data (:mod:`verify.proof.wire`): a one-step derivation with the step's
+    conditions and assumptions, so that a stored certificate can be bound to it again."""
+    from verify.proof.derivation import Context, Derivation, Step
+    from verify.proof.wire import encode
+
+    ctx = Context("certificate")
+    ctx.variables = list(problem.variables)
+    ctx._dynamics = {v.uid: None for v in problem.variables if v.kind == "scalar"}
+    d = Derivation("certificate", step.lhs, ctx, tuple(problem.conditions),
+                   tuple(problem.assumptions))
+    d.steps = [Step(step.relation, step.lhs, step.rhs, step.because)]
+    try:
+        return encode([d])
+    except ProofSyntaxError:
+        return None
+
+
+def program_of_step(data: object) -> StepProgram | str:
+    """The SOS program of the one-step derivation in ``data`` (rebuilt with our own
+    classes, :func:`verify.proof.wire.decode`), or why there is none."""
+    from verify.proof.checker import _problem, _validate
+    from verify.proof.rebuild import decode
+
+    try:
+        (d,) = decode(data)
+        _validate(d)
+        (step,) = d.steps
+        if not isinstance(step.because, BySos) or step.relation == "=":
+            return "not an inequality step justified by by_sos"
+        problem = _problem(d, step)
+        from verify.proof.size import over_limits
+
+        too_large = over_limits(*problem.all_exprs)
+        if too_large:
+            return too_large
+        return step_program(problem, step.because)
+    except (ProofSyntaxError, ValueError, ArithmeticError, TypeError, KeyError) as exc:
+        return f"{type(exc).__name__}: {exc}"
+
+
 __all__ = ["BySos", "StepProgram", "by_sos", "certificate_store", "exact_check",
-           "step_program"]
+           "program_of_step", "step_program"]

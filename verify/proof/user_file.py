@@ -1,9 +1,11 @@
 """Load a researcher's own derivation file for ``verify check FILE``.
 
 The file is Python the user wrote (it is run as a module, like a test file; no text is
-evaluated from anywhere else). It lists its derivations in ``DERIVATIONS``; without
-that name, every :class:`~verify.proof.Derivation` bound at module level (alone, or in
-a list or tuple) is checked, in order of appearance.
+evaluated from anywhere else). ``verify check`` calls this only in a child process
+(:mod:`verify.proof.child`), never in the checker's (see :mod:`verify.proof.isolate`).
+It lists its derivations in ``DERIVATIONS``; without that name, every
+:class:`~verify.proof.Derivation` bound at module level (alone, or in a list or tuple)
+is checked, in order of appearance.
 """
 
 from __future__ import annotations
@@ -28,8 +30,9 @@ def contained(path: Path, stage: str) -> Iterator[None]:
     ``raise SystemExit``) or an
     exception raised from the file's own code becomes one VerifyInputError line.
 
-    The file is Python with the verifier's privileges (see ``verify/proof/TRUSTED.md``):
-    this catches a file that stops the run, not one that rewrites the verifier.
+    Used in the child process that loads the file: it turns a file that stops early into
+    a one-line message; the process boundary (``verify/proof/TRUSTED.md``) is what keeps
+    the file away from the checker.
     """
     modules = [os] + [m for m in (sys.modules.get("posix"), sys.modules.get("nt")) if m]
     saved = [(m, m._exit) for m in modules]

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 from pathlib import Path
 
 from verify.report.atomic import write_atomic
@@ -62,8 +63,11 @@ def file_name(key: str) -> str:
     return f"sos-{key[:20]}.json"
 
 
-def to_data(sp, blocks: list[Block], grams, key: str, source: str = "") -> dict:
+def to_data(sp, blocks: list[Block], grams, key: str, source: str = "",
+            step: dict | None = None) -> dict:
+    extra = {} if step is None else {"step": step}
     return {
+        **extra,
         "schema": SCHEMA,
         "claim": {"statement": sp.statement, "key": key, "source": source},
         "variables": list(sp.program.variables),
@@ -105,10 +109,39 @@ def lookup(directory: Path, key: str) -> dict | None:
 
 
 # -- parsing --------------------------------------------------------------------------
+FIELDS = {"schema", "claim", "variables", "numerator", "factors", "target", "blocks"}
+SOURCE = re.compile(r"file:[^\x00-\x1f/\\]{1,255}\.py")
+
+
+def _exact_fields(obj: object, what: str, required: set[str], optional: set[str] = frozenset()
+                  ) -> None:
+    if not isinstance(obj, dict):
+        raise ValueError(f"{what} must be an object")
+    keys = set(obj)
+    if not required <= keys or not keys <= required | optional:
+        unknown = sorted(keys - required - optional)
+        missing = sorted(required - keys)
+        raise ValueError(f"{what}: " + (f"unknown field {unknown[0]!r}" if unknown
+                                        else f"missing field {missing[0]!r}"))
+
+
 class Parsed:
     def __init__(self, data: dict):
         if not isinstance(data, dict) or data.get("schema") != SCHEMA:
             raise ValueError(f"schema is not {SCHEMA}")
+        _exact_fields(data, "certificate", FIELDS, {"step"})
+        _exact_fields(data["claim"], "claim", {"statement", "key", "source"})
+        source = data["claim"]["source"]
+        if not isinstance(source, str) or not (source in ("", PAPER)
+                                               or SOURCE.fullmatch(source)):
+            raise ValueError("claim.source must be '', 'verify.paper_proofs' or 'file:NAME.py'")
+        key = data["claim"]["key"]
+        if not isinstance(key, str) or not re.fullmatch(r"[0-9a-f]{64}", key):
+            raise ValueError("claim.key must be a SHA-256 in hexadecimal")
+        for f in data["factors"] if isinstance(data["factors"], list) else []:
+            _exact_fields(f, "a factor", {"polynomial", "power"})
+        for b in data["blocks"] if isinstance(data["blocks"], list) else []:
+            _exact_fields(b, "a block", {"grounds", "multiplier", "basis", "gram"})
         names = data.get("variables")
         if not (isinstance(names, list) and all(isinstance(x, str) for x in names)
                 and 0 < len(names) <= 400):
@@ -159,7 +192,38 @@ class Parsed:
             self.grams.append([[pl.rational(x, what) for x in row] for row in gram])
 
 
+MAX_DEGREE = 64  # of the numerator a certificate may state
+MAX_TERMS = 2_000_000  # bound on the terms the expansions may produce
+
+
+def _too_large(c: Parsed) -> str:
+    """Why expanding the certificate's identities would be too much work, or "" (decided
+    from degrees and term counts alone, before any multiplication)."""
+    from math import comb
+
+    top = pl.degree(c.numerator) if c.numerator else 0
+    if top > MAX_DEGREE:
+        return f"the numerator's degree {top} exceeds {MAX_DEGREE}"
+    stated = (pl.degree(c.target) if c.target else 0) + sum(
+        k * pl.degree(f) for f, k in c.factors)
+    if c.numerator and c.target and stated != top:
+        return "numerator is not prod(factor^power) * target (degrees differ)"
+    terms = max(len(c.target), 1)
+    for f, k in c.factors:
+        terms *= comb(len(f) + k - 1, k)
+        if terms > MAX_TERMS:
+            return f"prod(factor^power) * target would expand to more than {MAX_TERMS} terms"
+    work = sum(b.gram_size ** 2 * max((len(e) for row in b.multiplier.matrix for e in row),
+                                      default=1) for b in c.blocks)
+    if work > 25 * MAX_TERMS:
+        return "the Gram expansion would take more than the certificate check's budget"
+    return ""
+
+
 def _identity(c: Parsed) -> SosCheck:
+    too_large = _too_large(c)
+    if too_large:
+        raise ValueError(f"too large to check: {too_large}")
     rebuilt = c.target
     for f, k in c.factors:
         rebuilt = pl.mul(rebuilt, pl.power(f, k, c.n))
@@ -172,8 +236,11 @@ def check_bound(data: dict, sp) -> SosCheck:
     """Exact check of a certificate against the step it claims (re-derived as ``sp``)."""
     try:
         c = Parsed(data)
+        too_large = _too_large(c)
     except ValueError as exc:
         return SosCheck(False, f"malformed SOS certificate: {exc}")
+    if too_large:
+        return SosCheck(False, f"SOS certificate too large to check: {too_large}")
     if c.variables != sp.program.variables or c.numerator != sp.numerator:
         return SosCheck(False, "the certificate is about another polynomial than this step's")
     if c.target != sp.program.target or c.factors != sp.factors:
@@ -193,31 +260,65 @@ def _nonneg_factor(f: pl.Poly) -> bool:
     return bool(f)
 
 
+def _plain_sos_multipliers(c: Parsed) -> str:
+    """A block labelled plain SOS must have the multiplier 1 (else: why not)."""
+    for k, b in enumerate(c.blocks):
+        if b.multiplier.grounds == "1 (plain SOS)" and b.multiplier.matrix != (
+                (pl.constant(1, c.n),),):
+            return f"block {k}: labelled plain SOS, but its multiplier is not 1"
+    return ""
+
+
 def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
-    """Re-check a stored SOS certificate with no solver (``verify certificates check``)."""
+    """Re-check a stored SOS certificate with no solver (``verify certificates check``).
+
+    A certificate that carries its step (``step``: the one-step derivation in the schema
+    of :mod:`verify.proof.wire`, as data) is bound like the gate's: the step is rebuilt
+    with the checker's own classes, its SOS program re-derived (statement, key, file name,
+    numerator, factors, every allowed multiplier with its grounds) and the certificate
+    checked against it (:func:`check_bound`). Without a step, a certificate of the
+    paper's proofs is bound to the paper's step with its key; any other is refused.
+    """
     try:
         c = Parsed(data)
+        too_large = _too_large(c)
     except ValueError as exc:
         raise ValueError(f"{path}: malformed SOS certificate: {exc}") from None
+    if too_large:
+        raise ValueError(f"{path}: SOS certificate too large to check: {too_large}")
     if not all(_nonneg_factor(f) for f, _k in c.factors):
         return SosCheck(False, "a factor is not visibly non-negative")
-    if c.claim.get("source") == PAPER:
+    plain = _plain_sos_multipliers(c)
+    if plain:
+        return SosCheck(False, plain)
+    if path.name != file_name(c.claim["key"]):
+        return SosCheck(False, f"file name is not {file_name(c.claim['key'])} (its key)")
+    if "step" in data:
+        from verify.proof.sos_step import program_of_step
+
+        sp = program_of_step(data["step"])
+        if isinstance(sp, str):
+            raise ValueError(f"{path}: malformed SOS certificate: step: {sp}")
+        bound = "bound to its step (rebuilt from the data, program re-derived)"
+    elif c.claim.get("source") == PAPER:
         from verify.paper_proofs.sos_proofs import program_for_key
 
         sp = program_for_key(c.claim["key"], c.claim["statement"])
         if sp is None:
             return SosCheck(False, "no by_sos step of the paper's proofs has this claim key")
-        result = check_bound(data, sp)
-        if not result.ok:
-            return result
-        return SosCheck(True, f"{c.claim['statement']}: {result.reason}; bound to the "
-                              "paper's step (re-derived)")
-    result = _identity(c)
+        bound = "bound to the paper's step (re-derived)"
+    else:
+        return SosCheck(False, "the certificate does not carry its step, so its statement, "
+                               "key and multipliers cannot be bound (check the derivation "
+                               "file again with `verify check` to renew it)")
+    if claim_key(sp) != c.claim["key"]:
+        return SosCheck(False, "the claim key is not the key of the step it carries")
+    if sp.statement != c.claim["statement"]:
+        return SosCheck(False, f"the statement is not the step's ({sp.statement})")
+    result = check_bound(data, sp)
     if not result.ok:
         return result
-    grounds = "; ".join(sorted({b.multiplier.grounds for b in c.blocks}))
-    return SosCheck(True, f"{c.claim['statement']}: {result.reason}; multipliers rest on: "
-                          f"{grounds} (re-derived when `verify check` checks the file)")
+    return SosCheck(True, f"{sp.statement}: {result.reason}; {bound}")
 
 
 __all__ = ["SCHEMA", "check_bound", "check_sos_certificate_data", "claim_key", "file_name",
