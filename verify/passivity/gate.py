@@ -143,15 +143,16 @@ def _gate_one(model, margin: Fraction, certificates_dir: Path,
 
 
 def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
-                  certificates_dir: Path) -> list[GateResult]:
-    """The gate on a finite band: generalized KYP certificates (written) or witnesses."""
+                  certificates_dir: Path, *, exact_first: bool = True) -> list[GateResult]:
+    """The gate on a finite band: exact band or generalized KYP certificates (written), or
+    witnesses (``exact_first``: see :func:`verify.passivity.band.decide_band`)."""
     from verify.passivity.band import decide_band
     from verify.passivity.check.band_fd import BandFdCertificate, store_band_fd_certificate
 
     results = []
     for model in models:
         with unlimited_int_text():
-            d = decide_band(model, band, margin)
+            d = decide_band(model, band, margin, exact_first=exact_first)
             if isinstance(d.certificate, BandFdCertificate):  # the exact band route
                 cert = replace(d.certificate,
                                source=relative_source(d.certificate.source, certificates_dir))
