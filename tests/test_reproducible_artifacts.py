@@ -9,6 +9,8 @@ figures, to keep the test short.
 from __future__ import annotations
 
 import json
+import math
+import random
 import re
 import shutil
 from pathlib import Path
@@ -144,17 +146,6 @@ def _differences(a: dict[str, bytes], b: dict[str, bytes]) -> list[str]:
     return sorted({*a, *b} - {n for n in a.keys() & b.keys() if a[n] == b[n]})
 
 
-#: What still differs on another BLAS (measured): the exact witness rational found from a
-#: float search (in the reports' sec4.nu-curves-indices evidence), the rounded band
-#: certificate of the k_s = 2.5 reconstruction, and (whole run) the identified models'
-#: last digits with their robust-band certificates. Canonical forms for these are being
-#: built in parallel; strict, so that this marker fails once they land and must go.
-NOT_YET_CANONICAL = pytest.mark.xfail(
-    strict=True, raises=AssertionError,
-    reason="witness rationals, band certificates and identified coefficients still follow "
-    "the float path (reports, certificates/, identification/*/model.toml)")
-
-
 def test_another_blas_gives_the_same_bytes(tmp_path):
     """Fast claims that write certificates, figures, derivations and the appendix."""
     here = _verify_all_in_child(tmp_path / "here", threads=1, coretype=None,
@@ -167,7 +158,6 @@ def test_another_blas_gives_the_same_bytes(tmp_path):
 
 
 @pytest.mark.slow
-@NOT_YET_CANONICAL
 def test_another_blas_gives_the_same_bytes_for_every_claim(tmp_path):
     """The whole `verify all` (with the identification from simulated logs), twice."""
     here = _verify_all_in_child(tmp_path / "here", threads=1, coretype=None, claims=(),
@@ -175,3 +165,21 @@ def test_another_blas_gives_the_same_bytes_for_every_claim(tmp_path):
     there = _verify_all_in_child(tmp_path / "there", threads=2, coretype="Sandybridge",
                                  claims=(), quick=False)
     assert _differences(here, there) == []
+
+
+# ---------------------------------------------------------------- floats as reports write them
+
+def test_report_floats_are_canonical_far_above_float_noise():
+    from verify.report.canonical import canonical_data, canonical_float
+
+    rng = random.Random(3)
+    for _ in range(2000):
+        x = rng.uniform(-1e3, 1e3) * 10.0 ** rng.randint(-20, 20)
+        assert canonical_float(x) == canonical_float(x * (1 + 1e-13))  # fails ~1e-9 of x
+    assert canonical_float(4.1e-16) == canonical_float(2.3e-16) == 1e-15
+    assert canonical_float(-3e-14) == -1e-13 and canonical_float(-0.0) == 0.0
+    assert math.copysign(1, canonical_float(-0.0)) == 1
+    data = {"max_error_over_bound": 0.04225, "fit": [67.36474448015959, 1.0, "1/3", 7],
+            "nested": {"estimate": -2.87984e-10, "flag": True}}
+    assert canonical_data(data) == {"max_error_over_bound": 0.1, "fit": [67.36, 1.0, "1/3", 7],
+                                    "nested": {"estimate": -2.88e-10, "flag": True}}

@@ -513,7 +513,9 @@ def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str
     if test is None or isinstance(test, str) or not test.informative:
         return {}
     try:
-        text = passive_model_text(f"{plan.name} (best passive fit)", test)
+        errors = np.sqrt(np.clip(np.diag(identified.estimate.covariance), 0.0, None))
+        text = passive_model_text(f"{plan.name} (best passive fit)", test,
+                                  errors=[float(e) for e in errors])
     except VerifyInputError:
         return {}
     return {plan.out / PASSIVE_MODEL_FILE: text}

@@ -43,9 +43,9 @@ DIGITS = 10
 #: digit plus SE_DIGITS more (rounding error below s / 2000: nothing the data support is
 #: lost, and float noise far below it, e.g. another BLAS, does not change the bytes).
 SE_DIGITS = 3
-#: Significant digits of the covariance's entries (positive definiteness survives the
-#: rounding for every condition number the identifiability gate admits).
-COVARIANCE_DIGITS = 8
+#: Fewest decades below sqrt(C_ii C_jj) at which a covariance entry is written (more when
+#: the correlation matrix is ill-conditioned: :func:`canonical_covariance`).
+COVARIANCE_DIGITS = 4
 #: Significant digits of the other descriptive floats (standard errors, noise levels,
 #: test statistics).
 FIGURE_DIGITS = 4
@@ -218,6 +218,44 @@ class IdentifiedFile:
         return float(Fraction(value))
 
 
+def _on_grid(x: float, scale: float, digits: int) -> float:
+    """x rounded to the decimal grid 10^(floor(log10 scale) - digits) (half to even)."""
+    from decimal import ROUND_HALF_EVEN, Decimal
+
+    if not scale > 0:
+        return 0.0
+    place = math.floor(math.log10(scale)) - digits
+    d = Decimal(repr(float(x))).quantize(Decimal(1).scaleb(place), rounding=ROUND_HALF_EVEN)
+    return float(d) + 0.0  # + 0.0: no negative zero
+
+
+def canonical_covariance(cov: np.ndarray) -> list[list[float]]:
+    """The covariance as written: entry (i, j) on the decimal grid d decades below
+    sqrt(C_ii C_jj), i.e. the correlations to d decimals. d is the smallest of at least
+    ``COVARIANCE_DIGITS`` for which the rounding moves the correlation matrix's eigenvalues
+    by at most 1 % of the smallest (Weyl: p 10^-d / 2 <= lambda_min / 100), so the region
+    keeps its shape in its thinnest direction; a matrix that is then not exactly positive
+    definite gets more digits. Float noise in the estimate (another BLAS, another
+    summation order) moves entries by parts in 1e8 and leaves the written decimals."""
+    from gmpy2 import mpq
+
+    from verify.passivity.check.robust_band import is_positive_definite
+
+    p = len(cov)
+    scale = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        corr = cov / np.outer(scale, scale)
+    smallest = float(np.min(np.linalg.eigvalsh(corr))) if np.all(scale > 0) else 0.0
+    need = math.ceil(math.log10(50 * p / smallest)) if smallest > 0 else 16
+    rows: list[list[float]] = []
+    for digits in range(max(COVARIANCE_DIGITS, need), 17):
+        rows = [[_on_grid(cov[i, j], scale[i] * scale[j], digits) for j in range(p)]
+                for i in range(p)]
+        if is_positive_definite([[mpq(v) for v in row] for row in rows]):
+            return rows
+    return rows
+
+
 def identification_table(structure: Structure, theta: Sequence[float], covariance: Any,
                          level: Fraction, extra: Mapping[str, Any] | None = None
                          ) -> dict[str, Any]:
@@ -237,7 +275,7 @@ def identification_table(structure: Structure, theta: Sequence[float], covarianc
             "parameter_estimates": [float(coefficient_text(float(x), e))
                                     for x, e in zip(theta, errors, strict=True)],
             "standard_errors": [canonical(e) for e in errors],
-            "covariance": [[canonical(v, COVARIANCE_DIGITS) for v in row] for row in cov],
+            "covariance": canonical_covariance(cov),
             "confidence_level": float(level),
             "chi2": canonical(chi2_quantile(level, p), 12)}
 

@@ -309,30 +309,40 @@ def _lr(res_pas, res_free, n_eff) -> float:
     return out
 
 
-def passive_literals(theta: Sequence[float]) -> list[Fraction]:
-    """Short decimals near the passive fit that satisfy the constraints *exactly*:
-    c21 written as -c12, b1_i raised in its last digit until a1_i b1_i >= b0_i."""
-    from verify.identify.model_writer import DIGITS, decimal_text
+def passive_literals(theta: Sequence[float],
+                     errors: Sequence[float] | None = None) -> list[Fraction]:
+    """Short decimals near the passive fit that satisfy the constraints *exactly*: each
+    to the precision the unconstrained estimate's standard error justifies (when
+    ``errors`` are given; :func:`verify.identify.model_writer.coefficient_text`), c21
+    written as -c12, b1_i raised in its last digit until a1_i b1_i >= b0_i."""
+    from verify.identify.model_writer import DIGITS, SE_DIGITS, coefficient_text
 
-    lits = [Fraction(decimal_text(float(x))) for x in theta]
+    errs = list(errors) if errors is not None else [None] * len(theta)
+    lits = [Fraction(coefficient_text(float(x), e)) for x, e in zip(theta, errs, strict=True)]
     lits[9] = -lits[8]
     for i in range(2):
         b1, b0, a1 = 4 * i, 4 * i + 1, 4 * i + 2
         if lits[b0] < 0:
             lits[b0] = Fraction(0)
-        step = Fraction(10) ** (math.floor(math.log10(abs(float(lits[b1])) or 1.0))
-                                - DIGITS + 1)
+        e = errs[b1]
+        if e is not None and math.isfinite(e) and e > 0:
+            step = Fraction(10) ** (math.floor(math.log10(e)) - SE_DIGITS)
+        else:
+            step = Fraction(10) ** (math.floor(math.log10(abs(float(lits[b1])) or 1.0))
+                                    - DIGITS + 1)
         while lits[a1] * lits[b1] < lits[b0]:
             lits[b1] += step
     return lits
 
 
-def passive_model_text(name: str, test: PassivityTest, *, description: str = "") -> str:
+def passive_model_text(name: str, test: PassivityTest, *, description: str = "",
+                       errors: Sequence[float] | None = None) -> str:
     """The passive fit as a ``verify gate`` model file (its decimals satisfy the passivity
-    constraints exactly; the gate certifies it)."""
-    from verify.identify.model_writer import model_text
+    constraints exactly; the gate certifies it), to the digits ``errors`` (the
+    unconstrained estimate's standard errors) justify, its figures to 4 digits."""
+    from verify.identify.model_writer import FIGURE_DIGITS, canonical, model_text
 
-    lits = passive_literals(test.theta_passive)
+    lits = passive_literals(test.theta_passive, errors)
     bad = passive_constraints(lits)
     if bad:
         raise VerifyInputError(f"the passive fit violates {', '.join(bad)} (denominator "
@@ -340,8 +350,10 @@ def passive_model_text(name: str, test: PassivityTest, *, description: str = "")
     table = {"method": "passive output-error fit (verify.identify.passive_fit)",
              "passivity_constraints": "c12 = -c21, a1_i > 0, a0_i > 0, b0_i >= 0, "
                                       "a1_i b1_i >= b0_i",
-             "likelihood_ratio": test.statistic, "p_value": test.p_value,
-             "rejected": test.rejected, "fit_identification": list(test.fit_passive)}
+             "likelihood_ratio": canonical(test.statistic, FIGURE_DIGITS),
+             "p_value": canonical(test.p_value, FIGURE_DIGITS),
+             "rejected": test.rejected,
+             "fit_identification": [canonical(f, FIGURE_DIGITS) for f in test.fit_passive]}
     text, _ = model_text(name, Structure.paper(), [float(x) for x in lits], table,
                          description=description or "best passive model of the paper's "
                          "class for the logs (verify identify)")

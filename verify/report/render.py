@@ -22,6 +22,7 @@ from typing import Any
 from verify import __version__
 from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.registry import RunResult
+from verify.report.canonical import canonical_data
 from verify.report.mathml import markdown_prose, mathml, prose_html
 from verify.report.mathtex import prose_to_latex
 from verify.report.run_info import RunInfo
@@ -87,8 +88,10 @@ def _claim_json(r: ClaimResult) -> dict[str, Any]:
     data = r.to_json()
     data.pop("seconds", None)
     data["evidence"] = [
-        {**e, "data": _timeless(e["data"])} if e["kind"] == EvidenceKind.DERIVATION.value
-        else e for e in data["evidence"]]
+        {**e, "data": canonical_data(_timeless(e["data"])
+                                     if e["kind"] == EvidenceKind.DERIVATION.value
+                                     else e["data"])}
+        for e in data["evidence"]]
     return data
 
 
@@ -152,7 +155,7 @@ def _figure_href(e) -> str | None:
 
 def _evidence_data(e) -> Any:
     data = e.to_json()["data"]
-    return _timeless(data) if e.kind is EvidenceKind.DERIVATION else data
+    return canonical_data(_timeless(data) if e.kind is EvidenceKind.DERIVATION else data)
 
 
 def claim_latex(r: ClaimResult) -> dict[str, str]:
