@@ -45,10 +45,10 @@ def _build_parser() -> argparse.ArgumentParser:
                        help="seed of the random samples (default: 20261121)")
     p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
                        metavar="DIR", help="where certificates are written (default certificates)")
-    p_all.add_argument("--latex", action="store_true",
-                       help="also write appendix.tex in the report directory: the report as "
+    p_all.add_argument("--latex", action=argparse.BooleanOptionalAction, default=True,
+                       help="write appendix.tex in the report directory too: the report as "
                             "a LaTeX appendix for the paper (pdflatex appendix.tex there "
-                            "builds it)")
+                            "builds it; default on, --no-latex leaves it out)")
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
