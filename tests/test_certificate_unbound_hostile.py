@@ -129,7 +129,7 @@ def test_moved_genuine_certificate_is_unbound_and_its_copy_in_place_is_valid(tmp
 
 
 def test_robust_certificate_moved_away_from_its_identification_is_unbound(tmp_path, capsys):
-    (shipped,) = (ROOT / "certificates").glob("nonpassive_human-identified-robust-*.json")
+    (shipped,) = (ROOT / "certificates").glob("nonpassive_human-identified-robust-band-*.json")
     moved = tmp_path / shipped.name
     shutil.copy(shipped, moved)
     code, out = _check(capsys, moved)
@@ -140,7 +140,7 @@ def test_robust_certificate_moved_away_from_its_identification_is_unbound(tmp_pa
 
 
 def test_robust_certificate_in_place_is_bound(capsys):
-    (shipped,) = (ROOT / "certificates").glob("nonpassive_human-identified-robust-*.json")
+    (shipped,) = (ROOT / "certificates").glob("nonpassive_human-identified-robust-band-*.json")
     code, out = _check(capsys, shipped)
     assert code == 0 and out.startswith("ok") and "unbound" not in out
 

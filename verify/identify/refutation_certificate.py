@@ -159,15 +159,11 @@ def check_claim(data: dict[str, Any], path: Path
 def check_tree(data: dict[str, Any], shape: rb.Shape, region: Region, w: mpq,
                v: tuple[mpq, mpq]) -> str | None:
     """The enclosure and every leaf, exactly; None when all pass."""
-    phi, cov_phi = rb.reduce_region(region.center, region.covariance)
+    enclosed = rc.read_enclosure(data, region)
+    if isinstance(enclosed, str):
+        return enclosed
+    phi, cov_phi, r = enclosed
     dims = len(phi)
-    enclosure = data["enclosure"]
-    if not isinstance(enclosure, list) or len(enclosure) != dims:
-        raise CertificateFormatError(f"field 'enclosure' must list {dims} half-widths")
-    r = [rational(x, f"enclosure[{i}]") for i, x in enumerate(enclosure)]
-    bad = rb.enclosure_ok(cov_phi, region.chi2, r)
-    if bad is not None:
-        return f"the box does not enclose the region: {bad}"
     if not isinstance(data["tree"], list):
         raise CertificateFormatError("field 'tree' must be a list")
     S = rb.inverse(cov_phi)

@@ -220,18 +220,30 @@ def check_claim(data: dict[str, Any], path: Path) -> tuple[rb.Shape, Region,
     return shape, region, band, None
 
 
-def check_leaves(data: dict[str, Any], shape: rb.Shape, region: Region,
-                 band: tuple | None) -> str | None:
-    """The enclosure, the pieces and every leaf, exactly; None when all pass."""
+def read_enclosure(data: dict[str, Any], region: Region
+                   ) -> tuple[list, list, list] | str:
+    """The region reduced to its free coordinates (phi, their covariance) and the
+    certificate's box half-widths, checked exactly to enclose it; the refusal otherwise."""
     phi, cov_phi = rb.reduce_region(region.center, region.covariance)
     dims = len(phi)
     enclosure = data["enclosure"]
     if not isinstance(enclosure, list) or len(enclosure) != dims:
         raise CertificateFormatError(f"field 'enclosure' must list {dims} half-widths")
-    r = [rational(v, f"enclosure[{i}]") for i, v in enumerate(enclosure)]
+    r = [rational(x, f"enclosure[{i}]") for i, x in enumerate(enclosure)]
     bad = rb.enclosure_ok(cov_phi, region.chi2, r)
     if bad is not None:
         return f"the box does not enclose the region: {bad}"
+    return phi, cov_phi, r
+
+
+def check_leaves(data: dict[str, Any], shape: rb.Shape, region: Region,
+                 band: tuple | None) -> str | None:
+    """The enclosure, the pieces and every leaf, exactly; None when all pass."""
+    enclosed = read_enclosure(data, region)
+    if isinstance(enclosed, str):
+        return enclosed
+    phi, cov_phi, r = enclosed
+    dims = len(phi)
     S = rb.inverse(cov_phi)
     pieces = data["pieces"]
     wanted = pieces_for(band)

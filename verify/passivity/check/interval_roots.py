@@ -166,11 +166,10 @@ def check_no_root(h: fmpq_poly, a, b, breakpoints: list[fmpq]) -> str | None:
     return None
 
 
-def refine(h: fmpq_poly, interval: tuple[fmpq, fmpq], width: fmpq) -> tuple[fmpq, fmpq]:
-    """Shrink the open (u, v), holding exactly one root of squarefree h (or u == v, a
-    rational root), below ``width``; the ends may be roots of h themselves. Exact:
-    root counts until both ends are non-roots, then sign changes."""
-    u, v = interval
+def off_roots(h, u: fmpq, v: fmpq) -> tuple[fmpq, fmpq]:
+    """The open (u, v), holding exactly one root of squarefree h, bisected until neither
+    end is a root of h (root counts decide the half); (r, r) for a rational root met on
+    the way, and (u, u) as given."""
     if u == v:
         return u, v
     while h(u) == 0 or h(v) == 0:
@@ -181,6 +180,16 @@ def refine(h: fmpq_poly, interval: tuple[fmpq, fmpq], width: fmpq) -> tuple[fmpq
             v = mid
         else:
             u = mid
+    return u, v
+
+
+def refine(h: fmpq_poly, interval: tuple[fmpq, fmpq], width: fmpq) -> tuple[fmpq, fmpq]:
+    """Shrink the open (u, v), holding exactly one root of squarefree h (or u == v, a
+    rational root), below ``width``; the ends may be roots of h themselves. Exact:
+    root counts until both ends are non-roots, then sign changes."""
+    u, v = off_roots(h, *interval)
+    if u == v:
+        return u, v
     su = h(u)
     while v - u > width:
         mid = (u + v) / 2

@@ -239,19 +239,9 @@ def dyadic_of(x) -> fmpq:
 def _bracket(p: Poly, u: fmpq, v: fmpq) -> tuple[fmpq, fmpq]:
     """(a, b) inside the open (u, v), which holds one root of squarefree p, with
     p(a) p(b) < 0; or (r, r) for a rational root met on the way."""
-    from verify.passivity.check.interval_roots import count_roots_inside
+    from verify.passivity.check.interval_roots import off_roots
 
-    if u == v:
-        return u, v
-    while p(u) == 0 or p(v) == 0:
-        mid = (u + v) / 2
-        if p(mid) == 0:
-            return mid, mid
-        if count_roots_inside(p, u, mid) == 1:
-            v = mid
-        else:
-            u = mid
-    return u, v
+    return off_roots(p, u, v)
 
 
 def reduce_mod(g: Poly, rho: Poly) -> tuple[Poly, Poly]:
