@@ -89,3 +89,14 @@ def test_the_readme_example_checks(tmp_path):
     path = tmp_path / "readme_example.py"
     path.write_text(readme[start : readme.index("```", start)])
     assert main(["check", str(path), "--quick"]) == 0
+
+
+def test_user_certificates_default_to_the_git_ignored_build_folder():
+    """`verify check FILE` on an example must not add files among the paper's
+    certificates: its SOS certificates go under build/ unless --certificates says."""
+    from verify.cli import GATE_CERTIFICATES, _build_parser
+
+    args = _build_parser().parse_args(["check", "examples/sos_inequalities.py"])
+    assert args.certificates == GATE_CERTIFICATES and GATE_CERTIFICATES.parts[0] == "build"
+    ignored = (Path(__file__).resolve().parents[1] / ".gitignore").read_text().split()
+    assert "build/" in ignored

@@ -16,7 +16,8 @@ from pathlib import Path
 from verify import __version__
 from verify.errors import VerifyInputError
 
-#: Where ``verify gate`` writes certificates unless told (under the git-ignored build/).
+#: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
+#: git-ignored build/; ``verify all`` writes the paper's into certificates/).
 GATE_CERTIFICATES = Path("build") / "certificates"
 
 
@@ -92,9 +93,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--quick", action="store_true", help="less falsification effort")
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
-    p_check.add_argument("--certificates", type=Path, default=Path("certificates"),
+    p_check.add_argument("--certificates", type=Path, default=GATE_CERTIFICATES,
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
-                         "certificates (default certificates)")
+                         f"certificates (default {GATE_CERTIFICATES}, git-ignored)")
     p_check.add_argument("--budget-seconds", type=float, default=120.0, metavar="S",
                          help="time for the whole file (loading it and checking every "
                          "step); a step past it is inconclusive: budget exceeded "
