@@ -113,12 +113,15 @@ def main() -> None:
                         help="identification trials per experiment, one study for each "
                              "(default: the paper's 6, and 12)")
     parser.add_argument("--k-s", type=float, default=3.0)
-    parser.add_argument("--rate", type=float, default=None,
-                        help="rate after decimation (Hz); the protocol's default when absent")
+    parser.add_argument("--rate", default="auto",
+                        help="rate after decimation: Hz, 'off' or 'auto' (the default, as "
+                             "`verify identify` does)")
     parser.add_argument("--jobs", type=int, default=2, help="processes (seeds run in parallel)")
     parser.add_argument("--compare", action="store_true",
                         help="also run the ARX-started output-error baseline")
     args = parser.parse_args()
+    if args.rate not in ("auto", "off"):
+        args.rate = float(args.rate)
     methods = ("riv+pem", "arx+oe") if args.compare else ("riv+pem",)
     warnings.simplefilter("ignore")
     for trials in args.trials:
@@ -128,7 +131,7 @@ def main() -> None:
                           out_rate=args.rate, jobs=args.jobs,
                           progress=lambda rep: print(f"seed {rep.seed} done", flush=True))
         print(f"\n{args.seeds} experiments: n = {args.n}, {trials} identification trials x "
-              f"15 s at 120 Hz, k_s = {args.k_s}, decimated to {args.rate or 20:g} Hz; "
+              f"15 s at 120 Hz, k_s = {args.k_s}, rate {args.rate}; "
               f"{time.perf_counter() - start:.0f} s\n")
         print(coverage_table(study, "riv+pem"))
         if args.compare:

@@ -123,7 +123,7 @@ def _store(context: CheckContext, outcome) -> list[Path]:
     "and not for the passive one. Whether the "
     "true parameters lie in each region is reported (exactly) but is no criterion of one "
     "seeded experiment.",
-    method="verify identify: protocol (dead time, decimation to 20 Hz, 6:6 split), "
+    method="verify identify: protocol (dead time, the logged rate kept, 6:6 split), "
     "refined IV + prediction-error estimate with its parameter covariance; robust verdict "
     "by exact interval branch and bound: a proof for every model of the region, or a "
     "frequency and direction where every model fails (both re-checked with no solver).",

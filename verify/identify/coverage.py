@@ -79,7 +79,7 @@ class Study:
 def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
               methods: Sequence[str] = ("riv+pem",), k_s: float = 3.0, n: int = 8,
               trials: int = 6, trial_seconds: float = 15.0, rate: float = 120.0,
-              out_rate: float | None = None, operator_noise: float | None = None,
+              out_rate: float | str | None = None, operator_noise: float | None = None,
               measurement_noise: float | None = None, progress=None, jobs: int = 1) -> Study:
     """Simulate, prepare and estimate once per seed (module docstring).
 
@@ -115,7 +115,7 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
 
 def repetition(theta_true: np.ndarray, seed: int, *, methods: tuple[str, ...], k_s: float,
                n: int, trials: int, trial_seconds: float, rate: float,
-               out_rate: float | None, extra: dict) -> Repetition:
+               out_rate: float | str | None, extra: dict) -> Repetition:
     """One seeded experiment of :func:`run_study`."""
     structure = Structure.paper()
     log = simulate_experiment(true_model(theta_true), k_s=k_s, n=n, trials=trials,

@@ -29,7 +29,8 @@ certified:
    R(e_i) > ``MAX_ROUGHNESS_RATIO`` R(u_i); otherwise e and u are swapped or not the
    loop's signals. Measured on the prepared trials of simulated logs of the paper's loop:
    R(u_i) / R(e_i) = 3.2-3.4 noise-free (120 Hz), about 13 with the default noises
-   (20 Hz), so swapped logs give 3.2-13 and are refused; the ratio 2 leaves room for
+   decimated to 20 Hz and 30-34 at the logged 120 Hz (the shipped example logs), so
+   swapped logs give 3.2-34 and are refused; the ratio 2 leaves room for
    open-loop logs (e a smooth random input, u = H e: R(e) / R(u) = 1.2 in the tests).
 5. **Did the loop stay bounded?** In no trial may the RMS of e or u over the last
    quarter exceed ``MAX_GROWTH`` times the RMS over the first quarter, and the signals
