@@ -114,23 +114,11 @@ def _check_split(split: tuple[int, int], count: int) -> None:
                            f"{advice}")
 
 
-MIN_MODEL_SAMPLES = 8  # decimated samples a segment needs (protocol.prepare's default)
-
-
 def _check_lengths(log, rate: float | str | None) -> None:
     """Every trial long enough, decimated, for the model (Section 4); shorter is exit 2."""
-    from verify.identify.protocol import (
-        DEFAULT_RATE,
-        MIN_FILTER_SAMPLES,
-        chosen_rate,
-        decimation_factor,
-    )
+    from verify.identify.protocol import MIN_FILTER_SAMPLES, MIN_MODEL_SAMPLES, decimation_of
 
-    if rate == "auto":
-        rate = chosen_rate(log)[0]
-    elif rate == "off":
-        rate = log.rate
-    q = decimation_factor(log.rate, DEFAULT_RATE if rate is None else rate)
+    q, _ = decimation_of(log, rate)
     need = max(MIN_FILTER_SAMPLES, q * (MIN_MODEL_SAMPLES - 1) + 1)
     for tr in log.trials:
         if len(tr.t) < need:

@@ -73,6 +73,8 @@ THRESHOLD = 0.3  # fraction of the trial's largest change of the smoothed u
 MAX_DEAD_TIME = 2.0  # s, the threshold rule never removes more
 FILTER_ORDER = 8  # the Chebyshev type II anti-aliasing filter
 STOPBAND_DB = 60.0  # its attenuation above the new Nyquist frequency (doubled by filtfilt)
+#: Fewest decimated samples a segment needs for the model (``prepare``'s default).
+MIN_MODEL_SAMPLES = 8
 #: Fewest input samples a segment needs for the forward-backward filter (its padding).
 MIN_FILTER_SAMPLES = 3 * (FILTER_ORDER + 1) + 1
 DEAD_TIME_RULES = ("auto", "event", "threshold")
@@ -126,6 +128,17 @@ def chosen_rate(log: ExperimentLog, target: float = AUTO_MAX_RATE) -> tuple[floa
                                  "needs no decimation, and decimation costs accuracy)")
     return log.rate / q, (f"decimated to {log.rate / q:g} Hz (logs above {target:g} Hz are "
                           "decimated only to bound the computation)")
+
+
+def decimation_of(log: ExperimentLog, rate: float | str | None) -> tuple[int, str]:
+    """The decimation factor q for ``rate`` (Hz, "auto", "off" or None for
+    ``DEFAULT_RATE``; module docstring, step 3) and why it was chosen ("" when given)."""
+    why = ""
+    if rate == "auto":
+        rate, why = chosen_rate(log)
+    elif rate == "off":
+        rate, why = log.rate, "--rate off"
+    return decimation_factor(log.rate, DEFAULT_RATE if rate is None else rate), why
 
 
 def decimation_factor(rate_in: float, rate_out: float) -> int:
@@ -225,7 +238,7 @@ def prepare(
     rate: float | None = None,
     split: tuple[int, int] = DEFAULT_SPLIT,
     dead_time: str = "auto",
-    min_samples: int = 8,
+    min_samples: int = MIN_MODEL_SAMPLES,
 ) -> Prepared:
     """The protocol of Section 4 applied to ``log`` (steps in the module docstring).
 
@@ -255,12 +268,7 @@ def prepare(
         raise VerifyInputError(f"min_samples must be an integer >= 2, got {min_samples!r}")
     trials, shifted = one_clock(log.trials)
     a, b = _split(split, len(trials))
-    why = ""
-    if rate == "auto":
-        rate, why = chosen_rate(log)
-    elif rate == "off":
-        rate, why = log.rate, "--rate off"
-    q = decimation_factor(log.rate, DEFAULT_RATE if rate is None else rate)
+    q, why = decimation_of(log, rate)
     rate_out = log.rate / q
     with_events = [tr.start is not None for tr in trials]
     rule = dead_time
