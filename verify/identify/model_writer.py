@@ -24,6 +24,7 @@ import json
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from decimal import ROUND_HALF_EVEN, Decimal
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -61,14 +62,11 @@ def canonical(x: float, digits: int = FIGURE_DIGITS) -> float:
 def coefficient_text(x: float, standard_error: float | None) -> str:
     """The literal of a coefficient, to the precision its standard error justifies
     (``SE_DIGITS``); :func:`decimal_text` when the standard error is unknown or zero."""
-    from decimal import ROUND_HALF_EVEN, Decimal
-
     if standard_error is None or not (math.isfinite(standard_error) and standard_error > 0):
         return decimal_text(x)
     if not math.isfinite(x):
         raise VerifyInputError(f"parameter value {x} is not finite")
-    place = math.floor(math.log10(standard_error)) - SE_DIGITS
-    d = Decimal(repr(float(x))).quantize(Decimal(1).scaleb(place), rounding=ROUND_HALF_EVEN)
+    d = _quantized(x, math.floor(math.log10(standard_error)) - SE_DIGITS)
     if d == 0:
         return "0"
     text = f"{d:f}"  # positional: a TOML float or integer literal
@@ -218,15 +216,16 @@ class IdentifiedFile:
         return float(Fraction(value))
 
 
+def _quantized(x: float, place: int) -> Decimal:
+    """x's exact decimal value rounded to the place 10^place (half to even)."""
+    return Decimal(repr(float(x))).quantize(Decimal(1).scaleb(place), rounding=ROUND_HALF_EVEN)
+
+
 def _on_grid(x: float, scale: float, digits: int) -> float:
     """x rounded to the decimal grid 10^(floor(log10 scale) - digits) (half to even)."""
-    from decimal import ROUND_HALF_EVEN, Decimal
-
     if not scale > 0:
         return 0.0
-    place = math.floor(math.log10(scale)) - digits
-    d = Decimal(repr(float(x))).quantize(Decimal(1).scaleb(place), rounding=ROUND_HALF_EVEN)
-    return float(d) + 0.0  # + 0.0: no negative zero
+    return float(_quantized(x, math.floor(math.log10(scale)) - digits)) + 0.0  # no -0.0
 
 
 def canonical_covariance(cov: np.ndarray) -> list[list[float]]:
