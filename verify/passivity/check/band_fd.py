@@ -347,15 +347,14 @@ def check_band_fd_data(data: Any) -> tuple[KypCheck, ExactModel | None, tuple | 
     ValueError (one line) when malformed. Everything is re-derived from the stored model:
     the F_k, their factorisations, the Descartes breakpoints, the inner signs.
     """
-    from verify.passivity.check.fd_certificate import _model
+    from verify.passivity.check.fd_certificate import model_from_json
+    from verify.passivity.io.strict_json import fields
 
     if not isinstance(data, dict) or data.get("schema") != SCHEMA:
         raise ValueError(f"schema is not {SCHEMA}")
-    if set(data) != _KEYS:
-        extra, missing = sorted(set(data) - _KEYS), sorted(_KEYS - set(data))
-        raise ValueError(f"unknown fields {extra} / missing fields {missing}")
+    fields(data, required=_KEYS)
     try:
-        model = _model(data)
+        model = model_from_json(data)
         band_text = data["band"]
         if not isinstance(band_text, list) or len(band_text) != 2 \
                 or not all(isinstance(t, str) for t in band_text):

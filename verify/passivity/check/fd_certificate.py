@@ -101,7 +101,9 @@ def _strict_matrix(rows: Any, where: str) -> list:
             for i, row in enumerate(rows)]
 
 
-def _model(data: dict) -> ExactModel:
+def model_from_json(data: dict) -> ExactModel:
+    """The exact model a certificate stores under ``"model"`` (ValueError when malformed;
+    shared by the positive-realness and band certificates)."""
     m = data["model"]
     if not isinstance(m, dict) or set(m) != {"A", "B", "C", "D"}:
         raise ValueError("the model must have exactly A, B, C, D")
@@ -123,7 +125,7 @@ def check_pr_certificate_data(data: Any, path: Path | None = None) -> KypCheck:
         extra, missing = sorted(set(data) - _KEYS), sorted(_KEYS - set(data))
         raise ValueError(f"{where}unknown fields {extra} / missing fields {missing}")
     try:
-        model = _model(data)
+        model = model_from_json(data)
         stored_sums = data["hermitian"]["minor_sums"]
         certs = [nonnegativity_from_json(item["nonnegativity"]) for item in stored_sums]
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as exc:
@@ -189,7 +191,7 @@ def check_pr_file(data: dict[str, Any], path: Path) -> KypCheck:
     if not result.ok:
         return result
     margin = fraction(q)
-    given = shifted(_model(data), -margin)  # H, the model as given
+    given = shifted(model_from_json(data), -margin)  # H, the model as given
     expected = file_name(data["name"], Claim(margin), given.fingerprint())
     if Path(path).name != expected:
         return KypCheck(False, f"file name does not match the content (expected {expected})")
