@@ -17,7 +17,7 @@ import pytest
 
 from verify.cli import main
 from verify.proof import Context, Derivation, by_algebra, check, tr
-from verify.proof.checker import _problem
+from verify.proof.checker import step_problem
 from verify.proof.confirm import exact_witness
 from verify.proof.expr import ProofSyntaxError
 from verify.proof.falsify import SearchSettings
@@ -161,7 +161,7 @@ def test_no_exact_witness_at_the_zero_quaternion():
     R = ctx.rotation("R")
     c = ctx.condition("tr R = 4", tr(R), 4)
     d = Derivation("vacuous", tr(R), ctx, where=(c,)).equals(4, by_algebra())
-    problem = _problem(d, d.steps[0])
+    problem = step_problem(d, d.steps[0])
     assert not exact_witness(problem, {R.data.uid: np.zeros(4)})
     assert check(d, SearchSettings(samples=64, hypothesis_examples=10, ipopt_starts=1,
                                    seed=3)).verdict != "verified"
@@ -278,7 +278,7 @@ def test_no_counterexample_at_the_zero_quaternion():
     R = ctx.rotation("R")
     c = ctx.condition("tr R = 4", tr(R), 4)
     d = Derivation("vacuous", tr(R), ctx, where=(c,)).equals(5, by_algebra())
-    problem = _problem(d, d.steps[0])
+    problem = step_problem(d, d.steps[0])
     assert confirm(problem, {R.data.uid: np.zeros(4)}) is None  # not a point at all
     assert check(d, SearchSettings(samples=64, hypothesis_examples=10, ipopt_starts=1,
                                    seed=3)).verdict != "refuted"

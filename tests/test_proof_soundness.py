@@ -43,7 +43,7 @@ from verify.proof import (
     sym,
     tr,
 )
-from verify.proof.checker import _problem
+from verify.proof.checker import step_problem
 from verify.proof.confirm import Counterexample, confirm
 from verify.proof.derivation import Step
 from verify.proof.evaluate import NumpyAlgebra
@@ -135,7 +135,7 @@ def test_a_unit_vector_in_a_condition_is_checked_at_the_pole():
     u, v = ctx.unit_vector("u"), ctx.vector("v")
     on = ctx.condition("<u, v> = 1", dot(u, v), 1)
     d = Derivation("uv", dot(v, u) * dot(u, v), ctx, where=(on,)).equals(1, by_algebra())
-    assert [w.name for w in _problem(d, d.steps[0]).gap_variables] == ["u"]
+    assert [w.name for w in step_problem(d, d.steps[0]).gap_variables] == ["u"]
     result = check(d, SMALL)
     assert result.verdict == "verified"
     assert "points the charts miss" in result.steps[0].exact
@@ -149,7 +149,7 @@ def test_a_unit_vector_absent_from_the_conditions_is_covered_by_continuity():
     d = Derivation("square", R * R, ctx, where=(on,)).equals(
         I3 + 2 * (hat(xi) * hat(xi)), by_algebra()
     )
-    problem = _problem(d, d.steps[0])
+    problem = step_problem(d, d.steps[0])
     assert {v.name for v in problem.gap_variables} == {"θ"}  # ξ is free on cos θ = 0
     result = check(d, SMALL)
     assert result.verdict == "verified"
@@ -388,7 +388,7 @@ def test_a_positive_gain_is_not_refuted_by_its_negative_root():
     d = Derivation("k = 2", k, ctx, where=(sq,)).equals(2, by_algebra())
     result = check(d, SMALL)  # true, but the ideal of k² = 4 does not know k > 0
     assert result.verdict == "inconclusive" and result.steps[0].counterexample is None
-    problem = _problem(d, d.steps[0])
+    problem = step_problem(d, d.steps[0])
     point = {k.data.uid: np.array([-2.0])}
     assert not isinstance(confirm(problem, point), Counterexample)
 
@@ -400,7 +400,7 @@ def test_two_conditions_on_one_variable_hold_together_in_a_counterexample():
     b = ctx.condition("(x - 1)(x - 3) = 0", (x - 1) * (x - 3), 0)
     d = Derivation("x = 1", x, ctx, where=(a, b)).equals(1, by_algebra())
     assert _verdict(d) == "verified"
-    problem = _problem(d, d.steps[0])
+    problem = step_problem(d, d.steps[0])
     for bad in (2.0, 3.0):
         assert not isinstance(confirm(problem, {x.data.uid: np.array([bad])}), Counterexample)
     # where the step holds exactly, the violation is rejected, with the rounding it used
@@ -416,7 +416,7 @@ def test_a_point_outside_the_assumptions_is_no_counterexample():
     d = Derivation("x ≥ 0", x, ctx, assumes=(pos,)).ge(0, by_citation("sign"))
     result = check(d, SMALL)
     assert result.verdict == "inconclusive"
-    problem = _problem(d, d.steps[0])
+    problem = step_problem(d, d.steps[0])
     assert not isinstance(confirm(problem, {x.data.uid: np.array([-1.0])}), Counterexample)
 
 
@@ -664,7 +664,7 @@ def test_the_pinned_unit_vector_is_the_north_pole_exactly():
     u, th = ctx.unit_vector("u"), ctx.angle("θ")
     on = ctx.condition("cos θ = <u, u> - 1", cos(th), dot(u, u) - 1)
     d = Derivation("u", u, ctx, where=(on,)).equals(u, by_algebra())
-    pinned = _problem(d, d.steps[0]).pinned([u.data, th.data])
+    pinned = step_problem(d, d.steps[0]).pinned([u.data, th.data])
     assert [x.num for x in pinned.exact(u)] == [0, 0, 1]
     assert [x.num for x in pinned.exact(cos(th))] == [-1]
     assert pinned.conditions_empty  # cos π = 0 is false: that piece has no points

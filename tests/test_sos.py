@@ -221,19 +221,19 @@ def test_tampered_certificates_are_rejected(stored, how):
 
 
 def test_a_certificate_is_bound_to_its_step(stored):
-    from verify.proof.checker import _problem
+    from verify.proof.checker import step_problem
     from verify.proof.sos_step import step_program
 
     _, path, _ = stored
     data = json.loads(path.read_text())
     ctx, R, _, _ = _ctx()
     other = Derivation("other", tr(R), ctx).le(3, by_sos())
-    sp = step_program(_problem(other, other.steps[0]), other.steps[0].because)
+    sp = step_program(step_problem(other, other.steps[0]), other.steps[0].because)
     assert not check_bound(data, sp).ok
     # a multiplier the step does not allow (a made-up 'assumption') is refused
     ctx2, R2, _, _ = _ctx()
     same = Derivation("axis", dot(vee(sk(R2)), vee(sk(R2))), ctx2).le(3 - tr(R2), by_sos())
-    sp2 = step_program(_problem(same, same.steps[0]), same.steps[0].because)
+    sp2 = step_program(step_problem(same, same.steps[0]), same.steps[0].because)
     assert check_bound(data, sp2).ok
     forged = copy.deepcopy(data)
     forged["blocks"][0]["grounds"] = "assumed: anything I like"

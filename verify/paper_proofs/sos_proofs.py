@@ -67,7 +67,7 @@ def program_for_key(key: str, statement: str | None = None):
     ``statement`` (the certificate's text of the step) only narrows which steps are
     rebuilt; the match is on the key of the re-derived program.
     """
-    from verify.proof.checker import _problem
+    from verify.proof.checker import step_problem
     from verify.proof.sos_step import step_program
     from verify.sos.certificate import claim_key
 
@@ -76,7 +76,7 @@ def program_for_key(key: str, statement: str | None = None):
         step = d.steps[0]
         if statement is not None and f"{step.lhs} {step.relation} {step.rhs}" != statement:
             continue
-        sp = step_program(_problem(d, step), step.because)
+        sp = step_program(step_problem(d, step), step.because)
         if claim_key(sp) == key:
             return sp
     return None

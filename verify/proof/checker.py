@@ -138,7 +138,9 @@ class DerivationResult:
         }
 
 
-def _problem(d: Derivation, step: Step) -> StepProblem:
+def step_problem(d: Derivation, step: Step) -> StepProblem:
+    """The exact question one step asks: its two sides, the derivation's and the step's
+    conditions, and the assumptions and terms its justification brings."""
     conditions = tuple(d.where) + tuple(step.where)
     because = step.because
     extra: tuple = ()
@@ -244,7 +246,7 @@ def _covered(step: Step, pieces: list[StepProblem]) -> tuple[bool, str, list[Ste
 def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
     step = d.steps[index]
     start = time.perf_counter()
-    problem = _problem(d, step)
+    problem = step_problem(d, step)
     settings = SearchSettings(cfg.samples, cfg.hypothesis_examples, cfg.ipopt_starts,
                               cfg.seed + 7919 * index)
     too_large = over_limits(*problem.all_exprs)
@@ -425,7 +427,7 @@ def _snapshot(d: Derivation) -> Derivation:
     return copy
 
 
-def _validate(d: Derivation) -> None:
+def validate_derivation(d: Derivation) -> None:
     """Refuse a derivation not built through the API: each step must start where the
     previous one ended (the first at ``start``), relations and shapes must be those the
     builders allow, and every tree must be well formed."""
@@ -466,7 +468,7 @@ def _validate(d: Derivation) -> None:
     if {"<=", ">="} <= relations:
         raise ProofSyntaxError(f"{d.name}: a chain cannot mix <= and >=")
     for step in d.steps:  # conditions, assumptions, terms and premises too
-        validate_tree(*_problem(d, step).all_exprs)
+        validate_tree(*step_problem(d, step).all_exprs)
 
 
 def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> str:
@@ -557,9 +559,9 @@ def _check(d: Derivation, cfg: SearchSettings | None, budget: Budget | None,
     cfg = cfg or SearchSettings()
     start = time.perf_counter()
     d = _snapshot(d)
-    _validate(d)
+    validate_derivation(d)
     steps = [bounded_step(d, i, cfg, budget, deadline) for i in range(len(d.steps))]
-    problems = [_problem(d, step) for step in d.steps]
+    problems = [step_problem(d, step) for step in d.steps]
     conditions, _ = _union(problems)
     joint = ""
     if steps and all(s.verdict == VERIFIED for s in steps):

@@ -314,16 +314,16 @@ def _step_data(step, problem: StepProblem) -> dict | None:
 def program_of_step(data: object) -> StepProgram | str:
     """The SOS program of the one-step derivation in ``data`` (rebuilt with our own
     classes, :func:`verify.proof.wire.decode`), or why there is none."""
-    from verify.proof.checker import _problem, _validate
+    from verify.proof.checker import step_problem, validate_derivation
     from verify.proof.rebuild import decode
 
     try:
         (d,) = decode(data)
-        _validate(d)
+        validate_derivation(d)
         (step,) = d.steps
         if not isinstance(step.because, BySos) or step.relation == "=":
             return "not an inequality step justified by by_sos"
-        problem = _problem(d, step)
+        problem = step_problem(d, step)
         from verify.proof.size import over_limits
 
         too_large = over_limits(*problem.all_exprs)
