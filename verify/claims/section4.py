@@ -21,7 +21,7 @@ from verify.claims.registry import REGISTRY
 from verify.passivity.band import decide_band
 from verify.passivity.decision import NOT_PASSIVE, PASSIVE, decide
 from verify.passivity.gate import run_band_gate, run_gate
-from verify.passivity.indices import indices
+from verify.passivity.indices import indices, written_estimate
 from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
 from verify.passivity.search.hamiltonian import nu_minimum
@@ -250,7 +250,7 @@ def nu_curves_indices(context: CheckContext) -> Outcome:
         evidence.append(numeric(
             f"{m.name}: min ν = {low.value:.6g} at {where} "
             "(Hamiltonian level crossings, floating point)",
-            True, {"omega": f"{low.omega:.6g}", "nu": float(f"{low.value:.6f}") + 0.0}))
+            True, {"omega": f"{low.omega:.6g}", "nu": written_estimate(low.value)}))
     index_ok = True
     for m in (m25, m30):
         for index in indices(m):

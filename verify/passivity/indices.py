@@ -89,8 +89,8 @@ class IndexBounds:
     def to_json(self) -> dict:
         return {
             "kind": self.kind,
-            "estimate": _digits(self.estimate),
-            "estimate_at": _digits(self.estimate_at),
+            "estimate": written_estimate(self.estimate),
+            "estimate_at": written_estimate(self.estimate_at),
             "exact": self.exact,
             "lower": None if self.lower is None else str(self.lower),
             "upper": None if self.upper is None else str(self.upper),
@@ -109,7 +109,7 @@ class IndexBounds:
 ESTIMATE_DIGITS = 6
 
 
-def _digits(x: float | None) -> float | None:
+def written_estimate(x: float | None) -> float | None:
     """A float estimate as written: ``ESTIMATE_DIGITS`` significant digits of max(1, |x|),
     so an estimate of 0 that the search found as 3e-10 on one machine and -2e-10 on
     another is written 0.0 on both."""
@@ -447,4 +447,4 @@ def indices(model: LTIModel) -> tuple[IndexBounds, IndexBounds]:
 
 
 __all__ = ["IndexBounds", "check_ofp", "ifp_index", "indices", "loop_transform", "ofp_estimate",
-           "ofp_index", "ofp_matrix", "round_up"]
+           "ofp_index", "ofp_matrix", "round_up", "written_estimate"]
