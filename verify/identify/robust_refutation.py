@@ -26,7 +26,6 @@ contain it, and its exact check fails.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -37,7 +36,13 @@ from gmpy2 import mpq
 from verify.identify import refutation_certificate as rfc
 from verify.identify.region import Region, half_widths
 from verify.identify.robust_certificate import shape_of
-from verify.identify.robust_search import Ellipsoid, FloatOps, floor_short, short
+from verify.identify.robust_search import (
+    Ellipsoid,
+    FloatOps,
+    certified_root,
+    floor_short,
+    short,
+)
 from verify.passivity.check import robust_band as rb
 
 #: Boxes the branch and bound may visit per candidate (w, v).
@@ -128,12 +133,7 @@ def _exact_linear(box: list[rb.Interval], x: mpq, v: tuple[mpq, mpq], shape: rb.
                                shape, ops)[0]
     value = rb.ExactOps.scale(-1, at[0])
     grad = [rb.ExactOps.scale(-1, gk) for gk in over[1]]
-    m = rb.gradient_midpoints(grad)
-    need = chi2 * sum((m[i] * cov_phi[i][j] * m[j] for i in range(dims)
-                       for j in range(dims)), mpq(0))
-    root = short(math.sqrt(max(float(need), 0.0)) * (1 + 1e-6) + 1e-300, 6)
-    while root * root < need:
-        root = short(float(root) * (1 + 1e-5), 6)
+    root = certified_root(grad, cov_phi, chi2)
     low = rb.linear_bound(box, centre, value, grad, phi_c, root)
     if not low > 0:
         return None

@@ -160,20 +160,27 @@ def float_linear(LO: np.ndarray, HI: np.ndarray, variable: str, shape: rb.Shape,
     return worst
 
 
+def certified_root(grad, cov_phi, chi2: mpq) -> mpq:
+    """A short rational r with r^2 >= chi2 m^T cov_phi m, m the gradient's midpoints: the
+    largest first-order change over the region, rounded up so the exact check accepts it."""
+    m = rb.gradient_midpoints(grad)
+    n = len(m)
+    need = chi2 * sum((m[i] * cov_phi[i][j] * m[j] for i in range(n) for j in range(n)),
+                      mpq(0))
+    root = short(math.sqrt(max(float(need), 0.0)) * (1 + 1e-6) + 1e-300, 6)
+    while root * root < need:
+        root = short(float(root) * (1 + 1e-5), 6)
+    return root
+
+
 def exact_linear_leaf(box: list[rb.Interval], variable: str, shape: rb.Shape, cov_phi,
                       phi_c, chi2: mpq, stability: bool) -> list | None:
     """A first-order leaf checked exactly, or None."""
     phi, t = box[:-1], box[-1]
     centre, parts = rb.linear_parts(phi, t, variable, shape)
-    n = len(phi)
     claimed, roots = [], []
     for value, grad in parts:
-        m = rb.gradient_midpoints(grad)
-        need = chi2 * sum((m[i] * cov_phi[i][j] * m[j] for i in range(n) for j in range(n)),
-                          mpq(0))
-        root = short(math.sqrt(max(float(need), 0.0)) * (1 + 1e-6) + 1e-300, 6)
-        while root * root < need:
-            root = short(float(root) * (1 + 1e-5), 6)
+        root = certified_root(grad, cov_phi, chi2)
         low = rb.linear_bound(phi, centre, value, grad, phi_c, root)
         if not low > 0:
             return None
