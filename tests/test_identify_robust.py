@@ -14,7 +14,7 @@ from verify.identify.robust import largest_band, robust_verdict
 from verify.identify.structure import Structure
 from verify.passivity.check import robust_band as rb
 from verify.passivity.io.stored import check_stored_certificate
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 
 
 def _direct(theta, shape: rb.Shape, w: float):

@@ -26,7 +26,7 @@ from verify.passivity.check.realization import minimal_part
 from verify.passivity.check.witness import frequency_witness_at
 from verify.passivity.io.stored import check_stored_certificate
 from verify.passivity.model import from_transfer_function
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 
 BAND = (Fraction(0), Fraction(5))
 

@@ -21,7 +21,7 @@ from verify.identify import refutation_certificate as rfc
 from verify.identify import robust_certificate as rc
 from verify.identify.robust import robust_verdict
 from verify.passivity.io.stored import check_stored_certificate
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 
 BAND = (Fraction(0), Fraction(20))
 

@@ -310,7 +310,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.claims.proofs import search_settings
     from verify.proof import ProofSyntaxError, certificate_store, check
     from verify.proof.isolate import load_isolated
-    from verify.report.atomic import write_atomic
+    from verify.artefacts.atomic import write_atomic
 
     budget = _budget(args)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step

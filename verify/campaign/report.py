@@ -1,7 +1,7 @@
 """The campaign report: where the properties held over the swept parameters, and why not.
 
 In: the campaign's runs (in spec order) and their stored rows. Out: Markdown and HTML
-with figures (PNG bytes that depend only on the data, :mod:`verify.report.figure_bytes`)
+with figures (PNG bytes that depend only on the data, :mod:`verify.artefacts.figure_bytes`)
 and ``commands.txt`` (one ``verify simulate`` line per run). Sections:
 
 * the humans, each with the passivity gate's verdict on its model file
@@ -350,7 +350,7 @@ def property_figure(c: Campaign) -> bytes:
     """One panel per checked property: the fraction of runs that held, setting x k_s."""
     import numpy as np
 
-    from verify.report.figure_bytes import figure_bytes
+    from verify.artefacts.figure_bytes import figure_bytes
 
     plt = _pyplot()
     props = list(c.spec.properties)
@@ -398,7 +398,7 @@ def property_figure(c: Campaign) -> bytes:
 
 def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
     """Convergence time of |dbar - d_r| against k_s per setting (median, range, misses)."""
-    from verify.report.figure_bytes import figure_bytes
+    from verify.artefacts.figure_bytes import figure_bytes
 
     plt = _pyplot()
     cells = c.cells()
@@ -626,7 +626,7 @@ def timing_blocks(c: Campaign, session: dict[str, str]) -> list[Block]:
 def write_report(c: Campaign, out: Path, session: dict[str, str], *,
                  cwd: Path | None = None) -> list[Path]:
     """Write campaign.md, campaign.html, figures and commands.txt into ``out``."""
-    from verify.report.atomic import write_all_atomic
+    from verify.artefacts.atomic import write_all_atomic
 
     blocks, figures, commands = build_blocks(c, cwd=cwd)
     blocks = blocks + timing_blocks(c, session)

@@ -242,7 +242,7 @@ def place_family_files(humans: list[Human], folder: Path) -> list[Human]:
     humans with those paths set, so that their reproducing commands can name a file."""
     from dataclasses import replace
 
-    from verify.report.atomic import write_atomic
+    from verify.artefacts.atomic import write_atomic
 
     out = []
     for human in humans:

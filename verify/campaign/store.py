@@ -29,7 +29,7 @@ import pyarrow.parquet as pq
 from verify.campaign.execute import column
 from verify.errors import VerifyInputError
 from verify.inputs.campaign_spec import PROPERTIES
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 
 _PROPERTY_FIELDS = [f for p in PROPERTIES for f in (
     pa.field(column(p), pa.string()), pa.field(f"{column(p)}_violation", pa.float64()),

@@ -20,7 +20,7 @@ from pathlib import Path
 from verify.claims.evidence import figure, instances, numeric
 from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 from verify.sim import counterexamples as cx
 from verify.sim import properties as props
 from verify.sim.energy import energy

@@ -86,7 +86,7 @@ def _store(context: CheckContext, outcome) -> list[Path]:
     from dataclasses import replace
 
     from verify.identify.command import write
-    from verify.report.atomic import write_atomic
+    from verify.artefacts.atomic import write_atomic
 
     if context.certificates_dir is None:
         write(outcome)

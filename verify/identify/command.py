@@ -647,7 +647,7 @@ def _write_bundle(out: Path, bundle: dict[Path, bytes | str],
     import os
     import shutil
 
-    from verify.report.atomic import write_all_atomic
+    from verify.artefacts.atomic import write_all_atomic
 
     out.parent.mkdir(parents=True, exist_ok=True)
     staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))

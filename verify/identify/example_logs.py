@@ -92,7 +92,7 @@ EXAMPLES = (
 
 def generate(out: Path = LOGS, examples=EXAMPLES) -> list[Path]:
     """Simulate each example and write its log and ground-truth model into ``out``."""
-    from verify.report.atomic import write_atomic
+    from verify.artefacts.atomic import write_atomic
 
     paths = []
     for ex in examples:

@@ -3,7 +3,7 @@
 Pictures, not evidence: the bands of the Bode plot come from parameter vectors sampled in
 the confidence ellipsoid (seeded, so the bytes are reproducible), and nu(w) is evaluated
 in floating point. The verdicts rest on :mod:`verify.identify.robust` alone. Bytes depend
-only on the data drawn (:func:`verify.report.figure_bytes.figure_bytes`).
+only on the data drawn (:func:`verify.artefacts.figure_bytes.figure_bytes`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from fractions import Fraction
 import numpy as np
 
 from verify.identify.structure import Structure
-from verify.report.figure_bytes import figure_bytes
+from verify.artefacts.figure_bytes import figure_bytes
 
 #: Parameter vectors sampled in the ellipsoid for the Bode bands.
 SAMPLES = 200

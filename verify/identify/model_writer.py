@@ -285,7 +285,7 @@ def write_identified_model(path: str | Path, *, name: str, structure: Structure,
                            extra: Mapping[str, Any] | None = None,
                            description: str = "") -> IdentifiedFile:
     """Write the model file atomically and read it back (what the file says is the model)."""
-    from verify.report.atomic import write_atomic
+    from verify.artefacts.atomic import write_atomic
 
     table = identification_table(structure, theta, covariance, level, extra)
     text, _ = model_text(name, structure, theta, table, description)

@@ -115,7 +115,7 @@ from verify.inputs.log_checks import (
     short,
 )
 from verify.inputs.log_npz import read_npz
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 
 #: Limits of the CSV form (module docstring, "Limits").
 MAX_CELL = 64

@@ -32,7 +32,7 @@ from verify.passivity.io.binding import (
 )
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 
 
 def parse_margin(text: str) -> Fraction:

@@ -7,9 +7,9 @@ minimum marked on the nu curve is the one located by Hamiltonian level crossings
 (:mod:`verify.passivity.search.hamiltonian`), not the lowest grid point.
 
 Matplotlib runs with the Agg backend; each PNG is rendered in memory and written with a
-temporary file and a rename (:func:`verify.report.atomic.write_atomic`), without the
+temporary file and a rename (:func:`verify.artefacts.atomic.write_atomic`), without the
 version and date stamps that would make two runs differ
-(:func:`verify.report.figure_bytes.figure_bytes`).
+(:func:`verify.artefacts.figure_bytes.figure_bytes`).
 """
 
 from __future__ import annotations
@@ -22,8 +22,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from verify.passivity.search.hamiltonian import NuMinimum, nu_values
-from verify.report.atomic import write_atomic
-from verify.report.figure_bytes import figure_bytes
+from verify.artefacts.atomic import write_atomic
+from verify.artefacts.figure_bytes import figure_bytes
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel

@@ -1,7 +1,7 @@
 """Files written by ``verify simulate``: the trajectory (NPZ or CSV) and its plots.
 
 Everything is rendered in memory first and then written file by file atomically, so a
-failure leaves no half-written output (:mod:`verify.report.atomic`).
+failure leaves no half-written output (:mod:`verify.artefacts.atomic`).
 """
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from verify.report.atomic import write_all_atomic
+from verify.artefacts.atomic import write_all_atomic
 from verify.sim.energy import Energy
 from verify.sim.run import Trajectory
 from verify.so3 import E3
@@ -69,7 +69,7 @@ def trajectory_csv(traj: Trajectory, E: Energy) -> str:
 
 
 def _png(fig) -> bytes:
-    from verify.report.figure_bytes import figure_bytes
+    from verify.artefacts.figure_bytes import figure_bytes
 
     return figure_bytes(fig, "png", dpi=110, bbox_inches="tight")
 

@@ -35,7 +35,7 @@ import json
 import re
 from pathlib import Path
 
-from verify.report.atomic import write_atomic
+from verify.artefacts.atomic import write_atomic
 from verify.sos import poly as pl
 from verify.sos.check import SosCheck, check_identity_and_psd
 from verify.sos.program import Block, Multiplier

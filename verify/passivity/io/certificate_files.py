@@ -153,7 +153,7 @@ def keep_or_write(path: Path, text: str, still_valid: Callable[[Path], bool]
 
     A file that cannot be read or parsed is not ours and is replaced.
     """
-    from verify.report.atomic import write_atomic
+    from verify.artefacts.atomic import write_atomic
 
     if path.is_file():
         try:
