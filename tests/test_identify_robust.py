@@ -9,12 +9,12 @@ import pytest
 from gmpy2 import mpq
 from identify_models import biproper_model, paper_model
 
+from verify.artefacts.atomic import write_atomic
 from verify.identify import robust_certificate as rc
 from verify.identify.robust import largest_band, robust_verdict
 from verify.identify.structure import Structure
 from verify.passivity.check import robust_band as rb
 from verify.passivity.io.stored import check_stored_certificate
-from verify.artefacts.atomic import write_atomic
 
 
 def _direct(theta, shape: rb.Shape, w: float):

@@ -17,6 +17,7 @@ import pytest
 from gmpy2 import mpq
 from identify_models import PAPER_THETA, correlated_covariance, paper_model
 
+from verify.artefacts.atomic import write_atomic
 from verify.identify import robust_certificate as rc
 from verify.identify.model_writer import write_identified_model
 from verify.identify.robust import robust_verdict
@@ -26,7 +27,6 @@ from verify.passivity.check.realization import minimal_part
 from verify.passivity.check.witness import frequency_witness_at
 from verify.passivity.io.stored import check_stored_certificate
 from verify.passivity.model import from_transfer_function
-from verify.artefacts.atomic import write_atomic
 
 BAND = (Fraction(0), Fraction(5))
 

@@ -17,11 +17,11 @@ from gmpy2 import mpq
 from identify_models import paper_model
 from test_identify_robust_refutation import COUPLED
 
+from verify.artefacts.atomic import write_atomic
 from verify.identify import refutation_certificate as rfc
 from verify.identify import robust_certificate as rc
 from verify.identify.robust import robust_verdict
 from verify.passivity.io.stored import check_stored_certificate
-from verify.artefacts.atomic import write_atomic
 
 BAND = (Fraction(0), Fraction(20))
 

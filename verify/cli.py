@@ -306,11 +306,11 @@ def _cmd_check(args: argparse.Namespace) -> int:
     import json
     import time
 
+    from verify.artefacts.atomic import write_atomic
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
     from verify.proof import ProofSyntaxError, certificate_store, check
     from verify.proof.isolate import load_isolated
-    from verify.artefacts.atomic import write_atomic
 
     budget = _budget(args)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step

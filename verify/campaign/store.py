@@ -26,10 +26,10 @@ from typing import Any
 import pyarrow as pa
 import pyarrow.parquet as pq
 
+from verify.artefacts.atomic import write_atomic
 from verify.campaign.execute import column
 from verify.errors import VerifyInputError
 from verify.inputs.campaign_spec import PROPERTIES
-from verify.artefacts.atomic import write_atomic
 
 _PROPERTY_FIELDS = [f for p in PROPERTIES for f in (
     pa.field(column(p), pa.string()), pa.field(f"{column(p)}_violation", pa.float64()),

@@ -17,10 +17,10 @@ from __future__ import annotations
 from dataclasses import replace
 from pathlib import Path
 
+from verify.artefacts.atomic import write_atomic
 from verify.claims.evidence import figure, instances, numeric
 from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
-from verify.artefacts.atomic import write_atomic
 from verify.sim import counterexamples as cx
 from verify.sim import properties as props
 from verify.sim.energy import energy

@@ -85,8 +85,8 @@ def _store(context: CheckContext, outcome) -> list[Path]:
     """
     from dataclasses import replace
 
-    from verify.identify.command import write
     from verify.artefacts.atomic import write_atomic
+    from verify.identify.command import write
 
     if context.certificates_dir is None:
         write(outcome)

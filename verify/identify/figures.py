@@ -13,8 +13,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from verify.identify.structure import Structure
 from verify.artefacts.figure_bytes import figure_bytes
+from verify.identify.structure import Structure
 
 #: Parameter vectors sampled in the ellipsoid for the Bode bands.
 SAMPLES = 200

@@ -93,6 +93,7 @@ from pathlib import Path
 
 import numpy as np
 
+from verify.artefacts.atomic import write_atomic
 from verify.errors import VerifyInputError
 from verify.identify.experiment import ExperimentLog, Trial
 from verify.inputs.files import open_regular
@@ -115,7 +116,6 @@ from verify.inputs.log_checks import (
     short,
 )
 from verify.inputs.log_npz import read_npz
-from verify.artefacts.atomic import write_atomic
 
 #: Limits of the CSV form (module docstring, "Limits").
 MAX_CELL = 64

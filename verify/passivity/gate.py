@@ -16,6 +16,7 @@ from fractions import Fraction
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
+from verify.artefacts.atomic import write_atomic
 from verify.errors import VerifyInputError
 from verify.inputs.number_text import unlimited_int_text
 from verify.inputs.numbers import parse_number
@@ -32,7 +33,6 @@ from verify.passivity.io.binding import (
 )
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
-from verify.artefacts.atomic import write_atomic
 
 
 def parse_margin(text: str) -> Fraction:

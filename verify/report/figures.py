@@ -21,9 +21,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from verify.passivity.search.hamiltonian import NuMinimum, nu_values
 from verify.artefacts.atomic import write_atomic
 from verify.artefacts.figure_bytes import figure_bytes
+from verify.passivity.search.hamiltonian import NuMinimum, nu_values
 
 if TYPE_CHECKING:
     from verify.passivity.model import LTIModel
