@@ -11,7 +11,8 @@ import pytest
 from verify.campaign.execute import convergence_time
 from verify.campaign.runs import exact_decimal, expand, family_member
 from verify.campaign.store import SCHEMA, ResultStore
-from verify.inputs.campaign_spec import load_campaign_spec, parse_model_bytes
+from verify.inputs.campaign_spec import load_campaign_spec
+from verify.passivity.io.model_file import model_from_bytes
 
 MODELS = Path(__file__).resolve().parents[1] / "verify" / "data" / "models"
 
@@ -91,7 +92,7 @@ def test_family_members_are_exact_model_files():
     for seed in range(6):
         human = family_member("random-passive", seed)
         drawn = random_passive_human(np.random.default_rng(seed))
-        model = parse_model_bytes(human.text, "member")
+        model = model_from_bytes(human.text, "member")
         D = getattr(drawn, "D", getattr(drawn, "K", None))
         # the file denotes exactly the drawn floats: exact entries are their dyadic values
         for row_file, row_drawn in zip(model.exact.D, np.atleast_2d(D), strict=True):

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
+from verify.campaign.models import load_spec as load_campaign_spec
 from verify.cli import main
 from verify.errors import VerifyInputError
-from verify.inputs.campaign_spec import load_campaign_spec
 
 MODELS = Path(__file__).resolve().parents[1] / "verify" / "data" / "models"
 GOOD_MODEL = (MODELS / "reconstructed_ks3p0.toml").as_posix()

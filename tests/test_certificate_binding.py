@@ -16,11 +16,11 @@ from pathlib import Path
 
 import pytest
 
+from verify.certificates.registry import SCHEMAS, check_stored_certificate
 from verify.cli import main
 from verify.passivity import load_model
 from verify.passivity.gate import run_band_gate
 from verify.passivity.io.binding import Claim, file_name, statement
-from verify.passivity.io.stored import SCHEMAS, check_stored_certificate
 
 ROOT = Path(__file__).resolve().parents[1]
 MODELS = ROOT / "verify" / "data" / "models"

@@ -211,8 +211,8 @@ def test_certificate_bytes_are_deterministic():
 
 
 def test_certificate_file_round_trip(tmp_path):
+    from verify.certificates.registry import check_stored_certificate
     from verify.passivity.io.binding import Claim, file_name
-    from verify.passivity.io.stored import check_stored_certificate
 
     data = _passive_json()
     path = tmp_path / "c.json"

@@ -10,11 +10,11 @@ from gmpy2 import mpq
 from identify_models import biproper_model, paper_model
 
 from verify.artefacts.atomic import write_atomic
+from verify.certificates.registry import check_stored_certificate
 from verify.identify import robust_certificate as rc
 from verify.identify.robust import largest_band, robust_verdict
 from verify.identify.structure import Structure
 from verify.passivity.check import robust_band as rb
-from verify.passivity.io.stored import check_stored_certificate
 
 
 def _direct(theta, shape: rb.Shape, w: float):

@@ -18,6 +18,7 @@ from gmpy2 import mpq
 from identify_models import PAPER_THETA, correlated_covariance, paper_model
 
 from verify.artefacts.atomic import write_atomic
+from verify.certificates.registry import check_stored_certificate
 from verify.identify import robust_certificate as rc
 from verify.identify.model_writer import write_identified_model
 from verify.identify.robust import robust_verdict
@@ -25,7 +26,6 @@ from verify.identify.structure import Structure
 from verify.passivity.check import robust_band as rb
 from verify.passivity.check.realization import minimal_part
 from verify.passivity.check.witness import frequency_witness_at
-from verify.passivity.io.stored import check_stored_certificate
 from verify.passivity.model import from_transfer_function
 
 BAND = (Fraction(0), Fraction(5))

@@ -10,11 +10,11 @@ import pytest
 from identify_models import PAPER_THETA, paper_model
 
 from verify.artefacts.atomic import write_atomic
+from verify.certificates.registry import check_stored_certificate
 from verify.identify import refutation_certificate as rfc
 from verify.identify.robust import robust_verdict
 from verify.identify.robust_refutation import refute_region
 from verify.passivity.check import robust_band as rb
-from verify.passivity.io.stored import check_stored_certificate
 
 #: Off-diagonal sum 0.8, far from 0: det(H + H^H) < 0 at high frequency for every model.
 COUPLED = [*PAPER_THETA[:-2], 0.5, 0.3]

@@ -18,10 +18,10 @@ from identify_models import paper_model
 from test_identify_robust_refutation import COUPLED
 
 from verify.artefacts.atomic import write_atomic
+from verify.certificates.registry import check_stored_certificate
 from verify.identify import refutation_certificate as rfc
 from verify.identify import robust_certificate as rc
 from verify.identify.robust import robust_verdict
-from verify.passivity.io.stored import check_stored_certificate
 
 BAND = (Fraction(0), Fraction(20))
 

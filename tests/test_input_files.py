@@ -13,7 +13,8 @@ import pytest
 
 from verify.errors import VerifyInputError
 from verify.inputs.files import open_regular, read_bounded
-from verify.passivity.io.model_file import MAX_MODEL_FILE_BYTES, load_model
+from verify.inputs.model_file import MAX_MODEL_FILE_BYTES
+from verify.passivity.io.model_file import load_model
 
 MODEL = Path(__file__).resolve().parents[1] / "verify" / "data" / "models" / \
     "reconstructed_ks3p0.toml"

@@ -393,7 +393,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
-    from verify.passivity.io.stored import (
+    from verify.certificates.registry import (
         CertificateCheck,
         CertificateStatus,
         certificate_files,

@@ -1,6 +1,6 @@
 """Campaigns: sweeps of closed-loop runs with the paper's property checks, on Dask.
 
-In: a campaign spec (:func:`verify.inputs.campaign_spec.load_campaign_spec`: swept k_s,
+In: a campaign spec (:func:`verify.campaign.models.load_spec`: swept k_s,
 n, seeds, autonomous inputs, reference schedules, run lengths and steps, human models as
 files or seeded families, and the properties of Lemma 1 and Theorem 1 to check). It is
 expanded into runs keyed by a hash of their parameters (:mod:`.runs`); each run is one

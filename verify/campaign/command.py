@@ -98,6 +98,7 @@ def _terminate_as_interrupt() -> Iterator[None]:
 def run_campaign_command(s: CampaignSettings) -> int:
     from verify.campaign.engine import run_campaign
     from verify.campaign.execute import FAILED, UNRESOLVED, column
+    from verify.campaign.models import load_spec
     from verify.campaign.progress import clock
     from verify.campaign.report import Campaign, write_report
     from verify.campaign.runs import (
@@ -108,7 +109,6 @@ def run_campaign_command(s: CampaignSettings) -> int:
         spec_fingerprint,
     )
     from verify.campaign.store import ResultStore
-    from verify.inputs.campaign_spec import load_campaign_spec
 
     scheduler = _check_address(s.scheduler) if s.scheduler is not None else None
     workers = default_workers() if s.workers is None else s.workers
@@ -117,7 +117,7 @@ def run_campaign_command(s: CampaignSettings) -> int:
     if scheduler is not None and s.workers is not None:
         raise VerifyInputError("--workers sizes the embedded LocalCluster; with --scheduler "
                                "the cluster's own workers run the campaign (drop --workers)")
-    spec = load_campaign_spec(s.spec)
+    spec = load_spec(s.spec)
     out = s.out if s.out is not None else DEFAULT_OUT / s.spec.stem
     check_out(out)
     store = ResultStore(out / "results")

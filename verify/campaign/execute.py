@@ -68,10 +68,10 @@ def build_human(human: Human) -> tuple[Any, str]:
     from verify.sim.command import build_human as simulate_human
 
     if human.kind == "model":
-        from verify.inputs.campaign_spec import parse_model_bytes
+        from verify.passivity.io.model_file import model_from_bytes
         from verify.sim.humans import LTIHuman
 
-        model = parse_model_bytes(human.text or b"", human.label)
+        model = model_from_bytes(human.text or b"", human.label)
         made, decision = LTIHuman.gated(model)
         built = (made, str(decision.verdict))
     elif human.kind == "static":

@@ -72,10 +72,10 @@ def gate_verdict(human: Human) -> tuple[str, str]:
     if key in _GATE_CACHE:
         return _GATE_CACHE[key]
     if human.kind == "model":
-        from verify.inputs.campaign_spec import parse_model_bytes
         from verify.passivity import decide
+        from verify.passivity.io.model_file import model_from_bytes
 
-        decision = decide(parse_model_bytes(human.text or b"", human.label))
+        decision = decide(model_from_bytes(human.text or b"", human.label))
         found = (str(decision.verdict), " ".join(decision.reason.split()))
     elif human.kind == "static":
         gain = float(human.gain or 0.0)

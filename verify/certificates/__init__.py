@@ -10,3 +10,15 @@ their derivation step here, since binding one to the paper's proofs needs
 :mod:`verify.paper_proofs`); this package only dispatches, so no library layer needs to
 know the others.
 """
+
+from verify.certificates.registry import (
+    SCHEMAS,
+    SOURCE_LABELS,
+    CertificateCheck,
+    CertificateStatus,
+    certificate_files,
+    check_stored_certificate,
+)
+
+__all__ = ["SCHEMAS", "SOURCE_LABELS", "CertificateCheck", "CertificateStatus",
+           "certificate_files", "check_stored_certificate"]

@@ -1,7 +1,7 @@
 """Robust band certificates: every model of a confidence region is passive on a band.
 
 Schema ``verify-robust-band-certificate/1`` (registered in
-:data:`verify.passivity.io.stored.SCHEMAS`). A file holds the claim (structure, parameter
+:data:`verify.certificates.registry.SCHEMAS`). A file holds the claim (structure, parameter
 names, region: centre θc, covariance Σ, confidence level and χ² value as exact rationals;
 the band [w1, w2] in rad/s, or null for all frequencies), the statement derived from it,
 a fingerprint of the claim (also in the file name), the half-widths of the box enclosing
@@ -320,7 +320,7 @@ def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
 
 
 def check_robust_file(data: dict[str, Any], path: Path) -> KypCheck:
-    """Checker of :data:`SCHEMA` (registered in :mod:`verify.passivity.io.stored`)."""
+    """Checker of :data:`SCHEMA` (registered in :mod:`verify.certificates.registry`)."""
     shape, region, band, refusal = check_claim(data, path)
     if refusal is not None:
         return KypCheck(False, refusal)

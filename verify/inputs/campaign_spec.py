@@ -50,7 +50,6 @@ from __future__ import annotations
 
 import hashlib
 import math
-import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -59,9 +58,9 @@ from typing import Any
 
 from verify.errors import VerifyInputError
 from verify.inputs.files import MAX_FILE_BYTES, read_bounded
+from verify.inputs.model_file import ModelDocument, model_document_from_bytes
 from verify.inputs.numbers import (
     WrittenDecimal,
-    decimal_literal,
     parse_number,
     positive_real,
     rational,
@@ -330,8 +329,9 @@ def _name(choices: tuple[str, ...]) -> Callable[[Any, str], str]:
     return convert
 
 
-def load_human_model(path: Path, where: str) -> tuple[bytes, Any]:
-    """Read a human model file and validate it (a 2- or 3-port LTI model, Section 4).
+def load_human_model(path: Path, where: str) -> tuple[bytes, ModelDocument]:
+    """Read a human model file and validate it as a document (the LTI model it describes
+    is built and checked by the campaign, :mod:`verify.campaign.models`).
 
     The path must name a regular file of at most ``MAX_MODEL_BYTES`` bytes (a FIFO or a
     device is refused before it is read); every error starts with ``where`` (the spec
@@ -340,34 +340,15 @@ def load_human_model(path: Path, where: str) -> tuple[bytes, Any]:
     try:
         raw = read_bounded(path, where=f"{where}: model file {path}",
                            max_bytes=MAX_MODEL_BYTES)
-        model = parse_model_bytes(raw, str(path))
+        doc = model_document_from_bytes(raw, str(path))
     except VerifyInputError as exc:
-        text = str(exc)
-        raise VerifyInputError(text if text.startswith(where) else f"{where}: {text}"
-                               ) from None
-    if model.m not in (2, 3):
-        raise VerifyInputError(f"{where}: {path}: the human model needs 2 or 3 ports "
-                               f"(inputs = outputs), got {model.m}")
-    if not model.float_view_finite:
-        raise VerifyInputError(f"{where}: {path}: an entry is beyond the float range; the "
-                               "simulator integrates the model in floating point")
-    return raw, model
+        raise VerifyInputError(prefixed(str(exc), where)) from None
+    return raw, doc
 
 
-def parse_model_bytes(raw: bytes, source: str):
-    """A model file's bytes as an :class:`~verify.passivity.model.LTIModel`, read as
-    :func:`verify.passivity.io.model_file.load_model` reads a file (numbers exact)."""
-    from verify.passivity.io.model_file import parse_model
-
-    try:
-        data = tomllib.loads(raw.decode("utf-8"), parse_float=decimal_literal)
-    except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
-        raise VerifyInputError(f"{source}: not valid TOML ({' '.join(str(exc).split())})"
-                               ) from None
-    except ValueError as exc:
-        raise VerifyInputError(f"{source}: number out of range ({' '.join(str(exc).split())})"
-                               ) from None
-    return parse_model(data, source)
+def prefixed(text: str, where: str) -> str:
+    """An error's text led by ``where`` (once)."""
+    return text if text.startswith(where) else f"{where}: {text}"
 
 
 def _human(entry: Any, where: str, folder: Path) -> HumanEntry:
@@ -384,8 +365,8 @@ def _human(entry: Any, where: str, folder: Path) -> HumanEntry:
     if kind == "model":
         given = Path(_text(entry["model"], f"{where}.model"))
         path = given if given.is_absolute() else folder / given
-        raw, model = load_human_model(path, f"{where}.model")
-        return HumanEntry("model", label or str(model.name), path=path, text=raw,
+        raw, doc = load_human_model(path, f"{where}.model")
+        return HumanEntry("model", label or str(doc.name), path=path, text=raw,
                           sha256=hashlib.sha256(raw).hexdigest())
     if kind == "kind":
         name = _name(HUMAN_KINDS)(entry["kind"], f"{where}.kind")
@@ -506,4 +487,4 @@ def load_campaign_spec(path: str | Path) -> CampaignSpec:
 
 __all__ = ["AUTONOMOUS", "PROPERTIES", "REFERENCES", "CampaignSpec", "HumanEntry",
            "load_campaign_spec", "load_human_model", "parse_campaign_spec",
-           "parse_model_bytes"]
+           "prefixed"]

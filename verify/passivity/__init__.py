@@ -9,7 +9,9 @@ optionally with a margin nu0) or a band decision from :func:`decide_band` (nu(w)
 on [w1, w2] only), whose verdict is :data:`PASSIVE`, :data:`NOT_PASSIVE` or
 :data:`INCONCLUSIVE` (members of :class:`GateVerdict`) with its reason; a passive
 verdict carries a certificate and a not-passive verdict a witness, both checked in
-exact arithmetic. A stored certificate file is re-checked by :func:`check_stored_certificate`.
+exact arithmetic. Each certificate kind's exact checker lives here (in ``check`` and
+``io``); a stored file of any kind is re-checked by
+:func:`verify.certificates.check_stored_certificate`.
 
 Where the code lives, by what a verdict rests on:
 
@@ -25,8 +27,8 @@ Where the code lives, by what a verdict rests on:
 * :mod:`verify.passivity.io`: model files in, certificate JSON out and back in (strict
   parsing, the tie of a certificate to its model file).
 * Top level: the model type (:mod:`.model`, :mod:`.rational`), the decisions that drive
-  search and check (:mod:`.decision`, :mod:`.fd_decision`, :mod:`.band`,
-  :mod:`.indices`) and the ``verify gate`` command (:mod:`.gate`).
+  search and check (:mod:`.verdicts`, :mod:`.decision`, :mod:`.fd_decision`,
+  :mod:`.rescaled`, :mod:`.band`, :mod:`.indices`) and the ``verify gate`` command (:mod:`.gate`).
 
 The names below are loaded on first use, so importing one submodule does not import the
 solvers behind the others.
@@ -39,22 +41,20 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from verify.passivity.band import BandDecision, decide_band
-    from verify.passivity.decision import (
-        INCONCLUSIVE,
-        NOT_PASSIVE,
-        PASSIVE,
-        PASSIVE_WITHIN,
-        Decision,
-        GateVerdict,
-        decide,
-    )
+    from verify.passivity.decision import Decision, decide
     from verify.passivity.io.model_file import load_model
-    from verify.passivity.io.stored import check_stored_certificate
     from verify.passivity.model import (
         LTIModel,
         from_python,
         from_state_space,
         from_transfer_function,
+    )
+    from verify.passivity.verdicts import (
+        INCONCLUSIVE,
+        NOT_PASSIVE,
+        PASSIVE,
+        PASSIVE_WITHIN,
+        GateVerdict,
     )
 
 __all__ = [
@@ -66,7 +66,6 @@ __all__ = [
     "Decision",
     "GateVerdict",
     "LTIModel",
-    "check_stored_certificate",
     "decide",
     "decide_band",
     "from_python",
@@ -76,15 +75,14 @@ __all__ = [
 ]
 
 _HOME = {
-    "INCONCLUSIVE": "verify.passivity.decision",
-    "NOT_PASSIVE": "verify.passivity.decision",
-    "PASSIVE": "verify.passivity.decision",
-    "PASSIVE_WITHIN": "verify.passivity.decision",
+    "INCONCLUSIVE": "verify.passivity.verdicts",
+    "NOT_PASSIVE": "verify.passivity.verdicts",
+    "PASSIVE": "verify.passivity.verdicts",
+    "PASSIVE_WITHIN": "verify.passivity.verdicts",
     "BandDecision": "verify.passivity.band",
     "Decision": "verify.passivity.decision",
-    "GateVerdict": "verify.passivity.decision",
+    "GateVerdict": "verify.passivity.verdicts",
     "LTIModel": "verify.passivity.model",
-    "check_stored_certificate": "verify.passivity.io.stored",
     "decide": "verify.passivity.decision",
     "decide_band": "verify.passivity.band",
     "from_python": "verify.passivity.model",

@@ -24,7 +24,6 @@ rational).
 
 from __future__ import annotations
 
-import enum
 import time
 from dataclasses import dataclass
 from fractions import Fraction
@@ -45,9 +44,16 @@ from verify.passivity.check.witness import (
     pole_witness,
     real_axis_witness,
 )
+from verify.passivity.rescaled import restore
 from verify.passivity.search.hamiltonian import nu_minimum, nu_values
 from verify.passivity.search.kyp import SDP_STATE_LIMIT, find_certificate
-from verify.passivity.search.scaling import rescale, restore
+from verify.passivity.search.scaling import rescale
+from verify.passivity.verdicts import (
+    INCONCLUSIVE,
+    NOT_PASSIVE,
+    PASSIVE,
+    GateVerdict,
+)
 
 if TYPE_CHECKING:
     from verify.passivity.check.fd_certificate import PrCertificate
@@ -55,24 +61,6 @@ if TYPE_CHECKING:
 
 
 
-class GateVerdict(enum.StrEnum):
-    """Verdicts of the passivity gate, over all frequencies and over a band.
-
-    A StrEnum, as :class:`verify.claims.model.Verdict` and
-    :class:`verify.proof.checker.ProofVerdict`: a member equals, prints and serialises to
-    JSON as its plain string, so the gate's JSON and reports are unchanged. Only
-    ``PASSIVE`` rests on an exactly checked certificate of the model as written;
-    ``PASSIVE_WITHIN`` on one of a perturbed model (:mod:`verify.passivity.search.tolerance`);
-    ``NOT_PASSIVE`` always carries an exactly checked witness.
-    """
-
-    PASSIVE = "passive"
-    NOT_PASSIVE = "not passive"
-    INCONCLUSIVE = "inconclusive"
-    PASSIVE_WITHIN = "passive within tolerance"
-
-
-PASSIVE, NOT_PASSIVE, INCONCLUSIVE, PASSIVE_WITHIN = GateVerdict
 # states up to which the exact frequency-domain decision (verify.passivity.fd_decision)
 # runs when the KYP route and the floating-point witness search both fail: at 120 states
 # (2 ports) about 20-70 s and under 350 MB peak RSS on a loaded 2-core machine

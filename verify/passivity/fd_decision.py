@@ -15,7 +15,7 @@ from verify.passivity.check.fd_certificate import PrCertificate
 from verify.passivity.check.fd_witness import frequency_witness_for, near_axis_pole_witness
 from verify.passivity.check.frequency_domain import analyse, axis_split
 from verify.passivity.check.witness import Witness
-from verify.passivity.decision import NOT_PASSIVE, PASSIVE, GateVerdict
+from verify.passivity.verdicts import NOT_PASSIVE, PASSIVE, GateVerdict
 
 
 def _pole_witness(kind: str, reason: str, fact, extra: dict) -> Witness:

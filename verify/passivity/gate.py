@@ -147,7 +147,7 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
     """The gate on a finite band: exact band or generalized KYP certificates (written), or
     witnesses (``exact_first``: see :func:`verify.passivity.band.decide_band`)."""
     from verify.passivity.band import decide_band
-    from verify.passivity.check.band_fd import BandFdCertificate, store_band_fd_certificate
+    from verify.passivity.check.band_fd import BandFdCertificate
 
     results = []
     for model in models:
@@ -156,7 +156,7 @@ def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
             if isinstance(d.certificate, BandFdCertificate):  # the exact band route
                 cert = replace(d.certificate,
                                source=relative_source(d.certificate.source, certificates_dir))
-                path, kept = store_band_fd_certificate(cert, certificates_dir)
+                path, kept = cf.store_band_fd_certificate(cert, certificates_dir)
                 results.append(GateResult(d, path, kept=kept))
             else:
                 results.append(_band_one(d, model, band, margin, certificates_dir))

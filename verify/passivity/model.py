@@ -36,6 +36,7 @@ from verify.errors import VerifyInputError
 from verify.inputs.numbers import exact_array, float_view, real_array
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
+from verify.passivity.check.realization import transfer_function_realization
 
 Array = NDArray[np.float64]
 
@@ -245,9 +246,16 @@ def from_transfer_function(
     and the rational (A, B, C, D).
     """
     ctx = f"model {name!r}" if source == "python" else source
-    from verify.passivity.check.realization import transfer_function_model
-
     return transfer_function_model(num, den, ctx, name=name, source=source, meta=meta)
+
+
+def transfer_function_model(num: Any, den: Any, ctx: str, *, name: str, source: str,
+                            meta: dict | None) -> LTIModel:
+    """The exact minimal realisation of num/den as an LTIModel
+    (:func:`verify.passivity.check.realization.transfer_function_realization`)."""
+    exact, realization = transfer_function_realization(num, den, ctx)
+    return LTIModel(name, source=source, meta=dict(meta or {}), exact=exact,
+                    realization=realization)
 
 
 

@@ -418,28 +418,3 @@ def check_band_fd_file(data: dict[str, Any], path: Path) -> KypCheck:
     what = "passive" if margin == 0 else f"ν ≥ {margin}"
     return KypCheck(True, f"{what} on [{band[0]}, {band[1]}] rad/s: {result.reason}; "
                     f"{bound.note}")
-
-
-def store_band_fd_certificate(cert: BandFdCertificate, certificates_dir: Path
-                              ) -> tuple[Path, bool]:
-    """Write the certificate under the name its claim asks for; a file that already holds
-    a valid certificate of this schema, model and claim is kept."""
-    from verify.passivity.io.binding import Claim, file_name, shifted
-    from verify.passivity.io.certificate_files import dumps, keep_or_write
-    from verify.passivity.io.strict_json import read_strict
-
-    data = cert.to_json()
-    given = shifted(cert.model, -cert.margin)
-    path = Path(certificates_dir) / file_name(cert.name, Claim(cert.margin, cert.band),
-                                              given.fingerprint())
-
-    def still_valid(old: Path) -> bool:
-        stored = read_strict(old)
-        return (stored.get("schema") == SCHEMA
-                and stored.get("fingerprint") == data["fingerprint"]
-                and stored.get("band") == data["band"]
-                and stored.get("meta") == data["meta"]
-                and check_band_fd_file(stored, old).ok)
-
-    return keep_or_write(path, dumps(data), still_valid)
-

@@ -4,8 +4,8 @@ No floating point appears anywhere here: the same input gives the same exact mat
 every machine. Polynomials and matrices are FLINT's (python-flint ``fmpq_poly``,
 ``fmpq_mat``), converted to and from the model's ``mpq`` at the edges.
 
-Transfer matrix -> (A, B, C, D) (:func:`transfer_function_model`)
-------------------------------------------------------------------
+Transfer matrix -> (A, B, C, D) (:func:`transfer_function_realization`)
+------------------------------------------------------------------------
 1. Each element num/den is reduced by the exact gcd of num and den over Q, its
    denominator made monic, and split as D_ij + r_ij / den_ij with deg r_ij < deg den_ij.
 2. Column j is realised in controllable canonical form of d_j = lcm_i den_ij: A_j is the
@@ -461,20 +461,16 @@ def _exact(A: fmpq_mat, B: fmpq_mat, C: fmpq_mat, D: fmpq_mat) -> ExactModel:
                       _lists(C) if n else [[] for _ in range(m)], _lists(D))
 
 
-def transfer_function_model(num: Any, den: Any, ctx: str, *, name: str, source: str,
-                            meta: dict | None):
-    """The exact minimal realisation of num/den as an LTIModel (module docstring)."""
-    from verify.passivity.model import LTIModel
-
+def transfer_function_realization(num: Any, den: Any, ctx: str) -> tuple[ExactModel, str]:
+    """The exact minimal realisation of num/den (module docstring) and a line naming it."""
     elements = _elements(num, den, ctx)
     A, B, C, D = _companion_columns(elements)
     A, B, C = _observable_quotient(A, B, C)
     problem = check_realization(elements, A, B, C, D)
     if problem is not None:  # a bug, not bad input: the construction is exact
         raise AssertionError(f"{ctx}: exact realisation check failed: {problem}")
-    return LTIModel(name, source=source, meta=dict(meta or {}), exact=_exact(A, B, C, D),
-                    realization=f"exact minimal realisation over Q of the transfer "
-                    f"function ({A.nrows()} states)")
+    return _exact(A, B, C, D), (f"exact minimal realisation over Q of the transfer "
+                                f"function ({A.nrows()} states)")
 
 
 # --------------------------------------------------------------------------- minimality
@@ -643,4 +639,4 @@ def minimal_part(model: ExactModel) -> MinimalPart:
 
 
 __all__ = ["MinimalPart", "check_realization", "is_minimal", "minimal_part",
-           "transfer_function_model"]
+           "transfer_function_realization"]

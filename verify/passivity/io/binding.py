@@ -17,7 +17,7 @@ and compared when the file is checked, or labelled unverified:
   the one place that turns a loaded model into exact data), or that model perturbed by
   the stored (a, d) of ``--tolerance`` (:class:`Perturbed`), and carry the stored
   ``name`` (:func:`bind_source`); where it cannot be found the certificate is unbound
-  (:mod:`verify.passivity.io.stored`);
+  (:mod:`verify.certificates.registry`);
 * descriptive fields copied from the model file (description, units, k_s, reconstructed)
   travel under ``unverified``, are no part of the claim, and are compared with the file.
 """

@@ -23,7 +23,8 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
-from verify.inputs.number_text import short_text
+from verify.inputs.number_text import short_text, unlimited_int_text
+from verify.passivity.check import band_fd
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, KypCheck, check_kyp
 from verify.passivity.check.gkyp import ComplexMatrix, check_gkyp
@@ -37,6 +38,7 @@ from verify.passivity.io.binding import (
     check_unverified,
     claim_from_fields,
     file_name,
+    locate_source,
     model_from_json,
     perturbed_from_json,
     same_source,
@@ -132,8 +134,6 @@ def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool
     different P, leaves a committed certificate untouched. Returns the path and whether
     the existing file was kept.
     """
-    from verify.passivity.io.stored import check_stored_certificate
-
     fresh = PARSERS[data["schema"]](data)
     path = Path(directory) / file_name(fresh.name, fresh.claim, fresh.fingerprint)
 
@@ -141,9 +141,20 @@ def store_certificate(data: dict[str, Any], directory: Path) -> tuple[Path, bool
         old_data = read_strict(old)
         parse = PARSERS.get(old_data.get("schema"))  # type: ignore[arg-type]
         return (parse is not None and parse(old_data).same_claim(fresh, old)
-                and check_stored_certificate(old).ok)
+                and valid_and_bound(old_data, old))
 
     return keep_or_write(path, dumps(data), still_valid)
+
+
+def valid_and_bound(data: dict[str, Any], path: Path) -> bool:
+    """A KYP or band certificate that re-checks exactly and whose source file is found
+    from its folder (what ``verify certificates check`` accepts without
+    ``--allow-unbound``)."""
+    checker = check_band_file if data["schema"] in (BAND_V1, BAND_V2) else check_kyp_file
+    with unlimited_int_text():  # parsed strictly (bounded digits): any size from here
+        ok = checker(data, path).ok
+    source = data.get("source")
+    return ok and isinstance(source, str) and locate_source(source, path) is not None
 
 
 def keep_or_write(path: Path, text: str, still_valid: Callable[[Path], bool]
@@ -163,6 +174,26 @@ def keep_or_write(path: Path, text: str, still_valid: Callable[[Path], bool]
             pass  # not a certificate of ours: replaced below
     write_atomic(path, text)
     return path, False
+
+
+def store_band_fd_certificate(cert: band_fd.BandFdCertificate, certificates_dir: Path
+                              ) -> tuple[Path, bool]:
+    """Write the certificate under the name its claim asks for; a file that already holds
+    a valid certificate of this schema, model and claim is kept."""
+    data = cert.to_json()
+    given = shifted(cert.model, -cert.margin)
+    path = Path(certificates_dir) / file_name(cert.name, Claim(cert.margin, cert.band),
+                                              given.fingerprint())
+
+    def still_valid(old: Path) -> bool:
+        stored = read_strict(old)
+        return (stored.get("schema") == band_fd.SCHEMA
+                and stored.get("fingerprint") == data["fingerprint"]
+                and stored.get("band") == data["band"]
+                and stored.get("meta") == data["meta"]
+                and band_fd.check_band_fd_file(stored, old).ok)
+
+    return keep_or_write(path, dumps(data), still_valid)
 
 
 # ------------------------------------------------------------------------------ parsing
@@ -292,12 +323,12 @@ def check_parsed(cert: StoredCertificate, path: Path) -> KypCheck:
 
 
 def check_kyp_file(data: dict[str, Any], path: Path) -> KypCheck:
-    """Checker of the KYP schemas (registered in :mod:`verify.passivity.io.stored`)."""
+    """Checker of the KYP schemas (registered in :mod:`verify.certificates.registry`)."""
     return check_parsed(parse_kyp(data), path)
 
 
 def check_band_file(data: dict[str, Any], path: Path) -> KypCheck:
-    """Checker of the band schemas (registered in :mod:`verify.passivity.io.stored`)."""
+    """Checker of the band schemas (registered in :mod:`verify.certificates.registry`)."""
     return check_parsed(parse_band(data), path)
 
 
@@ -317,6 +348,8 @@ __all__ = [
     "kyp_json",
     "parse_band",
     "parse_kyp",
+    "store_band_fd_certificate",
     "store_certificate",
     "summary",
+    "valid_and_bound",
 ]

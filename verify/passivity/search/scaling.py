@@ -27,15 +27,12 @@ from dataclasses import dataclass, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
-import numpy as np
-
 from verify.inputs.number_text import exact_text
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
 
 if TYPE_CHECKING:
-    from verify.passivity.decision import Decision
     from verify.passivity.model import LTIModel
 
 #: Rescale when a frequency, gain or state exponent exceeds this (|log2| of the scale).
@@ -128,7 +125,7 @@ _FREQUENCY_KEYS = ("omega", "s")
 _GAIN_KEYS = ("value", "value_bound")
 
 
-def _map_witness(witness, r: Rescaling):
+def map_witness(witness, r: Rescaling):
     """The witness of H_s restated for H (frequencies times beta, values times alpha)."""
     data = dict(witness.data)
     for key in _FREQUENCY_KEYS:
@@ -147,46 +144,4 @@ def _map_witness(witness, r: Rescaling):
                    "the model as written)", data=data)
 
 
-def restore(d: Decision, r: Rescaling, model: LTIModel, em, margin: Fraction) -> Decision:
-    """The decision of the rescaled model stated for the model as written.
-
-    A certificate is mapped back and re-checked exactly against ``em`` (the exact model
-    as written, margin applied); if that check failed (it cannot, by the congruence in
-    the module doc) the verdict would be inconclusive.
-    """
-    from verify.passivity.check.certificate import Certificate, check_kyp
-    from verify.passivity.decision import INCONCLUSIVE
-
-    out = replace(d, model=model, margin=margin)
-    if d.nu_min is not None:
-        with np.errstate(all="ignore"):  # floats (an estimate): may overflow to inf
-            out = replace(out, nu_min=(float(np.ldexp(d.nu_min[0], r.freq)),
-                                       float(np.ldexp(d.nu_min[1], r.gain))))
-    if d.certificate is not None and not hasattr(d.certificate, "P"):
-        # a frequency-domain certificate is about the scaled model; the exact route does
-        # not need the scaling, so it is re-run on the model as written
-        from verify.passivity.fd_decision import decide_positive_real
-
-        verdict, reason, cert, witness = decide_positive_real(
-            em, model.name, model.source, {"margin": str(margin)})
-        return replace(out, verdict=verdict, reason=reason, certificate=cert,
-                       witness=witness)
-    if d.certificate is not None:
-        factor = ex.mpq(r.p_factor)
-        P = [[factor * x for x in row] for row in d.certificate.P]
-        check = check_kyp(em, P)
-        if not check.ok:
-            return replace(out, verdict=INCONCLUSIVE, certificate=None,
-                           reason=f"the rescaled certificate fails on the model as written: "
-                           f"{check.reason}")
-        cert = Certificate(model.name, model.source, em, P, dict(d.certificate.meta))
-        return replace(out, certificate=cert, reason=f"{d.reason} ({r.describe()}; "
-                       f"P = 2^{r.gain - r.freq - 2 * r.state} P_s re-checked exactly on "
-                       "the model as written)")
-    if d.witness is not None:
-        mapped = _map_witness(d.witness, r)
-        return replace(out, witness=mapped, reason=mapped.summary)
-    return replace(out, reason=f"{d.reason} ({r.describe()})")
-
-
-__all__ = ["EXPONENT_LIMIT", "Rescaling", "rescale", "restore"]
+__all__ = ["EXPONENT_LIMIT", "Rescaling", "map_witness", "rescale"]

@@ -45,17 +45,12 @@ from verify.inputs.number_text import approx_text, float_or_none
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import Certificate, ExactModel, check_kyp
-from verify.passivity.decision import (
-    PASSIVE,
-    PASSIVE_WITHIN,
-    Decision,
-    decide,
-    decision_json,
-)
+from verify.passivity.decision import Decision, decide, decision_json
 from verify.passivity.model import LTIModel
 from verify.passivity.search.kyp import KypSearch
 from verify.passivity.search.kyp import _balance as kyp_balance
 from verify.passivity.search.kyp import reduced_search as kyp_reduced_search
+from verify.passivity.verdicts import PASSIVE, PASSIVE_WITHIN
 
 #: fractions of the budget tried, smallest first (powers of two)
 _LADDER = (-30, -20, -12, -6, -2, 0)

@@ -1,8 +1,12 @@
 """Re-checking stored certificates by their schema (``verify certificates check``).
 
-:data:`SCHEMAS` maps a schema name to its checker; a new kind of certificate plugs in
-with one line, ``SCHEMAS["verify-xyz-certificate/1"] = check_xyz``. A checker takes the
-strictly parsed JSON object and the file's path and returns a
+:data:`SCHEMAS`, the one table of certificate kinds, maps a schema name to its checker,
+which lives with the checks of that kind (the gate's KYP, band and positive-realness
+certificates in :mod:`verify.passivity`, the robust verdicts of identified models in
+:mod:`verify.identify`, SOS certificates in :mod:`verify.certificates.sos_kind`); this
+module sits above them all, so none of those packages imports another's checker. A new
+kind plugs in with one line, ``SCHEMAS["verify-xyz-certificate/1"] = check_xyz``. A
+checker takes the strictly parsed JSON object and the file's path and returns a
 :class:`~verify.passivity.check.certificate.KypCheck`; it raises
 :class:`~verify.passivity.io.strict_json.CertificateFormatError` for malformed content.
 Every checker re-derives what the certificate claims and decides it in exact arithmetic,
