@@ -62,7 +62,7 @@ def test_changes_made_by_the_file_do_not_verify_a_false_claim(tmp_path, body):
 
 
 def test_an_assumption_subclass_is_refused(tmp_path, capsys):
-    body = ("from verify.proof.derivation import Assumption\n"
+    body = ("from verify.proof.hypotheses import Assumption\n"
             "class A(Assumption):\n    def __eq__(self, other):\n        return True\n"
             "a = A('fake', x - 1, 'nonneg')\n"
             "d = Derivation('d', x, ctx).ge(1, by_sos(a))\n")

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import pytest
 
+from verify.certificates.sos_kind import check_sos_certificate_data
 from verify.cli import main
 from verify.proof import (
     I3,
@@ -34,7 +35,7 @@ from verify.proof import (
 )
 from verify.proof.falsify import SearchSettings
 from verify.sos import poly as pl
-from verify.sos.certificate import check_bound, check_sos_certificate_data
+from verify.sos.certificate import check_bound
 from verify.sos.check import check_identity_and_psd
 from verify.sos.program import Block, scalar_multiplier
 
@@ -238,6 +239,55 @@ def test_a_certificate_is_bound_to_its_step(stored):
     forged = copy.deepcopy(data)
     forged["blocks"][0]["grounds"] = "assumed: anything I like"
     assert not check_bound(forged, sp2).ok
+
+
+CHECK_ALONE = """
+import json, pickle, sys
+from pathlib import Path
+
+from verify.sos.certificate import check_against_program, check_form
+
+path, program = Path(sys.argv[1]), Path(sys.argv[2])
+data, sp = json.loads(path.read_text()), pickle.loads(program.read_bytes())
+assert check_form(data, path) == ""
+result = check_against_program(data, sp, "bound to the given program")
+assert result.ok and result.reason.startswith(sp.statement + ": exact identity"), result
+assert result.reason.endswith("; bound to the given program"), result
+forged = json.loads(path.read_text())
+forged["claim"]["statement"] = "1 >= 0"
+assert not check_against_program(forged, sp, "").ok
+forged = json.loads(path.read_text())
+forged["claim"]["key"] = "0" * 64
+assert not check_against_program(forged, sp, "").ok
+loaded = sorted(m for m in sys.modules if m.startswith(("verify.proof", "verify.paper_proofs")))
+assert loaded == [], loaded
+print("checked alone")
+"""
+
+
+def test_the_sos_library_checks_a_certificate_against_a_given_program_alone(tmp_path):
+    """verify.sos.certificate decides a stored certificate from its data and the program
+    of its claim, with neither the proof checker nor the paper's proofs imported."""
+    import os
+    import pickle
+    import subprocess
+    import sys
+
+    from verify.paper_proofs.sos_proofs import program_for_key
+
+    root = Path(__file__).resolve().parents[1]
+    path = root / "certificates" / "sos-ca4209e02297c7d04166.json"
+    data = json.loads(path.read_text())
+    sp = program_for_key(data["claim"]["key"], data["claim"]["statement"])
+    assert sp is not None and type(sp).__module__ == "verify.sos.program"
+    program = tmp_path / "program.pickle"
+    program.write_bytes(pickle.dumps(sp))
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    done = subprocess.run([sys.executable, "-c", CHECK_ALONE, str(path), str(program)],
+                          capture_output=True, text=True, env=env, cwd=tmp_path,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "checked alone"
 
 
 @pytest.mark.parametrize("payload", [

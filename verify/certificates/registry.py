@@ -40,14 +40,10 @@ from verify.passivity.io.strict_json import CertificateFormatError, read_strict
 Checker = Callable[[dict[str, Any], Path], KypCheck]
 
 def _check_sos(data: dict[str, Any], path: Path) -> KypCheck:
-    """SOS certificates of ``by_sos`` steps (:mod:`verify.sos.certificate`)."""
-    from verify.sos.certificate import check_sos_certificate_data
+    """SOS certificates of ``by_sos`` steps (:mod:`verify.certificates.sos_kind`)."""
+    from verify.certificates.sos_kind import check_sos_file
 
-    try:
-        result = check_sos_certificate_data(data, path)
-    except ValueError as exc:
-        raise CertificateFormatError(str(exc).removeprefix(f"{path}: ")) from None
-    return KypCheck(bool(result.ok), result.reason)
+    return check_sos_file(data, path)
 
 
 def _check_robust(data: dict[str, Any], path: Path) -> KypCheck:

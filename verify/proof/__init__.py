@@ -10,7 +10,7 @@ are covered, what a derivation file can and cannot do) is in ``verify/proof/TRUS
 """
 
 from verify.proof.checker import DerivationResult, ProofVerdict, StepResult, check
-from verify.proof.derivation import Assumption, Condition, Context, Derivation
+from verify.proof.derivation import Context, Derivation
 from verify.proof.expr import (
     I3,
     ProofSyntaxError,
@@ -31,6 +31,7 @@ from verify.proof.expr import (
     vee,
 )
 from verify.proof.falsify import SearchSettings
+from verify.proof.hypotheses import Assumption, Condition
 from verify.proof.justify import (
     KERNEL,
     Nonneg,
@@ -38,12 +39,13 @@ from verify.proof.justify import (
     by_algebra,
     by_bound,
     by_citation,
+    by_sos,
     positive,
     square,
     trace_lower_bound,
     trace_psd_product,
 )
-from verify.proof.sos_step import by_sos, certificate_store
+from verify.proof.sos_step import certificate_store
 
 __all__ = [
     "I3",

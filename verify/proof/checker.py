@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 from verify.proof.budget import Budget, BudgetExceededError, run_bounded
 from verify.proof.confirm import confirm, exact_witness
-from verify.proof.derivation import RELATIONS, Assumption, Condition, Derivation, Step
+from verify.proof.derivation import RELATIONS, Derivation, Step
 from verify.proof.expr import (
     MAX_DEPTH,
     SCALAR,
@@ -39,10 +39,18 @@ from verify.proof.expr import (
     validate_tree,
 )
 from verify.proof.falsify import SearchReport, SearchSettings, random_search, search
-from verify.proof.justify import KERNEL, ByAlgebra, ByBound, ByCitation, Justification, issued
+from verify.proof.hypotheses import Assumption, Condition
+from verify.proof.justify import (
+    KERNEL,
+    ByAlgebra,
+    ByBound,
+    ByCitation,
+    BySos,
+    Justification,
+    issued,
+)
 from verify.proof.problem import StepProblem
 from verify.proof.size import over_limits
-from verify.proof.sos_step import BySos
 from verify.proof.sos_step import exact_check as sos_exact_check
 
 

@@ -29,7 +29,6 @@ from dataclasses import dataclass, field
 from verify.proof.calculus import ddt
 from verify.proof.dynamics import check_dynamics
 from verify.proof.expr import (
-    MATRIX,
     SCALAR,
     Expr,
     ProofSyntaxError,
@@ -39,55 +38,11 @@ from verify.proof.expr import (
     variables_of,
     zero,
 )
+from verify.proof.hypotheses import Assumption, Condition
 from verify.proof.justify import Justification
-from verify.validation import message, one_of
+from verify.validation import message
 
 RELATIONS = ("=", "<=", ">=")
-
-
-@dataclass(frozen=True)
-class Condition:
-    """An exact side condition ``lhs = rhs`` (scalar) under which steps are claimed."""
-
-    label: str
-    lhs: Expr
-    rhs: Expr
-
-    def __post_init__(self) -> None:
-        if not isinstance(self.label, str):
-            raise ProofSyntaxError("a condition's label is a string")
-        for side in (self.lhs, self.rhs):
-            if not isinstance(side, Expr) or side.shape != SCALAR:
-                raise ProofSyntaxError(f"condition '{self.label}' must equate two scalars")
-
-    @property
-    def difference(self) -> Expr:
-        return self.lhs - self.rhs
-
-
-#: Sign assumptions: sym(M) positive (semi)definite, a scalar positive (non-negative).
-ASSUMPTION_KINDS = ("pd", "psd", "pos", "nonneg")
-
-
-@dataclass(frozen=True)
-class Assumption:
-    """A sign assumption of the paper: ``kind`` in pd, psd (of sym(M)), pos, nonneg."""
-
-    label: str
-    expr: Expr
-    kind: str
-    cite: str = ""
-
-    def __post_init__(self) -> None:
-        if not isinstance(self.label, str) or not isinstance(self.cite, str):
-            raise ProofSyntaxError("an assumption's label and cite are strings")
-        if not isinstance(self.expr, Expr):
-            raise ProofSyntaxError(f"assumption '{self.label}' needs an expression")
-        if self.kind in ("pd", "psd") and self.expr.shape != MATRIX:
-            raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a matrix")
-        if self.kind in ("pos", "nonneg") and self.expr.shape != SCALAR:
-            raise ProofSyntaxError(f"assumption '{self.label}': {self.kind} needs a scalar")
-        one_of("kind", self.kind, ASSUMPTION_KINDS, ProofSyntaxError)
 
 
 class Context:

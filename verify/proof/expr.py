@@ -21,6 +21,8 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any
 
+from verify.proof.printing import to_text
+
 SCALAR: tuple[int, ...] = ()
 VECTOR: tuple[int, ...] = (3,)
 MATRIX: tuple[int, ...] = (3, 3)
@@ -204,13 +206,9 @@ class Expr:
         raise ProofSyntaxError("an expression has no truth value; state relations as steps")
 
     def __repr__(self) -> str:
-        from verify.proof.printing import to_text
-
         return f"Expr({to_text(self)})"
 
     def __str__(self) -> str:
-        from verify.proof.printing import to_text
-
         return to_text(self)
 
 

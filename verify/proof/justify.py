@@ -10,6 +10,9 @@ premises (a matrix is symmetric, a matrix is c G^T G for a given G) are themselv
 checked exactly, and from assumptions of the paper, which are reported as such. A
 term's reason never rests on a solver or on floating point.
 
+``by_sos(...)`` justifies an inequality step by an exact sum-of-squares certificate
+that the checker finds and checks itself (:mod:`verify.proof.sos_step`).
+
 ``by_citation(source)`` records a step the paper takes from elsewhere without a
 premise the checker can decide; such a step is never verified, only falsified or left
 inconclusive.
@@ -20,7 +23,6 @@ from __future__ import annotations
 import weakref
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import TYPE_CHECKING
 
 from verify.proof.expr import (
     MATRIX,
@@ -35,10 +37,9 @@ from verify.proof.expr import (
     sym,
     tr,
 )
+from verify.proof.hypotheses import Assumption
+from verify.proof.printing import integer_text
 from verify.validation import message
-
-if TYPE_CHECKING:
-    from verify.proof.derivation import Assumption
 
 KERNEL = {
     "squares": "a sum of squares (tr(G^T G), |v|^2, s^2) is >= 0",
@@ -166,8 +167,6 @@ class Nonneg:
 
 
 def _number(c: Fraction) -> str:
-    from verify.proof.printing import integer_text
-
     if c.denominator == 1:
         return integer_text(c.numerator)
     return f"{integer_text(c.numerator)}/{integer_text(c.denominator)}"
@@ -213,8 +212,6 @@ def assumed(assumption: Assumption) -> Nonneg:
 
 
 def _require_assumption(a: object) -> None:
-    from verify.proof.derivation import Assumption
-
     if type(a) is not Assumption:
         raise ProofSyntaxError(message(
             "an assumption made by ctx.assume()", "assumption", a,
@@ -354,3 +351,52 @@ def by_bound(*terms: Nonneg, note: str = "") -> ByBound:
 
 def by_citation(source: str) -> ByCitation:
     return ByCitation(source)
+
+
+class BySos(Justification):
+    """lhs - rhs (rhs - lhs for <=) is proved >= 0 by an exact SOS certificate."""
+
+    kind = "sos"
+
+    def __init__(self, assumptions: tuple[Assumption, ...], degree: int | None, note: str):
+        super().__init__(note)
+        self.assumptions = assumptions
+        self.degree = degree
+
+    def describe(self) -> str:
+        used = ", ".join(a.label for a in self.assumptions)
+        text = "SOS certificate" + (f" using {used}" if used else "")
+        return f"{self.note}: {text}" if self.note else text
+
+
+def by_sos(*assumptions: Assumption, degree: int | None = None, note: str = "") -> BySos:
+    """Prove an inequality step by a sum-of-squares certificate found and checked here.
+
+    Parameters
+    ----------
+    *assumptions
+        Assumptions of the context (``ctx.assume``) the certificate may use as
+        multipliers: kind ``pos``/``nonneg`` (scalar) or ``pd``/``psd`` (matrix).
+        Scalars declared positive and lambda_min atoms are used without being named.
+    degree
+        Cap on the total degree of each term multiplier x SOS (default: the degree of
+        the slack's numerator, the most a certificate without cancellation needs);
+        a lower cap keeps the search small.
+
+    Examples
+    --------
+    >>> from verify.proof import Context, Derivation, tr, I3
+    >>> ctx = Context("trace")
+    >>> R = ctx.rotation("R")
+    >>> d = Derivation("tr R <= 3", tr(R), ctx).le(3, by_sos())
+    """
+    for a in assumptions:
+        if type(a) is not Assumption:  # a subclass could answer == and hash as it likes
+            raise ProofSyntaxError(
+                f"by_sos() takes assumptions made with ctx.assume(...), got "
+                f"{type(a).__name__}; did you mean by_sos(ctx.assume(...))?")
+    if degree is not None and (isinstance(degree, bool) or not isinstance(degree, int)
+                               or not 1 <= degree <= 24):
+        raise ProofSyntaxError(f"by_sos(degree=...) must be an integer in [1, 24], "
+                               f"got degree={degree!r}")
+    return BySos(tuple(assumptions), degree, note)

@@ -5,13 +5,18 @@ a subexpression whose text would exceed :data:`MAX_TEXT` characters is shown as
 ``…``, so a tree that doubles at every level (``x = x + x`` sixty-four
 times) prints in linear time. Integers too long for a decimal string are shown by
 their size (``⟨integer of 5001 digits⟩``), never converted.
+
+The printer reads a tree's fields only (``op``, ``args``, ``data``, ``label``) and
+imports nothing of :mod:`verify.proof.expr`, which uses it for ``str`` and ``repr``.
 """
 
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
-from verify.proof.expr import Expr
+if TYPE_CHECKING:
+    from verify.proof.expr import Expr
 
 MAX_TEXT = 4000  # characters of one rendered expression before it is abbreviated
 MAX_DIGITS = 4000  # digits of an integer printed in full (Python converts up to 4300)

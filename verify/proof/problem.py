@@ -14,7 +14,6 @@ from functools import cached_property
 
 from verify.inputs.numbers import fraction
 from verify.proof.algebras import ExactAlgebra, ExactSpace
-from verify.proof.derivation import Assumption, Condition
 from verify.proof.evaluate import evaluate
 from verify.proof.exact import KnownFraction
 from verify.proof.expr import (
@@ -27,6 +26,7 @@ from verify.proof.expr import (
     structural_key,
     variables_of,
 )
+from verify.proof.hypotheses import Assumption, Condition
 
 
 def flatten(value) -> list:

@@ -18,7 +18,7 @@ from fractions import Fraction
 from typing import Any
 
 from verify.errors import VerifyInputError
-from verify.proof.derivation import RELATIONS, Assumption, Condition, Context, Derivation, Step
+from verify.proof.derivation import RELATIONS, Context, Derivation, Step
 from verify.proof.expr import (
     CHART_GAPS,
     KINDS,
@@ -29,6 +29,7 @@ from verify.proof.expr import (
     _well_formed,
     var,
 )
+from verify.proof.hypotheses import Assumption, Condition
 from verify.proof.justify import (
     ByAlgebra,
     ByBound,
@@ -36,12 +37,12 @@ from verify.proof.justify import (
     Justification,
     Nonneg,
     assumed,
+    by_sos,
     positive,
     square,
     trace_lower_bound,
     trace_psd_product,
 )
-from verify.proof.sos_step import by_sos
 from verify.proof.wire import _SHAPES, LIMITS, SCHEMA
 
 

@@ -1,4 +1,5 @@
-"""``by_sos()``: an inequality step proved by an exact sum-of-squares certificate.
+"""``by_sos()`` (:func:`verify.proof.justify.by_sos`): an inequality step proved by an
+exact sum-of-squares certificate.
 
 The slack of ``lhs >= rhs`` (or ``rhs - lhs`` for ``<=``) is a rational function
 num / prod f_k^e_k of the parameters whose denominator factors f_k (|q|^2, 1 + a^2 +
@@ -42,79 +43,19 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import itertools
-from dataclasses import dataclass
 from pathlib import Path
 
-from verify.proof.derivation import Assumption
 from verify.proof.expr import ProofSyntaxError, sym, variables_of
-from verify.proof.justify import Justification
+from verify.proof.justify import BySos
 from verify.proof.problem import StepProblem
 from verify.sos import poly as pl
-from verify.sos.program import Multiplier, SosProgram, scalar_multiplier
+from verify.sos.program import Multiplier, SosProgram, StepProgram, scalar_multiplier
 
 PARTIAL_CHARTS = ("angle", "unit_vector")  # parametrisations that miss points
 MAX_PRODUCT = 3  # at most this many scalar facts multiplied into one multiplier
 
 
-class BySos(Justification):
-    """lhs - rhs (rhs - lhs for <=) is proved >= 0 by an exact SOS certificate."""
-
-    kind = "sos"
-
-    def __init__(self, assumptions: tuple[Assumption, ...], degree: int | None, note: str):
-        super().__init__(note)
-        self.assumptions = assumptions
-        self.degree = degree
-
-    def describe(self) -> str:
-        used = ", ".join(a.label for a in self.assumptions)
-        text = "SOS certificate" + (f" using {used}" if used else "")
-        return f"{self.note}: {text}" if self.note else text
-
-
-def by_sos(*assumptions: Assumption, degree: int | None = None, note: str = "") -> BySos:
-    """Prove an inequality step by a sum-of-squares certificate found and checked here.
-
-    Parameters
-    ----------
-    *assumptions
-        Assumptions of the context (``ctx.assume``) the certificate may use as
-        multipliers: kind ``pos``/``nonneg`` (scalar) or ``pd``/``psd`` (matrix).
-        Scalars declared positive and lambda_min atoms are used without being named.
-    degree
-        Cap on the total degree of each term multiplier x SOS (default: the degree of
-        the slack's numerator, the most a certificate without cancellation needs);
-        a lower cap keeps the search small.
-
-    Examples
-    --------
-    >>> from verify.proof import Context, Derivation, tr, I3
-    >>> ctx = Context("trace")
-    >>> R = ctx.rotation("R")
-    >>> d = Derivation("tr R <= 3", tr(R), ctx).le(3, by_sos())
-    """
-    for a in assumptions:
-        if type(a) is not Assumption:  # a subclass could answer == and hash as it likes
-            raise ProofSyntaxError(
-                f"by_sos() takes assumptions made with ctx.assume(...), got "
-                f"{type(a).__name__}; did you mean by_sos(ctx.assume(...))?")
-    if degree is not None and (isinstance(degree, bool) or not isinstance(degree, int)
-                               or not 1 <= degree <= 24):
-        raise ProofSyntaxError(f"by_sos(degree=...) must be an integer in [1, 24], "
-                               f"got degree={degree!r}")
-    return BySos(tuple(assumptions), degree, note)
-
-
 # -- the program of a step --------------------------------------------------------------
-@dataclass
-class StepProgram:
-    program: SosProgram
-    groups: list[list[int]]
-    numerator: pl.Poly
-    factors: list[tuple[pl.Poly, int]]
-    statement: str
-
-
 def _lifted(values) -> tuple[list, object]:
     """Numerators over one common denominator (a KnownFraction list), and that denominator."""
     n = max(len(v.exps) for v in values)
@@ -311,28 +252,4 @@ def _step_data(step, problem: StepProblem) -> dict | None:
         return None
 
 
-def program_of_step(data: object) -> StepProgram | str:
-    """The SOS program of the one-step derivation in ``data`` (rebuilt with our own
-    classes, :func:`verify.proof.wire.decode`), or why there is none."""
-    from verify.proof.checker import step_problem, validate_derivation
-    from verify.proof.rebuild import decode
-
-    try:
-        (d,) = decode(data)
-        validate_derivation(d)
-        (step,) = d.steps
-        if not isinstance(step.because, BySos) or step.relation == "=":
-            return "not an inequality step justified by by_sos"
-        problem = step_problem(d, step)
-        from verify.proof.size import over_limits
-
-        too_large = over_limits(*problem.all_exprs)
-        if too_large:
-            return too_large
-        return step_program(problem, step.because)
-    except (ProofSyntaxError, ValueError, ArithmeticError, TypeError, KeyError) as exc:
-        return f"{type(exc).__name__}: {exc}"
-
-
-__all__ = ["BySos", "StepProgram", "by_sos", "certificate_store", "exact_check",
-           "program_of_step", "step_program"]
+__all__ = ["certificate_store", "exact_check", "step_program"]

@@ -50,7 +50,7 @@ import json
 from fractions import Fraction
 from typing import Any
 
-from verify.proof.derivation import Assumption, Condition, Context, Derivation, Step
+from verify.proof.derivation import Context, Derivation, Step
 from verify.proof.expr import (
     ANGLE,
     MATRIX,
@@ -60,14 +60,15 @@ from verify.proof.expr import (
     ProofSyntaxError,
     Variable,
 )
+from verify.proof.hypotheses import Assumption, Condition
 from verify.proof.justify import (
     ByAlgebra,
     ByBound,
     ByCitation,
+    BySos,
     Nonneg,
     recipe,
 )
-from verify.proof.sos_step import BySos
 
 SCHEMA = "verify-derivations/1"
 

@@ -13,14 +13,17 @@ Modules, in the order data flows: :mod:`~verify.sos.poly` (exact polynomials),
 (monomial bases), :mod:`~verify.sos.search` (the SDP, cvxpy + Clarabel; untrusted),
 :mod:`~verify.sos.rounding` (Peyrl-Parrilo rounding and exact correction),
 :mod:`~verify.sos.check` (the trusted exact check), :mod:`~verify.sos.certificate`
-(JSON, binding to the claim, ``verify certificates check``), :mod:`~verify.sos.prove`
-(search, round, check).
+(JSON, and the checks of a certificate against the program of its claim),
+:mod:`~verify.sos.prove` (search, round, check). The library knows nothing of proofs:
+callers derive the program (:mod:`verify.proof.sos_step`) and decide which claim a
+stored certificate is bound to (:mod:`verify.certificates.sos_kind`).
 """
 
-from verify.sos.certificate import SCHEMA, check_sos_certificate_data
+from verify.sos.certificate import SCHEMA, check_against_program, check_bound, check_form
 from verify.sos.check import SosCheck, check_identity_and_psd
-from verify.sos.program import Block, Multiplier, SosProgram
+from verify.sos.program import Block, Multiplier, SosProgram, StepProgram
 from verify.sos.prove import find_certificate
 
-__all__ = ["SCHEMA", "Block", "Multiplier", "SosCheck", "SosProgram",
-           "check_identity_and_psd", "check_sos_certificate_data", "find_certificate"]
+__all__ = ["SCHEMA", "Block", "Multiplier", "SosCheck", "SosProgram", "StepProgram",
+           "check_against_program", "check_bound", "check_form", "check_identity_and_psd",
+           "find_certificate"]

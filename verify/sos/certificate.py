@@ -15,17 +15,21 @@ Bytes are deterministic (sorted keys, canonical term order). The key is a SHA-25
 the claim's own data (variables, numerator, and every multiplier the step allows), so a
 stored file is reused only for the very step it was made for.
 
-Two checks, both exact and solver-free:
+The checks are exact and solver-free, and use only what the certificate and the program
+of its claim (:class:`~verify.sos.program.StepProgram`, re-derived by the caller) say:
 
 - :func:`check_bound` (used by ``verify check``/``verify all``): the certificate must
   match the step as re-derived now (numerator, factors, target, each block's multiplier
   among those the step allows, with the same grounds), then identity and Gram PSD.
-- :func:`check_sos_certificate_data` (``verify certificates check``): the factors are
-  visibly non-negative (a constant >= 0 plus squares of single variables), numerator =
-  prod f^k * target, identity and Gram PSD; for certificates of the paper's proofs the
-  claim is rebuilt from :mod:`verify.paper_proofs.sos_proofs` and bound as above. A
-  user file's certificate is not bound here (that would mean running its code); its
-  multipliers' grounds are re-derived when ``verify check`` checks the file again.
+- :func:`check_form` (a stored file by itself): it parses within the size limits, the
+  factors are visibly non-negative (a constant >= 0 plus squares of single variables),
+  a block labelled plain SOS has the multiplier 1, the file is named by its key.
+- :func:`check_against_program` (a stored file against its claim's program): the key
+  and statement are the program's, then :func:`check_bound`.
+
+Which program a stored certificate is bound to (the step it carries, or the paper's
+step with its key) is decided above this library, by ``verify certificates check``
+(:mod:`verify.certificates.sos_kind`).
 """
 
 from __future__ import annotations
@@ -38,7 +42,7 @@ from pathlib import Path
 from verify.artefacts.atomic import write_atomic
 from verify.sos import poly as pl
 from verify.sos.check import SosCheck, check_identity_and_psd
-from verify.sos.program import Block, Multiplier
+from verify.sos.program import Block, Multiplier, StepProgram
 
 SCHEMA = "verify-sos-certificate/1"
 PAPER = "verify.paper_proofs"
@@ -48,7 +52,7 @@ def _matrix_json(m: Multiplier) -> list:
     return [[pl.to_json(e) for e in row] for row in m.matrix]
 
 
-def claim_key(sp) -> str:
+def claim_key(sp: StepProgram) -> str:
     """SHA-256 of the claim: variables, numerator, allowed multipliers (canonical JSON)."""
     claim = {
         "variables": list(sp.program.variables),
@@ -63,7 +67,7 @@ def file_name(key: str) -> str:
     return f"sos-{key[:20]}.json"
 
 
-def to_data(sp, blocks: list[Block], grams, key: str, source: str = "",
+def to_data(sp: StepProgram, blocks: list[Block], grams, key: str, source: str = "",
             step: dict | None = None) -> dict:
     extra = {} if step is None else {"step": step}
     return {
@@ -232,7 +236,7 @@ def _identity(c: Parsed) -> SosCheck:
     return check_identity_and_psd(c.target, c.blocks, c.grams)
 
 
-def check_bound(data: dict, sp) -> SosCheck:
+def check_bound(data: dict, sp: StepProgram) -> SosCheck:
     """Exact check of a certificate against the step it claims (re-derived as ``sp``)."""
     try:
         c = Parsed(data)
@@ -269,15 +273,12 @@ def _plain_sos_multipliers(c: Parsed) -> str:
     return ""
 
 
-def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
-    """Re-check a stored SOS certificate with no solver (``verify certificates check``).
+def check_form(data: dict, path: Path) -> str:
+    """What a stored certificate shows by itself, before it is bound to a claim.
 
-    A certificate that carries its step (``step``: the one-step derivation in the schema
-    of :mod:`verify.proof.wire`, as data) is bound like the gate's: the step is rebuilt
-    with the checker's own classes, its SOS program re-derived (statement, key, file name,
-    numerator, factors, every allowed multiplier with its grounds) and the certificate
-    checked against it (:func:`check_bound`). Without a step, a certificate of the
-    paper's proofs is bound to the paper's step with its key; any other is refused.
+    It parses within the size limits (else :class:`ValueError` naming ``path``), every
+    factor is visibly non-negative, a block labelled plain SOS has the multiplier 1, and
+    the file is named by its key. Returns why not, or "" when all hold.
     """
     try:
         c = Parsed(data)
@@ -287,33 +288,27 @@ def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
     if too_large:
         raise ValueError(f"{path}: SOS certificate too large to check: {too_large}")
     if not all(_nonneg_factor(f) for f, _k in c.factors):
-        return SosCheck(False, "a factor is not visibly non-negative")
+        return "a factor is not visibly non-negative"
     plain = _plain_sos_multipliers(c)
     if plain:
-        return SosCheck(False, plain)
+        return plain
     if path.name != file_name(c.claim["key"]):
-        return SosCheck(False, f"file name is not {file_name(c.claim['key'])} (its key)")
-    if "step" in data:
-        from verify.proof.sos_step import program_of_step
+        return f"file name is not {file_name(c.claim['key'])} (its key)"
+    return ""
 
-        sp = program_of_step(data["step"])
-        if isinstance(sp, str):
-            raise ValueError(f"{path}: malformed SOS certificate: step: {sp}")
-        bound = "bound to its step (rebuilt from the data, program re-derived)"
-    elif c.claim.get("source") == PAPER:
-        from verify.paper_proofs.sos_proofs import program_for_key
 
-        sp = program_for_key(c.claim["key"], c.claim["statement"])
-        if sp is None:
-            return SosCheck(False, "no by_sos step of the paper's proofs has this claim key")
-        bound = "bound to the paper's step (re-derived)"
-    else:
-        return SosCheck(False, "the certificate does not carry its step, so its statement, "
-                               "key and multipliers cannot be bound (check the derivation "
-                               "file again with `verify check` to renew it)")
-    if claim_key(sp) != c.claim["key"]:
+def check_against_program(data: dict, sp: StepProgram, bound: str) -> SosCheck:
+    """Exact check of a certificate against the program of the claim it is bound to.
+
+    ``sp`` is the claim's program re-derived by the caller (from the step the certificate
+    carries, or from the paper's proofs) and ``bound`` says how, for the reason. The
+    certificate's key must be the program's key and its statement the program's, then
+    :func:`check_bound` decides it.
+    """
+    key = data["claim"]["key"]
+    if claim_key(sp) != key:
         return SosCheck(False, "the claim key is not the key of the step it carries")
-    if sp.statement != c.claim["statement"]:
+    if sp.statement != data["claim"]["statement"]:
         return SosCheck(False, f"the statement is not the step's ({sp.statement})")
     result = check_bound(data, sp)
     if not result.ok:
@@ -321,5 +316,5 @@ def check_sos_certificate_data(data: dict, path: Path) -> SosCheck:
     return SosCheck(True, f"{sp.statement}: {result.reason}; {bound}")
 
 
-__all__ = ["SCHEMA", "check_bound", "check_sos_certificate_data", "claim_key", "file_name",
-           "lookup", "to_data", "write"]
+__all__ = ["PAPER", "SCHEMA", "check_against_program", "check_bound", "check_form", "claim_key",
+           "file_name", "lookup", "to_data", "write"]

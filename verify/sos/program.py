@@ -95,3 +95,21 @@ class SosProgram:
     variables: tuple[str, ...]
     target: pl.Poly
     multipliers: tuple[Multiplier, ...]
+
+
+@dataclass
+class StepProgram:
+    """The SOS program of one claim ``slack >= 0``, and what binds a certificate to it.
+
+    ``numerator`` is the slack's numerator, ``factors`` the known non-negative factors
+    divided out of it (numerator = prod f^k * ``program.target``), ``groups`` the
+    parameters of each variable (for the search's bases), ``statement`` the claim as
+    text. :mod:`verify.proof.sos_step` derives it from a proof step;
+    :mod:`verify.sos.certificate` checks a certificate against it.
+    """
+
+    program: SosProgram
+    groups: list[list[int]]
+    numerator: pl.Poly
+    factors: list[tuple[pl.Poly, int]]
+    statement: str
