@@ -29,6 +29,7 @@ from enum import StrEnum
 from pathlib import Path
 from typing import Any
 
+from verify.certificates import sos_kind
 from verify.errors import VerifyInputError
 from verify.inputs.number_text import unlimited_int_text
 from verify.passivity.check import band_fd, fd_certificate
@@ -36,15 +37,9 @@ from verify.passivity.check.certificate import KypCheck
 from verify.passivity.io import certificate_files as cf
 from verify.passivity.io.binding import UNVERIFIED_KEYS, locate_source
 from verify.passivity.io.strict_json import CertificateFormatError, read_strict
+from verify.sos import certificate as sos_certificate
 
 Checker = Callable[[dict[str, Any], Path], KypCheck]
-
-def _check_sos(data: dict[str, Any], path: Path) -> KypCheck:
-    """SOS certificates of ``by_sos`` steps (:mod:`verify.certificates.sos_kind`)."""
-    from verify.certificates.sos_kind import check_sos_file
-
-    return check_sos_file(data, path)
-
 
 def _check_robust(data: dict[str, Any], path: Path) -> KypCheck:
     """Robust band certificates of identified models (:mod:`verify.identify.robust_certificate`)."""
@@ -63,7 +58,7 @@ def _check_refutation(data: dict[str, Any], path: Path) -> KypCheck:
 SCHEMAS: dict[str, Checker] = {
     "verify-robust-refutation-certificate/1": _check_refutation,
     "verify-robust-band-certificate/1": _check_robust,
-    "verify-sos-certificate/1": _check_sos,
+    sos_certificate.SCHEMA: sos_kind.check_sos_file,
     fd_certificate.SCHEMA: fd_certificate.check_pr_file,
     band_fd.SCHEMA: band_fd.check_band_fd_file,
     cf.KYP_V1: cf.check_kyp_file,
