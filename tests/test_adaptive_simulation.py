@@ -10,13 +10,15 @@ import pytest
 
 from verify import so3
 from verify.errors import VerifyInputError
+from verify.inputs.time_grid import step_count
 from verify.sim import kernels
 from verify.sim.adaptive import hermite_weights, integrate_adaptive
 from verify.sim.fused import stepper
 from verify.sim.humans import LTIHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
-from verify.sim.run import Recorder, simulate, step_count
+from verify.sim.run import simulate
 from verify.sim.scenario import Scenario
+from verify.sim.trajectory import Recorder
 
 A_H = np.array([[-0.5, 2.0], [-2.0, -0.5]])
 

@@ -165,10 +165,10 @@ def test_a_run_that_raises_is_a_row(tmp_path):
 def test_html_has_the_main_reports_style_and_wraps_commands():
     """The campaign report reads like report.html (its style sheet) and a long command
     wraps instead of being cut off."""
+    from verify.artefacts.html_style import REPORT_CSS
     from verify.campaign.report import Code, render_html
-    from verify.report.render import _CSS
 
     long = "verify simulate " + " ".join(f"--flag{i} value" for i in range(60))
     page = render_html([("h1", "t <x>"), ("code", Code(long))], "t")
-    assert _CSS in page and "white-space:pre-wrap" in page
+    assert REPORT_CSS in page and "white-space:pre-wrap" in page
     assert long in page and "&lt;x&gt;" in page and "<x>" not in page

@@ -228,7 +228,7 @@ def test_whole_run_kernel_stops_where_dbar_is_lost():
     """A state whose directions cancel, handed to the kernel at step 5: it stops there
     with DBAR_UNDEFINED (simulate then raises with t = 5 dt)."""
     from verify.sim.fused import run_fixed
-    from verify.sim.run import Recorder
+    from verify.sim.trajectory import Recorder
 
     sc = Scenario(so3.exp(0.1 * np.ones((2, 3))), 2.0, StaticGainHuman(np.eye(2)),
                   Reference.constant(np.eye(3)), R_l0=np.eye(3),

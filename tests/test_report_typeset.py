@@ -173,7 +173,7 @@ def test_appendix_compiles_with_pdflatex(tmp_path):
     from report_fixtures import registry_run
 
     from verify.claims.evidence import figure
-    from verify.report.figures import _pyplot, _save
+    from verify.claims.figures import _pyplot, _save
 
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(3, 2))

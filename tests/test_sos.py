@@ -375,7 +375,7 @@ def test_theorem1_reachable_steps_are_reproved_by_sos():
 def test_report_marks_steps_proved_by_hand_terms_and_by_sos(tmp_path):
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
-    from verify.claims.registry import run_claims
+    from verify.claims.runner import run_claims
     from verify.report.render import render_markdown
 
     wanted = ("lemma1.trace-inequality", "lemma1.sos-reproofs")

@@ -258,7 +258,7 @@ def _add_campaign_parser(sub) -> None:
 def _cmd_all(args: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
-    from verify.claims.registry import run_claims
+    from verify.claims.runner import run_claims
     from verify.report import RunInfo, write_report
     from verify.report.render import VERDICT_MARK
 

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from verify.artefacts.html_style import REPORT_CSS
 from verify.campaign.execute import (
     ASSUMPTION,
     FAILED,
@@ -167,11 +168,9 @@ _CAMPAIGN_CSS = ("pre{background:#f6f6f6;padding:.6em;white-space:pre-wrap;"
 
 def render_html(blocks: Sequence[Block], title: str) -> str:
     """HTML in the style of the main report (``verify all``'s report.html)."""
-    from verify.report.render import _CSS
-
     e = html.escape
     out = ["<!doctype html>", "<html lang='en'><head><meta charset='utf-8'>",
-           f"<title>{e(title)}</title>", f"<style>{_CSS}{_CAMPAIGN_CSS}</style>",
+           f"<title>{e(title)}</title>", f"<style>{REPORT_CSS}{_CAMPAIGN_CSS}</style>",
            "</head><body>"]
     for kind, item in blocks:
         if kind in ("h1", "h2"):

@@ -31,10 +31,12 @@ from verify.so3 import Array
 
 KEY_VERSION = 2  # bump when the meaning of a row's columns changes
 
-#: The code a row's figures depend on: the simulator, the paper's system, SO(3) maps and
-#: the per-run checks. Their bytes enter every run key, so ``--resume`` after a change of
-#: this code runs everything again instead of mixing rows of two versions in one store.
-_CODE = ("verify/sim", "verify/system", "verify/so3.py", "verify/campaign/execute.py")
+#: The code a row's figures depend on: the simulator (with its time grid), the paper's
+#: system, SO(3) maps and the per-run checks. Their bytes enter every run key, so
+#: ``--resume`` after a change of this code runs everything again instead of mixing rows
+#: of two versions in one store.
+_CODE = ("verify/inputs/time_grid.py", "verify/sim", "verify/system", "verify/so3.py",
+         "verify/campaign/execute.py")
 
 
 @functools.cache

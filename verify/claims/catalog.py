@@ -1,4 +1,8 @@
-"""Imports every module of checks so that they register in :data:`REGISTRY`."""
+"""The full registry of the paper's claims.
+
+Imports every module of checks, in the order of the reports, so that they register in
+:data:`REGISTRY`; import :data:`REGISTRY` from here whenever every claim is needed.
+"""
 
 from verify.claims import (
     section2,  # noqa: F401  (Section 2, stealthy control)

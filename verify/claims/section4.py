@@ -16,6 +16,7 @@ import numpy as np
 import sympy as sp
 
 from verify.claims.evidence import certificate, counterexample, exact, figure, instances, numeric
+from verify.claims.figures import bode_figure, nu_figure
 from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 from verify.passivity.band import decide_band
@@ -25,7 +26,6 @@ from verify.passivity.indices import indices, written_estimate
 from verify.passivity.io.model_file import load_model
 from verify.passivity.model import from_state_space
 from verify.passivity.search.hamiltonian import nu_minimum
-from verify.report.figures import bode_figure, nu_figure
 
 SECTION = "4, human passivity"
 MODELS = Path(__file__).resolve().parents[1] / "data" / "models"

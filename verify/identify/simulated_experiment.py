@@ -25,8 +25,9 @@ from verify.identify.experiment import ExperimentLog, Trial
 from verify.inputs.numbers import positive_real, real
 from verify.sim.inputs import Reference, autonomous_input
 from verify.sim.noisy_humans import ReactingNoisyHuman
-from verify.sim.run import Trajectory, simulate
+from verify.sim.run import simulate
 from verify.sim.scenario import Scenario
+from verify.sim.trajectory import Trajectory
 from verify.so3 import exp, vee
 
 #: Default operator noise (rad/s, standard deviation of the held white noise on u_h) and

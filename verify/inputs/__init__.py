@@ -12,7 +12,8 @@ naming the argument, the value and the fix; nothing is ever evaluated.
 Modules: :mod:`verify.inputs.numbers` (numbers and numeric arrays, both flavours,
 command-line numbers and the strict certificate number), :mod:`verify.inputs.files`
 (opening only regular files, of bounded size), :mod:`verify.inputs.toml` (reading a TOML
-file), :mod:`verify.inputs.experiment_log` (operator experiment logs, CSV and NPZ, with
+file), :mod:`verify.inputs.time_grid` (the steps of a run of given length and step),
+:mod:`verify.inputs.experiment_log` (operator experiment logs, CSV and NPZ, with
 :mod:`~verify.inputs.log_checks` and :mod:`~verify.inputs.log_npz`) and
 :mod:`verify.inputs.campaign_spec` (campaign specs for ``verify campaign``, imported on
 use). New input kinds belong in this package and use these validators rather than

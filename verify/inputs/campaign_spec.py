@@ -66,6 +66,7 @@ from verify.inputs.numbers import (
     rational,
     real,
 )
+from verify.inputs.time_grid import step_count
 from verify.inputs.toml import parse_toml_bytes
 from verify.validation import shown
 
@@ -409,7 +410,6 @@ def parse_campaign_spec(data: dict[str, Any], source: Path) -> CampaignSpec:
     reference = _axis(sweep, "reference", at, _name(REFERENCES), "constant", ranged=False)
     seconds = _axis(sweep, "seconds", at, positive_real, DEFAULT_SECONDS)
     step = _axis(sweep, "step", at, _step, DEFAULT_STEP)
-    from verify.sim.run import step_count
 
     def written(key: str, x: float) -> str:
         return _as_written(sweep.get(key), x)

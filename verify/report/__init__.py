@@ -5,7 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from verify.artefacts.atomic import write_all_atomic, write_atomic
-from verify.claims.registry import RunResult
+from verify.claims.runner import RunResult
 from verify.report.render import render_html, render_json, render_markdown
 from verify.report.run_info import RunInfo
 

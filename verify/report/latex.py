@@ -18,7 +18,7 @@ from __future__ import annotations
 from pathlib import PurePosixPath
 
 from verify.claims.model import ClaimResult
-from verify.claims.registry import RunResult
+from verify.claims.runner import RunResult
 from verify.report.mathtex import latex_text, prose_to_latex
 from verify.report.render import (
     ENVIRONMENT_NOTE,

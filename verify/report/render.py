@@ -1,4 +1,4 @@
-"""Render a :class:`~verify.claims.registry.RunResult` as Markdown, HTML and JSON.
+"""Render a :class:`~verify.claims.runner.RunResult` as Markdown, HTML and JSON.
 
 The three renderings come from the same data: the claim registry's results. The text
 says, per claim, what the paper writes, what was checked, the verdict, the finding in
@@ -20,8 +20,9 @@ from importlib import metadata
 from typing import Any
 
 from verify import __version__
+from verify.artefacts.html_style import REPORT_CSS
 from verify.claims.model import ClaimResult, EvidenceKind, Verdict
-from verify.claims.registry import RunResult
+from verify.claims.runner import RunResult
 from verify.report.canonical import canonical_data
 from verify.report.mathml import markdown_prose, mathml, prose_html
 from verify.report.mathtex import prose_to_latex
@@ -281,30 +282,6 @@ def _claim_markdown(r: ClaimResult) -> list[str]:
     return out
 
 
-_CSS = """
-body{font-family:system-ui,sans-serif;max-width:960px;margin:2em auto;padding:0 1em;
-line-height:1.45;color:#222}
-h2{border-bottom:2px solid #ccc;padding-bottom:.2em;margin-top:2em}
-table{border-collapse:collapse;width:100%;margin:.6em 0;table-layout:auto}
-td,th{border:1px solid #ccc;padding:4px 8px;text-align:left;vertical-align:top;
-overflow-wrap:anywhere}th{background:#f3f3f3}
-table.proof{table-layout:fixed;font-size:.95em}table.proof col.k{width:4em}
-table.proof col.v{width:11em}
-table.proof tr.head th{background:#eef2f7;font-weight:normal}
-table.proof tr.rel td{border-bottom:none;padding-top:6px;overflow-x:auto}
-table.proof tr.why td{border-top:none;color:#444;font-size:.93em}
-math{font-size:1.12em}table.proof tr.rel math{font-size:1.2em}
-.verified{color:#176a1e;font-weight:bold}.verified-with-repair{color:#8a5a00;font-weight:bold}
-.refuted{color:#b00020;font-weight:bold}.assumption{color:#555;font-weight:bold}
-.inconclusive{color:#b00020;font-weight:bold}.claim{border-top:1px solid #ddd;padding-top:.5em}
-.fail{color:#b00020}code{background:#f6f6f6;padding:0 3px;overflow-wrap:anywhere}
-details{margin:.3em 0}pre{white-space:pre-wrap;overflow-wrap:anywhere;max-height:24em;
-overflow:auto;background:#fafafa;padding:.4em}img{max-width:100%;height:auto}
-dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
-table.summary td:first-child,table.summary td:last-child{white-space:nowrap}
-"""
-
-
 def _run_html(run: RunResult, info: RunInfo) -> str:
     """The HTML "Run" block (date and timings)."""
     esc = html.escape
@@ -412,7 +389,7 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
         "<!doctype html><html lang='en'><head><meta charset='utf-8'>",
         "<meta name='viewport' content='width=device-width, initial-scale=1'>",
         "<title>Verification report</title>",
-        f"<style>{_CSS}</style></head><body>",
+        f"<style>{REPORT_CSS}</style></head><body>",
         "<h1>Verification report</h1>",
         f"<p>By <code>verify all</code> (seed {run.seed}). Date and timings are in the last "
         "section, Run.</p>",

@@ -33,7 +33,7 @@ from verify.errors import DbarUndefinedError, VerifyInputError
 from verify.inputs.numbers import real
 from verify.sim import kernels
 from verify.sim.fused import Stepper
-from verify.sim.run import Progress, Recorder, Trajectory, dbar_lost
+from verify.sim.trajectory import Progress, Recorder, Trajectory, dbar_lost
 from verify.so3 import Array
 
 SAFETY, GROW, SHRINK = 0.9, 4.0, 0.2

@@ -16,13 +16,14 @@ import numpy as np
 
 from verify.errors import VerifyInputError
 from verify.inputs.numbers import positive_real, real
+from verify.inputs.time_grid import step_count
 from verify.sim.energy import energy
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
 from verify.sim.outputs import write_outputs
 from verify.sim.properties import largest_rise
 from verify.sim.resolution import stable_step, step_is_stable
-from verify.sim.run import simulate, step_count
+from verify.sim.run import simulate
 from verify.sim.scenario import Scenario
 from verify.sim.terminal import is_terminal, progress_wanted
 from verify.so3 import exp, orthogonality_error

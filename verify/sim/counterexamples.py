@@ -26,8 +26,9 @@ from verify.sim.energy import energy
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman
 from verify.sim.inputs import Reference
 from verify.sim.properties import RunPair
-from verify.sim.run import Trajectory, simulate
+from verify.sim.run import simulate
 from verify.sim.scenario import Scenario
+from verify.sim.trajectory import Trajectory
 from verify.so3 import exp
 
 # ------------------------------------------------------------------ exact boundary witness

@@ -17,8 +17,8 @@ import numpy as np
 
 from verify.sim import fused, kernels
 from verify.sim.humans import LTIHuman
-from verify.sim.run import Trajectory
 from verify.sim.scenario import ClosedLoop
+from verify.sim.trajectory import Trajectory
 from verify.so3 import Array, hat, transpose, vee
 
 

@@ -191,7 +191,7 @@ def run_fixed(stepper: Stepper, rec, Y: Array, x: Array, k0: int, k1: int, dt: f
               ) -> tuple[Array, Array, int, int]:
     """Steps k0 .. k1 - 1 in one compiled call when the stepper allows it
     (:func:`verify.sim.kernels.cf4_run`), recording into ``rec`` (a
-    :class:`verify.sim.run.Recorder`). Returns (Y, x, k, status) with k where it stopped;
+    :class:`verify.sim.trajectory.Recorder`). Returns (Y, x, k, status) with k where it stopped;
     status -1 when the stepper has no whole-run kernel (nothing done)."""
     if not (isinstance(stepper, CompiledStepper) and stepper.command in ("none", "held")
             and stepper.auto != kernels.AUTO_GIVEN):

@@ -13,7 +13,7 @@ import numpy as np
 
 from verify.artefacts.atomic import write_all_atomic
 from verify.sim.energy import Energy
-from verify.sim.run import Trajectory
+from verify.sim.trajectory import Trajectory
 from verify.so3 import E3
 
 CSV_COLUMNS = (

@@ -39,8 +39,9 @@ import numpy as np
 from verify.sim.energy import Energy, energy
 from verify.sim.inputs import Autonomous
 from verify.sim.resolution import step_is_stable
-from verify.sim.run import Trajectory, simulate
+from verify.sim.run import simulate
 from verify.sim.scenario import LOOP_RATE, Scenario
+from verify.sim.trajectory import Trajectory
 from verify.so3 import E3, Array
 
 EPS = float(np.finfo(float).eps)

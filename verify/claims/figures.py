@@ -1,4 +1,4 @@
-"""Figures of Section 4 for the report: nu(w) with its located minimum, and Bode diagrams.
+"""Figures of Section 4 for the claims' evidence: nu(w) with its minimum, and Bode diagrams.
 
 The paper shows Bode diagrams of the identified 2x2 models (Fig. "bode_diagram_2x2") and
 nu(w) = lambda_min(H(jw) + H(jw)^H)/2 (Fig. "passivity_index_2x2"). These are drawn for

@@ -1,0 +1,120 @@
+"""The claim runner: run registered checks and collect their results in order.
+
+The runner never lets a crashing check pass: an exception becomes an INCONCLUSIVE
+outcome that names the error. Worker processes find the claims by id in the full
+registry of :mod:`verify.claims.catalog`.
+"""
+
+from __future__ import annotations
+
+import time
+import traceback
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+
+from verify.claims.model import (
+    CheckContext,
+    Claim,
+    ClaimResult,
+    Evidence,
+    EvidenceKind,
+    Outcome,
+    Verdict,
+)
+from verify.claims.registry import REGISTRY
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """All claim results of one run, in registry order."""
+
+    results: tuple[ClaimResult, ...]
+    seconds: float
+    seed: int
+
+    def counts(self) -> dict[str, int]:
+        out = {v.value: 0 for v in Verdict}
+        for r in self.results:
+            out[r.outcome.verdict.value] += 1
+        return out
+
+    def all_verified(self) -> bool:
+        return all(r.outcome.verdict is Verdict.VERIFIED for r in self.results)
+
+
+def run_claim(claim: Claim, context: CheckContext) -> ClaimResult:
+    """Run one check; a crash yields INCONCLUSIVE with the error as evidence."""
+    start = time.perf_counter()
+    try:
+        outcome = claim.check(context)
+        if not isinstance(outcome, Outcome):
+            raise TypeError(f"check returned {type(outcome).__name__}, not Outcome")
+    except Exception as exc:  # a broken check must never count as a pass
+        outcome = Outcome(
+            verdict=Verdict.INCONCLUSIVE,
+            finding=f"The check itself failed ({type(exc).__name__}: {exc}); no verdict.",
+            evidence=(
+                Evidence(
+                    EvidenceKind.NUMERICAL,
+                    "traceback of the failed check",
+                    {"traceback": traceback.format_exc(limit=5)},
+                    passed=False,
+                ),
+            ),
+        )
+    return ClaimResult(claim, outcome, time.perf_counter() - start)
+
+
+def _run_by_id(claim_id: str, context: CheckContext) -> tuple[Outcome, float]:
+    """Run one registered claim in a worker process (claims travel by id)."""
+    from verify.claims.catalog import REGISTRY as FULL  # registers the claims here
+
+    result = run_claim(FULL.get(claim_id), context)
+    return result.outcome, result.seconds
+
+
+def run_claims(
+    claims: Iterable[Claim],
+    context: CheckContext,
+    progress: Callable[[ClaimResult], None] | None = None,
+    *,
+    jobs: int = 1,
+) -> RunResult:
+    """Run the given claims and collect their results in the given order.
+
+    With ``jobs`` > 1 the checks run in that many worker processes. Each check depends
+    only on the context (its seed, its output folders), never on another check, so the
+    results, and the report rendered from them, are the same as a run with one job;
+    ``progress`` still sees them in order.
+    The workers are fresh interpreters (the ``forkserver`` start method), so a script
+    that calls this with ``jobs`` > 1 needs the usual ``if __name__ == "__main__":``
+    guard.
+    """
+    claims = list(claims)
+    start = time.perf_counter()
+    results: list[ClaimResult] = []
+    registered = all(c.id in REGISTRY.ids() and REGISTRY.get(c.id) is c for c in claims)
+    if jobs <= 1 or len(claims) <= 1 or not registered:  # workers find claims by id
+        for claim in claims:
+            result = run_claim(claim, context)
+            results.append(result)
+            if progress is not None:
+                progress(result)
+        return RunResult(tuple(results), time.perf_counter() - start, context.seed)
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    # workers start from a fresh interpreter (forkserver), not a fork of this process: a
+    # fork keeps locks of native thread pools (clarabel's rayon pool once a solver ran
+    # here) whose threads it does not copy, and the worker's first solve then waits forever
+    start_method = multiprocessing.get_context("forkserver")
+    with ProcessPoolExecutor(max_workers=min(jobs, len(claims)),
+                             mp_context=start_method) as pool:
+        futures = [pool.submit(_run_by_id, c.id, context) for c in claims]
+        for claim, future in zip(claims, futures, strict=True):
+            outcome, seconds = future.result()
+            result = ClaimResult(claim, outcome, seconds)
+            results.append(result)
+            if progress is not None:
+                progress(result)
+    return RunResult(tuple(results), time.perf_counter() - start, context.seed)
