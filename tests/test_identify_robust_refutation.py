@@ -10,9 +10,9 @@ import pytest
 from identify_models import PAPER_THETA, paper_model
 
 from verify.artefacts.atomic import write_atomic
-from verify.identify import refutation_certificate as rfc
-from verify.identify.robust import robust_verdict
-from verify.identify.robust_refutation import refute_region
+from verify.identify.robust import refutation_certificate as rfc
+from verify.identify.robust.refutation_search import refute_region
+from verify.identify.robust.verdict import robust_verdict
 from verify.passivity.check import robust_band as rb
 from verify.passivity.io.stored import check_stored_certificate
 

@@ -48,14 +48,14 @@ def _check_sos(data: dict[str, Any], path: Path) -> KypCheck:
 
 def _check_robust(data: dict[str, Any], path: Path) -> KypCheck:
     """Robust band certificates of identified models (:mod:`verify.identify.robust_certificate`)."""
-    from verify.identify.robust_certificate import check_robust_file
+    from verify.identify.robust.band_check import check_robust_file
 
     return check_robust_file(data, path)
 
 
 def _check_refutation(data: dict[str, Any], path: Path) -> KypCheck:
     """Region-wide refutations (:mod:`verify.identify.refutation_certificate`)."""
-    from verify.identify.refutation_certificate import check_refutation_file
+    from verify.identify.robust.refutation_check import check_refutation_file
 
     return check_refutation_file(data, path)
 
