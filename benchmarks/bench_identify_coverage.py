@@ -9,7 +9,7 @@ the paper's class (the shipped passive example: diagonal (1.2 s + 0.8)/(s^2 + 2 
 c12 = 0.05, c21 = -0.05), operator noise inside the loop and measurement noise at the
 generator's defaults, prepares its ``--trials`` trials with the paper's protocol (dead
 time to the start event, anti-aliasing, decimation to 20 Hz), all for identification,
-and estimates H(s) (:func:`verify.identify.estimation.estimate_model`, method riv+pem).
+and estimates H(s) (:func:`verify.identify.estimate.estimation.estimate_model`, method riv+pem).
 One study per value of ``--trials``: the paper's 6 identification trials, and 12.
 Printed: per parameter the fraction of repetitions whose interval theta_hat +- 1.96 se
 holds the true value (target >= 90 %) with its exact binomial 95 % interval, the fraction
@@ -20,7 +20,7 @@ runs the ARX-started output-error baseline on the same data (the table of
 ``bench_identify_methods.py``). BLAS threads are pinned to 1 unless set.
 
 Measured with the few-trials widening of the covariance, T / (T - 2)
-(:func:`verify.identify.estimation.few_trials_factor`), and no burn-in, on 20 seeds only
+(:func:`verify.identify.estimate.estimation.few_trials_factor`), and no burn-in, on 20 seeds only
 (1000-1019, n = 8, 6 trials, 1 process, 385 s under load from other processes): coverage
 b1_1 100, b0_1 90, a1_1 100, a0_1 90, b1_2 95, b0_2 100, a1_2 100, a0_2 100, c12 95,
 c21 95 %; joint ellipsoid 95 %; criterion met on this sample, but the exact binomial
@@ -47,7 +47,7 @@ so the information and the error are correlated in a short experiment. Projectin
 recorded noise on the estimator's own Jacobian gives a DC-gain z-score spread of 1.15-1.2;
 an independent copy of the noise gives 0.93-1.05 (the asymptotic formula). Starting each
 trial from rest instead of carrying the state over the dead time
-(:mod:`verify.identify.estimation`) lowered the coverage further (joint ellipsoid 74 %
+(:mod:`verify.identify.estimate.estimation`) lowered the coverage further (joint ellipsoid 74 %
 on 100 seeds, 80 % carried).
 """
 
@@ -64,7 +64,7 @@ import warnings  # noqa: E402
 import numpy as np  # noqa: E402
 from scipy.stats import beta  # noqa: E402
 
-from verify.identify.coverage import Study, run_study  # noqa: E402
+from verify.identify.quality.coverage import Study, run_study  # noqa: E402
 
 #: The shipped passive example operator (verify/data/logs/passive_human.toml).
 THETA_TRUE = (1.2, 0.8, 2.0, 1.5, 1.2, 0.8, 2.0, 1.5, 0.05, -0.05)

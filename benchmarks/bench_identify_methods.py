@@ -4,13 +4,13 @@ Run: ``python benchmarks/bench_identify_methods.py [--quick] [--seeds 10] [--n 8
 [--baseline-arx]``.
 
 On seeded closed-loop experiments in the paper's protocol with a known operator
-(:func:`verify.identify.simulated_experiment.simulate_experiment`, 6 identification
+(:func:`verify.identify.data.simulated_experiment.simulate_experiment`, 6 identification
 trials of 15 s at 120 Hz), noisy (the default operator and measurement noise) and
 noise-free, two estimates of the paper's structure (Section 4, "Human Modeling"):
 
 * ``pipeline``: what ``verify identify`` does: the protocol with ``rate="auto"``
-  (:func:`verify.identify.protocol.chosen_rate`: the logged 120 Hz), then
-  :func:`verify.identify.estimation.estimate_model`
+  (:func:`verify.identify.data.protocol.chosen_rate`: the logged 120 Hz), then
+  :func:`verify.identify.estimate.estimation.estimate_model`
   with its defaults (state carried across trials, no burn-in, covariance widened for
   few trials, which leaves the estimate unchanged);
 * ``plain OE``: the output-error least-squares fit of the same structure on the
@@ -25,7 +25,7 @@ pipeline / plain OE (below 1: the pipeline is more accurate). Measured on 12 see
 were decimated to 20 Hz by default the ratios were 0.98-1.08, and 1.42 for c12; with the
 earlier 1 s burn-in the noisy ratios of b1_1 and a1_1 were 2.95. ``--baseline-arx`` adds the
 discrete ARX-started output-error fit with zero initial states
-(:mod:`verify.identify.baseline`). ``--quick``: 3 seeds, 2 bodies. BLAS threads are
+(:mod:`verify.identify.estimate.baseline`). ``--quick``: 3 seeds, 2 bodies. BLAS threads are
 pinned to 1 unless set; timings depend on the machine's load.
 """
 
@@ -42,11 +42,11 @@ import warnings  # noqa: E402
 import numpy as np  # noqa: E402
 
 from verify.errors import VerifyInputError  # noqa: E402
-from verify.identify.coverage import true_model  # noqa: E402
-from verify.identify.estimation import estimate_model  # noqa: E402
-from verify.identify.protocol import prepare  # noqa: E402
-from verify.identify.simulated_experiment import simulate_experiment  # noqa: E402
-from verify.identify.structure import Structure  # noqa: E402
+from verify.identify.data.protocol import prepare  # noqa: E402
+from verify.identify.data.simulated_experiment import simulate_experiment  # noqa: E402
+from verify.identify.estimate.estimation import estimate_model  # noqa: E402
+from verify.identify.estimate.structure import Structure  # noqa: E402
+from verify.identify.quality.coverage import true_model  # noqa: E402
 
 THETA_TRUE = np.array([1.2, 0.8, 2.0, 1.5, 1.2, 0.8, 2.0, 1.5, 0.05, -0.05])
 

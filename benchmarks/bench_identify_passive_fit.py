@@ -4,7 +4,7 @@ For a passive operator (the shipped passive_human truth) and two non-passive one
 diagonal element, Re h_2(jw) < 0 above 2 rad/s; skew violated only through the coupling,
 c12 + c21 = 0.4), over seeds: synthetic experiments (``identify_models.open_loop_log``,
 4 trials of 15 s at 120 Hz, white noise on e and u), the protocol (decimation to 20 Hz,
-3:1 split), the estimator, then the test (:mod:`verify.identify.passive_fit`). Printed per
+3:1 split), the estimator, then the test (:mod:`verify.identify.robust.passive_fit`). Printed per
 truth: the rejection rate at 5 % (the test's size for the passive truth, its power for
 the others) with an exact binomial 95 % interval, the median p-value, and the test's time
 as a ratio to the estimator's, measured in the same process.
@@ -25,10 +25,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from identify_models import open_loop_log
 
-from verify.identify.estimation import estimate_model
-from verify.identify.passive_fit import passivity_test
-from verify.identify.protocol import prepare
-from verify.identify.structure import Structure
+from verify.identify.data.protocol import prepare
+from verify.identify.estimate.estimation import estimate_model
+from verify.identify.estimate.structure import Structure
+from verify.identify.robust.passive_fit import passivity_test
 from verify.passivity.model import from_transfer_function
 
 TRUTHS = {

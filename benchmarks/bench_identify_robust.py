@@ -29,12 +29,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from identify_models import PAPER_THETA, correlated_covariance
 
-from verify.identify import refutation_certificate as rfc
-from verify.identify import robust_certificate as rc
-from verify.identify.region import make_region
-from verify.identify.robust import largest_band, nominal_crossing, prove, refute
-from verify.identify.robust_refutation import refute_region
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.region import make_region
+from verify.identify.robust import band_certificate as rc
+from verify.identify.robust import band_check, refutation_check
+from verify.identify.robust.refutation_search import refute_region
+from verify.identify.robust.verdict import largest_band, nominal_crossing, prove, refute
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -57,7 +57,7 @@ def main(argv: list[str] | None = None) -> int:
         size = len(rc.dumps(cert)) if cert else 0
         start = time.perf_counter()
         if cert:
-            assert rc.check_leaves(cert, rc.shape_of("paper"), region, band) is None
+            assert band_check.check_leaves(cert, rc.shape_of("paper"), region, band) is None
         t_check = time.perf_counter() - start
         start = time.perf_counter()
         found = largest_band(region, structure, Fraction(0), 100.0, name="bench", source="")
@@ -95,7 +95,7 @@ def refutations(scales: list[float]) -> None:
         if cert:
             w = Fraction(cert["frequency"])
             v = tuple(Fraction(x) for x in cert["direction"])
-            assert rfc.check_tree(cert, rc.shape_of("paper"), region, w, v) is None
+            assert refutation_check.check_tree(cert, rc.shape_of("paper"), region, w, v) is None
         t_check = time.perf_counter() - start
         verdict = "not passive (whole region)" if cert else \
             f"no refutation ({found.reason[:60]})"

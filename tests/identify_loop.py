@@ -1,7 +1,7 @@
 """Logs for the identification tests: the paper's closed loop with a known operator, and
 hostile logs (pure noise, swapped signals, a diverging loop, a differentiator).
 
-The closed loop is :func:`verify.identify.simulated_experiment.simulate_experiment` with
+The closed loop is :func:`verify.identify.data.simulated_experiment.simulate_experiment` with
 2 bodies and 8 short trials (a few seconds of CPU); the hostile logs are small numpy
 constructions, independent of the estimator.
 """
@@ -13,9 +13,9 @@ from pathlib import Path
 
 import numpy as np
 
-from verify.identify.coverage import true_model
-from verify.identify.experiment import ExperimentLog, Trial
-from verify.identify.simulated_experiment import simulate_experiment
+from verify.identify.data.simulated_experiment import simulate_experiment
+from verify.identify.quality.coverage import true_model
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.inputs.experiment_log import write_log
 
 #: The known operator (passive: c12 + c21 = 0, diagonal elements positive real).

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from verify.identify.model_writer import IdentifiedFile, write_identified_model
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.model_writer import IdentifiedFile, write_identified_model
 
 #: The paper's structure with the shipped k_s = 3.0 reconstruction's diagonal and a small
 #: non-skew off-diagonal pair (c12 + c21 = 0.02): passive up to about 12 rad/s.
@@ -54,12 +54,12 @@ def open_loop_log(model, *, trials: int = 6, seconds: float = 15.0, rate: float 
                   noise: float = 0.002, seed: int = 0):
     """A fast synthetic experiment log: u = H e + white noise for smooth random e.
 
-    Not the closed loop of Section 4 (that is ``verify.identify.simulated_experiment``,
+    Not the closed loop of Section 4 (that is ``verify.identify.data.simulated_experiment``,
     slower): enough to exercise the command's files, verdicts and exit codes.
     """
     from scipy import signal
 
-    from verify.identify.experiment import ExperimentLog, Trial
+    from verify.inputs.experiment import ExperimentLog, Trial
 
     rng = np.random.default_rng(seed)
     h = 1.0 / rate

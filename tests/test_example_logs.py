@@ -3,17 +3,17 @@
 import numpy as np
 import pytest
 
-from verify.identify.example_logs import EXAMPLES, LOGS, main
-from verify.identify.simulated_experiment import (
+from verify.identify.data.example_logs import EXAMPLES, LOGS, main
+from verify.identify.data.simulated_experiment import (
     MEASUREMENT_NOISE,
     OPERATOR_NOISE,
     add_measurement_noise,
     experiment_scenario,
-    trajectory_trials,
 )
 from verify.inputs.experiment_log import read_log
 from verify.passivity.decision import PASSIVE, decide
 from verify.passivity.io.model_file import load_model
+from verify.sim.experiment_log import trajectory_trials
 from verify.sim.run import simulate
 
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from verify.errors import VerifyInputError
-from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.inputs.experiment_log import read_log, read_logs, write_log
 
 RATE = 120.0

@@ -16,15 +16,15 @@ import numpy as np
 import pytest
 from scipy import signal
 
-from verify.identify.coverage import true_model
-from verify.identify.ct_filters import Filter, companion
-from verify.identify.estimation import estimate_model
-from verify.identify.experiment import Trial
-from verify.identify.prediction import predict
-from verify.identify.protocol import prepare
-from verify.identify.simulated_experiment import simulate_experiment
-from verify.identify.structure import Structure
-from verify.identify.trial_data import dead_time_gaps
+from verify.identify.data.protocol import prepare
+from verify.identify.data.simulated_experiment import simulate_experiment
+from verify.identify.estimate.ct_filters import Filter, companion
+from verify.identify.estimate.estimation import estimate_model
+from verify.identify.estimate.prediction import predict
+from verify.identify.estimate.structure import Structure
+from verify.identify.estimate.trial_data import dead_time_gaps
+from verify.identify.quality.coverage import true_model
+from verify.inputs.experiment import Trial
 
 THETA = np.array([1.2, 0.8, 2.0, 1.5, 1.2, 0.8, 2.0, 1.5, 0.05, -0.05])
 

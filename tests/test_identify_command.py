@@ -16,7 +16,7 @@ import pytest
 from identify_models import open_loop_log
 
 from verify.cli import main
-from verify.identify.example_logs import EXAMPLES
+from verify.identify.data.example_logs import EXAMPLES
 from verify.inputs.experiment_log import write_log
 
 

@@ -17,13 +17,14 @@ import pytest
 from scipy import signal
 
 from verify.errors import VerifyInputError
-from verify.identify.bootstrap import bootstrap, bootstrap_draws
-from verify.identify.ct_filters import filtered, free_responses
-from verify.identify.estimation import estimate_model
-from verify.identify.experiment import Trial
-from verify.identify.prediction import predict
-from verify.identify.quality import assess, cross_correlation, fit_ratio, whiteness
-from verify.identify.structure import Structure
+from verify.identify.estimate.bootstrap import bootstrap, bootstrap_draws
+from verify.identify.estimate.ct_filters import filtered, free_responses
+from verify.identify.estimate.estimation import estimate_model
+from verify.identify.estimate.prediction import predict
+from verify.identify.estimate.residual_tests import cross_correlation, whiteness
+from verify.identify.estimate.structure import Structure
+from verify.identify.quality.fits import assess, fit_ratio
+from verify.inputs.experiment import Trial
 
 #: A known operator in the paper's class: (b1, b0, a1, a0) per diagonal element, c12, c21.
 THETA = np.array([1.2, 0.8, 2.0, 1.5, 0.9, 1.1, 1.6, 2.0, 0.05, -0.08])
@@ -345,7 +346,7 @@ def test_asymptotic_intervals_cover_on_the_linear_closed_loop():
 def test_coverage_study_on_simulated_so3_experiments_prints_its_numbers():
     """A short run of the study of benchmarks/bench_identify_coverage.py (3 seeds, n = 3):
     every repetition is estimated, and the fit ratios are printed."""
-    from verify.identify.coverage import run_study
+    from verify.identify.quality.coverage import run_study
 
     theta = (1.2, 0.8, 2.0, 1.5, 1.2, 0.8, 2.0, 1.5, 0.05, -0.05)
     study = run_study(theta, range(2000, 2003), n=3)
@@ -358,8 +359,8 @@ def test_coverage_study_on_simulated_so3_experiments_prints_its_numbers():
 def test_refinements_on_the_search_bound_are_set_aside(monkeypatch):
     """A refinement that ends on the box of denominators (poles at half the Nyquist
     frequency) is never returned; when all do, the error says so in one line."""
-    import verify.identify.estimation as estimation
-    from verify.identify.pem import denominator_bounds
+    import verify.identify.estimate.estimation as estimation
+    from verify.identify.estimate.pem import denominator_bounds
 
     trials = closed_loop(5, trials=2, seconds=6.0)
     real_refine = estimation.refine
@@ -382,7 +383,7 @@ def test_refinements_on_the_search_bound_are_set_aside(monkeypatch):
 def test_the_covariance_is_widened_for_few_trials():
     """The few-trials factor T / (T - 2) (3 below 4 trials) multiplies the asymptotic
     covariance and nothing else; it tends to 1 as trials are added."""
-    from verify.identify.estimation import few_trials_factor
+    from verify.identify.estimate.estimation import few_trials_factor
 
     assert few_trials_factor(6) == 1.5 and few_trials_factor(12) == 1.2
     assert few_trials_factor(1) == few_trials_factor(3) == 3.0

@@ -8,7 +8,7 @@ import numpy as np
 from identify_models import PAPER_THETA, correlated_covariance
 
 from verify.identify import figures as fg
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
 
 OMEGA = np.geomspace(1e-2, 60, 200)
 

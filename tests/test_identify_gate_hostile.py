@@ -17,12 +17,12 @@ import pytest
 from identify_loop import THETA, diverging, loop_log, pure_noise, swapped
 
 from verify.cli import main
-from verify.identify import identifiability as gate
 from verify.identify.command import REFUSAL_FILE
-from verify.identify.estimate import Estimate
-from verify.identify.experiment import Trial
-from verify.identify.pem import denominator_bounds
-from verify.identify.structure import Structure
+from verify.identify.estimate.pem import denominator_bounds
+from verify.identify.estimate.result import Estimate
+from verify.identify.estimate.structure import Structure
+from verify.identify.quality import identifiability as gate
+from verify.inputs.experiment import Trial
 from verify.inputs.experiment_log import read_logs, write_log
 
 
@@ -144,10 +144,11 @@ def test_the_estimator_giving_up_on_the_bound_is_cannot_identify(loop, tmp_path,
                                                                   monkeypatch):
     """When every refinement ends on the search bound the estimator raises
     CannotIdentifyError; the command turns it into *cannot identify*, exit 1."""
-    import verify.identify.estimation as estimation
+    import verify.identify.estimate.estimation as estimation
+    from verify.identify.estimate.result import CannotIdentifyError
 
     def on_bound(*args, **kwargs):
-        raise gate.CannotIdentifyError("output 1: every refinement ran to the bound")
+        raise CannotIdentifyError("output 1: every refinement ran to the bound")
 
     monkeypatch.setattr(estimation, "estimate_model", on_bound)
     _, reasons = _refused(loop, tmp_path, capsys)

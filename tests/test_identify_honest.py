@@ -20,11 +20,11 @@ from scipy import linalg, signal
 
 from verify.cli import main
 from verify.identify.command import REFUSAL_FILE
-from verify.identify.experiment import Trial
-from verify.identify.model_writer import read_identified
-from verify.identify.protocol import chosen_rate, prepare
-from verify.identify.quality import assess
-from verify.identify.structure import Structure
+from verify.identify.data.protocol import chosen_rate, prepare
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.model_writer import read_identified
+from verify.identify.quality.fits import assess
+from verify.inputs.experiment import Trial
 from verify.inputs.experiment_log import read_logs, write_log
 
 
@@ -123,9 +123,9 @@ def test_forced_rates_estimate_the_truth_inside_the_region(logs, rate):
     region holds the true operator, and the gate passes."""
     from scipy.stats import chi2
 
-    from verify.identify.estimation import estimate_model
-    from verify.identify.identifiability import check
-    from verify.identify.quality import honest_fits
+    from verify.identify.estimate.estimation import estimate_model
+    from verify.identify.quality.fits import honest_fits
+    from verify.identify.quality.identifiability import check
 
     prepared = prepare(read_logs([logs["noisy"]]), rate=float(rate), split=(6, 2))
     est = estimate_model(prepared.identification, Structure.paper())
@@ -169,7 +169,7 @@ def test_exact_closed_loop_data_recover_the_operator_to_1e_4(exact_run):
 
 def test_residual_tests_that_cannot_be_computed_are_listed_not_raised():
     """A constant second input: the cross-correlation test with it is undefined."""
-    from verify.identify.estimate import Estimate
+    from verify.identify.estimate.result import Estimate
 
     structure = Structure.paper()
     rng = np.random.default_rng(0)
@@ -207,7 +207,7 @@ def test_auto_rate_keeps_the_logged_rate_and_bounds_fast_logs(logs):
     benchmark), and decimates a faster log only down to the bound."""
     from dataclasses import replace
 
-    from verify.identify.protocol import AUTO_MAX_RATE
+    from verify.identify.data.protocol import AUTO_MAX_RATE
 
     noisy, why_noisy = chosen_rate(read_logs([logs["noisy"]]))
     exact, _ = chosen_rate(read_logs([logs["exact"]]))

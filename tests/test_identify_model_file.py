@@ -9,14 +9,14 @@ import pytest
 from identify_models import PAPER_THETA, correlated_covariance
 
 from verify.errors import VerifyInputError
-from verify.identify.model_writer import (
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.model_writer import (
     COVARIANCE_DIGITS,
     decimal_text,
     parse_structure,
     read_identified,
     write_identified_model,
 )
-from verify.identify.structure import Structure
 from verify.passivity.decision import decide
 from verify.passivity.io.model_file import load_model
 
@@ -120,7 +120,7 @@ def test_structure_and_decimal_spellings():
 # --- canonical digits ------------------------------------------------------------------
 
 def test_coefficients_are_written_to_the_precision_their_standard_errors_justify():
-    from verify.identify.model_writer import coefficient_text
+    from verify.identify.model.model_writer import coefficient_text
 
     assert coefficient_text(1.23456789, 0.051) == "1.23457"  # SE 5e-2: to 1e-5
     assert coefficient_text(-0.0404232538, 0.0058) == "-0.040423"
@@ -138,8 +138,8 @@ def test_float_noise_far_below_the_standard_errors_does_not_change_the_bytes():
     covariance in the 12th digit: the model file is byte-identical."""
     from identify_models import PAPER_THETA, correlated_covariance
 
-    from verify.identify.model_writer import identification_table, model_text
-    from verify.identify.structure import Structure
+    from verify.identify.estimate.structure import Structure
+    from verify.identify.model.model_writer import identification_table, model_text
 
     structure = Structure.paper()
     theta = np.array(PAPER_THETA) * (1 + 1e-3 * np.arange(10))  # not round numbers
@@ -147,7 +147,7 @@ def test_float_noise_far_below_the_standard_errors_does_not_change_the_bytes():
     extra = {"method": "riv+pem", "fit_validation": [67.29189512816725, 79.8450594281873]}
 
     def text(th, cv):
-        from verify.identify.model_writer import canonical
+        from verify.identify.model.model_writer import canonical
 
         ex = {**extra, "fit_validation": [canonical(x) for x in extra["fit_validation"]]}
         table = identification_table(structure, th, cv, Fraction(19, 20), ex)

@@ -9,13 +9,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from verify.identify.passive_fit import (
+from verify.identify.estimate.structure import Structure
+from verify.identify.robust.passive_fit import (
     passive_constraints,
     passive_literals,
     passive_model_text,
     passivity_test,
 )
-from verify.identify.structure import Structure
 from verify.passivity.decision import decide
 from verify.passivity.model import from_transfer_function
 
@@ -78,9 +78,9 @@ def test_written_literals_meet_the_constraints_exactly_on_the_boundary():
 @pytest.fixture(scope="module")
 def shipped():
     """The passivity test on the shipped closed-loop logs (the paper's protocol, known
-    operators: verify.identify.example_logs)."""
-    from verify.identify.estimation import estimate_model
-    from verify.identify.protocol import prepare
+    operators: verify.identify.data.example_logs)."""
+    from verify.identify.data.protocol import prepare
+    from verify.identify.estimate.estimation import estimate_model
     from verify.inputs.experiment_log import read_logs
 
     out = {}

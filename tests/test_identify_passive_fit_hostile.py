@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 from identify_models import open_loop_log
 
-from verify.identify.estimation import estimate_model
-from verify.identify.experiment import ExperimentLog, Trial
-from verify.identify.passive_fit import passive_constraints, passivity_test
-from verify.identify.protocol import prepare
-from verify.identify.structure import Structure
+from verify.identify.data.protocol import prepare
+from verify.identify.estimate.estimation import estimate_model
+from verify.identify.estimate.structure import Structure
+from verify.identify.robust.passive_fit import passive_constraints, passivity_test
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.passivity.model import from_transfer_function
 
 

@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 
 from verify.errors import VerifyInputError
-from verify.identify.experiment import ExperimentLog, Trial
-from verify.identify.protocol import MIN_FILTER_SAMPLES, decimation_factor, prepare
-from verify.identify.simulated_experiment import simulate_experiment
+from verify.identify.data.protocol import MIN_FILTER_SAMPLES, decimation_factor, prepare
+from verify.identify.data.simulated_experiment import simulate_experiment
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.passivity.model import from_transfer_function
 
 RATE = 120.0

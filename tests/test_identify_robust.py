@@ -11,9 +11,9 @@ from identify_models import biproper_model, paper_model
 
 from verify.artefacts.atomic import write_atomic
 from verify.certificates.registry import check_stored_certificate
-from verify.identify import robust_certificate as rc
-from verify.identify.robust import largest_band, robust_verdict
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
+from verify.identify.robust import band_certificate as rc
+from verify.identify.robust.verdict import largest_band, robust_verdict
 from verify.passivity.check import robust_band as rb
 
 
@@ -169,7 +169,7 @@ def test_first_order_bound_holds_on_the_box_part_of_the_ellipsoid():
     cov = np.diag((0.02 * np.abs(theta)) ** 2)
     cov[-2:, -2:] = np.diag([0.005**2, 0.005**2])
     phi_c = [*theta[:-2], theta[-2] + theta[-1]]
-    from verify.identify.region import make_region
+    from verify.identify.model.region import make_region
 
     region = make_region([Fraction(str(x)) for x in theta], cov, Fraction(19, 20))
     pc, cov_phi = rb.reduce_region(region.center, region.covariance)

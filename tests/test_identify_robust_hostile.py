@@ -19,10 +19,10 @@ from identify_models import PAPER_THETA, correlated_covariance, paper_model
 
 from verify.artefacts.atomic import write_atomic
 from verify.certificates.registry import check_stored_certificate
-from verify.identify import robust_certificate as rc
-from verify.identify.model_writer import write_identified_model
-from verify.identify.robust import robust_verdict
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.model_writer import write_identified_model
+from verify.identify.robust import band_certificate as rc
+from verify.identify.robust.verdict import robust_verdict
 from verify.passivity.check import robust_band as rb
 from verify.passivity.check.realization import minimal_part
 from verify.passivity.check.witness import frequency_witness_at

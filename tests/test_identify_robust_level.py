@@ -8,7 +8,7 @@ import pytest
 from gmpy2 import mpq
 from scipy.stats import chi2
 
-from verify.identify.region import chi2_quantile, chi2_refusal, level_holds
+from verify.identify.model.region import chi2_quantile, chi2_refusal, level_holds
 
 
 @pytest.mark.parametrize("dof", [2, 4, 8, 10, 14, 26, 50])

@@ -11,9 +11,9 @@ from identify_models import PAPER_THETA, paper_model
 
 from verify.artefacts.atomic import write_atomic
 from verify.certificates.registry import check_stored_certificate
-from verify.identify import refutation_certificate as rfc
-from verify.identify.robust import robust_verdict
-from verify.identify.robust_refutation import refute_region
+from verify.identify.robust import refutation_certificate as rfc
+from verify.identify.robust.refutation_search import refute_region
+from verify.identify.robust.verdict import robust_verdict
 from verify.passivity.check import robust_band as rb
 
 #: Off-diagonal sum 0.8, far from 0: det(H + H^H) < 0 at high frequency for every model.

@@ -19,9 +19,9 @@ from test_identify_robust_refutation import COUPLED
 
 from verify.artefacts.atomic import write_atomic
 from verify.certificates.registry import check_stored_certificate
-from verify.identify import refutation_certificate as rfc
-from verify.identify import robust_certificate as rc
-from verify.identify.robust import robust_verdict
+from verify.identify.robust import band_certificate as rc
+from verify.identify.robust import refutation_certificate as rfc
+from verify.identify.robust.verdict import robust_verdict
 
 BAND = (Fraction(0), Fraction(20))
 

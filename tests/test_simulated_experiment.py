@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 
 from verify.errors import VerifyInputError
-from verify.identify.simulated_experiment import (
+from verify.identify.data.simulated_experiment import (
     experiment_scenario,
     simulate_experiment,
-    trajectory_trials,
 )
 from verify.passivity.model import from_transfer_function
+from verify.sim.experiment_log import trajectory_trials
 from verify.sim.run import simulate
 from verify.so3 import vee
 

@@ -42,15 +42,16 @@ from verify.sos import certificate as sos_certificate
 Checker = Callable[[dict[str, Any], Path], KypCheck]
 
 def _check_robust(data: dict[str, Any], path: Path) -> KypCheck:
-    """Robust band certificates of identified models (:mod:`verify.identify.robust_certificate`)."""
-    from verify.identify.robust_certificate import check_robust_file
+    """Robust band certificates of identified models
+    (:mod:`verify.identify.robust.band_check`)."""
+    from verify.identify.robust.band_check import check_robust_file
 
     return check_robust_file(data, path)
 
 
 def _check_refutation(data: dict[str, Any], path: Path) -> KypCheck:
-    """Region-wide refutations (:mod:`verify.identify.refutation_certificate`)."""
-    from verify.identify.refutation_certificate import check_refutation_file
+    """Region-wide refutations (:mod:`verify.identify.robust.refutation_check`)."""
+    from verify.identify.robust.refutation_check import check_refutation_file
 
     return check_refutation_file(data, path)
 

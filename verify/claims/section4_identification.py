@@ -2,7 +2,7 @@
 
 The paper identifies the operator's H(s) from VR experiment data and then judges its
 passivity; its data and coefficients are not published. The shipped logs
-(:mod:`verify.identify.example_logs`) are simulated experiments in the paper's protocol
+(:mod:`verify.identify.data.example_logs`) are simulated experiments in the paper's protocol
 with known operators of the paper's class, one passive and one not. This claim runs the
 ``verify identify`` chain on them and checks, exactly where a verdict is given, what the
 chain should find: the true parameters inside the 95 % region (exact membership), the
@@ -60,7 +60,7 @@ def _run(context: CheckContext, name: str, band: str | None):
 
 
 def _truth(name: str):
-    from verify.identify.model_writer import parse_structure, structure_coefficients
+    from verify.identify.model.model_writer import parse_structure, structure_coefficients
     from verify.inputs.numbers import rational
     from verify.inputs.toml import read_toml
 

@@ -3,14 +3,14 @@
 The chain of Section 4 ("Human Modeling") as one command a lab runs in CI:
 
 1. read the logs (:mod:`verify.inputs.experiment_log`), apply the protocol (dead time,
-   decimation, split by trial: :mod:`verify.identify.protocol`);
-2. estimate H(s) in the structure (:func:`verify.identify.estimation.estimate_model`),
-   with fit ratios and residual tests (:mod:`verify.identify.quality`);
+   decimation, split by trial: :mod:`verify.identify.data.protocol`);
+2. estimate H(s) in the structure (:func:`verify.identify.estimate.estimation.estimate_model`),
+   with fit ratios and residual tests (:mod:`verify.identify.quality.fits`);
 3. write the nominal model as a ``verify gate`` model file with an ``[identification]``
-   table (:mod:`verify.identify.model_writer`); the file's decimals are the exact model;
+   table (:mod:`verify.identify.model.model_writer`); the file's decimals are the exact model;
 4. the **nominal verdict**: the gate's exact decision on that file (all frequencies, or
    ``--band``), with its certificate when passive;
-5. the **robust verdict** over the 95 % confidence region (:mod:`verify.identify.robust`)
+5. the **robust verdict** over the 95 % confidence region (:mod:`verify.identify.robust.verdict`)
    on the band (or all frequencies), and the largest band [w1, w_max] on which robust
    passivity is proved, each with a certificate that ``verify certificates check`` re-checks;
 6. figures (:mod:`verify.identify.figures`), a JSON summary and a JUnit file.
@@ -36,10 +36,9 @@ from typing import Any
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify import robust_certificate as rc
-from verify.identify.estimate import Estimate
-from verify.identify.identifiability import Identifiability
-from verify.identify.model_writer import (
+from verify.identify.estimate.result import Estimate
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.model_writer import (
     IdentifiedFile,
     canonical,
     identification_table,
@@ -48,8 +47,9 @@ from verify.identify.model_writer import (
     read_identified,
     structure_text,
 )
-from verify.identify.robust import BandSearch, RobustResult, largest_band, robust_verdict
-from verify.identify.structure import Structure
+from verify.identify.quality.identifiability import Identifiability
+from verify.identify.robust import band_certificate as rc
+from verify.identify.robust.verdict import BandSearch, RobustResult, largest_band, robust_verdict
 from verify.inputs.numbers import parse_number
 from verify.passivity.decision import INCONCLUSIVE
 
@@ -116,7 +116,7 @@ def _check_split(split: tuple[int, int], count: int) -> None:
 
 def _check_lengths(log, rate: float | str | None) -> None:
     """Every trial long enough, decimated, for the model (Section 4); shorter is exit 2."""
-    from verify.identify.protocol import MIN_FILTER_SAMPLES, MIN_MODEL_SAMPLES, decimation_of
+    from verify.identify.data.protocol import MIN_FILTER_SAMPLES, MIN_MODEL_SAMPLES, decimation_of
 
     q, _ = decimation_of(log, rate)
     need = max(MIN_FILTER_SAMPLES, q * (MIN_MODEL_SAMPLES - 1) + 1)
@@ -130,7 +130,7 @@ def _check_lengths(log, rate: float | str | None) -> None:
 
 def parse_rate(text: str | None) -> float | str:
     """``--rate``: a rate in Hz, "off" (no decimation) or "auto" (the default: decimate
-    only noisy logs, :func:`verify.identify.protocol.chosen_rate`)."""
+    only noisy logs, :func:`verify.identify.data.protocol.chosen_rate`)."""
     if text is None or str(text).strip() == "auto":
         return "auto"
     if str(text).strip() == "off":
@@ -171,7 +171,7 @@ def validate(settings: IdentifySettings) -> Plan:
 @dataclass
 class Quality:
     """Fit ratios (%) per output on identification and validation data (Section 4's fit
-    of the model simulated on the logged input, :func:`verify.identify.quality.honest_fits`:
+    of the model simulated on the logged input, :func:`verify.identify.quality.fits.honest_fits`:
     first trial from rest, state carried across trials that follow on), residual tests
     (diagnostics only)."""
 
@@ -197,7 +197,7 @@ class Identified:
     notes: tuple[str, ...] = ()
     gate: Identifiability | None = None
     joins: tuple[str, ...] = ()
-    passivity: Any = None  # verify.identify.passive_fit.PassivityTest, or why none
+    passivity: Any = None  # verify.identify.robust.passive_fit.PassivityTest, or why none
 
     @property
     def identifiable(self) -> bool:
@@ -206,9 +206,9 @@ class Identified:
 
 def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
     """How consecutive trials were joined by the fit and the estimator (per-trial clocks
-    and dead-time gaps, :func:`verify.identify.trial_data.dead_time_gaps`), one line per
+    and dead-time gaps, :func:`verify.identify.estimate.trial_data.dead_time_gaps`), one line per
     kind of join."""
-    from verify.identify.trial_data import dead_time_gaps
+    from verify.identify.estimate.trial_data import dead_time_gaps
 
     gaps = dead_time_gaps(trials)
     carried = [g for g in gaps[1:] if g is not None]
@@ -228,10 +228,11 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
 def identify_logs(plan: Plan) -> Identified:
     """Logs -> prepared trials -> estimate, honest fits and the identifiability gate
     (steps 1 and 2)."""
-    from verify.identify import identifiability
-    from verify.identify.estimation import estimate_model
-    from verify.identify.protocol import MIN_FILTER_SAMPLES, prepare
-    from verify.identify.quality import assess, honest_fits
+    from verify.identify.data.protocol import MIN_FILTER_SAMPLES, prepare
+    from verify.identify.estimate.estimation import estimate_model
+    from verify.identify.estimate.result import CannotIdentifyError
+    from verify.identify.quality import identifiability
+    from verify.identify.quality.fits import assess, honest_fits
     from verify.inputs.experiment_log import read_logs
 
     log = read_logs(plan.logs, min_samples=MIN_FILTER_SAMPLES)  # shorter: one line, exit 2
@@ -248,7 +249,7 @@ def identify_logs(plan: Plan) -> Identified:
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     try:
         estimate = estimate_model(prepared.identification, plan.structure)
-    except identifiability.CannotIdentifyError as exc:
+    except CannotIdentifyError as exc:
         gate = identifiability.Identifiability(False, (str(exc),), figures)
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     y_id, y_val = honest_fits(estimate, prepared.identification, prepared.validation)
@@ -267,14 +268,14 @@ def identify_logs(plan: Plan) -> Identified:
 
 
 def _passivity(estimate: Estimate, trials) -> Any:
-    """Can the data reject passivity (:mod:`verify.identify.passive_fit`)."""
-    from verify.identify.passive_fit import test_or_reason
+    """Can the data reject passivity (:mod:`verify.identify.robust.passive_fit`)."""
+    from verify.identify.robust.passive_fit import test_or_reason
 
     return test_or_reason(estimate, trials)
 
 
 def residual_tests(q: Any) -> dict[str, Any]:
-    """The residual tests of :func:`verify.identify.quality.assess` on the validation
+    """The residual tests of :func:`verify.identify.quality.fits.assess` on the validation
     data, as numbers for the model file's [identification] table (diagnostics: they
     never stop the command; a test that could not be computed is listed with why)."""
     white = sorted(q.whiteness, key=lambda t: t.output)
@@ -355,7 +356,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
 
     ``band_steps`` bounds the bisection for the largest proved band. Only for data the
     identifiability gate passed (:class:`CannotIdentifyError` otherwise)."""
-    from verify.identify.identifiability import CannotIdentifyError
+    from verify.identify.estimate.result import CannotIdentifyError
 
     if not identified.identifiable or identified.estimate is None:
         raise CannotIdentifyError("cannot identify: " + "; ".join(identified.gate.reasons))
@@ -495,7 +496,7 @@ def summary_json(o: Outcome) -> dict[str, Any]:
 
 def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str]:
     """The best passive model's file, when the passivity test ran."""
-    from verify.identify.passive_fit import PASSIVE_MODEL_FILE, passive_model_text
+    from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE, passive_model_text
 
     test = identified.passivity
     if test is None or isinstance(test, str) or not test.informative:
@@ -510,7 +511,7 @@ def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str
 
 
 def _passivity_json(o: Outcome) -> Any:
-    from verify.identify.passive_fit import PASSIVE_MODEL_FILE
+    from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE
 
     test = o.identified.passivity
     if test is None or isinstance(test, str):
@@ -589,7 +590,7 @@ def lines(o: Outcome) -> list[str]:
 
 
 def _passivity_lines(o: Outcome) -> list[str]:
-    from verify.identify.passive_fit import PASSIVE_MODEL_FILE, summary_lines
+    from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE, summary_lines
 
     path = o.plan.out / PASSIVE_MODEL_FILE
     return summary_lines(o.identified.passivity, path if path in o.files else None)

@@ -2,7 +2,7 @@
 
 Pictures, not evidence: the bands of the Bode plot come from parameter vectors sampled in
 the confidence ellipsoid (seeded, so the bytes are reproducible), and nu(w) is evaluated
-in floating point. The verdicts rest on :mod:`verify.identify.robust` alone. Bytes depend
+in floating point. The verdicts rest on :mod:`verify.identify.robust.verdict` alone. Bytes depend
 only on the data drawn (:func:`verify.artefacts.figure_bytes.figure_bytes`).
 """
 
@@ -14,7 +14,7 @@ from fractions import Fraction
 import numpy as np
 
 from verify.artefacts.figure_bytes import figure_bytes
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
 
 #: Parameter vectors sampled in the ellipsoid for the Bode bands.
 SAMPLES = 200
@@ -113,7 +113,7 @@ def nu_figure(structure: Structure, center: np.ndarray, omega: np.ndarray,
               proved: tuple[float, float] | None, requested: tuple[float, float] | None
               ) -> bytes:
     """nu(w) of the nominal model, with the robustly proved band shaded."""
-    from verify.identify.robust import float_nu
+    from verify.identify.robust.verdict import float_nu
 
     plt = _pyplot()
     values = float_nu(structure, center, omega)

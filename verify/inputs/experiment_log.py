@@ -95,7 +95,7 @@ import numpy as np
 
 from verify.artefacts.atomic import write_atomic
 from verify.errors import VerifyInputError
-from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.inputs.files import open_regular
 from verify.inputs.log_checks import (
     COLUMNS,

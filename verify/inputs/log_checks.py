@@ -5,7 +5,7 @@ The format, its sampling rule and its limits are documented in
 reference, uniformly sampled). Here: the column names, the limits on every value
 (:func:`float_problem`, :func:`check_limits`) and :class:`TrialChecker`, which checks each
 trial when its last sample has been read and collects the trials into an
-:class:`~verify.identify.experiment.ExperimentLog`.
+:class:`~verify.inputs.experiment.ExperimentLog`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import sys
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.experiment import ExperimentLog, Trial
 
 REQUIRED = ("time", "trial", "e1", "e2", "u1", "u2")
 REFERENCE = ("r1", "r2", "r3")

@@ -34,7 +34,7 @@ Every number denotes its exact value: an integer is that integer (any size), a d
 is the exact decimal it spells (``0.1`` is 1/10, ``2.5e-3`` is 1/400; underscores as
 TOML allows; the exponent at most 4300 in size), never a rounded binary float
 (:mod:`verify.inputs.numbers`). The optional ``[identification]`` table (written by
-``verify identify``, :mod:`verify.identify.model_writer`) holds strings, booleans, finite
+``verify identify``, :mod:`verify.identify.model.model_writer`) holds strings, booleans, finite
 numbers and arrays of numbers (one or two levels) or of strings, nothing else; it is kept in
 ``meta["identification"]`` and no verdict of the gate depends on it. TOML's ``nan`` and
 ``inf`` are refused; nothing is evaluated. The path must name a regular file of at most

@@ -253,9 +253,9 @@ def _noisy(scenario: Scenario, h: float, steps: int, std: float, seed: int) -> H
 
 def _write_log(s: SimulateSettings, traj, measurement: float) -> Path:
     """The run's trials (one per reference segment) as an experiment log."""
-    from verify.identify.experiment import ExperimentLog, Trial
-    from verify.identify.simulated_experiment import trajectory_trials
+    from verify.inputs.experiment import ExperimentLog, Trial
     from verify.inputs.experiment_log import write_log
+    from verify.sim.experiment_log import trajectory_trials
 
     rng = np.random.default_rng([s.seed, 2])
     trials = []

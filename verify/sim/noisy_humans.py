@@ -17,7 +17,7 @@ features around a known model, so that an estimator can be checked against groun
 Everything the human does in a loop period is a function of the period's index
 k = round(t / h), so the run is reproducible and the command at any recorded sample can
 be recomputed from a :class:`verify.sim.trajectory.Trajectory` (as
-:func:`verify.identify.simulated_experiment.trajectory_trials` does).
+:func:`verify.sim.experiment_log.trajectory_trials` does).
 """
 
 from __future__ import annotations

@@ -120,7 +120,7 @@ class Shape:
 
 def element(box: Sequence[Interval], i: int, shape: Shape, ops) -> tuple[list, list]:
     """(b, a) of diagonal element i in ascending powers of s, a_p = 1 (structure order:
-    b_z .. b_0 then a_{p-1} .. a_0, see :mod:`verify.identify.structure`)."""
+    b_z .. b_0 then a_{p-1} .. a_0, see :mod:`verify.identify.estimate.structure`)."""
     block = list(box[i * shape.per_element:(i + 1) * shape.per_element])
     b = block[: shape.zeros + 1][::-1]
     a = [*block[shape.zeros + 1:][::-1], ops.const(1)]

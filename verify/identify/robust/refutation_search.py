@@ -19,7 +19,7 @@ The search (floating point, proposals only):
    |∂g/∂φ_k| x width.
 
 The tree is then checked leaf by leaf in exact arithmetic
-(:func:`verify.identify.refutation_certificate.check_tree`); only a checked tree is
+(:func:`verify.identify.robust.refutation_check.check_tree`); only a checked tree is
 returned. A region that holds a passive model is never refuted: some leaf would have to
 contain it, and its exact check fails.
 """
@@ -33,10 +33,11 @@ from typing import Any
 import numpy as np
 from gmpy2 import mpq
 
-from verify.identify import refutation_certificate as rfc
-from verify.identify.region import Region, half_widths
-from verify.identify.robust_certificate import shape_of
-from verify.identify.robust_search import (
+from verify.identify.model.region import Region, half_widths
+from verify.identify.robust import refutation_certificate as rfc
+from verify.identify.robust import refutation_check
+from verify.identify.robust.band_certificate import shape_of
+from verify.identify.robust.proof_search import (
     Ellipsoid,
     FloatOps,
     certified_root,
@@ -242,7 +243,7 @@ def refute_region(region: Region, structure_text: str,
             continue
         data = rfc.certificate_json(name, source, structure_text, region, band, w, v, r,
                                     tree)
-        refusal = rfc.check_tree(data, shape, region, w, v)
+        refusal = refutation_check.check_tree(data, shape, region, w, v)
         if refusal is None:
             return Refutation(data, f"v^T (H + H^H) v < 0 at w = {w} rad/s for every model "
                               f"of the region: {data['leaves']} leaves checked exactly")

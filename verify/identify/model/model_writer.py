@@ -33,7 +33,7 @@ import numpy as np
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
 from verify.inputs.toml import read_toml
 from verify.passivity.io.model_file import parse_model
 from verify.passivity.model import LTIModel
@@ -198,8 +198,8 @@ class IdentifiedFile:
 
     def region(self):
         """The confidence region of the file: centre = the written coefficients, Σ = the
-        covariance's floats, level and χ² as recorded (:mod:`verify.identify.region`)."""
-        from verify.identify.region import make_region
+        covariance's floats, level and χ² as recorded (:mod:`verify.identify.model.region`)."""
+        from verify.identify.model.region import make_region
 
         level = self.identification.get("confidence_level")
         if isinstance(level, bool) or not isinstance(level, Fraction | int | float):
@@ -261,7 +261,7 @@ def identification_table(structure: Structure, theta: Sequence[float], covarianc
     """The ``[identification]`` table: ``extra`` (method, rate, split, fit ratios, residual
     tests, ...) then the parameters, their standard errors, the covariance (symmetrised),
     the confidence level and its chi-square value."""
-    from verify.identify.region import chi2_quantile
+    from verify.identify.model.region import chi2_quantile
 
     cov = np.asarray(covariance, dtype=float)
     cov = (cov + cov.T) / 2

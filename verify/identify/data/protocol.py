@@ -49,7 +49,7 @@ identification and the last 6 for validation. :func:`prepare` does the same:
    is not later than the previous trial's last one is shifted to begin one sampling step
    after it, as in the protocol, where each trial begins at the reference change that
    ends the previous one. The estimator and the fits then carry the operator's state
-   across the removed dead time (:func:`verify.identify.trial_data.dead_time_gaps`)
+   across the removed dead time (:func:`verify.identify.estimate.trial_data.dead_time_gaps`)
    instead of starting such trials from rest; a note says so.
 5. **Split.** The first ``split[0]`` trials (in log order) identify, the next ``split[1]``
    validate (Section 4: 6 and 6).
@@ -63,7 +63,7 @@ import numpy as np
 from scipy import signal
 
 from verify.errors import VerifyInputError
-from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.inputs.numbers import positive_real
 
 DEFAULT_RATE = 20.0  # Hz, after decimation (see the module docstring)

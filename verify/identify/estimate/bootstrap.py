@@ -15,10 +15,10 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify.estimate import Estimate
-from verify.identify.estimation import estimate_model
-from verify.identify.experiment import Trial
-from verify.identify.structure import Structure
+from verify.identify.estimate.estimation import estimate_model
+from verify.identify.estimate.result import Estimate
+from verify.identify.estimate.structure import Structure
+from verify.inputs.experiment import Trial
 
 __all__ = ["BootstrapResult", "bootstrap", "with_bootstrap_covariance"]
 

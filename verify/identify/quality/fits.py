@@ -7,25 +7,16 @@
   :func:`honest_fits` runs the model over the identification and then the validation
   trials in log order, the first trial from rest and each later one from the state the
   model left the previous one in (coasted over the dead time between them, or from rest
-  when the trials do not follow on, :func:`verify.identify.trial_data.dead_time_gaps`).
+  when the trials do not follow on, :func:`verify.identify.estimate.trial_data.dead_time_gaps`).
   That is the only fit the command reports and decides with.
 * Residual tests are diagnostics: they are reported, never a reason to stop. A test that
   cannot be computed (e.g. a noise-free input that does not vary enough at the tested
   lags, or an identically zero residual) is reported as not computed, with the reason.
-* The residual tests take the model's prediction errors: the output error y - yhat,
-  filtered by the noise model's whitening filter D(q) when the estimate has one
+* The residual tests (Ljung-Box whiteness and input-residual cross-correlation,
+  :mod:`verify.identify.estimate.residual_tests`, which the estimator also uses to choose
+  a noise model) take the model's prediction errors: the output error y - yhat, filtered
+  by the noise model's whitening filter D(q) when the estimate has one
   (:attr:`Estimate.noise_model`, the first p samples of each trial dropped).
-* Residual whiteness: Ljung-Box statistic Q = N (N + 2) sum_{tau=1..M} rho(tau)^2 /
-  (N - tau) of the residual's normalised autocorrelation rho (products within trials),
-  compared with the chi-square quantile chi2_M(level) (Ljung & Box, Biometrika 65(2),
-  1978). White residuals pass.
-* Input-residual cross-correlation (Ljung, System Identification, 1999, Sec. 16.6,
-  eq. (16.67)): zeta = N r^T R^-1 r / lambda with r the correlation of the residual
-  eps(t) with phi(t) = (e_j(t), e_j(t-1), ..., e_j(t-M+1)), R the covariance of phi and
-  lambda the residual variance; chi2_M under "residual independent of past input".
-  Only lags tau >= 0 (input before or at the residual) are tested: in closed loop the
-  residual drives later inputs through the leader, so negative lags correlate for any
-  model.
 
 Defaults: M = 20 lags, level 0.95.
 """
@@ -37,51 +28,21 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy import signal
-from scipy.stats import chi2
 
 from verify.errors import VerifyInputError
-from verify.identify.estimate import Estimate
-from verify.identify.experiment import Trial
-from verify.identify.prediction import predict
+from verify.identify.estimate.prediction import predict
+from verify.identify.estimate.residual_tests import (
+    LAGS,
+    LEVEL,
+    CrossCorrelationTest,
+    WhitenessTest,
+    cross_correlation,
+    whiteness,
+)
+from verify.identify.estimate.result import Estimate
+from verify.inputs.experiment import Trial
 
-__all__ = ["CrossCorrelationTest", "Quality", "WhitenessTest", "assess", "cross_correlation",
-           "fit_ratio", "honest_fits", "whiteness"]
-
-LAGS = 20
-LEVEL = 0.95
-
-
-@dataclass(frozen=True)
-class WhitenessTest:
-    """Ljung-Box test of output ``output``'s residual (1-based), module docstring."""
-
-    output: int
-    lags: int
-    level: float
-    statistic: float
-    threshold: float
-    autocorrelation: np.ndarray  # rho(1..lags)
-
-    @property
-    def passed(self) -> bool:
-        return self.statistic <= self.threshold
-
-
-@dataclass(frozen=True)
-class CrossCorrelationTest:
-    """Independence of output ``output``'s residual from input ``input`` (1-based)."""
-
-    output: int
-    input: int
-    lags: int
-    level: float
-    statistic: float
-    threshold: float
-    correlation: np.ndarray  # normalised correlation of eps(t) with e_j(t - tau), tau = 0..
-
-    @property
-    def passed(self) -> bool:
-        return self.statistic <= self.threshold
+__all__ = ["Quality", "assess", "fit_ratio", "honest_fits"]
 
 
 @dataclass(frozen=True)
@@ -114,52 +75,6 @@ def fit_ratio(y: np.ndarray, yhat: np.ndarray) -> float:
         raise VerifyInputError("the fit ratio is undefined for a constant output "
                                "(||y - mean(y)|| = 0)")
     return float(100.0 * (1.0 - np.linalg.norm(y - yhat) / spread))
-
-
-def _lags(lags: int, shortest: int) -> int:
-    if not (isinstance(lags, int) and lags >= 1):
-        raise VerifyInputError(f"lags must be a positive integer, got {lags!r}")
-    if shortest <= lags + 1:
-        raise VerifyInputError(f"the residual tests need trials longer than lags + 1 = "
-                               f"{lags + 1} samples; the shortest has {shortest}")
-    return lags
-
-
-def whiteness(residuals: Sequence[np.ndarray], *, output: int = 1, lags: int = LAGS,
-              level: float = LEVEL) -> WhitenessTest:
-    """Ljung-Box test of residuals given per trial (module docstring)."""
-    residuals = [np.asarray(r, float) for r in residuals]
-    M = _lags(lags, min(len(r) for r in residuals))
-    N = sum(len(r) for r in residuals)
-    r0 = sum(float(r @ r) for r in residuals)
-    if not r0 > 0:
-        raise VerifyInputError("the residual is identically zero; nothing to test")
-    rho = np.array([sum(float(r[:-tau] @ r[tau:]) for r in residuals) / r0
-                    for tau in range(1, M + 1)])
-    Q = float(N * (N + 2) * np.sum(rho ** 2 / (N - np.arange(1, M + 1))))
-    return WhitenessTest(output, M, level, Q, float(chi2.ppf(level, M)), rho)
-
-
-def cross_correlation(residuals: Sequence[np.ndarray], inputs: Sequence[np.ndarray], *,
-                      output: int = 1, input: int = 1, lags: int = LAGS,
-                      level: float = LEVEL) -> CrossCorrelationTest:
-    """Test of eps against lags 0..M-1 of one input, both given per trial (docstring)."""
-    residuals = [np.asarray(r, float) for r in residuals]
-    inputs = [np.asarray(x, float) for x in inputs]
-    M = _lags(lags, min(len(r) for r in residuals))
-    eps = np.concatenate([r[M - 1:] for r in residuals])
-    phi = np.concatenate([np.column_stack([x[M - 1 - tau:len(x) - tau] for tau in range(M)])
-                          for x in inputs])
-    N = eps.shape[0]
-    lam = float(eps @ eps) / N
-    r = phi.T @ eps / N
-    R = phi.T @ phi / N
-    if not (lam > 0 and np.linalg.matrix_rank(R) == M):
-        raise VerifyInputError(f"input {input} does not vary enough for the cross-correlation "
-                               f"test at {M} lags")
-    zeta = float(N * r @ np.linalg.solve(R, r) / lam)
-    corr = r / np.sqrt(lam * np.diag(R))
-    return CrossCorrelationTest(output, input, M, level, zeta, float(chi2.ppf(level, M)), corr)
 
 
 def honest_fits(estimate: Estimate, identification: Sequence[Trial],

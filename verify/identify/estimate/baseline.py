@@ -20,13 +20,13 @@ import numpy as np
 from scipy import linalg, signal
 from scipy.optimize import least_squares
 
-from verify.identify.estimate import Estimate
-from verify.identify.experiment import Trial
-from verify.identify.pem import OutputFit
-from verify.identify.prediction import predict_output
-from verify.identify.riv import stable
-from verify.identify.structure import Structure
-from verify.identify.trial_data import OutputData, output_data
+from verify.identify.estimate.pem import OutputFit
+from verify.identify.estimate.prediction import predict_output
+from verify.identify.estimate.result import Estimate, assemble
+from verify.identify.estimate.riv import stable
+from verify.identify.estimate.structure import Structure
+from verify.identify.estimate.trial_data import OutputData, output_data
+from verify.inputs.experiment import Trial
 
 __all__ = ["arx_start", "oe_from_arx"]
 
@@ -78,8 +78,6 @@ def _fit(data: OutputData, poles: int, zeros: int) -> OutputFit:
 
 def oe_from_arx(trials: Sequence[Trial], structure: Structure, h: float) -> Estimate:
     """The baseline estimate (module docstring) of checked ``trials`` with step ``h``."""
-    from verify.identify.estimation import assemble
-
     fits = [_fit(output_data(trials, i, h), structure.poles, structure.zeros) for i in (0, 1)]
     samples = sum(np.asarray(tr.t).shape[0] for tr in trials)
     return assemble(structure, fits, "arx+oe", samples)

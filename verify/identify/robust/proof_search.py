@@ -8,7 +8,7 @@ tangent plane at the box's nearest point, found by coordinate descent). Nothing 
 trusted: every leaf is re-evaluated exactly by :mod:`verify.passivity.check.robust_band`
 (a leaf that fails there is split again), and boxes that the search cannot decide yield
 candidate counterexamples (box centres inside the ellipsoid where a condition is
-negative) for the exact witness check of :mod:`verify.identify.robust`.
+negative) for the exact witness check of :mod:`verify.identify.robust.verdict`.
 
 All boxes of one depth are processed together as NumPy arrays (vectorised branch and
 bound); the split coordinate is the one whose better half has the best normalised lower
@@ -224,7 +224,7 @@ def search(root: list[rb.Interval], variable: str, shape: rb.Shape, ellipsoid: E
     """Branch and bound over ``root`` (φ then t): a proposed tree or the reason for none.
 
     Leaves are proposals: the caller checks the whole tree exactly
-    (:func:`verify.identify.robust_certificate.check_leaves`). With ``exact`` =
+    (:func:`verify.identify.robust.band_check.check_leaves`). With ``exact`` =
     (Σ of φ, φc, χ) exact, boxes neither positive nor outside may become first-order
     leaves (checked exactly here, as they are costlier to propose).
     """

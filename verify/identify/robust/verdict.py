@@ -3,17 +3,17 @@
 For the structures with diagonal rational elements and constant off-diagonal elements
 (the paper's Section 4 class and its P:Z generalisation), passivity on a band is a set of
 polynomial inequalities in (θ, w^2) (:mod:`verify.passivity.check.robust_band`). The
-verdict, for every θ in the region (:mod:`verify.identify.region`):
+verdict, for every θ in the region (:mod:`verify.identify.model.region`):
 
 * **passive** (proved): a branch-and-bound tree over a rational box enclosing the
   region's image times the frequency piece(s), proposed in floating point
-  (:mod:`verify.identify.robust_search`) and checked leaf by leaf in exact arithmetic
-  (:func:`verify.identify.robust_certificate.check_leaves`); the certificate is written;
+  (:mod:`verify.identify.robust.proof_search`) and checked leaf by leaf in exact arithmetic
+  (:func:`verify.identify.robust.band_check.check_leaves`); the certificate is written;
 * **not passive** (refuted, for the whole region): one rational frequency w of the band
   and one real direction v with v^T (H_θ(jw) + H_θ(jw)^H) v < 0 for every θ of the
   region, by an interval branch and bound proposed in floating point
-  (:mod:`verify.identify.robust_refutation`) and checked leaf by leaf in exact arithmetic
-  (:mod:`verify.identify.refutation_certificate`); that certificate is written. One
+  (:mod:`verify.identify.robust.refutation_search`) and checked leaf by leaf in exact arithmetic
+  (:mod:`verify.identify.robust.refutation_certificate`); that certificate is written. One
   failing model of the region is never enough: the region may hold passive models too;
 * **inconclusive** otherwise: the data cannot decide on that band. The reason names the
   evidence on each side when there is some, both exact: a model of the region that is not
@@ -43,13 +43,14 @@ from typing import Any
 import numpy as np
 from gmpy2 import mpq
 
-from verify.identify import refutation_certificate as rfc
-from verify.identify import robust_certificate as rc
-from verify.identify.model_writer import structure_text
-from verify.identify.region import Region, half_widths
-from verify.identify.robust_refutation import refute_region
-from verify.identify.robust_search import Ellipsoid, search, short
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
+from verify.identify.model.model_writer import structure_text
+from verify.identify.model.region import Region, half_widths
+from verify.identify.robust import band_certificate as rc
+from verify.identify.robust import band_check
+from verify.identify.robust import refutation_certificate as rfc
+from verify.identify.robust.proof_search import Ellipsoid, search, short
+from verify.identify.robust.refutation_search import refute_region
 from verify.passivity.check import robust_band as rb
 from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE, GateVerdict
 
@@ -183,7 +184,7 @@ def prove(region: Region, structure: Structure, band: tuple[Fraction, Fraction] 
                                trees)
     if max_leaves is not None and data["leaves"] > max_leaves:
         return None, f"a proof with {data['leaves']} leaves (more than {max_leaves} asked)"
-    refusal = rc.check_leaves(data, shape, region, band)
+    refusal = band_check.check_leaves(data, shape, region, band)
     if refusal is not None:
         return None, f"the proposed tree fails the exact check ({refusal})"
     return data, f"{data['leaves']} leaves checked exactly"

@@ -15,7 +15,7 @@ measurement noise of ``MEASUREMENT_NOISE`` on the logged e and u.
   (Re h(jw) = (2 - w^2/2)/|2 - w^2 + jw|^2 < 0 above w = 2 rad/s), at k_s = 2.5.
 
 Regenerate (byte for byte, given the same simulator) with
-``python -m verify.identify.example_logs [--out DIR]``; ``--check`` compares instead of
+``python -m verify.identify.data.example_logs [--out DIR]``; ``--check`` compares instead of
 writing and exits 1 on a difference.
 """
 
@@ -27,7 +27,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from verify.identify.simulated_experiment import (
+from verify.identify.data.simulated_experiment import (
     MEASUREMENT_NOISE,
     OPERATOR_NOISE,
     simulate_experiment,
@@ -35,7 +35,7 @@ from verify.identify.simulated_experiment import (
 from verify.inputs.experiment_log import write_log
 from verify.passivity.model import LTIModel, from_transfer_function
 
-LOGS = Path(__file__).resolve().parents[1] / "data" / "logs"
+LOGS = Path(__file__).resolve().parents[2] / "data" / "logs"
 
 
 @dataclass(frozen=True)
@@ -107,7 +107,7 @@ def generate(out: Path = LOGS, examples=EXAMPLES) -> list[Path]:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m verify.identify.example_logs",
+    parser = argparse.ArgumentParser(prog="python -m verify.identify.data.example_logs",
                                      description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=LOGS, help=f"directory (default {LOGS})")
     parser.add_argument("--check", action="store_true",

@@ -4,7 +4,7 @@ For one output of the constant-coupling structures (Section 4, "Human Modeling")
 
     yhat_i = B_i(s)/A_i(s) e_i + c_ij e_j + (a free response of A_i per trial),
 
-simulated from the measured inputs (first-order hold, :mod:`verify.identify.ct_filters`).
+simulated from the measured inputs (first-order hold, :mod:`verify.identify.estimate.ct_filters`).
 For a fixed denominator A_i the output is linear in the numerator, the coupling and the
 initial state of each trial, so those are solved by linear least squares and only A_i is
 searched (variable projection, Golub & Pereyra, SIAM J. Numer. Anal. 10(2), 1973).
@@ -13,11 +13,11 @@ How a trial starts (``OutputData.initial``): "estimate" fits each trial's free r
 (n numbers per trial; a re-initialised figure that absorbs transients, never what the
 command reports or decides with); "carry" starts each trial in the state the model ended
 the previous trial in, carried with the last sample's input (linearly extrapolated) until
-the trial's end (:attr:`verify.identify.experiment.Trial.end`) and then coasted with
+the trial's end (:attr:`verify.inputs.experiment.Trial.end`) and then coasted with
 zero input over the rest of the dead time the protocol removed
-(:func:`verify.identify.trial_data.dead_time_gaps`), which is what the estimator and
-Section 4's fits use by default (:mod:`verify.identify.estimation`,
-:func:`verify.identify.quality.honest_fits`); "zero" starts every trial at rest.
+(:func:`verify.identify.estimate.trial_data.dead_time_gaps`), which is what the estimator and
+Section 4's fits use by default (:mod:`verify.identify.estimate.estimation`,
+:func:`verify.identify.quality.fits.honest_fits`); "zero" starts every trial at rest.
 """
 
 from __future__ import annotations
@@ -28,10 +28,10 @@ from dataclasses import replace
 import numpy as np
 from scipy import signal
 
-from verify.identify.ct_filters import Filter
-from verify.identify.experiment import Trial
-from verify.identify.structure import Structure
-from verify.identify.trial_data import OutputData, check_trials, output_data
+from verify.identify.estimate.ct_filters import Filter
+from verify.identify.estimate.structure import Structure
+from verify.identify.estimate.trial_data import OutputData, check_trials, output_data
+from verify.inputs.experiment import Trial
 
 #: How a trial's initial state is treated (module docstring).
 INITIAL_STATES = ("carry", "estimate", "zero")
@@ -46,7 +46,7 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     Columns: s^k/A e_i for k = zeros..0, then e_j, then per trial the n free responses of
     A (zero outside that trial). With ``data.initial == "carry"`` the filter of a trial
     with a dead-time gap starts from the state the previous trial ended in, coasted over
-    the gap (:class:`verify.identify.trial_data.OutputData`); otherwise from rest.
+    the gap (:class:`verify.identify.estimate.trial_data.OutputData`); otherwise from rest.
     """
     a = np.asarray(a, float)
     n = len(a)

@@ -1,20 +1,14 @@
-"""Robust band certificates: every model of a confidence region is passive on a band.
+"""The checker of robust band certificates (schema ``verify-robust-band-certificate/1``).
 
-Schema ``verify-robust-band-certificate/1`` (registered in
-:data:`verify.certificates.registry.SCHEMAS`). A file holds the claim (structure, parameter
-names, region: centre θc, covariance Σ, confidence level and χ² value as exact rationals;
-the band [w1, w2] in rad/s, or null for all frequencies), the statement derived from it,
-a fingerprint of the claim (also in the file name), the half-widths of the box enclosing
-the region's image in φ = (diagonal parameters, c12 + c21), and one tree of midpoint
-splits per frequency piece whose leaves are *positive* (claimed lower bounds of N_1, N_2
-and det, all > 0, by interval arithmetic on the box), *linear* (claimed lower bounds and
-square-root bounds of the first-order form on the box's part of the ellipsoid,
-:func:`verify.passivity.check.robust_band.linear_bound`) or *outside* (a point whose
-tangent plane shows the box misses the ellipsoid). :func:`check_robust_file` re-derives
-everything and decides it exactly with no solver (:mod:`verify.passivity.check.robust_band`):
+What flows in: a certificate's parsed JSON and its path (the format is
+:mod:`verify.identify.robust.band_certificate`); what flows out: a
+:class:`verify.passivity.check.certificate.KypCheck`, the verdict of
+:func:`check_robust_file` (registered in :data:`verify.certificates.registry.SCHEMAS`).
+It re-derives everything and decides it exactly with no solver
+(:mod:`verify.passivity.check.robust_band`):
 
 * Σ symmetric positive definite, χ² at least the level's quantile (decided exactly,
-  :func:`verify.identify.region.level_holds`, no float agreement), the
+  :func:`verify.identify.model.region.level_holds`, no float agreement), the
   fingerprint, file name and statement derived from the claim;
 * the enclosure r_i^2 >= χ (A Σ A^T)_ii, the pieces the band asks for (x = w^2 in
   [w1^2, w2^2]; for all frequencies x in [0, 1] and y = 1/w^2 in [0, 1]);
@@ -26,8 +20,6 @@ everything and decides it exactly with no solver (:mod:`verify.passivity.check.r
 
 from __future__ import annotations
 
-import hashlib
-import json
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -35,12 +27,20 @@ from typing import Any
 from gmpy2 import mpq
 
 from verify.errors import VerifyInputError
-from verify.identify.region import Region, chi2_refusal
+from verify.identify.model.region import Region, chi2_refusal
+from verify.identify.robust.band_certificate import (
+    file_name,
+    fingerprint,
+    parameter_names,
+    pieces_for,
+    shape_of,
+    statement,
+)
 from verify.inputs.numbers import fraction
 from verify.inputs.numbers import rational as exact_number
 from verify.passivity.check import robust_band as rb
 from verify.passivity.check.certificate import KypCheck
-from verify.passivity.io.binding import resolve_source, slug
+from verify.passivity.io.binding import resolve_source
 from verify.passivity.io.strict_json import (
     CertificateFormatError,
     fields,
@@ -49,97 +49,8 @@ from verify.passivity.io.strict_json import (
     text_field,
 )
 
-SCHEMA = "verify-robust-band-certificate/1"
 _FIELDS = ("schema", "name", "source", "structure", "parameters", "region", "band",
            "statement", "fingerprint", "enclosure", "pieces", "leaves")
-
-
-def q_text(x: Any) -> str:
-    """The canonical spelling of a rational ("p" or "p/q")."""
-    return str(mpq(x))
-
-
-def shape_of(structure_text: str) -> rb.Shape:
-    """The diagonal degrees of a structure spelled "paper" or "P:Z"."""
-    if structure_text == "paper":
-        return rb.Shape(1, 2)
-    head, sep, tail = structure_text.partition(":")
-    if sep and head.isdigit() and tail.isdigit():
-        p, z = int(head), int(tail)
-        if 0 <= z <= p and 1 <= p <= 12:
-            return rb.Shape(z, p)
-    raise CertificateFormatError(f"structure {structure_text!r}: expected paper or P:Z "
-                                 "(constant off-diagonal elements, at most 12 poles)")
-
-
-def parameter_names(shape: rb.Shape) -> list[str]:
-    """Names in structure order (as :meth:`verify.identify.structure.Structure.names`)."""
-    out: list[str] = []
-    for i in (1, 2):
-        out += [f"b{k}_{i}" for k in range(shape.zeros, -1, -1)]
-        out += [f"a{k}_{i}" for k in range(shape.poles - 1, -1, -1)]
-    return [*out, "c12", "c21"]
-
-
-def pieces_for(band: tuple[Fraction, Fraction] | None) -> list[tuple[str, mpq, mpq]]:
-    """The frequency pieces a claim needs: (variable, t1, t2)."""
-    if band is None:
-        return [("x", mpq(0), mpq(1)), ("y", mpq(0), mpq(1))]
-    w1, w2 = mpq(band[0]), mpq(band[1])
-    return [("x", w1 * w1, w2 * w2)]
-
-
-def statement(structure_text: str, level: Fraction, band: tuple | None) -> str:
-    """What a certificate proves, derived from its claim."""
-    where = ("at every frequency, and every diagonal denominator is Hurwitz (Kharitonov), "
-             "so H_θ is passive (positive real)") if band is None else \
-        f"for {band[0]} <= w <= {band[1]} rad/s"
-    return (f"for every θ with (θ - θc)^T Σ^-1 (θ - θc) <= chi2 (the {float(level):.4g} "
-            f"confidence region of the identification), the model H_θ of structure "
-            f"{structure_text} (diagonal num_i/den_i, constant off-diagonals) has "
-            f"H_θ(jw) + H_θ(jw)^H > 0 {where}")
-
-
-def fingerprint(structure_text: str, names: list[str], region: dict[str, Any],
-                band: list[str] | None) -> str:
-    """sha256 of the claim (structure, names, region, band) in canonical JSON."""
-    text = json.dumps([structure_text, names, region, band], sort_keys=True)
-    return hashlib.sha256(text.encode()).hexdigest()
-
-
-def file_name(name: str, band: tuple | None, fp: str) -> str:
-    """``<name>-robust-band-<w1>-<w2>-<fp12>.json`` or ``<name>-robust-all-<fp12>.json``."""
-    where = "all" if band is None else f"band-{float(band[0]):.6g}-{float(band[1]):.6g}"
-    return f"{slug(name)}-robust-{where}-{fp[:12]}.json"
-
-
-def region_json(region: Region) -> dict[str, Any]:
-    return {"center": [q_text(x) for x in region.center],
-            "covariance": [[q_text(x) for x in row] for row in region.covariance],
-            "level": q_text(region.level), "chi2": q_text(region.chi2)}
-
-
-def certificate_json(name: str, source: str, structure_text: str, region: Region,
-                     band: tuple[Fraction, Fraction] | None, enclosure: list[mpq],
-                     trees: list[list]) -> dict[str, Any]:
-    """The certificate of a proof found by :mod:`verify.identify.robust`."""
-    shape = shape_of(structure_text)
-    names = parameter_names(shape)
-    reg = region_json(region)
-    band_json = None if band is None else [q_text(band[0]), q_text(band[1])]
-    pieces = [{"variable": v, "interval": [q_text(t1), q_text(t2)], "tree": tree}
-              for (v, t1, t2), tree in zip(pieces_for(band), trees, strict=True)]
-    count = sum(1 for tree in trees for node in tree if isinstance(node, list))
-    return {"schema": SCHEMA, "name": name, "source": source, "structure": structure_text,
-            "parameters": names, "region": reg, "band": band_json,
-            "statement": statement(structure_text, region.level, band),
-            "fingerprint": fingerprint(structure_text, names, reg, band_json),
-            "enclosure": [q_text(r) for r in enclosure], "pieces": pieces, "leaves": count}
-
-
-def dumps(data: dict[str, Any]) -> str:
-    """Certificate bytes: compact JSON, a function of the content only."""
-    return json.dumps(data, separators=(",", ":")) + "\n"
 
 
 # ------------------------------------------------------------------ parsing
@@ -287,7 +198,7 @@ def check_leaves(data: dict[str, Any], shape: rb.Shape, region: Region,
 def check_source(data: dict[str, Any], shape: rb.Shape, region: Region,
                  path: Path) -> tuple[str | None, str]:
     """Compare the claim with the source model file when it is found: (refusal, note)."""
-    from verify.identify.model_writer import read_identified, structure_text
+    from verify.identify.model.model_writer import read_identified, structure_text
 
     source = data["source"]
     found = resolve_source(source, path)
@@ -335,6 +246,5 @@ def check_robust_file(data: dict[str, Any], path: Path) -> KypCheck:
                     f"is passive {where}: {data['leaves']} leaves checked exactly; {note}")
 
 
-__all__ = ["SCHEMA", "certificate_json", "check_claim", "check_leaves", "check_robust_file",
-           "check_source", "dumps", "file_name", "parameter_names", "parse_band",
-           "parse_region", "pieces_for", "shape_of", "statement"]
+__all__ = ["check_claim", "check_leaves", "check_robust_file", "check_source", "parse_band",
+           "parse_region", "read_enclosure"]

@@ -24,7 +24,7 @@ the constant skew part adds nothing to H + H^H. (The tests check this characteri
 against the repository's exact gate on random instances on both sides.)
 
 **The constrained fit** uses the estimator's own output-error criterion and simulation
-(:mod:`verify.identify.prediction`: the model driven by the logged e, state carried
+(:mod:`verify.identify.estimate.prediction`: the model driven by the logged e, state carried
 across trials, the burn-in left out). With b0_i = p_i and b1_i = (p_i + q_i)/a1_i,
 p_i, q_i >= 0, and c21 = -c12, the simulated output is linear in (p_1, q_1, p_2, q_2, c12)
 for fixed denominators, so those are solved by bounded linear least squares
@@ -62,11 +62,11 @@ from typing import Any
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify.estimation import BURN_IN as ESTIMATOR_BURN_IN
-from verify.identify.experiment import Trial
-from verify.identify.prediction import design, used
-from verify.identify.structure import Structure
-from verify.identify.trial_data import OutputData, check_trials, output_data
+from verify.identify.estimate.estimation import BURN_IN as ESTIMATOR_BURN_IN
+from verify.identify.estimate.prediction import design, used
+from verify.identify.estimate.structure import Structure
+from verify.identify.estimate.trial_data import OutputData, check_trials, output_data
+from verify.inputs.experiment import Trial
 
 #: Significance level of the test.
 ALPHA = 0.05
@@ -313,9 +313,9 @@ def passive_literals(theta: Sequence[float],
                      errors: Sequence[float] | None = None) -> list[Fraction]:
     """Short decimals near the passive fit that satisfy the constraints *exactly*: each
     to the precision the unconstrained estimate's standard error justifies (when
-    ``errors`` are given; :func:`verify.identify.model_writer.coefficient_text`), c21
+    ``errors`` are given; :func:`verify.identify.model.model_writer.coefficient_text`), c21
     written as -c12, b1_i raised in its last digit until a1_i b1_i >= b0_i."""
-    from verify.identify.model_writer import DIGITS, SE_DIGITS, coefficient_text
+    from verify.identify.model.model_writer import DIGITS, SE_DIGITS, coefficient_text
 
     errs = list(errors) if errors is not None else [None] * len(theta)
     lits = [Fraction(coefficient_text(float(x), e)) for x, e in zip(theta, errs, strict=True)]
@@ -340,7 +340,7 @@ def passive_model_text(name: str, test: PassivityTest, *, description: str = "",
     """The passive fit as a ``verify gate`` model file (its decimals satisfy the passivity
     constraints exactly; the gate certifies it), to the digits ``errors`` (the
     unconstrained estimate's standard errors) justify, its figures to 4 digits."""
-    from verify.identify.model_writer import FIGURE_DIGITS, canonical, model_text
+    from verify.identify.model.model_writer import FIGURE_DIGITS, canonical, model_text
 
     lits = passive_literals(test.theta_passive, errors)
     bad = passive_constraints(lits)

@@ -1,6 +1,6 @@
 """Continuous-time filters evaluated on uniformly sampled signals (first-order hold).
 
-The estimators of :mod:`verify.identify.estimation` need, for a monic denominator
+The estimators of :mod:`verify.identify.estimate.estimation` need, for a monic denominator
 A(s) = s^n + a_{n-1} s^{n-1} + ... + a_0 and a sampled signal x, the signals
 s^k / A(s) x for k = 0..n (the "state-variable filter" outputs of continuous-time
 identification, Garnier, Mensler & Richard, Int. J. Control 76(13), 2003) and the free

@@ -4,7 +4,7 @@ The criterion is the output-error one, sum over the used samples of (u_i - yhat_
 with yhat_i the model output simulated from the measured inputs, each trial from rest,
 from the state the previous trial left it in or from an estimated initial state, the
 first ``OutputData.skip`` samples of each trial left out
-(:mod:`verify.identify.prediction`). For white noise on the output this is the
+(:mod:`verify.identify.estimate.prediction`). For white noise on the output this is the
 prediction-error (maximum-likelihood for Gaussian noise) criterion, which stays
 consistent in closed loop because the noise model (white) is right (Ljung, System
 Identification, 2nd ed., 1999, Sec. 13.4, "direct approach"). The numerator, coupling
@@ -35,8 +35,8 @@ from math import comb
 import numpy as np
 from scipy.optimize import least_squares
 
-from verify.identify.prediction import design, fit_linear, lengths, used
-from verify.identify.trial_data import OutputData
+from verify.identify.estimate.prediction import design, fit_linear, lengths, used
+from verify.identify.estimate.trial_data import OutputData
 
 __all__ = ["OutputFit", "refine"]
 

@@ -5,7 +5,7 @@ e = the first two components of sk(R_l^T R_r)^vee and output u_h = the first two
 components of omega_h^b, at the simulator's loop rate (120 Hz), while the reference d_r
 is held for the trial. These classes hold validated arrays only; reading files is
 :mod:`verify.inputs.experiment_log`, the protocol's preprocessing is
-:mod:`verify.identify.protocol`.
+:mod:`verify.identify.data.protocol`.
 """
 
 from __future__ import annotations

@@ -14,8 +14,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify.experiment import Trial
-from verify.identify.structure import Structure
+from verify.identify.estimate.structure import Structure
+from verify.inputs.experiment import Trial
 
 __all__ = ["OutputData", "check_trials", "dead_time_gaps", "output_data"]
 

@@ -20,7 +20,7 @@ is strictly proper (u_h drives a velocity, e is a function of the attitude), so 
 depends on the noise only strictly before t; with white operator noise at the sampling
 rate the instruments are uncorrelated with the equation error, as closed-loop IV needs
 (Gilson & Van den Hof, Automatica 41(2), 2005). This estimate starts the prediction-error
-refinement (:mod:`verify.identify.pem`), which is consistent in closed loop with the
+refinement (:mod:`verify.identify.estimate.pem`), which is consistent in closed loop with the
 right noise model.
 
 The first iteration is the least-squares state-variable filter estimate with the fixed
@@ -32,8 +32,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from verify.identify.ct_filters import Filter
-from verify.identify.trial_data import OutputData
+from verify.identify.estimate.ct_filters import Filter
+from verify.identify.estimate.trial_data import OutputData
 
 __all__ = ["srivc"]
 

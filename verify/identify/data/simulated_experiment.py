@@ -11,7 +11,8 @@ and u_h = first two components of omega_h^b (the operator's output).
 (any 2 x 2 :class:`verify.passivity.model.LTIModel`), wrapped in
 :class:`verify.sim.noisy_humans.ReactingNoisyHuman` (operator noise inside the loop, a
 seeded reaction time per trial ended by the start event), and adds measurement noise to
-the logged e and u. :func:`trajectory_trials` turns any simulator trajectory into trials.
+the logged e and u. The run becomes trials by
+:func:`verify.sim.experiment_log.trajectory_trials`.
 """
 
 from __future__ import annotations
@@ -21,61 +22,19 @@ import math
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify.experiment import ExperimentLog, Trial
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.inputs.numbers import positive_real, real
+from verify.sim.experiment_log import trajectory_trials
 from verify.sim.inputs import Reference, autonomous_input
 from verify.sim.noisy_humans import ReactingNoisyHuman
 from verify.sim.run import simulate
 from verify.sim.scenario import Scenario
-from verify.sim.trajectory import Trajectory
-from verify.so3 import exp, vee
+from verify.so3 import exp
 
 #: Default operator noise (rad/s, standard deviation of the held white noise on u_h) and
 #: measurement noise (standard deviation on the logged e (rad) and u (rad/s)).
 OPERATOR_NOISE = 0.05
 MEASUREMENT_NOISE = 0.002
-
-
-def trajectory_trials(traj: Trajectory, *, until: float | None = None) -> tuple[Trial, ...]:
-    """The trials of a run: one per reference segment, with the signals the human saw.
-
-    Sample k (time t_k, the start of loop period k) carries e_k = the first two
-    components of vee(sk(R_l(t_k)^T R_r(t_k))), with R_r the reference held over the
-    period (as :class:`verify.sim.scenario.ClosedLoop` computes it), and u_k = the first
-    two components of omega_h^b, recomputed from the recorded human state x_k through
-    the human's own ``hold`` and ``command`` (the value the simulator used at the first
-    stage of that period). A trial is a maximal run of samples in one reference segment
-    (:meth:`verify.sim.inputs.Reference.segment`); ``reference`` is d_r = R_r e3. When
-    the human is a :class:`ReactingNoisyHuman`, ``start`` is the time of the first
-    sample after its reaction time. Samples at t >= ``until`` are left out.
-    """
-    scenario = traj.scenario
-    human = scenario.human
-    t = traj.t
-    keep = np.ones(t.shape[0], bool) if until is None else t < until - 1e-9 * max(1.0, until)
-    idx = np.flatnonzero(keep)
-    if idx.size == 0:
-        raise VerifyInputError(f"no samples before t = {until} s")
-    m = human.state_size
-    e3 = np.empty((idx.size, 3))
-    u3 = np.empty_like(e3)
-    for row, k in enumerate(idx):  # as ClosedLoop.signals computes them, bit for bit
-        e3[row] = vee(traj.R_l[k].T @ traj.R_r[k])  # sk(R_l^T R_r)^vee
-        held = human.hold(float(t[k]), traj.R_l[k], traj.R_r[k])
-        u3[row] = human.command(float(t[k]), traj.x[k, :m], e3[row], traj.R_l[k], held)
-    segments = np.array([scenario.reference.segment(float(t[k])) for k in idx])
-    d_r = traj.R_r[idx][:, :, 2]
-    reacting = getattr(human, "reacting", None)
-    trials = []
-    for seg in np.unique(segments):
-        rows = np.flatnonzero(segments == seg)
-        start = None
-        if reacting is not None:
-            ready = [r for r in rows if not reacting(float(t[idx[r]]))]
-            start = float(t[idx[ready[0]]]) if ready else None
-        trials.append(Trial(int(seg), t[idx[rows]].copy(), e3[rows, :2].copy(),
-                            u3[rows, :2].copy(), reference=d_r[rows].copy(), start=start))
-    return tuple(trials)
 
 
 def add_measurement_noise(trials: tuple[Trial, ...], std: float, seed: int

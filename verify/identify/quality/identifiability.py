@@ -8,11 +8,11 @@ certified:
 
 1. **Does the model explain the validation data?** The honest validation fit of each
    output (Section 4's fit ratio of the model simulated on the logged input,
-   :func:`verify.identify.quality.honest_fits`) must beat both the zero model (which
+   :func:`verify.identify.quality.fits.honest_fits`) must beat both the zero model (which
    predicts u = 0) and the mean of the output: fit > ``MIN_FIT`` = 0 %. A model that
    does worse than a constant describes nothing of the operator.
 2. **Is the estimate an interior, stable point?** Every denominator coefficient must lie
-   strictly inside the search box of :func:`verify.identify.pem.denominator_bounds`
+   strictly inside the search box of :func:`verify.identify.estimate.pem.denominator_bounds`
    (the poles in the open left half-plane, no coefficient within ``BOUND_MARGIN`` of
    the upper bound, none below ``LOWER_MARGIN`` times it, i.e. on the box's lower
    edge a_k = 0). An estimate on the box's edge is not a
@@ -46,11 +46,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from verify.errors import VerifyInputError
-from verify.identify.estimate import Estimate
-from verify.identify.experiment import Trial
-from verify.identify.pem import denominator_bounds
-from verify.identify.prediction import element_parameters
+from verify.identify.estimate.pem import denominator_bounds
+from verify.identify.estimate.prediction import element_parameters
+from verify.identify.estimate.result import Estimate
+from verify.inputs.experiment import Trial
 
 __all__ = [
     "BOUND_MARGIN",
@@ -58,7 +57,6 @@ __all__ = [
     "MAX_CONDITION",
     "MAX_GROWTH",
     "MIN_FIT",
-    "CannotIdentifyError",
     "Identifiability",
     "check",
     "condition_number",
@@ -73,11 +71,6 @@ LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its bound is on a_k 
 MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
 MAX_ROUGHNESS_RATIO = 2.0  # largest admitted R(e_i) / R(u_i)
 MAX_GROWTH = 10.0  # RMS of the last quarter of a trial over that of its first quarter
-
-
-class CannotIdentifyError(VerifyInputError):
-    """The data do not determine the model (raised by the estimator when every
-    refinement ends on the search bound); the command reports *cannot identify*."""
 
 
 @dataclass(frozen=True)

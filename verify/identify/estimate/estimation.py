@@ -4,20 +4,20 @@
 (:meth:`Structure.paper`, :meth:`Structure.poles_zeros`) output by output: output i is
 u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. Method ``"riv+pem"`` (the default):
 
-1. starting denominators: SRIVC (:mod:`verify.identify.riv`), a refined
+1. starting denominators: SRIVC (:mod:`verify.identify.estimate.riv`), a refined
    instrumental-variable estimate, from a few first prefilters (s + lam)^n, and a grid
    of stable denominators (:func:`starting_denominators`);
-2. output-error prediction-error refinement (:mod:`verify.identify.pem`) from the
+2. output-error prediction-error refinement (:mod:`verify.identify.estimate.pem`) from the
    starting points of least cost, poles kept below half the Nyquist frequency, each
    trial started as described below; the refinement of least cost is kept
    (:func:`fit_output` says why the grid is needed).
 
 The covariance held in :attr:`Estimate.covariance` by default is the asymptotic
 prediction-error covariance per output (outputs independent), in its colour-robust
-sandwich form (:mod:`verify.identify.pem`): sigma^2 (J^T J)^-1 for white residuals,
+sandwich form (:mod:`verify.identify.estimate.pem`): sigma^2 (J^T J)^-1 for white residuals,
 corrected for the colour the protocol's decimation gives the noise. It costs one
 Jacobian and is what the theory gives to O(1/N). The bootstrap over trials
-(:func:`verify.identify.bootstrap.bootstrap`) is the alternative when the noise is in
+(:func:`verify.identify.estimate.bootstrap.bootstrap`) is the alternative when the noise is in
 doubt; it needs many re-estimates and, with the paper's six identification trials, has
 few distinct resamples.
 
@@ -40,7 +40,7 @@ Start of each trial (default ``initial="carry"``, ``burn_in=0``): the model ente
 each trial in the state it left the previous one in, carried to the reference change
 and coasted with zero input over the dead time between them (the protocol of Section 4
 removes that dead time because the operator has not yet reacted to the new reference),
-the first trial of a log from rest (:func:`verify.identify.trial_data.dead_time_gaps`
+the first trial of a log from rest (:func:`verify.identify.estimate.trial_data.dead_time_gaps`
 says which trials follow on). No sample is left out of the criterion: the first second
 after the start event carries the step response, the most informative part of a trial,
 and leaving it out (``burn_in=1.0``, the earlier default) made the estimates of b1 and
@@ -71,15 +71,14 @@ from dataclasses import replace
 import numpy as np
 
 from verify.errors import VerifyInputError
-from verify.identify.estimate import Estimate
-from verify.identify.experiment import Trial
-from verify.identify.identifiability import CannotIdentifyError
-from verify.identify.pem import OutputFit, ar_start, denominator_bounds, refine
-from verify.identify.prediction import INITIAL_STATES, fit_linear, lengths
-from verify.identify.quality import whiteness
-from verify.identify.riv import srivc
-from verify.identify.structure import Structure
-from verify.identify.trial_data import OutputData, check_trials, output_data
+from verify.identify.estimate.pem import OutputFit, ar_start, denominator_bounds, refine
+from verify.identify.estimate.prediction import INITIAL_STATES, fit_linear, lengths
+from verify.identify.estimate.residual_tests import whiteness
+from verify.identify.estimate.result import CannotIdentifyError, Estimate, assemble
+from verify.identify.estimate.riv import srivc
+from verify.identify.estimate.structure import Structure
+from verify.identify.estimate.trial_data import OutputData, check_trials, output_data
+from verify.inputs.experiment import Trial
 
 __all__ = ["METHODS", "estimate_model", "few_trials_factor", "first_prefilters"]
 
@@ -152,7 +151,7 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
     causal, separates H(s) from that inverse relation (the operator noise at a sample
     is not yet in e). On decimated data that separation weakens (the protocol's
     zero-phase anti-aliasing filter lets e look slightly ahead), and a refinement can run
-    to the bound of the search box (:func:`verify.identify.pem.denominator_bounds`),
+    to the bound of the search box (:func:`verify.identify.estimate.pem.denominator_bounds`),
     where the model imitates the leader's inverse; such a refinement is not a minimum
     of the criterion inside the model class and is set aside.
     """
@@ -227,23 +226,6 @@ def with_noise_model(data: OutputData, fit: OutputFit, zeros: int) -> OutputFit:
     return fit if best is None else best
 
 
-def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, samples: int,
-             covariance_kind: str = "asymptotic") -> Estimate:
-    """The :class:`Estimate` of two output fits, parameters ordered as ``structure.names()``."""
-    per = structure.zeros + 1 + structure.poles
-    theta = np.empty(2 * per + 2)
-    cov = np.zeros((2 * per + 2, 2 * per + 2))
-    for i, fit in enumerate(fits):
-        idx = [*range(i * per, (i + 1) * per), 2 * per + i]  # b, a, then c_ij
-        theta[idx] = np.concatenate([fit.b, fit.a, [fit.c]])
-        cov[np.ix_(idx, idx)] = fit.covariance
-    cov = 0.5 * (cov + cov.T)
-    return Estimate(structure, theta, cov, structure.names(), method,
-                    np.array([fit.sigma for fit in fits]), samples,
-                    covariance_kind=covariance_kind,
-                    noise_model=tuple(tuple(float(v) for v in fit.noise) for fit in fits))
-
-
 def few_trials_factor(trials: int) -> float:
     """The covariance factor for ``trials`` identification trials (module docstring):
     T / (T - 2) for T >= 4, 3 for fewer."""
@@ -304,7 +286,7 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
                                f"use a shorter burn-in or longer trials")
     samples = sum(np.asarray(tr.t).shape[0] for tr in trials)
     if method == "arx+oe":
-        from verify.identify.baseline import oe_from_arx
+        from verify.identify.estimate.baseline import oe_from_arx
 
         return oe_from_arx(trials, structure, h)
     fits = [fit_output(output_data(trials, i, h, initial=initial, skip=skip), structure.poles,

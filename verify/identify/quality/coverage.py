@@ -1,9 +1,9 @@
 """Monte Carlo check of an estimator on simulated closed-loop experiments.
 
 Each repetition simulates the experiment of Section 4 with a known operator in the
-paper's class (:func:`verify.identify.simulated_experiment.simulate_experiment`: the
+paper's class (:func:`verify.identify.data.simulated_experiment.simulate_experiment`: the
 SO(3) closed loop, operator noise inside the loop, measurement noise, reaction times),
-prepares it with the paper's protocol (:func:`verify.identify.protocol.prepare`: dead
+prepares it with the paper's protocol (:func:`verify.identify.data.protocol.prepare`: dead
 time to the start event, anti-aliasing and decimation) and estimates H(s) from the
 identification trials. It records, per method, the estimate, its standard errors,
 whether each parameter's 95 % interval theta_hat +- 1.96 se contains the true value,
@@ -24,12 +24,12 @@ import numpy as np
 from scipy.stats import chi2
 
 from verify.errors import VerifyInputError
-from verify.identify.estimation import estimate_model
-from verify.identify.prediction import predict
-from verify.identify.protocol import prepare
-from verify.identify.quality import fit_ratio
-from verify.identify.simulated_experiment import simulate_experiment
-from verify.identify.structure import Structure
+from verify.identify.data.protocol import prepare
+from verify.identify.data.simulated_experiment import simulate_experiment
+from verify.identify.estimate.estimation import estimate_model
+from verify.identify.estimate.prediction import predict
+from verify.identify.estimate.structure import Structure
+from verify.identify.quality.fits import fit_ratio
 from verify.passivity.model import from_transfer_function
 
 __all__ = ["Repetition", "Study", "repetition", "run_study", "true_model"]
