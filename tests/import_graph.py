@@ -3,7 +3,9 @@
 Every ``import`` of a ``verify`` module counts, at module level or inside a function (a
 lazy import is still a dependency); imports under ``if TYPE_CHECKING:`` do not, since
 they never run. ``from P import name`` is an edge to the module ``P.name`` when that is
-a module, else to ``P``.
+a module, else to ``P``. Importing by name is importing too: a module named by a string
+passed to ``import_module`` or ``__import__``, or by the values of a table of module
+names (the lazy public faces' ``{"decide": "verify.passivity.decision"}``), is an edge.
 """
 
 from __future__ import annotations
@@ -32,6 +34,21 @@ def _type_checking_only(node: ast.If) -> bool:
         isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING")
 
 
+def _modules_named_in_code(node: ast.AST, known: set[str]) -> set[str]:
+    """Modules named by strings that are imported by name (module docstring)."""
+    named: set[str] = set()
+    if isinstance(node, ast.Call):
+        func = node.func
+        called = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+        if called in ("import_module", "__import__"):
+            named.update(a.value for a in node.args
+                         if isinstance(a, ast.Constant) and isinstance(a.value, str))
+    if isinstance(node, ast.Dict) and node.values and all(
+            isinstance(v, ast.Constant) and v.value in known for v in node.values):
+        named.update(v.value for v in node.values)  # type: ignore[union-attr]
+    return named
+
+
 def _imports(name: str, path: Path, known: set[str]) -> set[str]:
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     found: set[str] = set()
@@ -52,6 +69,12 @@ def _imports(name: str, path: Path, known: set[str]) -> set[str]:
                 for alias in node.names:
                     sub = f"{base}.{alias.name}"
                     found.add(sub if sub in known else base)
+            for sub in ast.walk(node) if not isinstance(node, (ast.FunctionDef,
+                                                                  ast.AsyncFunctionDef,
+                                                                  ast.ClassDef, ast.If,
+                                                                  ast.With, ast.Try,
+                                                                  ast.For, ast.While)) else ():
+                found.update(_modules_named_in_code(sub, known))
             for child in ast.iter_child_nodes(node):
                 if isinstance(child, ast.stmt):
                     visit([child])

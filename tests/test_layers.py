@@ -76,3 +76,32 @@ def test_the_graph_sees_lazy_imports_and_skips_type_checking_ones(tmp_path):
                    "    import verify.report\n"
                    "def f():\n    from verify.so3 import hat\n    return hat\n")
     assert _imports("verify.m", src, {"verify.so3", "verify.report"}) == {"verify.so3"}
+
+
+def test_the_graph_sees_imports_by_name(tmp_path):
+    """A lazy public face's table of homes and import_module calls are edges; a string
+    that only happens to spell a module (a label written into a file) is not."""
+    from import_graph import _imports
+
+    src = tmp_path / "m.py"
+    src.write_text('import importlib\n_HOME = {"hat": "verify.so3", "x": "verify.system"}\n'
+                   'LABEL = "verify.claims"\n'
+                   'def f():\n    return importlib.import_module("verify.report")\n')
+    known = {"verify.so3", "verify.system", "verify.claims", "verify.report"}
+    assert _imports("verify.m", src, known) == {"verify.so3", "verify.system", "verify.report"}
+
+
+#: The stages of identification (Section 4), in the order data flows through them.
+IDENTIFY_STAGES = ["data", "estimate", "quality", "model", "robust", "figures", "command"]
+
+
+def test_identification_stages_import_only_earlier_stages():
+    """A newcomer reads ``verify/identify/`` top to bottom: no stage needs a later one."""
+    def stage(module: str) -> int:
+        return IDENTIFY_STAGES.index(module.split(".")[2])
+
+    modules = [m for m in GRAPH if m.startswith("verify.identify.")]
+    assert {m.split(".")[2] for m in modules} == set(IDENTIFY_STAGES)
+    later = sorted(f"{a} -> {b}" for a in modules for b in GRAPH[a]
+                   if b.startswith("verify.identify.") and stage(b) > stage(a))
+    assert later == []

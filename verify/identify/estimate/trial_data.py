@@ -81,8 +81,9 @@ def check_trials(trials: Sequence[Trial], structure: Structure, *, what: str = "
             raise VerifyInputError(f"{label}: t must be (N,), e and u (N, 2); got t {t.shape}, "
                                    f"e {e.shape}, u {u.shape}")
         if tr.valid is not None and not np.all(np.asarray(tr.valid, bool)):
-            raise VerifyInputError(f"{label} has samples marked invalid; remove them with the "
-                                   f"protocol's preprocessing (verify.identify.protocol) first")
+            raise VerifyInputError(f"{label} has samples marked invalid; remove them with "
+                                   "the protocol's preprocessing "
+                                   "(verify.identify.data.protocol) first")
         need = 2 * (structure.poles + 1) + 1
         if t.shape[0] < need:
             raise VerifyInputError(f"{label} has {t.shape[0]} samples; a {structure.poles}-pole "

@@ -1,7 +1,7 @@
 """Robust band certificates: every model of a confidence region is passive on a band.
 
 Schema ``verify-robust-band-certificate/1`` (registered in
-:data:`verify.passivity.io.stored.SCHEMAS`). A file holds the claim (structure, parameter
+:data:`verify.certificates.registry.SCHEMAS`). A file holds the claim (structure, parameter
 names, region: centre θc, covariance Σ, confidence level and χ² value as exact rationals;
 the band [w1, w2] in rad/s, or null for all frequencies), the statement derived from it,
 a fingerprint of the claim (also in the file name), the half-widths of the box enclosing

@@ -1,7 +1,7 @@
 """Region-wide refutation certificates: every model of a confidence region fails passivity.
 
 Schema ``verify-robust-refutation-certificate/1`` (registered in
-:data:`verify.passivity.io.stored.SCHEMAS`), the counterpart of the robust band
+:data:`verify.certificates.registry.SCHEMAS`), the counterpart of the robust band
 certificate (:mod:`verify.identify.robust.band_certificate`) for the paper's Section 4 class:
 2 x 2 models with diagonal elements num_i/den_i and constant off-diagonal elements. A file
 holds the claim (structure, parameter names, the region as exact rationals: centre θc,
