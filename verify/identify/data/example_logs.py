@@ -68,7 +68,7 @@ class Example:
         return (
             "# SIMULATION GROUND TRUTH, not identified and not published data: the operator\n"
             f"# model that generated {self.name}.npz beside this file (verify.identify."
-            "example_logs).\n"
+            "data.example_logs).\n"
             "# Paper's structure (Section 4): diagonal (b1 s + b0)/(s^2 + a1 s + a0), "
             "constant off-diagonals.\n"
             f"# This model is {verdict}.\n"

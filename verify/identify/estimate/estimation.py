@@ -98,7 +98,7 @@ METHODS = {
     "riv+bj": "as riv+pem, then an AR noise model (Box-Jenkins) when the output error is "
               "coloured",
     "arx+oe": "baseline: discrete ARX least squares, then output-error least squares "
-              "with zero initial states (verify.identify.baseline)",
+              "with zero initial states (verify.identify.estimate.baseline)",
 }
 
 

@@ -347,7 +347,7 @@ def passive_model_text(name: str, test: PassivityTest, *, description: str = "",
     if bad:
         raise VerifyInputError(f"the passive fit violates {', '.join(bad)} (denominator "
                                "on its bound): no passive model file")
-    table = {"method": "passive output-error fit (verify.identify.passive_fit)",
+    table = {"method": "passive output-error fit (verify.identify.robust.passive_fit)",
              "passivity_constraints": "c12 = -c21, a1_i > 0, a0_i > 0, b0_i >= 0, "
                                       "a1_i b1_i >= b0_i",
              "likelihood_ratio": canonical(test.statistic, FIGURE_DIGITS),
