@@ -198,6 +198,7 @@ class Identified:
     gate: Identifiability | None = None
     joins: tuple[str, ...] = ()
     passivity: Any = None  # verify.identify.robust.passive_fit.PassivityTest, or why none
+    model_class: Any = None  # verify.identify.quality.model_class.ClassTest, or None
 
     @property
     def identifiable(self) -> bool:
@@ -233,6 +234,7 @@ def identify_logs(plan: Plan) -> Identified:
     from verify.identify.estimate.result import CannotIdentifyError
     from verify.identify.quality import identifiability
     from verify.identify.quality.fits import assess, honest_fits
+    from verify.identify.quality.model_class import model_class_test
     from verify.inputs.experiment_log import read_logs
 
     log = read_logs(plan.logs, min_samples=MIN_FILTER_SAMPLES)  # shorter: one line, exit 2
@@ -263,8 +265,10 @@ def identify_logs(plan: Plan) -> Identified:
                                  1.0 / prepared.rate)
     passivity = (_passivity(estimate, prepared.identification) if gate.identifiable
                  else None)
+    model_class = (model_class_test(estimate, prepared.identification) if gate.identifiable
+                   else None)
     return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes, gate,
-                      joins, passivity)
+                      joins, passivity, model_class)
 
 
 def _passivity(estimate: Estimate, trials) -> Any:
@@ -314,6 +318,7 @@ class Outcome:
     band_search: BandSearch
     files: dict[Path, bytes | str]
     high_frequency_note: str
+    model_class_note: str = ""
 
     @property
     def passed(self) -> bool:
@@ -357,6 +362,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
     ``band_steps`` bounds the bisection for the largest proved band. Only for data the
     identifiability gate passed (:class:`CannotIdentifyError` otherwise)."""
     from verify.identify.estimate.result import CannotIdentifyError
+    from verify.identify.robust.model_class_check import check_answers
 
     if not identified.identifiable or identified.estimate is None:
         raise CannotIdentifyError("cannot identify: " + "; ".join(identified.gate.reasons))
@@ -415,6 +421,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
         search = largest_band(region, est.structure, w1, nyquist, name=plan.name,
                               source=source, steps=band_steps,
                               max_boxes=max(1000, plan.max_boxes // 4))
+    robust, search, class_note = check_answers(identified.model_class, robust, search)
     for cert in (robust.certificate, search.certificate):
         if cert is not None:
             band = None if cert["band"] is None else tuple(Fraction(x) for x in cert["band"])
@@ -424,7 +431,8 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
     files.update(_passive_files(plan, identified))
     files.update(_figures(plan, identified, region, search))
     return Outcome(plan, identified, model_path, ident, nominal, nominal_cert, robust,
-                   search, files, _high_frequency_note(est.structure, ident.center))
+                   search, files, _high_frequency_note(est.structure, ident.center),
+                   class_note)
 
 
 def _figures(plan: Plan, identified: Identified, region, search: BandSearch
@@ -490,6 +498,8 @@ def summary_json(o: Outcome) -> dict[str, Any]:
                          "certificate": _cert_path(o, o.band_search.certificate)},
         "high_frequency": o.high_frequency_note,
         "passivity_test": _passivity_json(o),
+        "model_class": None if o.identified.model_class is None else {
+            **o.identified.model_class.to_json(), "answers": o.model_class_note},
         "passed": o.passed,
     }
 
@@ -576,6 +586,7 @@ def lines(o: Outcome) -> list[str]:
     out.append(f"  robust, every model of the {float(LEVEL):.0%} region "
                f"{o.robust.where()}: {o.robust.verdict}: {o.robust.reason}")
     out += _robust_lines(o)
+    out += _model_class_lines(o)
     out += _passivity_lines(o)
     if o.high_frequency_note:
         out.append(f"  note: {o.high_frequency_note}")
@@ -589,11 +600,26 @@ def lines(o: Outcome) -> list[str]:
     return out
 
 
+def _model_class_lines(o: Outcome) -> list[str]:
+    """The test of the fitted class against a larger one, and what it did to the answers."""
+    test = o.identified.model_class
+    if test is None:
+        return []
+    out = [f"  model class {structure_text(test.structure)}: {test.sentence()}"]
+    if o.model_class_note:
+        out.append(f"  {o.model_class_note}")
+    return out
+
+
 def _passivity_lines(o: Outcome) -> list[str]:
     from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE, summary_lines
 
     path = o.plan.out / PASSIVE_MODEL_FILE
-    return summary_lines(o.identified.passivity, path if path in o.files else None)
+    out = summary_lines(o.identified.passivity, path if path in o.files else None)
+    test = o.identified.model_class
+    if out and test is not None and test.rejected:
+        out[0] += " (a test within the fitted class, which the data reject)"
+    return out
 
 
 def _robust_lines(o: Outcome) -> list[str]:

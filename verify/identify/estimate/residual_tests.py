@@ -17,6 +17,12 @@ inputs are given per trial; products never cross a trial boundary.
   residual drives later inputs through the leader, so negative lags correlate for any
   model.
 
+* Effective sample size (:func:`effective_samples`): N divided by the Bartlett-weighted
+  sum of the residual's autocorrelation over M lags (>= 1), the number of independent
+  samples that carry the same evidence when the protocol's filtering and decimation, or
+  unmodelled dynamics, colour the residual; the likelihood-ratio tests of the
+  identification command count samples this way.
+
 Defaults: M = 20 lags, level 0.95.
 """
 
@@ -31,7 +37,7 @@ from scipy.stats import chi2
 from verify.errors import VerifyInputError
 
 __all__ = ["LAGS", "LEVEL", "CrossCorrelationTest", "WhitenessTest", "cross_correlation",
-           "whiteness"]
+           "effective_samples", "whiteness"]
 
 LAGS = 20
 LEVEL = 0.95
@@ -114,3 +120,22 @@ def cross_correlation(residuals: Sequence[np.ndarray], inputs: Sequence[np.ndarr
     zeta = float(N * r @ np.linalg.solve(R, r) / lam)
     corr = r / np.sqrt(lam * np.diag(R))
     return CrossCorrelationTest(output, input, M, level, zeta, float(chi2.ppf(level, M)), corr)
+
+
+def effective_samples(residual: np.ndarray, lengths: Sequence[int], *, lags: int = LAGS
+                      ) -> float:
+    """N / max(1, 1 + 2 sum_{k=1..lags} (1 - k/(lags + 1)) rho(k)) of a residual stacked
+    over trials of the given ``lengths`` (products within trials; module docstring)."""
+    parts, row = [], 0
+    for count in lengths:
+        parts.append(residual[row:row + count])
+        row += count
+    var = sum(float(p @ p) for p in parts) / max(sum(len(p) for p in parts), 1)
+    if var <= 0:
+        return float(len(residual))
+    total = 0.0
+    for k in range(1, lags + 1):
+        acc = sum(float(p[k:] @ p[:-k]) for p in parts if len(p) > k)
+        rho = acc / (var * len(residual))
+        total += (1 - k / (lags + 1)) * rho
+    return len(residual) / max(1.0, 1 + 2 * total)

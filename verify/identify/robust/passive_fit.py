@@ -64,6 +64,7 @@ import numpy as np
 from verify.errors import VerifyInputError
 from verify.identify.estimate.estimation import BURN_IN as ESTIMATOR_BURN_IN
 from verify.identify.estimate.prediction import design, used
+from verify.identify.estimate.residual_tests import effective_samples
 from verify.identify.estimate.structure import Structure
 from verify.identify.estimate.trial_data import OutputData, check_trials, output_data
 from verify.inputs.experiment import Trial
@@ -234,19 +235,8 @@ def _fit(data, weights, start: np.ndarray, passive: bool):
 
 def _effective(residual: np.ndarray, data: OutputData) -> float:
     """N divided by the Bartlett-weighted residual autocorrelation sum (>= 1)."""
-    total, parts, row = 0.0, [], 0
-    for own in data.own:
-        count = len(own) - data.skip
-        parts.append(residual[row:row + count])
-        row += count
-    var = sum(float(p @ p) for p in parts) / max(sum(len(p) for p in parts), 1)
-    if var <= 0:
-        return float(len(residual))
-    for k in range(1, LAGS + 1):
-        acc = sum(float(p[k:] @ p[:-k]) for p in parts if len(p) > k)
-        rho = acc / (var * len(residual))
-        total += (1 - k / (LAGS + 1)) * rho
-    return len(residual) / max(1.0, 1 + 2 * total)
+    return effective_samples(residual, [len(own) - data.skip for own in data.own],
+                             lags=LAGS)
 
 
 def _fit_ratio(y: np.ndarray, residual: np.ndarray) -> float:

@@ -76,6 +76,7 @@ class RobustResult:
     seconds: float = 0.0
     refutation: dict[str, Any] | None = None  # no model of the region is passive
     passive_theta: list[mpq] | None = None  # a passive model of a straddling region
+    withdrawn: bool = False  # an answer for the class the larger model contradicts
 
     @property
     def passed(self) -> bool:
@@ -98,7 +99,7 @@ class RobustResult:
                     "frequency": self.refutation["frequency"],
                     "direction": self.refutation["direction"],
                     "leaves": self.refutation["leaves"]},
-                "straddles": self.straddles,
+                "straddles": self.straddles, "withdrawn": self.withdrawn,
                 "passive_theta": None if self.passive_theta is None else
                 [str(x) for x in self.passive_theta],
                 "seconds": round(self.seconds, 4)}
@@ -110,6 +111,9 @@ class RobustResult:
         if self.verdict == NOT_PASSIVE:
             return ("not passive: no model of the region is passive (exact region-wide "
                     "refutation certificate)")
+        if self.withdrawn:
+            return ("inconclusive: the answer for the fitted class's region is withdrawn "
+                    "(the data reject the class, and the larger model contradicts it)")
         if self.straddles:
             return ("inconclusive: the region holds a passive and a non-passive model "
                     "(both exact); the data cannot decide")
