@@ -29,6 +29,26 @@ def loop_log(path: Path, *, exact: bool = False, seed: int = 5, trials: int = 8)
     return write_log(log, path)
 
 
+#: A passive operator outside the paper's class: diagonal elements
+#: (s^2 + 2 s + 2)/(s^3 + 2 s^2 + 3 s + 2), Re h(jw) = 4/|den(jw)|^2 > 0 (0.0024 at 3.5 rad/s),
+#: coupling c12 = -c21 = 0.05.
+THIRD_ORDER = (("1", "2", "2"), ("1", "2", "3", "2"), "0.05")
+
+
+def third_order_log(path: Path, *, seed: int = 5, trials: int = 8) -> Path:
+    """The paper's closed loop (n = 2) with the passive third-order operator THIRD_ORDER."""
+    from fractions import Fraction
+
+    from verify.passivity.model import from_transfer_function
+
+    num = [Fraction(x) for x in THIRD_ORDER[0]]
+    den = [Fraction(x) for x in THIRD_ORDER[1]]
+    c = Fraction(THIRD_ORDER[2])
+    truth = from_transfer_function([[num, [c]], [[-c], num]], [[den, [1]], [[1], den]],
+                                   name="passive third-order operator")
+    return write_log(simulate_experiment(truth, trials=trials, n=2, seed=seed), path)
+
+
 def per_trial_clocks(log: ExperimentLog) -> ExperimentLog:
     """The same log with each trial's time restarting at 0 (start events shifted too)."""
     out = []

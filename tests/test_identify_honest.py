@@ -167,6 +167,19 @@ def test_exact_closed_loop_data_recover_the_operator_to_1e_4(exact_run):
     assert "residual_tests_passed" in summary["residual_tests"]
 
 
+def test_the_class_test_on_in_class_logs(noisy_run, exact_run):
+    """The operator is in the paper's class: noisy logs do not reject the class; the
+    noise-free log may (the sampled loop is not exactly the class) but its answers are
+    confirmed by the larger model, so none is withdrawn."""
+    noisy = noisy_run[1]["model_class"]
+    assert noisy["rejected"] is False and max(noisy["likelihood_ratio"]) < 15.2
+    assert noisy["answers"] == ""
+    exact = exact_run[1]
+    assert exact["robust"]["withdrawn"] is False and exact["passed"] is True
+    if exact["model_class"]["rejected"]:
+        assert "agrees" in exact["model_class"]["answers"]
+
+
 def test_residual_tests_that_cannot_be_computed_are_listed_not_raised():
     """A constant second input: the cross-correlation test with it is undefined."""
     from verify.identify.estimate.result import Estimate

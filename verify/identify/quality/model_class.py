@@ -42,14 +42,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from verify.identify.estimate.estimation import BURN_IN, INITIAL, fit_output
+from verify.identify.estimate.pem import OutputFit
 from verify.identify.estimate.prediction import element_parameters, fit_linear, lengths
 from verify.identify.estimate.residual_tests import effective_samples
-from verify.identify.estimate.result import CannotIdentifyError, Estimate
+from verify.identify.estimate.result import CannotIdentifyError, Estimate, assemble
 from verify.identify.estimate.structure import Structure
 from verify.identify.estimate.trial_data import check_trials, output_data
 from verify.inputs.experiment import Trial
@@ -71,8 +72,10 @@ def larger_structure(structure: Structure) -> Structure:
 class ClassTest:
     """The test of the module docstring: ``structure`` against ``larger``, per output the
     likelihood ratio, its chi-square p-value and N_eff, and ``larger_theta`` (the larger
-    model's parameters, in ``larger.names()`` order); ``fallbacks`` names the outputs whose
-    larger fit failed (their larger model is the identified one, LR 0)."""
+    model's parameters, in ``larger.names()`` order) with ``larger_covariance`` (the
+    estimator's asymptotic covariance, outputs independent, times the identified
+    estimate's few-trials factor); ``fallbacks`` names the outputs whose larger fit failed
+    (their larger model is the identified one, LR 0, its covariance mapped alike)."""
 
     structure: Structure
     larger: Structure
@@ -81,6 +84,8 @@ class ClassTest:
     effective: tuple[float, float]
     larger_theta: tuple[float, ...]
     fallbacks: tuple[str, ...] = ()
+    larger_covariance: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)),
+                                          compare=False, repr=False)
 
     @property
     def rejected(self) -> bool:
@@ -115,11 +120,18 @@ class ClassTest:
                 "larger_theta": [four(x) for x in self.larger_theta]}
 
 
-def _embedded(b: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(b, a) of the same element with the factor (s + 1) on both sides (a monic,
-    without its leading 1)."""
+def _embedding(b: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(b', a', J): the element with the factor (s + 1) on both sides (a, a' monic without
+    the leading 1) and the Jacobian J of (b', a', c) in (b, a, c); the map is affine."""
+    nb, na = len(b), len(a)
+    J = np.zeros((nb + 1 + na + 1 + 1, nb + na + 1))
+    for k in range(nb):  # b'_k = b_k + b_{k-1}
+        J[k, k] = J[k + 1, k] = 1.0
+    for k in range(na):  # a'_k = a_k + a_{k-1}, a_{-1} = 1
+        J[nb + 1 + k, nb + k] = J[nb + 2 + k, nb + k] = 1.0
+    J[-1, -1] = 1.0
     den = np.convolve(np.r_[1.0, a], [1.0, 1.0])
-    return np.convolve(b, [1.0, 1.0]), den[1:]
+    return np.convolve(b, [1.0, 1.0]), den[1:], J
 
 
 def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest | None:
@@ -134,7 +146,9 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
     h = check_trials(trials, structure)
     skip = round(BURN_IN / h)
     theta = np.asarray(estimate.theta, float)
-    stats, ps, effs, blocks, couplings, fallbacks = [], [], [], [], [], []
+    cov = np.asarray(estimate.covariance, float) / max(float(estimate.inflation), 1e-300)
+    per = structure.zeros + 1 + structure.poles
+    stats, ps, effs, fits, fallbacks = [], [], [], [], []
     for i in (0, 1):
         data = output_data(trials, i, h, initial=INITIAL, skip=skip)
         b, a, c = element_parameters(structure, theta, i)
@@ -143,13 +157,14 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
         try:
             with np.errstate(all="ignore"):
                 fit = fit_output(data, larger.poles, larger.zeros)
-            big_b, big_a, big_c, big_res = fit.b, fit.a, fit.c, fit.residual
         except (CannotIdentifyError, np.linalg.LinAlgError, ValueError) as exc:
             fallbacks.append(f"output {i + 1}: no larger fit ({exc})")
-            big_b, big_a = _embedded(np.asarray(b, float), np.asarray(a, float))
-            big_c, big_res = float(c), residual
-        big_cost = float(big_res @ big_res)
-        n_eff = effective_samples(big_res, lengths(data, None))
+            big_b, big_a, J = _embedding(np.asarray(b, float), np.asarray(a, float))
+            idx = [*range(i * per, (i + 1) * per), 2 * per + i]
+            fit = OutputFit(big_b, big_a, float(c), np.zeros((0, 0)), residual, cost,
+                            J @ cov[np.ix_(idx, idx)] @ J.T, 0.0)
+        big_cost = float(fit.residual @ fit.residual)
+        n_eff = effective_samples(fit.residual, lengths(data, None))
         if cost > 0 and big_cost > 0 and math.isfinite(cost) and math.isfinite(big_cost):
             lr = max(0.0, n_eff * math.log(cost / big_cost))
         else:
@@ -157,8 +172,8 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
         stats.append(lr)
         ps.append(float(chi2.sf(lr, DEGREES)))
         effs.append(float(n_eff))
-        blocks.append(np.r_[big_b, big_a])
-        couplings.append(float(big_c))
-    larger_theta = tuple(float(x) for x in np.r_[blocks[0], blocks[1], couplings])
+        fits.append(fit)
+    both = assemble(larger, fits, estimate.method, estimate.samples)
     return ClassTest(structure, larger, (stats[0], stats[1]), (ps[0], ps[1]),
-                     (effs[0], effs[1]), larger_theta, tuple(fallbacks))
+                     (effs[0], effs[1]), tuple(float(x) for x in both.theta),
+                     tuple(fallbacks), both.covariance * float(estimate.inflation))
