@@ -234,3 +234,13 @@ def test_rate_off_decimates_nothing(logs):
     prepared = prepare(read_logs([logs["exact"]]), rate="off", split=(6, 2))
     assert prepared.rate == 120.0 and prepared.decimation == 1
     assert any("--rate off" in n for n in prepared.notes)
+
+
+def test_rate_help_states_the_auto_rule_the_protocol_uses(capsys):
+    """`verify identify --help` names the protocol's own ceiling of the automatic rate."""
+    from verify.identify.data.protocol import AUTO_MAX_RATE
+
+    with pytest.raises(SystemExit):
+        main(["identify", "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    assert f"up to {AUTO_MAX_RATE:g} Hz" in text and "20 Hz for noisy" not in text

@@ -161,3 +161,4 @@ def test_all_frequencies_passive_needs_a_coupling_sum_of_exactly_zero():
     assert not mcc.larger_region_passive(test, None)  # c12 + c21 = 0 but with variance
     exact = replace(test, larger_covariance=np.zeros((14, 14)))
     assert mcc.larger_region_passive(exact, None)
+

@@ -144,8 +144,8 @@ def _build_parser() -> argparse.ArgumentParser:
                       help="paper (default), P:Z (poles:zeros per diagonal element) or "
                       "order:N")
     p_id.add_argument("--rate", metavar="HZ", help="rate after decimation in Hz, 'off' (no "
-                      "decimation) or 'auto' (default: 20 Hz for noisy logs, the log's rate "
-                      "for near-exact ones)")
+                      "decimation) or 'auto' (default: the logged rate up to 250 Hz, "
+                      "above it the highest integer fraction of it <= 250 Hz)")
     p_id.add_argument("--split", default="6:6", metavar="A:B",
                       help="trials for identification and validation (default 6:6)")
     p_id.add_argument("--band", metavar="W1:W2",

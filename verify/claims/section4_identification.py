@@ -189,7 +189,17 @@ def identification(context: CheckContext) -> Outcome:
             **({} if isinstance(test, str | None) else
                {"p_value": test.p_value, "statistic": test.statistic,
                 "rejected": test.rejected})))
-    ok = all_refuted and band_ok and refuted and test_ok
+    classes = {name: o.identified.model_class for name, o in
+               (("passive_human", passive_all), ("nonpassive_human", nonpassive))}
+    class_ok = all(c is not None and not c.rejected for c in classes.values())
+    for name, test in classes.items():
+        evidence.append(numeric(
+            f"{name}: the paper's class: "
+            + ("not tested" if test is None else test.sentence()), class_ok,
+            **({} if test is None else {"p_value": list(test.p_value),
+                                        "statistic": list(test.statistic),
+                                        "rejected": test.rejected})))
+    ok = all_refuted and band_ok and refuted and test_ok and class_ok
     stored = _store(context, passive_all) + _store(context, nonpassive)
     robust_paths = [p for p in stored if "-robust-" in p.name]
     evidence.append(counterexample(
@@ -224,7 +234,8 @@ def identification(context: CheckContext) -> Outcome:
         "direction every model of it fails, by an exactly checked certificate. The "
         "likelihood-ratio test of the best passive fit: passive operator "
         f"{_sentence(tests['passive_human'])}; non-passive operator "
-        f"{_sentence(tests['nonpassive_human'])}."
+        f"{_sentence(tests['nonpassive_human'])}. Neither log rejects the paper's class "
+        "against one pole and one zero more, so the region speaks of the operator."
         + ("" if ok else " Some expected outcome did not hold (see the evidence)."),
         tuple(evidence),
     )

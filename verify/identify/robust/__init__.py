@@ -11,5 +11,7 @@ the certificate formats (:mod:`~verify.identify.robust.band_certificate`,
 (:mod:`~verify.identify.robust.band_check`, :mod:`~verify.identify.robust.refutation_check`,
 which ``verify certificates check`` also runs). Beside it, the statistical answer: the best
 passive model of the paper's class and the likelihood-ratio test whether the data reject
-passivity (:mod:`~verify.identify.robust.passive_fit`).
+passivity (:mod:`~verify.identify.robust.passive_fit`). When the data reject the fitted
+class, :mod:`~verify.identify.robust.model_class_check` withdraws the answers the larger
+model's region does not support.
 """
