@@ -45,6 +45,14 @@ _BAD = 1e6
 MAX_POLE_FRACTION = 0.5
 #: Residual autocovariance lags the covariance accounts for (0: white residuals assumed).
 COVARIANCE_LAGS = 20  # residual returned for a denominator whose simulation overflows
+#: Relative step of the central differences in the denominator for the covariance's
+#: Jacobian. The simulated regressors carry float noise of a few parts in 1e14 that
+#: differs between BLAS builds; a difference quotient divides it by the step, so a step
+#: of 1e-6 left noise of 4e-8 in the Jacobian and 1e-6 in the covariance, enough to
+#: change its written decimals on another machine. At 1e-3 the noise is 1e-3 of that and
+#: the truncation error (relative 1e-6, the same on every machine) is far below the
+#: covariance's own statistical precision.
+JACOBIAN_STEP = 1e-3
 
 
 @dataclass(frozen=True)
@@ -133,7 +141,7 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
     # X(a) beta with beta fixed; d_k's the raw output error delayed by k samples
     Ja = np.empty((r.shape[0], n))
     for k in range(n):
-        step = 1e-6 * max(1.0, abs(a[k]))
+        step = JACOBIAN_STEP * max(1.0, abs(a[k]))
         hi, lo = a.copy(), a.copy()
         hi[k] += step
         lo[k] -= step

@@ -79,6 +79,15 @@ CONSTRAINTS = 5
 LAGS = 20
 #: Burn-in left out of the criterion, seconds: the estimator's own default.
 BURN_IN = ESTIMATOR_BURN_IN
+#: The denominator search's Jacobian (central differences, relative step) and stopping
+#: tolerances. The passive model is written to the digits its standard errors justify
+#: (parts in 1e5 to 1e6 here). The simulated columns carry float noise of a few parts in
+#: 1e14 that differs between BLAS builds; scipy's default forward differences (step
+#: 1.5e-8) turn it into gradient noise of 1e-6, and the search stopped at points that
+#: differed by 1e-6 between builds, enough to change a written digit on another machine.
+DIFFERENCE_STEP = 1e-4
+TOLERANCE = 1e-12
+MAX_EVALUATIONS = 400
 
 
 def passive_constraints(theta: Sequence[Any]) -> list[str]:
@@ -203,9 +212,12 @@ def _inner(x: np.ndarray, data: tuple[OutputData, OutputData], weights: np.ndarr
     Mw, yw = M * w[:, None], np.r_[ys[0], ys[1]] * w
     scale = np.linalg.norm(Mw, axis=0)
     scale[scale == 0] = 1.0
-    sol = lsq_linear(Mw / scale, yw, bounds=(lower * scale, np.full(len(lower), np.inf)),
-                     method="bvls" if passive else "trf", lsmr_tol="auto")
-    beta = sol.x / scale
+    if passive:
+        sol = lsq_linear(Mw / scale, yw, bounds=(lower * scale, np.full(len(lower), np.inf)),
+                         method="bvls")
+        beta = sol.x / scale
+    else:  # unbounded: the direct least-squares solution, not an iteration's stopping point
+        beta = np.linalg.lstsq(Mw / scale, yw, rcond=None)[0] / scale
     r = yw - Mw @ beta
     res = [r[:n1] / weights[0], r[n1:] / weights[1]]
     if passive:
@@ -227,7 +239,9 @@ def _fit(data, weights, start: np.ndarray, passive: bool):
     best = None
     for x0 in (start, start + np.array([0.3, 0.0, 0.3, 0.0]),
                start - np.array([0.3, 0.0, 0.3, 0.0])):
-        sol = least_squares(fun, x0, method="trf", x_scale=1.0, max_nfev=200)
+        sol = least_squares(fun, x0, method="trf", x_scale=1.0, max_nfev=MAX_EVALUATIONS,
+                            jac="3-point", diff_step=DIFFERENCE_STEP, xtol=TOLERANCE,
+                            ftol=TOLERANCE, gtol=TOLERANCE)
         if best is None or sol.cost < best.cost:
             best = sol
     return _inner(best.x, data, weights, passive)
