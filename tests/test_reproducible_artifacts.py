@@ -161,6 +161,43 @@ def test_another_blas_gives_the_same_bytes(tmp_path):
     assert _differences(here, there) == []
 
 
+def _identify_in_child(log: Path, where: Path, *, threads: int, coretype: str | None
+                       ) -> dict[str, bytes]:
+    """`verify identify` in a child process run in ``where`` (the same relative --out in
+    every run: certificates record the model file's path)."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(("OPENBLAS", "OMP_", "MKL_"))}
+    env.update(OPENBLAS_NUM_THREADS=str(threads), OMP_NUM_THREADS=str(threads),
+               MKL_NUM_THREADS=str(threads),
+               PYTHONPATH=str(Path(__file__).resolve().parents[1]))
+    if coretype:
+        env["OPENBLAS_CORETYPE"] = coretype
+    where.mkdir(parents=True)
+    done = subprocess.run([sys.executable, "-m", "verify.cli", "identify", str(log),
+                           "--split", "4:4", "--band", "0:2", "--out", "out"], cwd=where,
+                          env=env, capture_output=True, text=True, timeout=600, check=False)
+    if done.returncode not in (0, 1):
+        raise RuntimeError(done.stdout[-2000:] + done.stderr[-2000:])
+    return snapshot(where / "out")
+
+
+def test_another_blas_gives_the_same_identification_bytes(tmp_path):
+    """`verify identify` on a closed-loop log: model file (its covariance), passive fit,
+    certificates and figures. The estimator's and the passive fit's difference quotients
+    once turned the regressors' float noise into changed digits on another BLAS."""
+    from identify_loop import loop_log
+
+    log = loop_log(tmp_path / "loop.npz")
+    here = _identify_in_child(log, tmp_path / "here", threads=1, coretype=None)
+    there = _identify_in_child(log, tmp_path / "there", threads=2, coretype="Sandybridge")
+    assert {"model.toml", "passive_model.toml"} <= here.keys()
+    assert _differences(here, there) == []
+
+
 @pytest.mark.slow
 def test_another_blas_gives_the_same_bytes_for_every_claim(tmp_path):
     """The whole `verify all` (with the identification from simulated logs), twice."""
