@@ -41,6 +41,7 @@ from pathlib import Path
 
 import numpy as np
 
+from verify.identify.estimate.prediction import element_parameters
 from verify.identify.quality.model_class import ClassTest
 from verify.identify.robust.verdict import BandSearch, RobustResult, float_nu
 from verify.passivity.decision import INCONCLUSIVE, NOT_PASSIVE, PASSIVE
@@ -79,15 +80,21 @@ def larger_hermitian_form(test: ClassTest, w: float, v: tuple[float, float]) -> 
     return _form(test, np.asarray(test.larger_theta, float), w, v)
 
 
-def _form(test: ClassTest, theta: np.ndarray, w: float, v: tuple[float, float]) -> float:
-    per = test.larger.zeros + 1 + test.larger.poles
-    re = []
+def _diagonal(test: ClassTest, theta: np.ndarray, omega: np.ndarray
+              ) -> tuple[np.ndarray, np.ndarray]:
+    """h_1(jw), h_2(jw) of the larger structure at θ (floats)."""
+    out = []
     for i in range(2):
-        block = theta[i * per:(i + 1) * per]
-        num, den = block[: test.larger.zeros + 1], np.r_[1.0, block[test.larger.zeros + 1:]]
-        re.append(float((np.polyval(num, 1j * w) / np.polyval(den, 1j * w)).real))
+        num, a, _ = element_parameters(test.larger, theta, i)
+        with np.errstate(all="ignore"):
+            out.append(np.polyval(num, 1j * omega) / np.polyval(np.r_[1.0, a], 1j * omega))
+    return out[0], out[1]
+
+
+def _form(test: ClassTest, theta: np.ndarray, w: float, v: tuple[float, float]) -> float:
+    h1, h2 = _diagonal(test, theta, np.array([w]))
     c = float(theta[-2] + theta[-1])
-    return 2 * re[0] * v[0] ** 2 + 2 * c * v[0] * v[1] + 2 * re[1] * v[1] ** 2
+    return float(2 * h1[0].real * v[0] ** 2 + 2 * c * v[0] * v[1] + 2 * h2[0].real * v[1] ** 2)
 
 
 def _radius(test: ClassTest, level: float) -> float:
@@ -128,14 +135,8 @@ def _rounding(test: ClassTest, grid: np.ndarray) -> np.ndarray:
     """1e-12 of |h_1| + |h_2| + |c12| + |c21| on ``grid``: below it a float nu is rounding
     (a lossless-like element's Re h(jw) falls as w^-6 while h itself falls as w^-1)."""
     theta = np.asarray(test.larger_theta, float)
-    per = test.larger.zeros + 1 + test.larger.poles
-    size = np.full(grid.shape, abs(theta[-2]) + abs(theta[-1]))
-    for i in range(2):
-        block = theta[i * per:(i + 1) * per]
-        num, den = block[: test.larger.zeros + 1], np.r_[1.0, block[test.larger.zeros + 1:]]
-        with np.errstate(all="ignore"):
-            size = size + np.abs(np.polyval(num, 1j * grid) / np.polyval(den, 1j * grid))
-    return 1e-12 * size
+    h1, h2 = _diagonal(test, theta, grid)
+    return 1e-12 * (np.abs(h1) + np.abs(h2) + abs(theta[-2]) + abs(theta[-1]))
 
 
 def band_grid(band: tuple[Fraction, Fraction] | None) -> np.ndarray:
