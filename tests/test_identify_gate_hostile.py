@@ -129,6 +129,19 @@ def test_an_estimate_on_the_lower_bound_or_unstable_is_refused():
     assert any("not stable" in r for r in gate.interior(_estimate(theta), 0.05))
 
 
+def test_the_lower_edge_is_judged_on_the_model_own_scale_not_the_box():
+    """A 3-pole model at 120 Hz: the box's bound on a0 is (pi/2h)^3 = 6.6e6, so a0 = 1.8
+    is 3e-7 of it, yet it is an ordinary pole product; a0 = 1e-9 is a pole at zero."""
+    s = Structure.poles_zeros(3, 2)
+    theta = np.array([1.0, 2.0, 1.8, 1.9, 2.9, 1.8, 1.0, 2.3, 2.6, 2.3, 3.5, 2.6, 0.04, -0.05])
+    est = Estimate(s, theta, np.eye(14) * 1e-4, s.names(), "test", np.ones(2), 1000)
+    assert gate.interior(est, 1 / 120) == []
+    theta[5] = 1e-9
+    est = Estimate(s, theta, np.eye(14) * 1e-4, s.names(), "test", np.ones(2), 1000)
+    reasons = gate.interior(est, 1 / 120)
+    assert len(reasons) == 1 and "a0_1" in reasons[0] and "bound 0" in reasons[0]
+
+
 def test_an_ill_conditioned_information_matrix_is_refused():
     rng = np.random.default_rng(1)
     v = rng.standard_normal((10, 9))

@@ -14,9 +14,12 @@ certified:
 2. **Is the estimate an interior, stable point?** Every denominator coefficient must lie
    strictly inside the search box of :func:`verify.identify.estimate.pem.denominator_bounds`
    (the poles in the open left half-plane, no coefficient within ``BOUND_MARGIN`` of
-   the upper bound, none below ``LOWER_MARGIN`` times it, i.e. on the box's lower
-   edge a_k = 0). An estimate on the box's edge is not a
-   minimum of the criterion inside the model class, and its covariance is meaningless.
+   the upper bound, and none on the box's lower edge a_k = 0: below ``LOWER_MARGIN``
+   times binom(n, k) rho^(n-k), the size a_k has for n roots of the model's own largest
+   modulus rho; measured against the box's upper bound instead, which grows as
+   (pi/h)^(n-k), the rule called a0 = 1.8 of a 3-pole model at 120 Hz "zero"). An
+   estimate on the box's edge is not a minimum of the criterion inside the model class,
+   and its covariance is meaningless.
 3. **Is the information matrix well conditioned?** The covariance must be finite and
    positive definite, and its correlation matrix (the scale-free form of the inverse
    information matrix) must have condition number at most ``MAX_CONDITION``. A larger
@@ -43,6 +46,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from math import comb
 
 import numpy as np
 
@@ -67,7 +71,7 @@ __all__ = [
 
 MIN_FIT = 0.0  # %, honest validation fit each output must exceed
 BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
-LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its bound is on a_k = 0
+LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its own scale is a_k = 0
 MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
 MAX_ROUGHNESS_RATIO = 2.0  # largest admitted R(e_i) / R(u_i)
 MAX_GROWTH = 10.0  # RMS of the last quarter of a trial over that of its first quarter
@@ -123,12 +127,14 @@ def interior(estimate: Estimate, h: float) -> list[str]:
                        + ", ".join(f"{complex(r):.3g}" for r in roots) + ")")
             continue
         per = structure.zeros + 1 + structure.poles
+        rho = float(np.max(np.abs(roots)))
+        own_scale = [comb(len(a), k + 1) * rho ** (k + 1) for k in range(len(a))]
         for k in range(len(a)):
             name = names[i * per + structure.zeros + 1 + k]
             if a[k] >= (1 - BOUND_MARGIN) * upper[k]:
                 out.append(f"output {i + 1}: {name} = {a[k]:.4g} sits on the search bound "
                            f"{upper[k]:.4g} (poles at half the Nyquist frequency)")
-            elif a[k] <= LOWER_MARGIN * upper[k]:
+            elif a[k] <= LOWER_MARGIN * own_scale[k]:
                 out.append(f"output {i + 1}: {name} = {a[k]:.4g} sits on the search bound 0 "
                            "(a pole or a damping at zero)")
     return out

@@ -213,7 +213,9 @@ def check_answers(test: ClassTest | None, robust: RobustResult, search: BandSear
                      "larger model, over its region to first order, is not passive there)")
         search = replace(search, w_max=None, certificate=None)
     if notes:
-        return robust, search, f"{why} disagrees: " + "; ".join(notes)
+        return robust, search, (f"{why} disagrees: " + "; ".join(notes)
+                                + f" (`--structure {test.larger_text()}` fits the larger "
+                                "class and answers for its own region)")
     if not checked:
         return robust, search, (f"the data reject the fitted class against "
                                 f"{test.larger_text()}; no answer here rests on it (the "
