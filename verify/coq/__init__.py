@@ -1,0 +1,12 @@
+"""Export of exact proofs and certificates to Coq, checked by ``coqc``.
+
+What flows in: exact objects the Python side has already decided (derivation steps
+with their expression trees, SOS certificates, KYP and band certificates as rational
+matrices). What flows out: a Coq development (a folder of ``.v`` files, a
+``_CoqProject`` and a top file ``All.v`` that ``Require``s every unit) whose statements
+are written from the readable definitions of the prelude (``prelude/*.v``) and whose
+proofs Coq's kernel checks without trusting this package: only data (numbers,
+polynomials, matrices) crosses over, and Coq re-checks it. :mod:`~verify.coq.unit`
+holds the unit of export, :mod:`~verify.coq.development` writes and compiles a
+development.
+"""

@@ -1,0 +1,32 @@
+"""One exported Coq file: its module name, its source and the theorems it proves."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+_COQ_IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+
+
+@dataclass(frozen=True)
+class CoqUnit:
+    """A ``.v`` file of a development.
+
+    ``name`` is the module (file stem); ``text`` the Coq source, which ``Require``s the
+    prelude modules it uses by their qualified names (``From VerifyCoq Require Import
+    SO3.``); ``theorems`` the top theorems whose ``Print Assumptions`` must list only the
+    paper's named hypotheses and Coq's real-number axioms; ``source`` says what the unit
+    was exported from (a claim id and step, a certificate file name), for reports.
+    """
+
+    name: str
+    text: str
+    theorems: tuple[str, ...]
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        if not _COQ_IDENT.match(self.name):
+            raise ValueError(f"Coq module name must be an identifier, got name={self.name!r}")
+        for theorem in self.theorems:
+            if not _COQ_IDENT.match(theorem):
+                raise ValueError(f"Coq theorem name must be an identifier, got {theorem!r}")
