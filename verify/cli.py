@@ -130,6 +130,10 @@ def _build_parser() -> argparse.ArgumentParser:
                         "'verify all')")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+    p_gate.add_argument("--plot", type=Path, metavar="FILE",
+                        help="draw nu(w) and the relative index R(w) with the band, margin "
+                        "and exact witness marked (PNG or PDF by the suffix); with several "
+                        "models, one file per model: nu.pdf gives nu-<model stem>.pdf")
 
     p_id = sub.add_parser(
         "identify",
@@ -367,6 +371,11 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
+    plots = None
+    if args.plot is not None:  # a bad --plot fails before any work
+        from verify.passivity.figure import figure_paths
+
+        plots = figure_paths(args.plot, list(args.models))
     models = [load_model(path) for path in args.models]  # validate all before any work
     with unlimited_int_text():  # every input is validated: exact numbers of any size now
         if band is None:
@@ -389,6 +398,11 @@ def _cmd_gate(args: argparse.Namespace) -> int:
             write_json(results, args.json)
         if args.junit:
             write_junit(results, args.junit)
+        if plots is not None:
+            from verify.passivity.figure import write_passivity_figure
+
+            for r, path in zip(results, plots, strict=True):
+                print(f"figure: {write_passivity_figure(r.decision, path)}")
     return 0 if passed == len(results) else 1
 
 
