@@ -36,6 +36,7 @@ def test_pdf_is_vector_and_png_is_png(tmp_path, capsys):
                  str(tmp_path / "c")]) == 1
     data = pdf.read_bytes()
     assert data.startswith(b"%PDF") and b"/Subtype /Image" not in data  # no raster inside
+    assert b"/Type3" not in data  # TrueType text a journal's tools can read
     assert png.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
     assert f"figure: {pdf}" in capsys.readouterr().out
     assert not list(tmp_path.glob(".*.tmp"))  # the temporary file was renamed

@@ -234,7 +234,10 @@ def passivity_figure_bytes(decision: Any, fmt: str = "png") -> bytes:
     fig.text(0.5, 0.01, _verdict_line(decision, witness), ha="center", va="bottom", fontsize=8,
              wrap=True)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
-    return figure_bytes(fig, fmt, dpi=150) if fmt == "png" else figure_bytes(fig, fmt)
+    if fmt == "png":
+        return figure_bytes(fig, fmt, dpi=150)
+    with matplotlib.rc_context({"pdf.fonttype": 42}):  # TrueType, not Type 3: editable text
+        return figure_bytes(fig, fmt)
 
 
 def write_passivity_figure(decision: Any, path: Path) -> Path:
