@@ -147,6 +147,14 @@ def _verdict_line(decision: Any, witness: Fraction | None) -> str:
 def passivity_figure_bytes(decision: Any, fmt: str = "png") -> bytes:
     """The figure of a :class:`~verify.passivity.decision.Decision` or
     :class:`~verify.passivity.band.BandDecision` as PNG or PDF bytes (module docstring)."""
+    import warnings
+
+    with np.errstate(all="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # curves of extreme models overflow
+        return _figure_bytes(decision, fmt)
+
+
+def _figure_bytes(decision: Any, fmt: str) -> bytes:
     import matplotlib
 
     matplotlib.use("Agg", force=True)
