@@ -149,3 +149,12 @@ def test_search_floor_is_not_shown_as_a_bound():
     text = index.summary()
     assert f"ρ_OFP ≤ {index.search_floor}" in text and "may be lower still" in text
     assert "upper bound -1000000" not in text
+
+
+def test_the_sdp_range_end_is_not_an_estimate():
+    """H = 0 has rho_OFP = +inf (y = 0): the SDP stops at the end of its range, 10^6,
+    which is reported as a certified lower bound and a range end, never as '≈ 1e+06'."""
+    index = vp.ofp_index(0)
+    text = index.summary()
+    assert index.estimate is None and index.lower == 10**6 and index.upper is None
+    assert "≈" not in text and "may be larger, up to +∞" in text

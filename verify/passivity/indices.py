@@ -324,6 +324,11 @@ def loop_transform(em: ExactModel, rho: Fraction) -> ExactModel | None:
     return ExactModel(A, ex.matmul(em.B, E2), ex.matmul(E, em.C), ex.matmul(E, em.D))
 
 
+#: The SDP's range for rho, [-OFP_RANGE, OFP_RANGE]: an estimate at its top end is the
+#: range's end, not an estimate of rho_OFP (which may be larger, up to +infinity).
+OFP_RANGE = 1e6
+
+
 def ofp_estimate(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray) -> float | None:
     """max rho with P >= 0 and M(P) + 2 rho [C D]^T [C D] <= 0 (cvxpy + Clarabel); untrusted."""
     n = A.shape[0]
@@ -336,7 +341,7 @@ def ofp_estimate(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray) -> 
     else:
         M, cons = -(D + D.T), []
     lhs = M + 2 * rho * (CD.T @ CD)
-    cons += [(lhs + lhs.T) / 2 << 0, rho <= 1e6, rho >= -1e6]
+    cons += [(lhs + lhs.T) / 2 << 0, rho <= OFP_RANGE, rho >= -OFP_RANGE]
     prob = cp.Problem(cp.Maximize(rho), cons)
     try:
         with warnings.catch_warnings():
@@ -449,6 +454,10 @@ def ofp_index(model: LTIModel) -> IndexBounds:
                 break
         else:
             notes.append("no certificate for OFP(ρ) below the estimate")
+        if estimate >= OFP_RANGE * (1 - 1e-6):  # the SDP stopped at its range's end
+            notes.append("the SDP reached the top of its range (ρ = 10⁶), so ρ_OFP may be "
+                         "larger, up to +∞")
+            estimate = None
     else:
         notes.append("the SDP found no feasible ρ in its range [-10⁶, 10⁶] (with a storage "
                      "P > 0, OFP(ρ) needs the loop u = ρ y to be stable)")
