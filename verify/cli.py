@@ -104,6 +104,8 @@ def _build_parser() -> argparse.ArgumentParser:
                          "(default 120)")
     p_check.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
                          help="memory for loading the file, and for each step (default 4)")
+    p_check.add_argument("--progress", action="store_true",
+                         help="stage lines on stderr even when it is not a terminal")
 
     p_gate = sub.add_parser(
         "gate",
@@ -327,15 +329,19 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.artefacts.atomic import write_atomic
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
+    from verify.progress import Stages
     from verify.proof import ProofSyntaxError, certificate_store, check
     from verify.proof.isolate import load_isolated
 
     budget = _budget(args)
+    stage = Stages.for_command("verify check", forced=args.progress)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
+    stage(f"loading {args.file} in an isolated process")
     derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
+        stage(f"checking derivation {k + 1} of {len(derivations)}: {d.name}")
         with certificate_store(args.certificates, source=f"file:{args.file.name}"):
             try:
                 r = check(d, search_settings(context, 101 * k), budget=budget,
