@@ -50,6 +50,9 @@ WITNESS_WORDS = {
 }
 #: A negative dip smaller than this fraction of the curve's range gets a symlog axis.
 SMALL_DIP = 0.02
+#: ... but only a dip above float resolution: a smaller one is noise of the float curve
+#: (the exact witness, if any, is marked all the same).
+RESOLVED = 1e-9
 
 
 def figure_format(path: Path, flag: str = "--plot") -> str:
@@ -99,6 +102,12 @@ def _curves(model: Any, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return nu, R
 
 
+def _equals(w: Fraction) -> str:
+    """``= 5/2`` for a short exact rational, ``≈ 3.13945e+17`` for a long one."""
+    text = short_text(w)
+    return text.replace("≈ ", "≈ ") if text.startswith("≈") else f"= {text}"
+
+
 def _witness_frequency(decision: Any) -> Fraction | None:
     w = getattr(decision, "witness", None)
     if w is None or w.kind != "frequency" or "omega" not in w.data:
@@ -133,7 +142,7 @@ def _verdict_line(decision: Any, witness: Fraction | None) -> str:
     margin = getattr(decision, "margin", Fraction(0))
     need = "" if not margin else f" with margin ν₀ = {short_text(margin)}"
     if witness is not None:
-        how = f"exact witness at ω* = {short_text(witness)} rad/s"
+        how = f"exact witness at ω* {_equals(witness)} rad/s"
     elif decision.witness is not None:
         kind = decision.witness.kind
         how = "exact witness: " + WITNESS_WORDS.get(kind, kind.replace("-", " "))
@@ -194,7 +203,7 @@ def _figure_bytes(decision: Any, fmt: str) -> bytes:
     if witness is not None:
         k = int(np.argmin(np.abs(w - float(witness))))
         top.plot([float(witness)], [nu[k]], "o", color="C3", ms=6,
-                 label=rf"exact witness $\omega^* = {short_text(witness)}$ rad/s: "
+                 label=r"exact witness $\omega^*$" + f" {_equals(witness)} rad/s: "
                        r"$v^{\mathsf{H}}(H + H^{\mathsf{H}})v < 0$")
     if low is not None and math.isinf(low[0]):
         top.plot([], [], " ", label=rf"$\inf\,\nu$ = {low[1]:.3g} as $\omega \to \infty$")
@@ -210,7 +219,7 @@ def _figure_bytes(decision: Any, fmt: str) -> bytes:
     if finite.size:
         lo_v, hi_v = float(finite.min()), float(finite.max())
         span = max(hi_v, margin, 0.0) - min(lo_v, margin, 0.0)
-        if lo_v < 0 and span > 0 and -lo_v < SMALL_DIP * span:
+        if lo_v < 0 and span > 0 and RESOLVED * span < -lo_v < SMALL_DIP * span:
             # linear on [-|min|, |min|] (the whole negative part), logarithmic above
             top.set_yscale("symlog", linthresh=-lo_v, linscale=1.5)
             top.yaxis.set_major_formatter(FuncFormatter(lambda y, _pos: f"{y:.2g}"))
@@ -229,7 +238,7 @@ def _figure_bytes(decision: Any, fmt: str) -> bytes:
     if wide:  # a log axis only when R spans more than a decade
         bottom.set_yscale("log")
     bottom.axhline(1.0, color="k", lw=0.8, label=r"$R = 1$ ($R \leq 1 \Leftrightarrow \nu \geq 0$)")
-    shortage = np.isfinite(positive) & (positive > 1)
+    shortage = np.isfinite(positive) & (positive > 1 + RESOLVED)  # above float noise
     if shortage.any():
         bottom.fill_between(w, 1.0, positive, where=shortage, color="C3", alpha=0.25, lw=0,
                             label=r"shortage of passivity, $R > 1$")

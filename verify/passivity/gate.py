@@ -122,7 +122,7 @@ def run_gate(models, margin: Fraction, certificates_dir: Path,
         results = []
         for k, model in enumerate(models):
             stage(_deciding(k, len(models), model))
-            results.append(_gate_one(model, margin, certificates_dir, tolerance))
+            results.append(_gate_one(model, margin, certificates_dir, tolerance, stage))
         return results
 
 
@@ -132,8 +132,8 @@ def _deciding(k: int, count: int, model) -> str:
 
 
 def _gate_one(model, margin: Fraction, certificates_dir: Path,
-              tolerance: Fraction) -> GateResult:
-    d = decide(model, margin)
+              tolerance: Fraction, stage: Callable[[str], None] = silent) -> GateResult:
+    d = decide(model, margin, stage=stage)
     if tolerance:
         d = within_tolerance(model, tolerance, margin, d)
     path, kept = None, False
