@@ -125,3 +125,29 @@ def test_curves_survive_a_pole_on_the_grid():
     assert np.isnan(R[1])
     assert np.isnan(nu[1]) and np.isfinite(nu[[0, 2]]).all()
     assert np.isfinite(_curves(m, np.array([1.0]))[0]).all()
+
+
+@pytest.mark.parametrize("case", ["ks25", "ks30", "band", "tail", "static"])
+def test_tick_labels_and_legends_do_not_overlap(case):
+    """No two tick labels of an axis touch (a symlog axis over 37 decades once did)."""
+    from itertools import pairwise
+
+    import matplotlib.pyplot as plt
+
+    from verify.passivity.figure import passivity_figure
+
+    d = {"ks25": lambda: decide(load_model(KS25)), "ks30": lambda: decide(load_model(KS30)),
+         "band": lambda: decide_band(load_model(KS25), (0, 2), margin=Fraction(-1, 100)),
+         "tail": lambda: decide(([-0.0003, 1], [1, 1])),
+         "static": lambda: decide(np.eye(2))}[case]()
+    fig = passivity_figure(d)
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            boxes = sorted((t.get_window_extent(renderer) for t in axis.get_ticklabels()
+                            if t.get_visible() and t.get_text()),
+                           key=lambda b: (b.x0, b.y0))
+            for a, b in pairwise(boxes):
+                assert not a.overlaps(b), (case, a, b)
+    plt.close(fig)

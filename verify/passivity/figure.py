@@ -158,12 +158,20 @@ def passivity_figure_bytes(decision: Any, fmt: str = "png") -> bytes:
     :class:`~verify.passivity.band.BandDecision` as PNG or PDF bytes (module docstring)."""
     import warnings
 
+    import matplotlib
+
     with np.errstate(all="ignore"), warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)  # curves of extreme models overflow
-        return _figure_bytes(decision, fmt)
+        fig = passivity_figure(decision)
+        if fmt == "png":
+            return figure_bytes(fig, fmt, dpi=150)
+        with matplotlib.rc_context({"pdf.fonttype": 42}):  # TrueType, not Type 3 fonts
+            return figure_bytes(fig, fmt)
 
 
-def _figure_bytes(decision: Any, fmt: str) -> bytes:
+def passivity_figure(decision: Any) -> Any:
+    """The decision's figure as a Matplotlib ``Figure`` (Agg), for a report that embeds it
+    in its own pipeline; :func:`passivity_figure_bytes` renders and closes it."""
     import matplotlib
 
     matplotlib.use("Agg", force=True)
@@ -251,10 +259,7 @@ def _figure_bytes(decision: Any, fmt: str) -> bytes:
     fig.text(0.5, 0.01, _verdict_line(decision, witness), ha="center", va="bottom", fontsize=8,
              wrap=True)
     fig.tight_layout(rect=(0, 0.04, 1, 1))
-    if fmt == "png":
-        return figure_bytes(fig, fmt, dpi=150)
-    with matplotlib.rc_context({"pdf.fonttype": 42}):  # TrueType, not Type 3: editable text
-        return figure_bytes(fig, fmt)
+    return fig
 
 
 def write_passivity_figure(decision: Any, path: Path) -> Path:
@@ -292,5 +297,5 @@ def figure_paths(target: Path, sources: list[Path]) -> list[Path]:
     return paths
 
 
-__all__ = ["FORMATS", "figure_format", "figure_paths", "frequency_grid", "passivity_figure_bytes",
-           "write_passivity_figure"]
+__all__ = ["FORMATS", "figure_format", "figure_paths", "frequency_grid", "passivity_figure",
+           "passivity_figure_bytes", "write_passivity_figure"]
