@@ -7,6 +7,7 @@ failure leaves no half-written output (:mod:`verify.artefacts.atomic`).
 from __future__ import annotations
 
 import io
+import math
 from pathlib import Path
 
 import numpy as np
@@ -130,6 +131,13 @@ def plots(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:
 
     fig, ax = plt.subplots(figsize=(7.2, 3.4))
     ax.semilogy(t, np.maximum(s["dbar_error"], 1e-16))
+    from matplotlib.ticker import FuncFormatter
+
+    lo, hi = ax.get_ylim()
+    few = math.log10(hi / lo) < 2  # under two decades: label the minor ticks too
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda y, _: f"{y:g}"))
+    ax.yaxis.set_minor_formatter(FuncFormatter(
+        lambda y, _: f"{y:g}" if few and str(f"{y:.0e}")[0] in "2345" else ""))
     ax.set_xlabel(r"$t$ [s]")
     ax.set_ylabel(r"$\Vert \bar d - d_r \Vert$")
     ax.set_title(f"{head}: control objective (eq. 3)", fontsize=10)
