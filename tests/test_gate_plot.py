@@ -151,3 +151,13 @@ def test_tick_labels_and_legends_do_not_overlap(case):
             for a, b in pairwise(boxes):
                 assert not a.overlaps(b), (case, a, b)
     plt.close(fig)
+
+
+def test_names_with_dollars_and_margins_beyond_floats_draw():
+    """A user's '$' in a model name is text, not mathtext; a margin beyond the float range
+    (decided exactly) is named in the caption but not drawn."""
+    d = decide(([1], [1, 1]), name="cost $5 k_s")
+    assert passivity_figure_bytes(d, "png").startswith(b"\x89PNG")
+    far = decide(([1], [1, 1]), margin="-1e400")
+    assert far.verdict == "passive"
+    assert passivity_figure_bytes(far, "pdf").startswith(b"%PDF")

@@ -37,6 +37,7 @@ from verify.artefacts.atomic import write_atomic
 from verify.artefacts.figure_bytes import figure_bytes
 from verify.errors import VerifyInputError
 from verify.inputs.number_text import short_text
+from verify.inputs.numbers import to_float
 
 #: Suffixes ``--plot`` accepts, and the format each is written in.
 FORMATS = {".png": "png", ".pdf": "pdf"}
@@ -179,8 +180,11 @@ def passivity_figure(decision: Any) -> Any:
 
     model = decision.model
     band = getattr(decision, "band", None)
-    margin = float(getattr(decision, "margin", 0) or 0)
+    margin = to_float(getattr(decision, "margin", 0) or 0)
+    margin = margin if math.isfinite(margin) else 0.0  # beyond the float range: not drawn
     witness = _witness_frequency(decision)
+    if witness is not None and not math.isfinite(to_float(witness)):
+        witness = None  # beyond the float range: named in the caption line only
     low = _smallest(decision)
     marks = [float(x) for x in ([] if band is None else band)]
     if witness is not None:
@@ -192,13 +196,13 @@ def passivity_figure(decision: Any) -> Any:
 
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.0, 6.2), sharex=True,
                                       gridspec_kw={"height_ratios": [3, 2]})
-    title = model.name.replace("k_s", "$k_s$")
+    title = model.name.replace("$", r"\$").replace("k_s", "$k_s$")  # a user's '$' is text
     fig.suptitle(f"Passivity of {title}", fontsize=11)
     top.semilogx(w, nu, color="C0", lw=1.6, label=r"$\nu(\omega)$")
     top.axhline(0.0, color="k", lw=0.8)
     if margin:
         top.axhline(margin, color="C2", lw=1.0, ls="--",
-                    label=rf"margin $\nu_0 = {short_text(decision.margin)}$")
+                    label=r"margin $\nu_0$" + f" {_equals(decision.margin)}")
     for ax in (top, bottom):
         if band is not None:
             ax.axvspan(float(band[0]) if band[0] > 0 else w[0], float(band[1]),
@@ -212,7 +216,8 @@ def passivity_figure(decision: Any) -> Any:
         k = int(np.argmin(np.abs(w - float(witness))))
         top.plot([float(witness)], [nu[k]], "o", color="C3", ms=6,
                  label=r"exact witness $\omega^*$" + f" {_equals(witness)} rad/s: "
-                       r"$v^{\mathsf{H}}(H + H^{\mathsf{H}})v < 0$")
+                       + (r"$v^{\mathsf{H}}(H + H^{\mathsf{H}} - 2\nu_0 I)v < 0$" if margin
+                          else r"$v^{\mathsf{H}}(H + H^{\mathsf{H}})v < 0$"))
     if low is not None and math.isinf(low[0]):
         top.plot([], [], " ", label=rf"$\inf\,\nu$ = {low[1]:.3g} as $\omega \to \infty$")
     elif low is not None and (witness is None or abs(low[0] - float(witness)) > 1e-9 * max(
