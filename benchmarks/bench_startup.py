@@ -13,7 +13,9 @@ measured in the same run. Commands:
   an exact check; no cvxpy, scipy.stats, scipy.optimize or sympy imported);
 - ``gate ks3.0``: the passive k_s = 3.0 reconstruction (4 states, transfer-function file);
 - ``gate N files``: ``verify gate`` on ``--files`` copies of the example in one process
-  (many models decided by one start-up).
+  (many models decided by one start-up);
+- ``verify list``: the claims' ids and paper references (read from the written-out
+  index ``verify/claims/index.py``, so no module of checks is imported).
 
 Certificates go to a temporary folder. BLAS threads are pinned to 1. ``--root DIR`` times
 another checkout of the package (e.g. an older commit, unpacked with ``git archive``).
@@ -77,6 +79,7 @@ def main() -> None:
             "gate example": [*gate, str(models / "example_state_space.toml"), *certs],
             "gate ks3.0": [*gate, str(models / "reconstructed_ks3p0.toml"), *certs],
             f"gate {args.files} files": [*gate, *copies, *certs],
+            "verify list": [py, "-m", "verify.cli", "list"],
         }
         times: dict[str, list[tuple[float, float]]] = {name: [] for name in commands}
         for argv in commands.values():  # warm the file cache once

@@ -172,3 +172,47 @@ def test_html_has_the_main_reports_style_and_wraps_commands():
     page = render_html([("h1", "t <x>"), ("code", Code(long))], "t")
     assert REPORT_CSS in page and "white-space:pre-wrap" in page
     assert long in page and "&lt;x&gt;" in page and "<x>" not in page
+
+
+def _status_counts(**given):
+    from verify.campaign.report import ANYWAY, NOT_ANYWAY
+
+    counts = {"held": 0, "failed": 0, "assumption-failed": 0, "unresolved": 0, "error": 0,
+              "n/a": 0, ANYWAY: 0, NOT_ANYWAY: 0}
+    counts.update({k.replace("_", "-"): v for k, v in given.items()})
+    return counts
+
+
+def test_cell_wording_says_what_held_outside_the_assumptions():
+    """A conclusion that held although the assumption failed reads as held, not as
+    '0/4 held' (the old wording read as a failure)."""
+    from verify.campaign.report import ANYWAY, NOT_ANYWAY, _cell_text, cell_category
+
+    outside = _status_counts(assumption_failed=4)
+    outside[ANYWAY] = 4
+    text = _cell_text(outside, 4)
+    assert text == "outside the assumptions in all 4: conclusion held in 4"
+    assert "0/4" not in text and "held in 0" not in text
+    assert cell_category(outside, 4) == "held-outside"
+    mixed = _status_counts(held=2, failed=1, assumption_failed=1)
+    mixed[NOT_ANYWAY] = 1
+    assert _cell_text(mixed, 4) == ("held in 2 of 3 within the assumptions, FAILED in 1; "
+                                    "outside the assumptions in 1: conclusion held in 0, "
+                                    "failed in 1")
+    assert cell_category(mixed, 4) == "failed"
+    assert _cell_text(_status_counts(held=3), 3) == "held in 3 of 3"
+    assert cell_category(_status_counts(held=3), 3) == "held"
+    assert cell_category(_status_counts(held=2, unresolved=1), 3) == "unresolved"
+
+
+def test_tables_colour_cells_and_never_break_words():
+    from verify.campaign.report import CATEGORIES, Table, render_html, render_markdown
+
+    table = Table(["setting", "k_s = 2"], [["reconstructed", "held in 2 of 2"]],
+                  [["", "held"]])
+    page = render_html([("table", table), ("legend", [("held", "held in every run")])], "t")
+    assert "<td class='held'>held in 2 of 2</td>" in page
+    assert "div.wide td,div.wide th{overflow-wrap:normal;word-break:normal" in page
+    colour = dict((n, c) for n, c, _ in CATEGORIES)["held"]
+    assert f"td.held{{background:{colour}}}" in page and "held in every run" in page
+    assert "held in every run" in render_markdown([("legend", [("held", "held in every run")])])

@@ -47,11 +47,14 @@ def test_each_part_says_whether_it_is_trusted(sub):
 
 
 def test_public_api_names_resolve_to_their_definitions():
-    from verify.passivity import band, decision, model
+    from verify.passivity import api, indices, model
     from verify.passivity.io import model_file
 
-    assert passivity.decide is decision.decide
-    assert passivity.decide_band is band.decide_band
+    # the public decide / decide_band accept any model form (verify.passivity.api)
+    assert passivity.decide is api.decide
+    assert passivity.decide_band is api.decide_band
+    assert passivity.nu is api.nu and passivity.relative_index is api.relative_index
+    assert passivity.IndexBounds is indices.IndexBounds
     assert passivity.load_model is model_file.load_model
     assert passivity.LTIModel is model.LTIModel
     assert (passivity.PASSIVE, passivity.NOT_PASSIVE, passivity.INCONCLUSIVE) == (

@@ -53,6 +53,8 @@ def _build_parser() -> argparse.ArgumentParser:
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
+    p_all.add_argument("--progress", action="store_true",
+                       help="stage lines on stderr even when it is not a terminal")
     p_all.add_argument(
         "--only",
         metavar="PREFIX",
@@ -102,6 +104,8 @@ def _build_parser() -> argparse.ArgumentParser:
                          "(default 120)")
     p_check.add_argument("--budget-memory", type=float, default=4.0, metavar="GB",
                          help="memory for loading the file, and for each step (default 4)")
+    p_check.add_argument("--progress", action="store_true",
+                         help="stage lines on stderr even when it is not a terminal")
 
     p_gate = sub.add_parser(
         "gate",
@@ -130,6 +134,13 @@ def _build_parser() -> argparse.ArgumentParser:
                         "'verify all')")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+    p_gate.add_argument("--progress", action="store_true",
+                        help="stage lines on stderr (which model is being decided) even when "
+                        "it is not a terminal")
+    p_gate.add_argument("--plot", type=Path, metavar="FILE",
+                        help="draw nu(w) and the relative index R(w) with the band, margin "
+                        "and exact witness marked (PNG or PDF by the suffix); with several "
+                        "models, one file per model: nu.pdf gives nu-<model stem>.pdf")
 
     p_id = sub.add_parser(
         "identify",
@@ -157,6 +168,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_id.add_argument("--name", help="model name (default: the first log's name)")
     p_id.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_id.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+    p_id.add_argument("--progress", action="store_true",
+                      help="stage lines on stderr even when it is not a terminal (on a "
+                      "terminal they are shown anyway)")
 
     p_cert = sub.add_parser("certificates", help="certificates/ tools")
     cert_sub = p_cert.add_subparsers(dest="cert_command", metavar="ACTION", required=True)
@@ -276,8 +290,14 @@ def _cmd_all(args: argparse.Namespace) -> int:
         mark = VERDICT_MARK[result.outcome.verdict]
         print(f"  {result.claim.id:<{width}}  {mark:<22} {result.seconds:6.2f} s", flush=True)
 
+    from verify.progress import Stages
+
+    stage = Stages.for_command("verify all", forced=args.progress)
     print(f"verify all: {len(claims)} claims (seed {args.seed})")
+    stage(f"checking {len(claims)} claims in {min(args.jobs, len(claims))} process(es); a "
+          "line on stdout as each one ends")
     run = run_claims(claims, context, progress=progress, jobs=args.jobs)
+    stage(f"writing the report to {args.out}")
     paths = write_report(run, args.out, info, latex=args.latex)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
@@ -309,15 +329,19 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.artefacts.atomic import write_atomic
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
+    from verify.progress import Stages
     from verify.proof import ProofSyntaxError, certificate_store, check
     from verify.proof.isolate import load_isolated
 
     budget = _budget(args)
+    stage = Stages.for_command("verify check", forced=args.progress)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
+    stage(f"loading {args.file} in an isolated process")
     derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
+        stage(f"checking derivation {k + 1} of {len(derivations)}: {d.name}")
         with certificate_store(args.certificates, source=f"file:{args.file.name}"):
             try:
                 r = check(d, search_settings(context, 101 * k), budget=budget,
@@ -367,14 +391,20 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
+    plots = None
+    if args.plot is not None:  # a bad --plot fails before any work
+        from verify.passivity.figure import figure_paths
+
+        plots = figure_paths(args.plot, list(args.models))
     models = [load_model(path) for path in args.models]  # validate all before any work
+    stage = _gate_stages(args.progress, models, args.indices)
     with unlimited_int_text():  # every input is validated: exact numbers of any size now
         if band is None:
-            results = run_gate(models, margin, args.certificates, tolerance)
+            results = run_gate(models, margin, args.certificates, tolerance, stage=stage)
         else:
-            results = run_band_gate(models, band, margin, args.certificates)
+            results = run_band_gate(models, band, margin, args.certificates, stage=stage)
         if args.indices:
-            add_indices(results)
+            add_indices(results, stage)
         for r in results:
             print(r.line(), flush=True)
         passed = sum(r.passed for r in results)
@@ -389,7 +419,29 @@ def _cmd_gate(args: argparse.Namespace) -> int:
             write_json(results, args.json)
         if args.junit:
             write_junit(results, args.junit)
+        if plots is not None:
+            from verify.passivity.figure import write_passivity_figure
+
+            for r, path in zip(results, plots, strict=True):
+                stage(f"drawing {path}")
+                print(f"figure: {write_passivity_figure(r.decision, path)}")
     return 0 if passed == len(results) else 1
+
+
+#: Models up to this many states decide in well under 2 s: on a terminal no stage lines
+#: (``--progress`` still asks for them).
+QUICK_GATE_STATES = 20
+
+
+def _gate_stages(forced: bool, models, indices: bool):
+    """Stage lines for ``verify gate``: asked for, or on a terminal when a model is big,
+    there are many, or the indices are asked for (the gate runs longer than about 2 s)."""
+    from verify.progress import Stages
+
+    big = indices or len(models) > 10 or any(m.n > QUICK_GATE_STATES for m in models)
+    stage = Stages.for_command("verify gate", forced=forced)
+    stage.enabled = stage.enabled and (forced or big)
+    return stage
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
@@ -454,7 +506,8 @@ def _cmd_identify(args: argparse.Namespace) -> int:
 
     return run_identify(IdentifySettings(
         logs=tuple(args.logs), structure=args.structure, rate=args.rate, split=args.split,
-        band=args.band, out=args.out, json=args.json, junit=args.junit, name=args.name))
+        band=args.band, out=args.out, json=args.json, junit=args.junit, name=args.name,
+        progress=args.progress))
 
 
 def _cmd_campaign(args: argparse.Namespace) -> int:
@@ -466,10 +519,10 @@ def _cmd_campaign(args: argparse.Namespace) -> int:
 
 
 def _cmd_list(_: argparse.Namespace) -> int:
-    from verify.claims.catalog import REGISTRY
+    from verify.claims.index import CLAIMS  # written out: no module of checks is imported
 
-    for c in REGISTRY:
-        print(f"{c.id:<26} {c.paper_ref}")
+    for claim_id, paper_ref in CLAIMS:
+        print(f"{claim_id:<26} {paper_ref}")
     return 0
 
 

@@ -17,9 +17,10 @@ _MAX_REPR = 60
 
 
 def shown(value: object) -> str:
-    """A short repr of ``value`` (long ones cut in the middle)."""
+    """A short one-line repr of ``value`` (long ones cut in the middle)."""
     text = getattr(value, "__name__", None) if callable(value) else None
     text = text if isinstance(text, str) else repr(value)
+    text = " ".join(text.split())  # one line: a NumPy array's repr spans several
     if len(text) > _MAX_REPR:
         text = text[: _MAX_REPR // 2 - 2] + " ... " + text[-_MAX_REPR // 2 + 3:]
     return text

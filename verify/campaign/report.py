@@ -50,15 +50,27 @@ from verify.inputs.campaign_spec import CampaignSpec
 
 TIMINGS_HEADING = "Timings (not reproducible)"
 MAX_LISTED = 200  # failing runs listed in the report text (all are in commands.txt)
-MAX_ANNOTATED = 300  # cells of the property map written in; beyond, colours only
 
 PROPERTY_TITLE = {
-    "stealthiness": "stealthiness (Section 2: dbar unchanged by the autonomous input)",
-    "quasi-average": "R-bar e3 = dbar (Section 3)",
-    "lemma1": "Lemma 1 (tr(R-bar_r) >= 1 while sym(R_rl) > 0)",
-    "lyapunov": "Theorem 1: V non-increasing, V' below eq. (9)",
-    "lasalle": "Theorem 1: convergence (|dbar - d_r| to 10% of its peak by T)",
+    "stealthiness": "Stealthiness (Section 2: d̄ unchanged by the autonomous input)",
+    "quasi-average": "R̄ e₃ = d̄ (Section 3)",
+    "lemma1": "Lemma 1 (tr R̄_r ≥ 1 while sym R_rl ≻ 0)",
+    "lyapunov": "Theorem 1: V non-increasing, V̇ below eq. (9)",
+    "lasalle": "Theorem 1: convergence (‖d̄ − d_r‖ to 10 % of its peak by T)",
 }
+
+#: What a cell of the property tables and maps shows, worst first: its colour class (HTML),
+#: its colour (figure) and its meaning (legend). "Outside the assumptions": an assumption
+#: of the claim failed along the run (for Theorem 1, e.g. a human with no passivity
+#: certificate), so the paper promises nothing there; the conclusion is checked anyway.
+CATEGORIES = (
+    ("failed", "#e06666", "failed under the assumptions"),
+    ("unresolved", "#ffd966", "unresolved by the integration, or raised"),
+    ("failed-outside", "#f6b26b", "failed outside the assumptions (no promise broken)"),
+    ("held-outside", "#9fc5e8", "held, some runs outside the assumptions"),
+    ("held", "#b6d7a8", "held in every run"),
+    ("none", "#eeeeee", "no run applies (n/a)"),
+)
 
 
 # ---------------------------------------------------------------- gate verdicts
@@ -96,6 +108,7 @@ def gate_verdict(human: Human) -> tuple[str, str]:
 class Table:
     header: list[str]
     rows: list[list[str]]
+    classes: list[list[str]] | None = None  # an HTML class per cell ("" for none)
 
 
 @dataclass
@@ -109,7 +122,8 @@ class Code:
     text: str
 
 
-Block = tuple[str, Any]  # ("h1" | "h2" | "p", text) or ("table" | "figure" | "code", obj)
+Block = tuple[str, Any]  # ("h1" | "h2" | "p", text), ("table" | "figure" | "code", obj)
+#                          or ("legend", [(class, meaning), ...]): what the colours mean
 
 
 #: characters that can open Markdown or HTML constructs anywhere in a line (a link or
@@ -157,13 +171,34 @@ def render_markdown(blocks: Sequence[Block]) -> str:
         elif kind == "code":
             fence = _fence(item.text)
             out += [fence, item.text.rstrip("\n"), fence, ""]
+        elif kind == "legend":
+            out += ["Colours (HTML report and figure): " + "; ".join(
+                md_text(f"{name}: {meaning}") for name, meaning in item) + ".", ""]
     return "\n".join(out).rstrip("\n") + "\n"
 
 
 #: the campaign report's own additions to the main report's style: code blocks wrap
-#: (a reproducing command is never cut off), figures fit the page, tables keep margins
+#: (a reproducing command is never cut off), figures fit the page, tables keep margins;
+#: words in tables never break inside (a table wider than the page scrolls sideways);
+#: a cell's colour is its category (:data:`CATEGORIES`)
 _CAMPAIGN_CSS = ("pre{background:#f6f6f6;padding:.6em;white-space:pre-wrap;"
-                 "overflow-wrap:anywhere}img{max-width:100%}table{margin:.6em 0 1em}")
+                 "overflow-wrap:anywhere}img{max-width:100%}table{margin:.6em 0 1em}"
+                 "div.wide{overflow-x:auto}div.wide table{width:auto;min-width:60%}"
+                 "div.wide td,div.wide th{overflow-wrap:normal;word-break:normal;"
+                 "hyphens:manual}div.wide td.path{overflow-wrap:break-word}"
+                 "div.wide td.reason{min-width:20em}"
+                 + "".join(f"td.{name}{{background:{colour}}}"
+                           for name, colour, _ in CATEGORIES)
+                 + "td.passive{color:#176a1e;font-weight:bold}"
+                 "td.not-passive{color:#b00020;font-weight:bold}"
+                 "span.key{display:inline-block;width:1em;height:1em;margin:0 .3em 0 .8em;"
+                 "vertical-align:-.15em;border:1px solid #999}")
+
+
+def _cell_html(text: str, kind: str) -> str:
+    """A cell's escaped text; a path may break after each ``/`` (and nowhere else)."""
+    escaped = html.escape(text)
+    return escaped.replace("/", "/<wbr>") if kind == "path" else escaped
 
 
 def render_html(blocks: Sequence[Block], title: str) -> str:
@@ -178,15 +213,23 @@ def render_html(blocks: Sequence[Block], title: str) -> str:
         elif kind == "p":
             out.append(f"<p>{e(item)}</p>")
         elif kind == "table":
-            out.append("<table><thead><tr>" + "".join(f"<th>{e(h)}</th>" for h in item.header)
+            out.append("<div class='wide'><table><thead><tr>"
+                       + "".join(f"<th>{e(h)}</th>" for h in item.header)
                        + "</tr></thead><tbody>")
-            out += ["<tr>" + "".join(f"<td>{e(c)}</td>" for c in row) + "</tr>"
-                    for row in item.rows]
-            out.append("</tbody></table>")
+            classes = item.classes or [[""] * len(row) for row in item.rows]
+            out += ["<tr>" + "".join(f"<td class='{e(k)}'>{_cell_html(c, k)}</td>" if k else
+                                     f"<td>{e(c)}</td>"
+                                     for c, k in zip(row, ks, strict=True)) + "</tr>"
+                    for row, ks in zip(item.rows, classes, strict=True)]
+            out.append("</tbody></table></div>")
         elif kind == "figure":
             out.append(f'<figure><img src="{e(item.path)}" alt="{e(item.alt)}"></figure>')
         elif kind == "code":
             out.append(f"<pre>{e(item.text)}</pre>")
+        elif kind == "legend":
+            out.append("<p>Colours:" + "".join(
+                f"<span class='key' style='background:{colour}'></span>{e(meaning)}"
+                for name, colour, meaning in CATEGORIES if name in dict(item)) + "</p>")
     out.append("</body></html>")
     return "\n".join(out) + "\n"
 
@@ -286,24 +329,50 @@ def _counts(pairs: Sequence[tuple[Run, dict[str, Any]]], prop: str) -> dict[str,
 
 
 def _cell_text(counts: dict[str, int], total: int) -> str:
-    """Held under the assumptions, failed, and, where an assumption failed, whether the
-    conclusion held anyway (what the system did outside the theorem)."""
+    """What the runs of a cell did: held or failed under the assumptions, and, for the
+    runs outside them (an assumption failed along the run), what the conclusion did
+    there; worded so that a conclusion that held outside the theorem reads as held."""
     if counts[NOT_APPLICABLE] == total:
         return "n/a"
-    text = f"{counts[HELD]}/{total} held"
-    notes = [f"{counts[FAILED]} FAILED"] if counts[FAILED] else []
-    if counts[ASSUMPTION]:
-        note = (f"conclusion held without the assumption in {counts[ANYWAY]} of "
-                f"{counts[ASSUMPTION]}")
-        notes.append(note + (f", FAILED in {counts[NOT_ANYWAY]}" if counts[NOT_ANYWAY]
-                             else ""))
+    outside = counts[ASSUMPTION]
+    within = counts[HELD] + counts[FAILED]
+    parts = []
+    if within or not outside:
+        text = f"held in {counts[HELD]} of {within if outside else total}"
+        if outside:
+            text += " within the assumptions"
+        if counts[FAILED]:
+            text += f", FAILED in {counts[FAILED]}"
+        parts.append(text)
+    if outside:
+        where = f"all {outside}" if outside == total else f"{outside}"
+        held, failed = counts[ANYWAY], counts[NOT_ANYWAY]
+        text = f"outside the assumptions in {where}: conclusion held in {held}"
+        if failed:
+            text += f", failed in {failed}"
+        parts.append(text)
     if counts[UNRESOLVED]:
-        notes.append(f"{counts[UNRESOLVED]} UNRESOLVED (integration)")
+        parts.append(f"{counts[UNRESOLVED]} unresolved (integration)")
     if counts["error"]:
-        notes.append(f"{counts['error']} raised")
+        parts.append(f"{counts['error']} raised")
     if counts[NOT_APPLICABLE]:
-        notes.append(f"{counts[NOT_APPLICABLE]} n/a")
-    return text + (f"; {'; '.join(notes)}" if notes else "")
+        parts.append(f"{counts[NOT_APPLICABLE]} n/a")
+    return "; ".join(parts)
+
+
+def cell_category(counts: dict[str, int], total: int) -> str:
+    """The cell's class in :data:`CATEGORIES` (its worst outcome)."""
+    if total == 0 or counts[NOT_APPLICABLE] == total:
+        return "none"
+    if counts[FAILED]:
+        return "failed"
+    if counts[UNRESOLVED] or counts["error"]:
+        return "unresolved"
+    if counts[NOT_ANYWAY]:
+        return "failed-outside"
+    if counts[ANYWAY]:
+        return "held-outside"
+    return "held"
 
 
 def convergence_summary(pairs: Sequence[tuple[Run, dict[str, Any]]]) -> tuple[
@@ -336,18 +405,22 @@ def _pyplot():
     return plt
 
 
-@functools.cache
-def _light_map():
-    """Light red to light green (dark text stays readable on every cell)."""
-    from matplotlib.colors import LinearSegmentedColormap
+def _math_label(text: str) -> str:
+    """A setting's label for a figure: ``k_s`` as math, any other ``$`` literal."""
+    return text.replace("$", r"\$").replace("k_s", "$k_s$")
 
-    return LinearSegmentedColormap.from_list("held", ["#f4c7c3", "#fdf2c4", "#cfe8d0"])
 
+#: Largest number of k_s columns whose cells are written in (beyond, colours only).
+MAX_ANNOTATED_COLUMNS = 12
 
 
 def property_figure(c: Campaign) -> bytes:
-    """One panel per checked property: the fraction of runs that held, setting x k_s."""
+    """One map per checked property, stacked: settings x k_s, each cell coloured by its
+    category (:data:`CATEGORIES`) and, when there is room, its counts written in at a
+    size readable at 100 % zoom (9 pt at 100 dpi: 12.5 px)."""
     import numpy as np
+    from matplotlib.colors import ListedColormap
+    from matplotlib.patches import Patch
 
     from verify.artefacts.figure_bytes import figure_bytes
 
@@ -355,44 +428,50 @@ def property_figure(c: Campaign) -> bytes:
     props = list(c.spec.properties)
     settings, ks = c.settings(), c.k_values()
     cells = c.cells()
-    cols = min(3, len(props))
-    rows = -(-len(props) // cols)
-    size = (2.0 + (0.8 + 0.45 * min(len(ks), 30)) * cols,
-            (0.9 + 0.5 * min(len(settings), 60)) * rows + 0.5)
-    fig, axes = plt.subplots(rows, cols, figsize=size, squeeze=False, layout="constrained")
-    for ax in axes.flat[len(props):]:
-        ax.set_visible(False)
-    annotate = len(settings) * len(ks) <= MAX_ANNOTATED  # else colours only
-    ticks = range(0, len(ks), max(1, -(-len(ks) // 30)))  # at most 30 k_s labels
-    for ax, prop in zip(axes.flat, props, strict=False):
-        grid = np.full((len(settings), len(ks)), np.nan)
+    names = [name for name, _, _ in CATEGORIES]
+    cmap = ListedColormap([colour for _, colour, _ in CATEGORIES])
+    rows_shown = min(len(settings), 60)
+    annotate = len(ks) <= MAX_ANNOTATED_COLUMNS and len(settings) <= 40
+    panel_h = 0.55 * rows_shown + 0.75
+    fig, axes = plt.subplots(len(props), 1, figsize=(9.2, panel_h * len(props) + 1.0),
+                             squeeze=False, layout="constrained")
+    ticks = range(0, len(ks), max(1, -(-len(ks) // 20)))  # at most 20 k_s labels
+    used: set[str] = set()
+    for ax, prop in zip(axes[:, 0], props, strict=True):
+        grid = np.zeros((len(settings), len(ks)))
         for i, s in enumerate(settings):
             for j, k in enumerate(ks):
                 pairs = cells.get((s, k), [])
                 counts = _counts(pairs, prop)
-                judged = counts[HELD] + counts[FAILED] + counts[ANYWAY] + counts[NOT_ANYWAY]
-                if judged:  # colour: the conclusion, with or without the assumptions
-                    grid[i, j] = (counts[HELD] + counts[ANYWAY]) / judged
-                if not annotate:
+                category = cell_category(counts, len(pairs))
+                used.add(category)
+                grid[i, j] = names.index(category)
+                if not annotate or category == "none":
                     continue
-                label = "n/a" if not pairs else f"{counts[HELD]}/{len(pairs)}"
+                judged = counts[HELD] + counts[FAILED] + counts[ANYWAY] + counts[NOT_ANYWAY]
+                label = f"{counts[HELD] + counts[ANYWAY]}/{judged}"
                 if counts[ASSUMPTION]:
-                    label += f"\n+{counts[ANYWAY]}/{counts[ASSUMPTION]} w/o"
-                if counts[UNRESOLVED]:
-                    label += f"\n{counts[UNRESOLVED]} unres."
-                ax.text(j, i, label, ha="center", va="center", fontsize=6)
-        cmap = _light_map().with_extremes(bad="#eeeeee")
-        ax.imshow(np.ma.masked_invalid(grid), cmap=cmap, vmin=0, vmax=1, aspect="auto")
-        ax.set_xticks(list(ticks), [f"{ks[j]:g}" for j in ticks], fontsize=7)
-        first = ax in axes[:, 0]
-        ax.set_yticks(range(len(settings)), settings if first else [""] * len(settings),
-                      fontsize=7)
-        ax.set_xlabel("k_s", fontsize=8)
-        ax.set_title(prop, fontsize=9)
-    fig.suptitle("held / runs; +a/b w/o: an assumption failed in b runs and the conclusion "
-                 "held anyway in a; colour: runs whose conclusion held; grey: none resolved",
-                 fontsize=7)
-    return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
+                    label += f" ({counts[ASSUMPTION]} outside)"
+                if counts[UNRESOLVED] or counts["error"]:
+                    label += f"\n{counts[UNRESOLVED] + counts['error']} unresolved"
+                ax.text(j, i, label, ha="center", va="center", fontsize=9)
+        ax.imshow(grid, cmap=cmap, vmin=-0.5, vmax=len(names) - 0.5, aspect="auto",
+                  interpolation="nearest")
+        ax.set_xticks(list(ticks), [f"{ks[j]:g}" for j in ticks], fontsize=9)
+        ax.set_yticks(range(len(settings)), [_math_label(s) for s in settings], fontsize=9)
+        ax.set_xticks(np.arange(len(ks) + 1) - 0.5, minor=True)
+        ax.set_yticks(np.arange(len(settings) + 1) - 0.5, minor=True)
+        ax.grid(which="minor", color="white", lw=2)
+        ax.tick_params(which="minor", length=0)
+        ax.set_xlabel(r"$k_s$", fontsize=10)
+        ax.set_title(PROPERTY_TITLE[prop], fontsize=10, loc="left")
+    handles = [Patch(facecolor=colour, edgecolor="0.6", label=meaning)
+               for name, colour, meaning in CATEGORIES if name in used]
+    fig.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=9,
+               frameon=False)
+    fig.suptitle("Conclusion held / runs judged per cell (outside: runs where an "
+                 "assumption failed)", fontsize=10)
+    return figure_bytes(fig, "png", dpi=100)
 
 
 def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
@@ -401,7 +480,7 @@ def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
 
     plt = _pyplot()
     cells = c.cells()
-    fig, ax = plt.subplots(figsize=(6.4, 3.8))
+    fig, ax = plt.subplots(figsize=(6.2, 4.2))  # with the legend beside: under 9.2 in
     highest = [max(times) for pairs in cells.values()
                for times in [convergence_summary(pairs)[0]] if times]
     top = 1.12 * max(highest) if highest else max(r.seconds for r in c.runs)
@@ -418,16 +497,21 @@ def convergence_figure(c: Campaign, gates: dict[str, str]) -> bytes:
                 miss.append(k)
         color = f"C{i % 10}"
         ax.errorbar(xs, med, yerr=[lo, hi], color=color, marker="o", capsize=3,
-                    label=f"{s} [{gates.get(s, '')}]")
+                    label=_math_label(f"{s} [{gates.get(s, '')}]"))
         if miss:
-            ax.plot(miss, [top * (1.0 + 0.02 * i)] * len(miss), "x", color=color)
+            ax.plot(miss, [top * (1.0 + 0.02 * i)] * len(miss), "x", color=color, ms=8)
     ax.axhline(top, color="0.6", lw=0.5, ls="--")
     ax.set_ylim(0.0, top * (1.06 + 0.02 * len(c.settings())))  # fitted to the data
-    ax.set_xlabel("k_s")
-    ax.set_ylabel("convergence time [s]")
-    ax.set_title(f"|dbar - d_r| < {c.spec.convergence_threshold:g} from then on "
-                 "(x above the dashed line: not converged by T)", fontsize=9)
-    ax.legend(fontsize=7)
+    if len(c.k_values()) <= 12:
+        ax.set_xticks(c.k_values(), [f"{k:g}" for k in c.k_values()])
+    ax.set_xlabel(r"$k_s$", fontsize=10)
+    ax.set_ylabel("convergence time [s]", fontsize=10)
+    ax.tick_params(labelsize=9)
+    ax.grid(True, alpha=0.3)
+    ax.set_title(r"$\Vert \bar d - d_r \Vert$" + f" < {c.spec.convergence_threshold:g} from "
+                 "then on: median and range over seeds\n(× above the dashed line: not "
+                 "converged by T)", fontsize=10)
+    ax.legend(fontsize=9, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     return figure_bytes(fig, "png", dpi=100, bbox_inches="tight")
 
 
@@ -477,33 +561,51 @@ def build_blocks(c: Campaign, *, cwd: Path | None = None
         short = reason if len(reason) <= 160 else reason[:157] + "..."
         human_rows.append([h.label, _human_path(h, cwd), h.sha256[:12] or "-", verdict, short])
         gates[h.label] = verdict
+    gate_class = {"passive": "passive", "not passive": "not-passive"}
     blocks += [("h2", "Humans and their passivity verdicts"),
                ("p", "Theorem 1 assumes a passive human (Assumption 1, item 5); the verdict "
                 "is the exact gate's (verify gate) on the model file as written."),
-               ("table", Table(["human", "file", "sha256", "gate", "reason"], human_rows))]
+               ("table", Table(["human", "file", "sha256", "gate", "reason"], human_rows,
+                               [["", "path", "", gate_class.get(row[3], ""), "reason"]
+                                for row in human_rows]))]
 
     settings, ks, cells = c.settings(), c.k_values(), c.cells()
     gate_of = {s: gates.get(r.human.label, "") for r, s in zip(c.runs, c._setting_of,
                                                                strict=True)}
     header = ["setting [gate]", *[f"k_s = {k:g}" for k in ks]]
     blocks.append(("h2", "Properties over the swept parameters"))
-    if c.axes:
-        blocks.append(("p", f"Settings differ in the human and in {', '.join(c.axes)}; each "
-                       "cell counts the runs over seeds."))
+    blocks.append(("p", "Each cell counts the runs over seeds"
+                   + (f" (settings differ in the human and in {', '.join(c.axes)})"
+                      if c.axes else "")
+                   + ". Outside the assumptions: an assumption of the claim failed along "
+                   "the run (for Theorem 1, a human with no passivity certificate, "
+                   "sym R_rl ≻ 0 lost, or a switching reference), so the paper promises "
+                   "nothing there; the conclusion was checked all the same."))
+    used: set[str] = set()
     for prop in spec.properties:
-        rows = [[f"{s} [{gate_of[s]}]", *[_cell_text(_counts(cells.get((s, k), []), prop),
-                                                    len(cells.get((s, k), [])))
-                                         if cells.get((s, k)) else "-" for k in ks]]
-                for s in settings]
-        blocks += [("p", PROPERTY_TITLE[prop]), ("table", Table(header, rows))]
+        rows, classes = [], []
+        for s in settings:
+            row, kinds = [f"{s} [{gate_of[s]}]"], [""]
+            for k in ks:
+                pairs = cells.get((s, k), [])
+                counts = _counts(pairs, prop)
+                row.append(_cell_text(counts, len(pairs)) if pairs else "-")
+                kinds.append(cell_category(counts, len(pairs)))
+            used.update(kinds[1:])
+            rows.append(row)
+            classes.append(kinds)
+        blocks += [("p", PROPERTY_TITLE[prop]), ("table", Table(header, rows, classes))]
+    if spec.properties:
+        blocks.append(("legend", [(name, meaning) for name, _, meaning in CATEGORIES
+                                  if name in used]))
     blocks += findings_blocks(c, gate_of)
     figures: dict[str, bytes] = {}
     if spec.properties and stored:
         figures["figures/properties.png"] = property_figure(c)
         blocks.append(("figure", Figure("figures/properties.png", "property map")))
 
-    blocks.append(("h2", "Convergence time of |dbar - d_r|"))
-    blocks.append(("p", "The first sample time after which |dbar - d_r| stays below "
+    blocks.append(("h2", "Convergence time of ‖d̄ − d_r‖"))
+    blocks.append(("p", "The first sample time after which ‖d̄ − d_r‖ stays below "
                    f"{spec.convergence_threshold:g} until the end of the run; median "
                    "[min, max] over the runs of a cell that converged."))
     rows = [[f"{s} [{gate_of[s]}]", *[_convergence_text(cells[(s, k)]) if cells.get((s, k))
@@ -575,6 +677,11 @@ def engine_counts(c: Campaign) -> dict[str, int]:
     return dict(sorted(counts.items()))
 
 
+def _at(count: int, ks: list[str]) -> str:
+    """``3, at k_s = 2, 3`` or ``none``."""
+    return "none" if not count else f"{count}, at k_s = {', '.join(ks)}"
+
+
 def findings_blocks(c: Campaign, gate_of: dict[str, str]) -> list[Block]:
     """Where a conclusion held although an assumption failed (and where it failed)."""
     cells = c.cells()
@@ -593,8 +700,7 @@ def findings_blocks(c: Campaign, gate_of: dict[str, str]) -> list[Block]:
                     ks_not.append(f"{k:g}")
             if counts[ASSUMPTION]:
                 rows.append([prop, f"{s} [{gate_of[s]}]", str(counts[ASSUMPTION]),
-                             f"{counts[ANYWAY]} (k_s {', '.join(ks_anyway) or '-'})",
-                             f"{counts[NOT_ANYWAY]} (k_s {', '.join(ks_not) or '-'})"])
+                             _at(counts[ANYWAY], ks_anyway), _at(counts[NOT_ANYWAY], ks_not)])
     engines = engine_counts(c)
     out: list[Block] = [("h2", "What held outside the assumptions")]
     out.append(("p", "Runs whose assumption failed along the trajectory (for Theorem 1: "
@@ -604,9 +710,12 @@ def findings_blocks(c: Campaign, gate_of: dict[str, str]) -> list[Block]:
                 "stored runs: " + (", ".join(f"{k} {v}" for k, v in engines.items()) or "-")
                 + "."))
     if rows:
-        out.append(("table", Table(["property", "setting [gate]", "assumption failed",
-                                    "conclusion held without the assumption",
-                                    "conclusion failed"], rows)))
+        out.append(("table", Table(["property", "setting [gate]",
+                                    "runs outside the assumptions",
+                                    "conclusion held there", "conclusion failed there"], rows,
+                                   [["", "", "", "held-outside" if r[3] != "none" else "",
+                                     "failed-outside" if r[4] != "none" else ""]
+                                    for r in rows])))
     else:
         out.append(("p", "No run had an assumption fail."))
     return out

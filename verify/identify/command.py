@@ -27,7 +27,7 @@ import json
 import math
 import tempfile
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from pathlib import Path
@@ -52,6 +52,7 @@ from verify.identify.robust import band_certificate as rc
 from verify.identify.robust.verdict import BandSearch, RobustResult, largest_band, robust_verdict
 from verify.inputs.numbers import parse_number
 from verify.passivity.decision import INCONCLUSIVE
+from verify.progress import Stages, silent
 
 LEVEL = Fraction(19, 20)
 MODEL_FILE = "model.toml"
@@ -74,6 +75,7 @@ class IdentifySettings:
     junit: Path | None = None
     name: str | None = None
     max_boxes: int = 40_000
+    progress: bool = False  # stage lines on stderr even when it is not a terminal
 
 
 @dataclass(frozen=True)
@@ -226,9 +228,9 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
     return tuple(out)
 
 
-def identify_logs(plan: Plan) -> Identified:
+def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identified:
     """Logs -> prepared trials -> estimate, honest fits and the identifiability gate
-    (steps 1 and 2)."""
+    (steps 1 and 2); ``stage`` is told each step as it starts (progress lines)."""
     from verify.identify.data.protocol import MIN_FILTER_SAMPLES, prepare
     from verify.identify.estimate.estimation import estimate_model
     from verify.identify.estimate.result import CannotIdentifyError
@@ -237,6 +239,7 @@ def identify_logs(plan: Plan) -> Identified:
     from verify.identify.quality.model_class import model_class_test
     from verify.inputs.experiment_log import read_logs
 
+    stage(f"reading {len(plan.logs)} log(s) and preparing the trials")
     log = read_logs(plan.logs, min_samples=MIN_FILTER_SAMPLES)  # shorter: one line, exit 2
     _check_split(plan.split, len(log.trials))
     _check_lengths(log, plan.rate)
@@ -250,10 +253,15 @@ def identify_logs(plan: Plan) -> Identified:
         gate = identifiability.Identifiability(False, tuple(more), figures)
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     try:
+        st = plan.structure
+        shape = {"paper": "the paper's structure", "order": f"order {st.states}"}.get(
+            st.kind, f"structure {st.poles}:{st.zeros}")
+        stage(f"estimating the model ({shape}) from {len(ids)} trial(s)")
         estimate = estimate_model(prepared.identification, plan.structure)
     except CannotIdentifyError as exc:
         gate = identifiability.Identifiability(False, (str(exc),), figures)
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
+    stage(f"simulating the fits on {len(ids)} + {len(vals)} trial(s)")
     y_id, y_val = honest_fits(estimate, prepared.identification, prepared.validation)
     on_id = assess(estimate, prepared.identification, yhat=y_id)
     on_val = assess(estimate, prepared.validation, yhat=y_val)
@@ -261,10 +269,15 @@ def identify_logs(plan: Plan) -> Identified:
         [float(x) for x in on_id.fit], [float(x) for x in on_val.fit], residual_tests(on_val),
         [np.asarray(t.t) for t in prepared.validation],
         [np.asarray(t.u) for t in prepared.validation], list(y_val))
+    stage("checking identifiability")
     gate = identifiability.check(estimate, quality.fit_validation, joined,
                                  1.0 / prepared.rate)
+    if gate.identifiable:
+        stage("fitting the best passive model of the class (passivity test)")
     passivity = (_passivity(estimate, prepared.identification) if gate.identifiable
                  else None)
+    if gate.identifiable:
+        stage("testing the model class against a larger one")
     model_class = (model_class_test(estimate, prepared.identification) if gate.identifiable
                    else None)
     return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes, gate,
@@ -356,7 +369,8 @@ def _nominal(model, band, certs_dir: Path):
     return result
 
 
-def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7) -> Outcome:
+def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7,
+                      stage: Callable[[str], None] = silent) -> Outcome:
     """Steps 3 to 6, in a temporary directory; returns the files to write.
 
     ``band_steps`` bounds the bisection for the largest proved band. Only for data the
@@ -402,6 +416,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
         except VerifyInputError as exc:  # e.g. a singular covariance: no ellipsoid
             region, no_region = None, str(exc).removeprefix(f"{tmp_model}: ")
         certs = Path(tmp) / "certificates"
+        stage("deciding the nominal model's passivity exactly")
         nominal = _nominal(model, plan.band, certs)
         nominal_cert = None
         if nominal.certificate_path is not None:
@@ -414,10 +429,12 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
                               f"over: {no_region}")
         search = BandSearch(w1, None, None)
     else:
+        stage("deciding passivity over the whole confidence region (interval boxes)")
         robust = robust_verdict(region, est.structure, plan.band, name=plan.name,
                                 source=source, nominal=nominal.decision,
                                 max_boxes=plan.max_boxes)
         nyquist = math.pi * float(identified.rate)
+        stage(f"searching the largest band proved passive ({band_steps} bisection steps)")
         search = largest_band(region, est.structure, w1, nyquist, name=plan.name,
                               source=source, steps=band_steps,
                               max_boxes=max(1000, plan.max_boxes // 4))
@@ -429,6 +446,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
                 rc.dumps(cert)
     files.update(robust.files(plan.out))
     files.update(_passive_files(plan, identified))
+    stage("drawing the figures")
     files.update(_figures(plan, identified, region, search))
     return Outcome(plan, identified, model_path, ident, nominal, nominal_cert, robust,
                    search, files, _high_frequency_note(est.structure, ident.center),
@@ -782,7 +800,8 @@ def run_identify(settings: IdentifySettings) -> int:
     input (exit 2, nothing written)."""
     start = time.perf_counter()
     plan = validate(settings)
-    identified = identify_logs(plan)
+    stage = Stages.for_command("verify identify", forced=settings.progress)
+    identified = identify_logs(plan, stage)
     if not identified.identifiable:
         write_refusal(plan, identified)
         for line in refusal_lines(plan, identified):
@@ -790,7 +809,8 @@ def run_identify(settings: IdentifySettings) -> int:
         print(f"FAIL: cannot identify ({time.perf_counter() - start:.1f} s); nothing "
               f"certified, reasons in {plan.out / REFUSAL_FILE}")
         return 1
-    outcome = decide_identified(plan, identified)
+    outcome = decide_identified(plan, identified, stage=stage)
+    stage(f"writing the files to {plan.out}")
     write(outcome)
     for line in lines(outcome):
         print(line, flush=True)

@@ -1,16 +1,26 @@
 """Passivity of LTI human models H(s), decided exactly (paper, Section 4).
 
-In: a human model, an :class:`LTIModel` built from a TOML model file
-(:func:`load_model`), from exact or floating-point matrices
-(:func:`from_state_space`, :func:`from_transfer_function`), or from a python-control or
-scipy.signal object (:func:`from_python`); every number is kept as the exact rational
-it denotes. Out: a :class:`Decision` from :func:`decide` (the whole frequency axis,
-optionally with a margin nu0) or a band decision from :func:`decide_band` (nu(w) >= 0
-on [w1, w2] only), whose verdict is :data:`PASSIVE`, :data:`NOT_PASSIVE` or
-:data:`INCONCLUSIVE` (members of :class:`GateVerdict`) with its reason; a passive
-verdict carries a certificate and a not-passive verdict a witness, both checked in
-exact arithmetic. Each certificate kind's exact checker lives here (in ``check`` and
-``io``); a stored file of any kind is re-checked by
+The public face (:mod:`.api`) takes a model in any form a control engineer holds it: a
+python-control or scipy.signal object, ``(A, B, C, D)`` or ``(num, den)`` as NumPy
+arrays or lists, a static gain, a model file's path (:func:`load_model`), or an
+:class:`LTIModel` (:func:`as_model`; also :func:`from_python`,
+:func:`from_state_space`, :func:`from_transfer_function`). Every number is kept as the
+exact rational it denotes. Out:
+
+* :func:`decide`: a :class:`Decision` on the whole frequency axis (optionally with a
+  margin nu0), and :func:`decide_band`: a :class:`BandDecision` on nu(w) >= nu0 for
+  w in [w1, w2] only; the verdict is :data:`PASSIVE`, :data:`NOT_PASSIVE` or
+  :data:`INCONCLUSIVE` (members of :class:`GateVerdict`) with its reason; a passive
+  verdict carries a certificate and a not-passive verdict a witness, both checked in
+  exact arithmetic;
+* :func:`nu` and :func:`relative_index`: the curves nu(w) = lambda_min(H(jw) +
+  H(jw)^H)/2 and R(w) = sigma_max((I - H)(I + H)^-1) in floating point (to look at);
+* :func:`passivity_indices`, :func:`ifp_index`, :func:`ofp_index`: nu_IFP and rho_OFP
+  as :class:`IndexBounds` (numerical estimate, exact lower and upper bounds).
+
+Any bad argument is one :class:`~verify.errors.VerifyInputError` with a one-line
+message. Each certificate kind's exact checker lives here (in ``check`` and ``io``); a
+stored file of any kind is re-checked by
 :func:`verify.certificates.check_stored_certificate`.
 
 Where the code lives, by what a verdict rests on:
@@ -27,7 +37,7 @@ Where the code lives, by what a verdict rests on:
 * :mod:`verify.passivity.io`: model files in, certificate JSON out and back in (strict
   parsing, the tie of a certificate to its model file).
 * Top level: the model type (:mod:`.model`, :mod:`.rational`), the decisions that drive
-  search and check (:mod:`.verdicts`, :mod:`.decision`, :mod:`.fd_decision`,
+  search and check (:mod:`.api`, :mod:`.verdicts`, :mod:`.decision`, :mod:`.fd_decision`,
   :mod:`.rescaled`, :mod:`.band`, :mod:`.indices`) and the ``verify gate`` command (:mod:`.gate`).
 
 The names below are loaded on first use, so importing one submodule does not import the
@@ -40,8 +50,19 @@ from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from verify.passivity.band import BandDecision, decide_band
-    from verify.passivity.decision import Decision, decide
+    from verify.passivity.api import (
+        as_model,
+        decide,
+        decide_band,
+        ifp_index,
+        nu,
+        ofp_index,
+        passivity_indices,
+        relative_index,
+    )
+    from verify.passivity.band import BandDecision
+    from verify.passivity.decision import Decision
+    from verify.passivity.indices import IndexBounds
     from verify.passivity.io.model_file import load_model
     from verify.passivity.model import (
         LTIModel,
@@ -65,13 +86,20 @@ __all__ = [
     "BandDecision",
     "Decision",
     "GateVerdict",
+    "IndexBounds",
     "LTIModel",
+    "as_model",
     "decide",
     "decide_band",
     "from_python",
     "from_state_space",
     "from_transfer_function",
+    "ifp_index",
     "load_model",
+    "nu",
+    "ofp_index",
+    "passivity_indices",
+    "relative_index",
 ]
 
 _HOME = {
@@ -83,8 +111,15 @@ _HOME = {
     "Decision": "verify.passivity.decision",
     "GateVerdict": "verify.passivity.verdicts",
     "LTIModel": "verify.passivity.model",
-    "decide": "verify.passivity.decision",
-    "decide_band": "verify.passivity.band",
+    "IndexBounds": "verify.passivity.indices",
+    "as_model": "verify.passivity.api",
+    "decide": "verify.passivity.api",
+    "decide_band": "verify.passivity.api",
+    "ifp_index": "verify.passivity.api",
+    "nu": "verify.passivity.api",
+    "ofp_index": "verify.passivity.api",
+    "passivity_indices": "verify.passivity.api",
+    "relative_index": "verify.passivity.api",
     "from_python": "verify.passivity.model",
     "from_state_space": "verify.passivity.model",
     "from_transfer_function": "verify.passivity.model",

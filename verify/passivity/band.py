@@ -71,12 +71,17 @@ def parse_band(text: str) -> tuple[Fraction, Fraction]:
     if len(parts) != 2:
         raise VerifyInputError(f"--band {text!r}: expected W1:W2, e.g. 0:1.5 (rad/s)")
     w1, w2 = (parse_number(part, f"--band {text!r}:", "--band 0:1.5") for part in parts)
+    return check_band(w1, w2, f"--band {text!r}")
+
+
+def check_band(w1: Fraction, w2: Fraction, where: str) -> tuple[Fraction, Fraction]:
+    """(w1, w2) if 0 <= w1 < w2 <= 1e12 rad/s; one-line VerifyInputError naming ``where``."""
     if max(abs(w1), abs(w2)) > 10**12:
-        raise VerifyInputError(f"--band {text!r}: frequencies above 1e12 rad/s are not supported")
+        raise VerifyInputError(f"{where}: frequencies above 1e12 rad/s are not supported")
     if w1 < 0:
-        raise VerifyInputError(f"--band {text!r}: frequencies must be >= 0 rad/s")
+        raise VerifyInputError(f"{where}: frequencies must be >= 0 rad/s")
     if w1 >= w2:
-        raise VerifyInputError(f"--band {text!r}: need W1 < W2")
+        raise VerifyInputError(f"{where}: need W1 < W2")
     return w1, w2
 
 
@@ -236,4 +241,4 @@ def _exact(model: LTIModel, em: ExactModel, band: tuple[Fraction, Fraction],
                 nu_min=nu_min)
 
 
-__all__ = ["BandDecision", "band_witness", "decide_band", "parse_band"]
+__all__ = ["BandDecision", "band_witness", "check_band", "decide_band", "parse_band"]

@@ -25,6 +25,7 @@ rational).
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import partial
@@ -54,6 +55,7 @@ from verify.passivity.verdicts import (
     PASSIVE,
     GateVerdict,
 )
+from verify.progress import silent
 
 if TYPE_CHECKING:
     from verify.passivity.check.fd_certificate import PrCertificate
@@ -210,7 +212,8 @@ def realisation_note(part: MinimalPart) -> str:
     return text
 
 
-def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
+def decide(model: LTIModel, margin: Fraction = Fraction(0), *,
+           stage: Callable[[str], None] = silent) -> Decision:
     """Verdict for passivity of H (or of H - margin I when a margin is asked for).
 
     The exact model is ``model.exact`` reduced to its exact minimal part (the transfer
@@ -222,6 +225,8 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         The human model H(s) = C (sI - A)^-1 B + D, with its exact rational data.
     margin : Fraction, default 0
         nu0 in nu(w) >= nu0 for every w, decided exactly as passivity of H - nu0 I.
+    stage : callable, optional
+        Told each route as it starts (progress lines of ``verify gate``).
 
     Returns
     -------
@@ -238,6 +243,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     Prentice-Hall 1973, Ch. 5; H. K. Khalil, *Nonlinear Systems*, 3rd ed., Lemma 6.2.
     """
     start = time.perf_counter()
+    stage(f"{model.name}: exact minimal realisation")
     part = minimal_part(model.exact)
     note = realisation_note(part)
     em = shifted(part.model, margin)
@@ -254,7 +260,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
         return done(NOT_PASSIVE, w.summary, witness=w)
     rescaled = rescale(part.model, margin)  # far from 1: decide H(beta s)/alpha instead
     if rescaled is not None:
-        inner = decide(rescaled.model, margin / rescaled.alpha)
+        inner = decide(rescaled.model, margin / rescaled.alpha, stage=stage)
         out = restore(inner, rescaled, model, em, margin)
         out.reason += note if note not in out.reason else ""
         out.note = note.lstrip("; ")
@@ -264,6 +270,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     # between the SDP's limit and the complete route's, a frugal search (the exact route
     # follows): no costly exact check of a candidate that floating point already rejects
     frugal = SDP_STATE_LIMIT < em.n <= FREQUENCY_DOMAIN_LIMIT
+    stage(f"{model.name}: searching a KYP certificate ({em.n} states)")
     search = propose(partial(find_certificate, frugal=True) if frugal else find_certificate,
                      em, A, B, C, D)
     if search is not None and search.P is not None:
@@ -275,6 +282,7 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
                     certificate=cert)
     search_reason = "the floating-point search failed on this data" if search is None \
         else search.reason
+    stage(f"{model.name}: searching a witness (real axis, then frequencies)")
     w = propose(real_axis_witness, em)  # O(n^2) exact work
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w)
@@ -295,6 +303,8 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     if em.n <= FREQUENCY_DOMAIN_LIMIT:  # complete and exact: never inconclusive
         from verify.passivity.fd_decision import decide_positive_real
 
+        stage(f"{model.name}: the complete exact frequency-domain decision (about a minute "
+              "at 120 states)")
         verdict, reason, cert, w = decide_positive_real(
             em, model.name, model.source, {"margin": str(margin)})
         return done(verdict, reason, certificate=cert, witness=w, nu_min=best)

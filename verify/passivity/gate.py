@@ -11,6 +11,7 @@ it runs; a JSON summary and a JUnit XML file (one test case per model) are optio
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
@@ -33,6 +34,7 @@ from verify.passivity.io.binding import (
 )
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
+from verify.progress import silent
 
 
 def parse_margin(text: str) -> Fraction:
@@ -110,17 +112,28 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
 
 
 def run_gate(models, margin: Fraction, certificates_dir: Path,
-             tolerance: Fraction = Fraction(0)) -> list[GateResult]:
+             tolerance: Fraction = Fraction(0),
+             stage: Callable[[str], None] = silent) -> list[GateResult]:
     """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
     pass as *passive within tolerance* (:mod:`verify.passivity.search.tolerance`), and then the
-    certificate written is the perturbed model's (it names that model exactly)."""
+    certificate written is the perturbed model's (it names that model exactly). ``stage``
+    is told which model is being decided (progress lines)."""
     with unlimited_int_text():  # exact numbers of any size from here (inputs validated)
-        return [_gate_one(model, margin, certificates_dir, tolerance) for model in models]
+        results = []
+        for k, model in enumerate(models):
+            stage(_deciding(k, len(models), model))
+            results.append(_gate_one(model, margin, certificates_dir, tolerance, stage))
+        return results
+
+
+def _deciding(k: int, count: int, model) -> str:
+    return f"deciding model {k + 1} of {count}: {model.name} ({model.n} states, {model.m} " \
+        "port(s))"
 
 
 def _gate_one(model, margin: Fraction, certificates_dir: Path,
-              tolerance: Fraction) -> GateResult:
-    d = decide(model, margin)
+              tolerance: Fraction, stage: Callable[[str], None] = silent) -> GateResult:
+    d = decide(model, margin, stage=stage)
     if tolerance:
         d = within_tolerance(model, tolerance, margin, d)
     path, kept = None, False
@@ -143,14 +156,16 @@ def _gate_one(model, margin: Fraction, certificates_dir: Path,
 
 
 def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
-                  certificates_dir: Path, *, exact_first: bool = True) -> list[GateResult]:
+                  certificates_dir: Path, *, exact_first: bool = True,
+                  stage: Callable[[str], None] = silent) -> list[GateResult]:
     """The gate on a finite band: exact band or generalized KYP certificates (written), or
     witnesses (``exact_first``: see :func:`verify.passivity.band.decide_band`)."""
     from verify.passivity.band import decide_band
     from verify.passivity.check.band_fd import BandFdCertificate
 
     results = []
-    for model in models:
+    for k, model in enumerate(models):
+        stage(_deciding(k, len(models), model))
         with unlimited_int_text():
             d = decide_band(model, band, margin, exact_first=exact_first)
             if isinstance(d.certificate, BandFdCertificate):  # the exact band route
@@ -176,12 +191,13 @@ def _band_one(d, model, band: tuple[Fraction, Fraction], margin: Fraction,
     return GateResult(d, path, kept=path is not None and kept)
 
 
-def add_indices(results: list[GateResult]) -> None:
+def add_indices(results: list[GateResult], stage: Callable[[str], None] = silent) -> None:
     """Attach the passivity indices nu_IFP and rho_OFP (estimates and exact bounds)."""
     from verify.passivity.indices import indices
 
     with unlimited_int_text():
         for r in results:
+            stage(f"passivity indices of {r.decision.model.name}")
             r.indices = indices(r.decision.model)
 
 

@@ -67,24 +67,55 @@ class IndexBounds:
     upper_at: str | None = None  # what witnesses the upper bound (a rational w*, ...)
     certificate: ex.RationalMatrix | None = None  # P proving the lower bound
     notes: tuple[str, ...] = field(default_factory=tuple)
+    #: the lowest value the search tried, when the upper bound is that value: then the
+    #: index is at most it, and nothing below it was looked at
+    search_floor: Fraction | None = None
 
     @property
     def exact(self) -> bool:
         return self.lower is not None and self.lower == self.upper
 
+    @property
+    def symbol(self) -> str:
+        return "ν_IFP" if self.kind == "IFP" else "ρ_OFP"
+
     def summary(self) -> str:
-        name = "ν_IFP" if self.kind == "IFP" else "ρ_OFP"
+        """What is known of the index, in one line: exact facts first, then the estimate.
+
+        A search limit is never shown as a bound: when the only upper bound is the
+        lowest value the search tried, the line says the index is at most that value
+        and that nothing lower was tried.
+        """
+        name = self.symbol
+        var = "ν" if self.kind == "IFP" else "ρ"
+        if self.exact:
+            return (f"{name} = {self.lower} exactly (KYP certificate for {self.lower}; "
+                    f"exact witness: {self.upper_at})" + self._notes())
         if self.estimate is None:
             est = "no numerical estimate"
         else:
             where = ("ω → ∞" if self.estimate_at is not None and math.isinf(self.estimate_at)
                      else "" if self.estimate_at is None else f"ω ≈ {self.estimate_at:.4g}")
             est = f"≈ {self.estimate:.6g} (numerical{', at ' + where if where else ''})"
-        lo = "none certified" if self.lower is None else f"{self.lower} (exact KYP certificate)"
-        up = "none" if self.upper is None else f"{self.upper} (exact witness: {self.upper_at})"
-        head = f"{name} = {self.lower} exactly" if self.exact else f"{name} {est}"
-        notes = "".join(f"; {note}" for note in self.notes)
-        return f"{head}; lower bound {lo}; upper bound {up}{notes}"
+        if self.lower is not None and self.upper is not None:
+            known = (f"exactly {self.lower} ≤ {name} ≤ {self.upper} (lower: KYP "
+                     f"certificate; upper: exact witness, {self.upper_at})")
+        elif self.lower is not None:
+            known = f"{name} ≥ {self.lower} exactly (KYP certificate); no upper bound found"
+        elif self.upper is not None and self.search_floor is not None:
+            known = (f"exactly, {self.symbol} ≤ {self.upper} ({self.upper_at}); the search "
+                     f"tried no {var} below {self.search_floor}, so {name} may be lower "
+                     f"still, or no {var} may work at all")
+        elif self.upper is not None:
+            known = (f"{name} ≤ {self.upper} exactly (exact witness: {self.upper_at}); "
+                     "no certified lower bound")
+        else:
+            known = "no exact bound found"
+        head = f"{name} {est}" if self.estimate is not None else f"{name}: {est}"
+        return f"{head}; {known}" + self._notes()
+
+    def _notes(self) -> str:
+        return "".join(f"; {note}" for note in self.notes)
 
     def to_json(self) -> dict:
         return {
@@ -98,6 +129,7 @@ class IndexBounds:
             "certificate_P": None if self.certificate is None else ex.to_strings(
                 self.certificate),
             "notes": list(self.notes),
+            "search_floor": None if self.search_floor is None else str(self.search_floor),
         }
 
 
@@ -292,6 +324,11 @@ def loop_transform(em: ExactModel, rho: Fraction) -> ExactModel | None:
     return ExactModel(A, ex.matmul(em.B, E2), ex.matmul(E, em.C), ex.matmul(E, em.D))
 
 
+#: The SDP's range for rho, [-OFP_RANGE, OFP_RANGE]: an estimate at its top end is the
+#: range's end, not an estimate of rho_OFP (which may be larger, up to +infinity).
+OFP_RANGE = 1e6
+
+
 def ofp_estimate(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray) -> float | None:
     """max rho with P >= 0 and M(P) + 2 rho [C D]^T [C D] <= 0 (cvxpy + Clarabel); untrusted."""
     n = A.shape[0]
@@ -304,7 +341,7 @@ def ofp_estimate(A: np.ndarray, B: np.ndarray, C: np.ndarray, D: np.ndarray) -> 
     else:
         M, cons = -(D + D.T), []
     lhs = M + 2 * rho * (CD.T @ CD)
-    cons += [(lhs + lhs.T) / 2 << 0, rho <= 1e6, rho >= -1e6]
+    cons += [(lhs + lhs.T) / 2 << 0, rho <= OFP_RANGE, rho >= -OFP_RANGE]
     prob = cp.Problem(cp.Maximize(rho), cons)
     try:
         with warnings.catch_warnings():
@@ -395,7 +432,7 @@ def unstable_loop(em: ExactModel, upper: Fraction | None) -> tuple[Fraction, str
         found = None if loop is None else pole_witness(loop)
         if found is not None and found.kind == "unstable-pole":
             return Fraction(rho0), f"the loop u = {rho0}·y has a pole in Re s > 0 (exact " \
-                f"root isolation), so OFP(ρ) fails for every ρ >= {rho0}"
+                f"root isolation), so OFP(ρ) fails for every ρ ≥ {rho0}"
     return None
 
 
@@ -417,9 +454,13 @@ def ofp_index(model: LTIModel) -> IndexBounds:
                 break
         else:
             notes.append("no certificate for OFP(ρ) below the estimate")
+        if estimate >= OFP_RANGE * (1 - 1e-6):  # the SDP stopped at its range's end
+            notes.append("the SDP reached the top of its range (ρ = 10⁶), so ρ_OFP may be "
+                         "larger, up to +∞")
+            estimate = None
     else:
-        notes.append("the SDP found no feasible ρ >= -1e6 (with a storage P > 0, OFP(ρ) "
-                     "needs the loop u = ρ y to be stable)")
+        notes.append("the SDP found no feasible ρ in its range [-10⁶, 10⁶] (with a storage "
+                     "P > 0, OFP(ρ) needs the loop u = ρ y to be stable)")
     omega = propose(_ofp_witness_frequency, model, default=math.inf)
     upper, best = None, None
     for w in [None, *_frequencies(omega)]:
@@ -428,17 +469,19 @@ def ofp_index(model: LTIModel) -> IndexBounds:
             upper, best = bound, w
     upper = None if upper is None else round_up(upper)
     upper_at = _canonical_point(model, em, best, upper, _ofp_rayleigh)
+    floor = None
     if lower is None:
         unstable = propose(unstable_loop, em, upper)
         if unstable is not None:
             upper, upper_at = unstable
+            floor = upper if upper == min(LOOP_GAINS) else None
     if estimate is not None and upper is not None and estimate > float(upper) + 1e-6 * max(
             1.0, abs(estimate)):
         notes.append(f"the SDP value {estimate:.6g} exceeds the exact upper bound: discarded "
                      "as inaccurate")
         estimate = None
     return IndexBounds("OFP", estimate, omega if estimate is not None else None, lower,
-                       upper, upper_at, P, tuple(notes))
+                       upper, upper_at, P, tuple(notes), floor)
 
 
 def indices(model: LTIModel) -> tuple[IndexBounds, IndexBounds]:

@@ -7,6 +7,7 @@ failure leaves no half-written output (:mod:`verify.artefacts.atomic`).
 from __future__ import annotations
 
 import io
+import math
 from pathlib import Path
 
 import numpy as np
@@ -74,8 +75,25 @@ def _png(fig) -> bytes:
     return figure_bytes(fig, "png", dpi=110, bbox_inches="tight")
 
 
+def _plain_title(title: str) -> str:
+    """A run's title for a figure: ``k_s`` as math, Matplotlib's ``$`` otherwise literal."""
+    return title.replace("$", r"\$").replace("k_s", "$k_s$")
+
+
+def _finish(ax, *, legend: bool = True) -> None:
+    """Few enough ticks that their labels never touch; a legend beside the curves."""
+    from matplotlib.ticker import MaxNLocator
+
+    ax.xaxis.set_major_locator(MaxNLocator(nbins=6))
+    ax.grid(True, alpha=0.3)
+    if legend:
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
+
+
 def plots(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:
-    """PNG figures: V(t), tr(R-bar_r)(t), |dbar - d_r|(t), and d_i on the unit sphere."""
+    """PNG figures of a run (paper, Sections 2-3): the storage V(t) = S_r + S_rl + S_h of
+    Theorem 1 with its three terms, tr(R-bar_r)(t) of Lemma 1, |dbar - d_r|(t) (the
+    control objective) and the directions d_i on the unit sphere; labels in math."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -83,30 +101,50 @@ def plots(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:
 
     s = series(traj, E)
     t = s["t"]
+    head = _plain_title(title)
     out: dict[str, bytes] = {}
 
-    fig, ax = plt.subplots(figsize=(6, 3.2))
-    ax.plot(t, s["V"], label="V = S_r + S_rl + S_h")
-    ax.plot(t, s["S_r"], lw=0.8, label="S_r")
-    ax.plot(t, s["S_rl"], lw=0.8, label="S_rl")
-    ax.set(xlabel="t [s]", ylabel="energy", title=f"{title}: V(t) (Theorem 1)")
-    ax.legend(fontsize=8)
+    fig, ax = plt.subplots(figsize=(7.2, 3.4))
+    ax.plot(t, s["V"], lw=1.8, label=r"$V = S_r + S_{rl} + S_h$")
+    ax.plot(t, s["S_r"], lw=0.9, label=r"$S_r$")
+    ax.plot(t, s["S_rl"], lw=0.9, label=r"$S_{rl}$")
+    human = (r"$S_h = x^{\top} P x / 2$ (KYP storage)" if E.uses_storage
+             else r"$S_h$: $\int_0^t e^{\top} \omega_h^b \, d\tau$ (up to a constant)")
+    ax.plot(t, s["S_h"], lw=0.9, label=human)
+    ax.set_xlabel(r"$t$ [s]")
+    ax.set_ylabel("storage")
+    ax.set_title(f"{head}: $V(t)$ (Theorem 1)", fontsize=10)
+    _finish(ax)
     out["energy.png"] = _png(fig)
 
-    fig, ax = plt.subplots(figsize=(6, 3.2))
-    ax.plot(t, s["tr_Rbar_r"], label="tr(R-bar_r)")
-    ax.plot(t, 1.0 + s["lambda_min_sym_R_rl"], lw=0.8, label="1 + lambda_min(sym R_rl)")
-    ax.axhline(1.0, color="k", lw=0.6, ls="--")
-    ax.set(xlabel="t [s]", title=f"{title}: Lemma 1 (tr >= 1 while sym(R_rl) > 0)")
-    ax.legend(fontsize=8)
+    fig, ax = plt.subplots(figsize=(7.2, 3.4))
+    ax.plot(t, s["tr_Rbar_r"], label=r"$\mathrm{tr}\,\bar R_r$")
+    ax.plot(t, 1.0 + s["lambda_min_sym_R_rl"], lw=0.9,
+            label=r"$1 + \lambda_{\min}(\mathrm{sym}\,R_{rl})$")
+    ax.axhline(1.0, color="k", lw=0.6, ls="--", label="1")
+    ax.set_xlabel(r"$t$ [s]")
+    ax.set_title(f"{head}: Lemma 1 "
+                 r"($\mathrm{tr}\,\bar R_r \geq 1$ while $\mathrm{sym}\,R_{rl} \succ 0$)",
+                 fontsize=10)
+    _finish(ax)
     out["lemma1.png"] = _png(fig)
 
-    fig, ax = plt.subplots(figsize=(6, 3.2))
+    fig, ax = plt.subplots(figsize=(7.2, 3.4))
     ax.semilogy(t, np.maximum(s["dbar_error"], 1e-16))
-    ax.set(xlabel="t [s]", ylabel="|dbar - d_r|", title=f"{title}: control objective (eq. 3)")
+    from matplotlib.ticker import FuncFormatter
+
+    lo, hi = ax.get_ylim()
+    few = math.log10(hi / lo) < 2  # under two decades: label the minor ticks too
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda y, _: f"{y:g}"))
+    ax.yaxis.set_minor_formatter(FuncFormatter(
+        lambda y, _: f"{y:g}" if few and str(f"{y:.0e}")[0] in "2345" else ""))
+    ax.set_xlabel(r"$t$ [s]")
+    ax.set_ylabel(r"$\Vert \bar d - d_r \Vert$")
+    ax.set_title(f"{head}: control objective (eq. 3)", fontsize=10)
+    _finish(ax, legend=False)
     out["dbar_error.png"] = _png(fig)
 
-    fig = plt.figure(figsize=(5, 5))
+    fig = plt.figure(figsize=(5.4, 5.4))
     ax = fig.add_subplot(projection="3d")
     u, v = np.mgrid[0 : 2 * np.pi : 30j, 0 : np.pi : 15j]
     ax.plot_wireframe(np.cos(u) * np.sin(v), np.sin(u) * np.sin(v), np.cos(v), color="0.85",
@@ -114,11 +152,14 @@ def plots(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:
     if traj.d is not None:
         for i in range(min(traj.d.shape[1], 50)):
             ax.plot(*traj.d[:, i].T, lw=0.8)
-    ax.plot(*s["dbar"].T, color="k", lw=2, label="dbar")
-    ax.scatter(*s["d_r"][-1], color="r", s=40, label="d_r")
+    ax.plot(*s["dbar"].T, color="k", lw=2, label=r"$\bar d(t)$")
+    ax.scatter(*s["d_r"][-1], color="r", s=40, label=r"$d_r$")
     ax.set_box_aspect((1, 1, 1))
-    ax.set_title(f"{title}: d_i on the sphere")
-    ax.legend(fontsize=8)
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):  # three ticks per axis: none overlap
+        axis.set_ticks([-1.0, 0.0, 1.0])
+    ax.tick_params(labelsize=7)
+    ax.set_title(f"{head}: $d_i(t)$ on the sphere", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left")
     out["sphere.png"] = _png(fig)
     return out
 

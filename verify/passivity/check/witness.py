@@ -87,13 +87,14 @@ def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Wi
     v, value = found
     shown = f"{gmpy2.mpfr(value):.3g}"
     vector = [str(x) for x in v]
+    shown_v = "(" + ", ".join(vector) + ")"  # a vector, not a Python list of strings
     if margin:
         nu = short_text(margin)
         summary = (f"H − νI is not passive for ν = {nu}: D + Dᵀ − 2νI is not PSD, "
-                   f"vᵀ(D + Dᵀ − 2νI)v = {shown} < 0 at v = {vector}, so "
+                   f"vᵀ(D + Dᵀ − 2νI)v = {shown} < 0 at v = {shown_v}, so "
                    "λmin(H(jω) + H(jω)ᴴ)/2 < ν as ω → ∞")
     else:
-        summary = (f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {shown} < 0 at v = {vector}, so "
+        summary = (f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {shown} < 0 at v = {shown_v}, so "
                    "H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞")
     return Witness("infinity", summary, {"v": vector, "value": str(value)})
 
