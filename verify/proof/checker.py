@@ -126,8 +126,12 @@ class DerivationResult:
     @property
     def assumptions(self) -> list[str]:
         out: list[str] = []
+        seen: set[str] = set()
         for s in self.steps:
-            out += [a for a in s.assumptions if a not in out]
+            for a in s.assumptions:
+                if a not in seen:
+                    seen.add(a)
+                    out.append(a)
         return out
 
     def to_json(self) -> dict:
@@ -449,6 +453,7 @@ def validate_derivation(d: Derivation) -> None:
         type(a) is Assumption for a in d.assumes
     ):
         raise ProofSyntaxError(f"{d.name}: where= takes conditions, assumes= assumptions")
+    validate_tree(*_every_expression(d))  # each shared node once, for all steps together
     previous, relations = d.start, set()
     for i, step in enumerate(d.steps, 1):
         if type(step) is not Step or step.relation not in RELATIONS:
@@ -462,7 +467,6 @@ def validate_derivation(d: Derivation) -> None:
             raise ProofSyntaxError(f"{d.name}: step {i}: where= takes conditions")
         if isinstance(step.because, ByBound) and type(step.because.terms) is not tuple:
             raise ProofSyntaxError(f"{d.name}: step {i}: by_bound's terms were replaced")
-        validate_tree(step.lhs, step.rhs)
         if step.lhs is not previous and structural_key(step.lhs) != structural_key(previous):
             raise ProofSyntaxError(
                 f"{d.name}: step {i} does not start where "
@@ -475,17 +479,39 @@ def validate_derivation(d: Derivation) -> None:
         previous = step.rhs
     if {"<=", ">="} <= relations:
         raise ProofSyntaxError(f"{d.name}: a chain cannot mix <= and >=")
-    for step in d.steps:  # conditions, assumptions, terms and premises too
-        validate_tree(*step_problem(d, step).all_exprs)
+
+
+def _every_expression(d: Derivation) -> list:
+    """The trees of every step's problem (sides, conditions, assumptions, terms and their
+    premises), each derivation-wide part listed once (linear in the derivation's size)."""
+    out: list = [d.start]
+    for c in d.where:
+        out += [c.lhs, c.rhs]
+    out += [a.expr for a in d.assumes]
+    for step in d.steps:
+        if type(step) is not Step or not all(type(c) is Condition for c in step.where):
+            continue  # refused with its reason by the caller
+        out += [step.lhs, step.rhs]
+        for c in step.where:
+            out += [c.lhs, c.rhs]
+        because = step.because
+        if isinstance(because, ByBound) and type(because.terms) is tuple:
+            for t in because.terms:
+                if issued(t):
+                    out += [t.value, *(p.expr for p in t.premises),
+                            *(a.expr for a in t.assumptions)]
+        if isinstance(because, BySos):
+            out += [a.expr for a in because.assumptions]
+    return out
 
 
 def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> str:
     """Why the union of every step's conditions and assumptions is vacuous, or ""."""
     conditions, assumptions = _union(problems)
     if any(
-        all(any(c is x for x in p.conditions) for c in conditions)
-        and all(any(a is x for x in p.assumptions) for a in assumptions)
-        for p in problems
+        len({id(c) for c in p.conditions}) == len(conditions)
+        and len({id(a) for a in p.assumptions}) == len(assumptions)
+        for p in problems  # each problem's own are a part of the union
     ):
         return ""  # one verified step carries all of them: its samples witnessed them
     joint = StepProblem("=", d.start, d.current, conditions, assumptions)
@@ -505,11 +531,20 @@ def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> s
 
 
 def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
+    """Every problem's conditions and assumptions, each object once, in first-appearance
+    order (linear: identities in a set)."""
     conditions: list = []
     assumptions: list = []
+    seen: set[int] = set()
     for p in problems:
-        conditions += [c for c in p.conditions if all(c is not x for x in conditions)]
-        assumptions += [a for a in p.assumptions if all(a is not x for x in assumptions)]
+        for c in p.conditions:
+            if id(c) not in seen:
+                seen.add(id(c))
+                conditions.append(c)
+        for a in p.assumptions:
+            if id(a) not in seen:
+                seen.add(id(a))
+                assumptions.append(a)
     return tuple(conditions), tuple(assumptions)
 
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 import json
 import os
 import sys
+from pathlib import Path
 
 
 def _write(fd: int, data: bytes) -> None:
@@ -64,7 +65,7 @@ def main(argv: list[str]) -> None:
     try:
         try:
             derivations = run_source(path, source)
-            with contained(path, "handing its derivations over"):
+            with contained(Path(path), "handing its derivations over"):
                 data = encode(derivations)
         except VerifyInputError as exc:
             payload = json.dumps({"error": str(exc)}, ensure_ascii=True)
