@@ -276,11 +276,18 @@ def _collect(path: Path, proc: subprocess.Popen, budget: Budget, sandboxed: bool
 def _kill(proc: subprocess.Popen, sandboxed: bool) -> None:
     """End every process of the file: in the sandbox, the namespace's first process
     (the kernel then kills the rest of its PID namespace); unsandboxed, its session."""
-    if sandboxed:
-        for pid in sandbox.children(proc.pid):
+    if sandboxed:  # unshare ends only after its child, the namespace's first process,
+        # was reaped, which the kernel does only once every process of the namespace died
+        give_up = time.monotonic() + 10
+        while proc.poll() is None and time.monotonic() < give_up:
+            for pid in sandbox.children(proc.pid):
+                try:
+                    os.kill(pid, signal.SIGKILL)
+                except (ProcessLookupError, PermissionError):
+                    pass
             try:
-                os.kill(pid, signal.SIGKILL)
-            except (ProcessLookupError, PermissionError):
+                proc.wait(timeout=0.01)
+            except subprocess.TimeoutExpired:
                 pass
     try:
         os.killpg(proc.pid, signal.SIGKILL)
