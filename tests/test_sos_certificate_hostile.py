@@ -148,3 +148,20 @@ def test_a_consistent_certificate_of_a_false_claim_is_refused(tmp_path, honest, 
     assert main(["certificates", "check", str(_write(tmp_path, data))]) == 1
     out = capsys.readouterr().out
     assert "INVALID" in out and ("multiplier" in out or "step" in out or "key" in out)
+
+
+def test_an_edited_label_cannot_change_what_a_certificate_is_reported_as(tmp_path, honest,
+                                                                         capsys):
+    """The constant 3 of tr(R) <= 3 labelled "2" and the statement edited to match: the
+    key (numerator, multipliers) is unchanged, so the certificate is still one of
+    tr(R) <= 3, and it is reported as that, never as tr(R) <= 2."""
+    data = json.loads(json.dumps(honest))
+    nodes = data["step"]["nodes"]
+    k = next(i for i, n in enumerate(nodes) if n["op"] == "const" and n["value"] == ["3", "1"])
+    nodes[k]["label"] = "2"
+    data["claim"]["statement"] = "tr(R) <= 2"
+    main(["certificates", "check", str(_write(tmp_path, data))])
+    out = capsys.readouterr().out
+    ok = [line for line in out.splitlines() if line.startswith("ok")]
+    assert len(ok) == 1 and "tr(R) <= 3" in ok[0].split("(written")[0]
+    assert not any(line.split(":")[1].strip().startswith("tr(R) <= 2") for line in ok)

@@ -81,6 +81,9 @@ class StepResult:
     conditions: list[str] = field(default_factory=list)
     assumptions: list[str] = field(default_factory=list)
     kernel: list[str] = field(default_factory=list)
+    # signs the step may rest on without an assumption: scalars declared positive (a
+    # kernel term ``positive``, or an SOS multiplier)
+    declarations: list[str] = field(default_factory=list)
     counterexample: dict | None = None
     unconfirmed_violation: bool = False
     falsification: dict = field(default_factory=dict)
@@ -119,20 +122,18 @@ class DerivationResult:
         text = f"{self.start} {self.relation} {self.end}"
         if self.conditions:
             text += " where " + "; ".join(self.conditions)
-        if self.assumptions:
-            text += " assuming " + "; ".join(self.assumptions)
+        grounds = self.declarations + self.assumptions
+        if grounds:
+            text += " assuming " + "; ".join(grounds)
         return text
 
     @property
+    def declarations(self) -> list[str]:
+        return _unique(d for s in self.steps for d in s.declarations)
+
+    @property
     def assumptions(self) -> list[str]:
-        out: list[str] = []
-        seen: set[str] = set()
-        for s in self.steps:
-            for a in s.assumptions:
-                if a not in seen:
-                    seen.add(a)
-                    out.append(a)
-        return out
+        return _unique(a for s in self.steps for a in s.assumptions)
 
     def to_json(self) -> dict:
         return {
@@ -144,10 +145,22 @@ class DerivationResult:
             "verdict": self.verdict,
             "conditions": self.conditions,
             "assumptions": self.assumptions,
+            "declarations": self.declarations,
             "vacuous": self.vacuous,
             "seconds": round(self.seconds, 3),
             "steps": [s.to_json() for s in self.steps],
         }
+
+
+def _unique(items) -> list[str]:
+    """The items once each, in first-appearance order (linear)."""
+    out: list[str] = []
+    seen: set[str] = set()
+    for x in items:
+        if x not in seen:
+            seen.add(x)
+            out.append(x)
+    return out
 
 
 def step_problem(d: Derivation, step: Step) -> StepProblem:
@@ -312,6 +325,8 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
         conditions=[c.label for c in problem.conditions],
         assumptions=[a.label + (f" ({a.cite})" if a.cite else "") for a in problem.assumptions],
         kernel=kernel,
+        declarations=[f"{v.name} > 0 (declared)" for v in problem.variables
+                      if v.kind == "scalar" and v.positive],
         counterexample=None if counterexample is None else counterexample.to_json(),
         unconfirmed_violation=bool(report.candidates) and counterexample is None,
         falsification=report.to_json(),

@@ -45,6 +45,9 @@ def result_lines(r: DerivationResult) -> Iterator[str]:
         yield shown(f"      vacuous: {r.vacuous}")
     for s in r.steps:
         yield shown(f"  step {s.index} {s.relation:<2} {s.verdict:<12} {s.justification}")
+        grounds = s.declarations + s.assumptions
+        if grounds:
+            yield shown("      assuming " + "; ".join(grounds))
         if s.verdict != "verified":
             yield shown(f"      {s.exact}")
         if s.counterexample:
