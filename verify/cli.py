@@ -382,7 +382,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         if args.indices:
             add_indices(results)
         for r in results:
-            print(r.line(), flush=True)
+            print(shown(r.line()), flush=True)
         passed = sum(r.passed for r in results)
         where = "" if band is None else \
             f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
@@ -413,7 +413,8 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
     files = certificate_files(paths)
     if not files:
         where = ", ".join(str(p) for p in paths)
-        print(f"verify: no certificate found in {where} (no *.json file)", file=sys.stderr)
+        print(shown(f"verify: no certificate found in {where} (no *.json file)"),
+              file=sys.stderr)
         return 1
     marks = {CertificateStatus.VALID: "ok     ", CertificateStatus.UNBOUND: "UNBOUND",
              CertificateStatus.INVALID: "INVALID"}
@@ -491,7 +492,7 @@ def _cmd_network(args: argparse.Namespace) -> int:
     for path, net in zip(args.files, networks, strict=True):
         d = diagnose(net.attitudes)
         sv = ", ".join(f"{v:.3g}" for v in d.singular_values)
-        print(f"{path}: {net.name} (n = {d.n})")
+        print(shown(f"{path}: {net.name} (n = {d.n})"))
         if net.projected_by:
             print(f"  projected onto SO(3): entries moved by up to {net.projected_by:.3g}")
         print(f"  |sum d_i| = {d.abs_sum:.6g}, dbar = {np.array2string(d.dbar, precision=6)}")
