@@ -201,3 +201,27 @@ def test_the_data_file_s_size_is_bounded(tmp_path, capsys):
         f.truncate(LIMITS["bytes"] + 10)
     assert main(["check", str(big)]) == 2
     assert "larger than" in capsys.readouterr().err
+
+
+def test_the_file_sees_no_terminal_console_or_kernel_device(tmp_path):
+    body = ("seen = []\n"
+            + "".join(attempt(name, f"open('/dev/{name}', 'w').write('x')")
+                      for name in ("console", "tty1", "kmsg", "tty", "loop0", "kvm"))
+            + attempt("null", "open('/dev/null', 'w').write('x')")
+            + REPORT)
+    assert run(tmp_path, body) == 0
+    report = (tmp_path / "out.json").read_text()
+    for name in ("console", "tty1", "kmsg", "tty", "loop0", "kvm"):
+        assert f"{name}:done" not in report
+    assert "null:done" in report
+
+
+def test_a_nested_user_namespace_cannot_make_a_mount_writable(tmp_path):
+    target = Path(verify.__file__).parent / "nested-forgery"
+    body = ("seen = []\n"
+            + attempt("nested", "subprocess.run(['unshare', '-Urm', 'sh', '-c', "
+                      f"'mount -o remount,rw / ; echo x > {target}'], check=True, "
+                      "capture_output=True)")
+            + REPORT)
+    assert run(tmp_path, body) == 0
+    assert not target.exists()

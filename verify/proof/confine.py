@@ -37,6 +37,9 @@ _PR_CAPBSET_DROP = 24
 _LINUX_CAPABILITY_VERSION_3 = 0x20080522
 #: Empty file systems laid over shared scratch, socket and terminal folders.
 PRIVATE = ("/tmp", "/var/tmp", "/dev/shm", "/dev/pts", "/run")
+#: The only devices the file sees (in a fresh read-only /dev).
+DEVICES = ("null", "zero", "full", "random", "urandom")
+_MNT_DETACH = 2
 
 
 class ConfineError(Exception):
@@ -90,6 +93,41 @@ def _private(libc: ctypes.CDLL, point: str) -> None:
         raise ConfineError(f"could not mount a private {point} ({os.strerror(err)})")
 
 
+def _mount(libc: ctypes.CDLL, source: str | None, target: str, fstype: str | None,
+           flags: int, data: str | None, what: str) -> None:
+    def b(x: str | None) -> bytes | None:
+        return None if x is None else x.encode("utf-8", "surrogateescape")
+
+    if libc.mount(b(source), b(target), b(fstype), flags, b(data)) != 0:
+        err = ctypes.get_errno()
+        raise ConfineError(f"could not {what} ({os.strerror(err)})")
+
+
+def _minimal_dev(libc: ctypes.CDLL) -> None:
+    """Replace /dev by a read-only tmpfs holding only the harmless devices (no
+    terminals, consoles, kernel log, loop or kvm devices), shared /dev/shm and /dev/pts
+    included. Needs a private /tmp for staging."""
+    stage = "/tmp/.verify-dev"
+    os.mkdir(stage, 0o755)
+    kept = [name for name in DEVICES if os.path.exists(f"/dev/{name}")]
+    for name in kept:
+        open(f"{stage}/{name}", "w").close()
+        _mount(libc, f"/dev/{name}", f"{stage}/{name}", None, _MS_BIND, None,
+               f"keep /dev/{name}")
+    _mount(libc, "none", "/dev", "tmpfs", _MS_NOSUID, "size=1m,mode=755",
+           "mount a private /dev")
+    for name in kept:
+        open(f"/dev/{name}", "w").close()
+        _mount(libc, f"{stage}/{name}", f"/dev/{name}", None, _MS_BIND, None,
+               f"restore /dev/{name}")
+        libc.umount2(f"{stage}/{name}".encode(), _MNT_DETACH)
+    for name in ("shm", "pts"):
+        os.mkdir(f"/dev/{name}", 0o755)
+    for k, name in enumerate(("stdin", "stdout", "stderr")):
+        os.symlink(f"/proc/self/fd/{k}", f"/dev/{name}")
+    os.symlink("/proc/self/fd", "/dev/fd")
+
+
 def _drop_capabilities(libc: ctypes.CDLL) -> None:
     if libc.prctl(_PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0:
         raise ConfineError("could not set no_new_privs")
@@ -123,8 +161,12 @@ def confine(max_processes: int) -> None:
         if point in PRIVATE:
             continue
         _remount_read_only(libc, point)
+    _private(libc, "/tmp")
+    _minimal_dev(libc)
+    _remount_read_only(libc, "/dev")  # shm and pts below get their own tmpfs
     for point in PRIVATE:
-        _private(libc, point)
+        if point != "/tmp":
+            _private(libc, point)
     for point in mount_points():  # nothing writable is left but the private folders
         if point in PRIVATE or point.startswith("/proc"):
             continue
