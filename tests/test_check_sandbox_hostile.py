@@ -225,3 +225,23 @@ def test_a_nested_user_namespace_cannot_make_a_mount_writable(tmp_path):
             + REPORT)
     assert run(tmp_path, body) == 0
     assert not target.exists()
+
+
+def test_filling_its_scratch_space_hurts_only_the_file(tmp_path):
+    """The earlier handover folder could be kept full until the checker failed with exit
+    3; now the handover is a pipe and /tmp is the file's own bounded tmpfs."""
+    body = ("seen = []\nk = 0\n"
+            "try:\n    while True:\n"
+            "        open(f'/tmp/f{k}', 'wb').write(b'x' * 2**20)\n        k += 1\n"
+            "except OSError as e:\n    seen.append('full:' + type(e).__name__)\n"
+            + REPORT)
+    assert run(tmp_path, body) == 0
+    assert "full:OSError" in (tmp_path / "out.json").read_text()
+
+
+def test_the_checker_is_not_dumpable_after_running_a_file(tmp_path):
+    import ctypes
+
+    assert run(tmp_path, "seen = []\n" + REPORT) == 0
+    libc = ctypes.CDLL(None)
+    assert libc.prctl(3, 0, 0, 0, 0) == 0  # PR_GET_DUMPABLE
