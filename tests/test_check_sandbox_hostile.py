@@ -245,3 +245,25 @@ def test_the_checker_is_not_dumpable_after_running_a_file(tmp_path):
     assert run(tmp_path, "seen = []\n" + REPORT) == 0
     libc = ctypes.CDLL(None)
     assert libc.prctl(3, 0, 0, 0, 0) == 0  # PR_GET_DUMPABLE
+
+
+def test_the_checker_s_lazy_modules_are_loaded_before_the_file_runs(tmp_path, monkeypatch):
+    """Unsandboxed a file could rewrite on disk a module the checker imports later; every
+    such module is imported before the child starts."""
+    import verify.proof.isolate as isolate
+
+    events = []
+    monkeypatch.setattr(isolate, "preload", lambda: events.append("preload"))
+    real = isolate.subprocess.Popen
+
+    def popen(argv, *args, **kwargs):
+        if "verify.proof.child" in argv:  # not, e.g., ctypes looking for libc
+            events.append("child")
+        return real(argv, *args, **kwargs)
+
+    monkeypatch.setattr(isolate.subprocess, "Popen", popen)
+    assert run(tmp_path, "seen = []\n" + REPORT) == 0
+    assert events == ["preload", "child"]
+    monkeypatch.undo()  # the real preload imports every one of them
+    isolate.preload()
+    assert set(isolate.LAZY_MODULES) <= set(sys.modules)

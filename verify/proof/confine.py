@@ -15,7 +15,6 @@ serves is the paper's Section 3.
 from __future__ import annotations
 
 import ctypes
-import ctypes.util
 import os
 import resource
 
@@ -47,7 +46,7 @@ class ConfineError(Exception):
 
 
 def _libc() -> ctypes.CDLL:
-    return ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
+    return ctypes.CDLL(None, use_errno=True)  # the interpreter's own libc symbols
 
 
 def _unescape(field: str) -> str:

@@ -1,12 +1,20 @@
-"""Run a derivation file in its own process and take its derivations over as data.
+"""Derivations for ``verify check``: read from data, or made by a Python file run in a
+sandbox, and taken over as data.
 
-``verify check FILE`` never runs FILE's code in the checker process: a child process
-(:mod:`verify.proof.child`, a fresh interpreter) loads the file under resource limits
-(CPU time, address space and file size by ``resource.setrlimit``, a wall-clock timeout,
-its own process group killed at the end) and writes the derivations in the schema of
-:mod:`verify.proof.wire`. The checker rebuilds them with its own classes. The child's
-output and exit code are discarded; an early exit, a crash, a timeout or missing data is
-a malformed file (one line, exit 2). See ``verify/proof/TRUSTED.md``.
+``verify check FILE.json`` reads derivations data (:func:`read_data_file`: opened without
+blocking, a regular file only, size-bounded) and rebuilds it with the checker's own
+classes; nothing of the user runs. ``verify check FILE.py`` is the front end that makes
+that data: the file's text is handed on a memfd to a child process
+(:mod:`verify.proof.child`) that is the first process of its own namespaces
+(:mod:`verify.proof.sandbox`) and confines itself before the file runs
+(:mod:`verify.proof.confine`); the child writes the derivations (schema of
+:mod:`verify.proof.wire`) on a pipe that the checker reads with a size and time bound,
+while it watches the memory and the number of the file's processes together; at the end
+the whole PID namespace is killed and the checker continues only once every process of
+the file is gone. The child's output and exit code are discarded; an early exit, a
+crash, a timeout or missing data is a malformed file (one line, exit 2). Without
+namespaces the front end refuses unless asked to run unsandboxed. See
+``verify/proof/TRUSTED.md``; the language is that of the paper's Section 3.
 """
 
 from __future__ import annotations
@@ -53,10 +61,8 @@ def dumpable_off() -> None:
     """PR_SET_DUMPABLE 0 for the checker: no process of the same user may ptrace it or
     read its memory (the file's processes run in other namespaces as well)."""
     import ctypes
-    import ctypes.util
 
-    libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
-    libc.prctl(4, 0, 0, 0, 0)  # PR_SET_DUMPABLE
+    ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0)  # PR_SET_DUMPABLE, libc's
 
 
 def _read_source(path: Path) -> bytes:
@@ -99,8 +105,7 @@ def run_front_end(path: Path, *, budget: Budget = DEFAULT_BUDGET,
                                    "a sandbox (only for a file you trust)")
     source = _read_source(path)
     dumpable_off()
-    if not sandboxed:
-        preload()  # before the file runs: it could rewrite a module on disk
+    preload()  # before the file runs (unsandboxed, it could rewrite a module on disk)
     name = str(path.resolve())
     root = str(Path(verify.__file__).resolve().parents[1])
     env = {k: v for k, v in os.environ.items() if k in _KEPT_ENVIRONMENT}
@@ -125,12 +130,6 @@ def run_front_end(path: Path, *, budget: Budget = DEFAULT_BUDGET,
             raise VerifyInputError(f"{path}: no process to load the file in ({exc})") from None
     finally:
         os.close(memfd)
-    if sandboxed:
-        try:
-            preload()  # meanwhile: the sandbox sees every file read-only
-        except BaseException:
-            _kill(proc, sandboxed)
-            raise
     return _collect(path, proc, budget, sandboxed)
 
 
