@@ -43,3 +43,21 @@ def test_verify_check_reads_committed_data(tmp_path, capsys):
     path.write_text(_committed("lemma1.rbar_dot_form"))
     assert main(["check", str(path), "--quick", "--certificates", str(tmp_path / "c")]) == 0
     assert "verified in every step" in capsys.readouterr().out
+
+
+def test_sos_twins_from_data_have_the_python_s_certificate_keys(monkeypatch):
+    """The paper's SOS re-proofs are built from the decoded data; their claim keys (and
+    so the committed certificates they bind) are those of the Python front end's."""
+    import verify.paper_proofs.sos_proofs as sos_proofs
+    from verify.proof.checker import step_problem
+    from verify.proof.sos_step import step_program
+    from verify.sos.certificate import claim_key
+
+    def keys() -> list[str]:
+        return [claim_key(step_program(step_problem(r.derivation, r.derivation.steps[0]),
+                                       r.derivation.steps[0].because))
+                for r in sos_proofs.sos_reproofs()]
+
+    from_data = keys()
+    monkeypatch.setattr(sos_proofs, "hand_derivations", sos_proofs.python_hand_derivations)
+    assert from_data == keys() and len(from_data) >= 10

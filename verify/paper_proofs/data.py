@@ -1,6 +1,7 @@
 """The paper's own derivations (Section 3: Lemma 1 and Theorem 1) as committed data.
 
-``verify all`` checks Lemma 1 and Theorem 1 from the files in ``verify/data/derivations``
+``verify all`` checks Lemma 1 and Theorem 1 (and builds their SOS twins,
+:mod:`verify.paper_proofs.sos_proofs`) from the files in ``verify/data/derivations``
 (schema ``verify-derivations/1``, read by the checker's own decoder, no Python of the
 proofs run), exactly as CI checks a lab's committed derivations with ``verify check
 FILE.json``. The Python in :mod:`verify.paper_proofs.lemma1` and
