@@ -11,6 +11,7 @@ from verify.cli import main
 from verify.paper_proofs.data import FOLDER, GROUPS, PACKAGE, derivations, emitted
 from verify.proof import check
 from verify.proof.falsify import SearchSettings
+from verify.proof.wire import encode
 
 
 def _committed(group: str) -> str:
@@ -61,3 +62,20 @@ def test_sos_twins_from_data_have_the_python_s_certificate_keys(monkeypatch):
     from_data = keys()
     monkeypatch.setattr(sos_proofs, "hand_derivations", sos_proofs.python_hand_derivations)
     assert from_data == keys() and len(from_data) >= 10
+
+
+@pytest.mark.parametrize("name", ["damped_leader", "sos_inequalities"])
+def test_the_examples_data_is_what_their_python_emits(name):
+    """examples/NAME.json is committed beside examples/NAME.py, as a lab would commit
+    its derivations for CI (`verify check NAME.py --emit NAME.json`)."""
+    from pathlib import Path
+
+    from verify.proof.isolate import data_text
+    from verify.proof.rebuild import loads
+    from verify.proof.user_file import load_derivations
+    from verify.proof.wire import dumps
+
+    examples = Path(__file__).resolve().parents[1] / "examples"
+    python = load_derivations(examples / f"{name}.py")  # our own example: trusted here
+    emitted_text = data_text(loads(dumps(encode(python))))
+    assert (examples / f"{name}.json").read_text() == emitted_text
