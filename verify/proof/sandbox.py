@@ -70,8 +70,11 @@ def _mode() -> tuple[str, str]:
             return "", f"the util-linux tool {tool!r} is not installed"
     unshare = [shutil.which("unshare") or "unshare", *_NAMESPACES, "--"]
     child = Path(verify.__file__).resolve().parent / "proof" / "child.py"
-    probe = [sys.executable, "-I", "-c",  # the interpreter runs and the package is readable
-             f"import os, sys; sys.exit(0 if os.access({str(child)!r}, os.R_OK) else 1)"]
+    # the interpreter runs, and the package and the libraries it needs can be read
+    probe = [sys.executable, "-I", "-c",
+             "import os, sys, importlib.util as u; sys.exit(0 if os.access("
+             f"{str(child)!r}, os.R_OK) and all(u.find_spec(m) for m in "
+             "('numpy', 'sympy')) else 1)"]
     env = {"PYTHONDONTWRITEBYTECODE": "1"}
     tries = [("user", unshare)]
     if os.geteuid() == 0:
