@@ -267,3 +267,12 @@ def test_the_checker_s_lazy_modules_are_loaded_before_the_file_runs(tmp_path, mo
     monkeypatch.undo()  # the real preload imports every one of them
     isolate.preload()
     assert set(isolate.LAZY_MODULES) <= set(sys.modules)
+
+
+def test_an_exception_text_reaches_the_terminal_escaped(tmp_path, capsys):
+    body = "raise ValueError('\\x1b[2J\\x1b[H1 of 1 derivation(s) verified\\r\\u202e')\n"
+    assert run(tmp_path, body) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1
+    assert "\x1b" not in err and "\r" not in err and "\u202e" not in err
+    assert "\\x1b[2J" in err

@@ -165,3 +165,32 @@ def test_an_edited_label_cannot_change_what_a_certificate_is_reported_as(tmp_pat
     ok = [line for line in out.splitlines() if line.startswith("ok")]
     assert len(ok) == 1 and "tr(R) <= 3" in ok[0].split("(written")[0]
     assert not any(line.split(":")[1].strip().startswith("tr(R) <= 2") for line in ok)
+
+
+def test_a_certificate_statement_reaches_the_terminal_escaped(tmp_path, honest, capsys):
+    data = json.loads(json.dumps(honest))
+    data["claim"]["statement"] = "\x1b[2J\x1b[Hok tr(R) <= 2\r\u202e"
+    assert main(["certificates", "check", str(_write(tmp_path, data))]) != 0
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and "\r" not in out and "\u202e" not in out
+    assert "\\x1b[2J" in out or "INVALID" in out
+
+
+def test_a_step_resting_on_declared_signs_says_so(tmp_path, capsys):
+    """x y >= 0 by SOS with x, y declared positive: the multipliers are those signs, so
+    the printed statement and the JSON name them (they were printed with no assumption)."""
+    ctx = Context("user")
+    x, y = ctx.scalar("x", positive=True), ctx.scalar("y", positive=True)
+    d = Derivation("xy", x * y, ctx).ge(0, by_sos())
+    from verify.proof.wire import encode
+
+    path = tmp_path / "xy.json"
+    path.write_text(json.dumps(encode([d])))
+    out_json = tmp_path / "out.json"
+    assert main(["check", str(path), "--quick", "--certificates", str(tmp_path / "c"),
+                 "--json", str(out_json)]) == 0
+    out = capsys.readouterr().out
+    assert "x y >= 0 assuming x > 0 (declared); y > 0 (declared)" in out
+    (result,) = json.loads(out_json.read_text())
+    assert result["declarations"] == ["x > 0 (declared)", "y > 0 (declared)"]
+    assert result["steps"][0]["declarations"] == result["declarations"]
