@@ -173,3 +173,14 @@ def test_the_escaping_function_shows_controls_bidi_and_surrogates():
     assert shown("\ud800") == "\\ud800"
     assert shown("R̄ᵀ λmin ≥ 0 ⪰") == "R̄ᵀ λmin ≥ 0 ⪰"
     assert shown("x" * 10, limit=4) == "xxxx…"
+
+
+def test_mount_points_with_escaped_characters_are_read_back():
+    """A mount point with a space (written \\040 in /proc/self/mountinfo) must be
+    remounted read-only by its real path, not skipped."""
+    from verify.proof.confine import _unescape, mount_points
+
+    assert _unescape("/mnt/a\\040b\\011c") == "/mnt/a b\tc"
+    assert _unescape("/mnt/a\\04") == "/mnt/a\\04"
+    points = mount_points()
+    assert "/" in points and points == sorted(points, key=lambda p: (p.count("/"), p))

@@ -53,7 +53,7 @@ def _unescape(field: str) -> str:
     """A mount point as /proc/self/mountinfo writes it (octal escapes for space etc.)."""
     out, i = [], 0
     while i < len(field):
-        if field[i] == "\\" and i + 3 < len(field) + 0 and field[i + 1:i + 4].isdigit():
+        if field[i] == "\\" and field[i + 1:i + 4].isdigit() and len(field[i + 1:i + 4]) == 3:
             out.append(chr(int(field[i + 1:i + 4], 8)))
             i += 4
         else:
