@@ -88,7 +88,9 @@ def _build_parser() -> argparse.ArgumentParser:
         "check",
         help="check the derivations of a Python file of your own, step by step",
         description="Exit 0 if every step of every derivation is verified, 1 if some step "
-        "is refuted or inconclusive, 2 if the file is malformed.",
+        "is refuted or inconclusive, 2 if the file is malformed, over a budget while it is "
+        "read, or a .py file cannot be run in a sandbox (user, PID, mount and network "
+        "namespaces) and --unsandboxed was not given.",
     )
     p_check.add_argument("file", type=Path, metavar="FILE",
                          help="derivations data (.json: read, never run) or a Python file "
