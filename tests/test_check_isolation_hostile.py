@@ -259,10 +259,14 @@ def test_a_scale_of_an_expression_is_no_term():
 
 
 def test_a_file_that_forges_a_huge_handover_is_refused(tmp_path, capsys):
-    """The file writes the output file itself (it can: it runs in the child) and exits."""
-    body = ("import sys, ctypes\nout = sys.argv[-1]\n"
-            "with open(out, 'w') as f:\n"
-            "    f.write('{\"derivations\":' + ' ' * (70 * 2**20) + '}')\n"
+    """The file writes on the handover pipe itself (it can: it runs in the child)."""
+    body = ("import os, stat, ctypes\n"
+            "for fd in range(3, 64):\n"
+            "    try:\n"
+            "        if stat.S_ISFIFO(os.fstat(fd).st_mode):\n"
+            "            os.write(fd, b'C{\"derivations\":' + b' ' * (70 * 2**20) + b'}')\n"
+            "    except OSError:\n"
+            "        pass\n"
             "ctypes.CDLL(None).exit(0)\n")
     assert run(tmp_path, body) == 2
     err = capsys.readouterr().err.strip()

@@ -263,7 +263,8 @@ def test_a_conclusion_states_every_condition_and_assumption():
     result = check(d, SMALL)
     assert result.verdict == "verified"
     assert result.conditions == ["x² = 4", "k = 2"]
-    assert result.conclusion.endswith("where x² = 4; k = 2")
+    # k's declared sign is part of what the chain is checked under, and is stated too
+    assert result.conclusion.endswith("where x² = 4; k = 2 assuming k > 0 (declared)")
 
 
 # -- 4. declared dynamics ----------------------------------------------------------------------

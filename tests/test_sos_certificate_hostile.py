@@ -148,3 +148,49 @@ def test_a_consistent_certificate_of_a_false_claim_is_refused(tmp_path, honest, 
     assert main(["certificates", "check", str(_write(tmp_path, data))]) == 1
     out = capsys.readouterr().out
     assert "INVALID" in out and ("multiplier" in out or "step" in out or "key" in out)
+
+
+def test_an_edited_label_cannot_change_what_a_certificate_is_reported_as(tmp_path, honest,
+                                                                         capsys):
+    """The constant 3 of tr(R) <= 3 labelled "2" and the statement edited to match: the
+    key (numerator, multipliers) is unchanged, so the certificate is still one of
+    tr(R) <= 3, and it is reported as that, never as tr(R) <= 2."""
+    data = json.loads(json.dumps(honest))
+    nodes = data["step"]["nodes"]
+    k = next(i for i, n in enumerate(nodes) if n["op"] == "const" and n["value"] == ["3", "1"])
+    nodes[k]["label"] = "2"
+    data["claim"]["statement"] = "tr(R) <= 2"
+    main(["certificates", "check", str(_write(tmp_path, data))])
+    out = capsys.readouterr().out
+    ok = [line for line in out.splitlines() if line.startswith("ok")]
+    assert len(ok) == 1 and "tr(R) <= 3" in ok[0].split("(written")[0]
+    assert not any(line.split(":")[1].strip().startswith("tr(R) <= 2") for line in ok)
+
+
+def test_a_certificate_statement_reaches_the_terminal_escaped(tmp_path, honest, capsys):
+    data = json.loads(json.dumps(honest))
+    data["claim"]["statement"] = "\x1b[2J\x1b[Hok tr(R) <= 2\r\u202e"
+    assert main(["certificates", "check", str(_write(tmp_path, data))]) != 0
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and "\r" not in out and "\u202e" not in out
+    assert "\\x1b[2J" in out or "INVALID" in out
+
+
+def test_a_step_resting_on_declared_signs_says_so(tmp_path, capsys):
+    """x y >= 0 by SOS with x, y declared positive: the multipliers are those signs, so
+    the printed statement and the JSON name them (they were printed with no assumption)."""
+    ctx = Context("user")
+    x, y = ctx.scalar("x", positive=True), ctx.scalar("y", positive=True)
+    d = Derivation("xy", x * y, ctx).ge(0, by_sos())
+    from verify.proof.wire import encode
+
+    path = tmp_path / "xy.json"
+    path.write_text(json.dumps(encode([d])))
+    out_json = tmp_path / "out.json"
+    assert main(["check", str(path), "--quick", "--certificates", str(tmp_path / "c"),
+                 "--json", str(out_json)]) == 0
+    out = capsys.readouterr().out
+    assert "x y >= 0 assuming x > 0 (declared); y > 0 (declared)" in out
+    (result,) = json.loads(out_json.read_text())
+    assert result["declarations"] == ["x > 0 (declared)", "y > 0 (declared)"]
+    assert result["steps"][0]["declarations"] == result["declarations"]

@@ -14,6 +14,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from verify import __version__
+from verify.artefacts.text import shown
 from verify.errors import VerifyInputError
 
 #: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
@@ -89,9 +90,19 @@ def _build_parser() -> argparse.ArgumentParser:
         "check",
         help="check the derivations of a Python file of your own, step by step",
         description="Exit 0 if every step of every derivation is verified, 1 if some step "
-        "is refuted or inconclusive, 2 if the file is malformed.",
+        "is refuted or inconclusive, 2 if the file is malformed, over a budget while it is "
+        "read, or a .py file cannot be run in a sandbox (user, PID, mount and network "
+        "namespaces) and --unsandboxed was not given.",
     )
-    p_check.add_argument("file", type=Path, metavar="FILE", help="Python file with DERIVATIONS")
+    p_check.add_argument("file", type=Path, metavar="FILE",
+                         help="derivations data (.json: read, never run) or a Python file "
+                         "with DERIVATIONS (.py: run in a sandbox to make that data)")
+    p_check.add_argument("--emit", type=Path, metavar="OUT.json",
+                         help="also write the derivations as data (commit it beside the "
+                         "Python; CI checks it with 'verify check OUT.json')")
+    p_check.add_argument("--unsandboxed", action="store_true",
+                         help="run a .py file without namespaces where they are not "
+                         "available (only for a file you trust)")
     p_check.add_argument("--quick", action="store_true", help="less falsification effort")
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
@@ -331,41 +342,39 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.claims.proofs import search_settings
     from verify.progress import Stages
     from verify.proof import ProofSyntaxError, certificate_store, check
-    from verify.proof.isolate import load_isolated
+    from verify.proof.isolate import data_text, load_isolated, read_data_file
+    from verify.proof.report_lines import result_lines, summary_line
 
     budget = _budget(args)
     stage = Stages.for_command("verify check", forced=args.progress)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
-    stage(f"loading {args.file} in an isolated process")
-    derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
+    if args.file.suffix == ".json":
+        stage(shown(f"reading {args.file} as data"))
+        derivations = read_data_file(args.file)  # data only: nothing of the user runs
+    else:  # the Python front end, in a sandbox (a child in its own namespaces)
+        stage(shown(f"loading {args.file} in a sandboxed process"))
+        derivations = load_isolated(args.file, budget=budget,
+                                    sandboxed=not args.unsandboxed)
+    if args.emit:
+        write_atomic(args.emit, data_text(derivations))
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
-        stage(f"checking derivation {k + 1} of {len(derivations)}: {d.name}")
-        with certificate_store(args.certificates, source=f"file:{args.file.name}"):
+        stage(shown(f"checking derivation {k + 1} of {len(derivations)}: {d.name}"))
+        with certificate_store(args.certificates, source=f"file:{args.file.stem}.py"):
             try:
                 r = check(d, search_settings(context, 101 * k), budget=budget,
                           deadline=deadline)
             except ProofSyntaxError as exc:
                 raise VerifyInputError(f"{args.file}: {exc}") from None
         results.append(r)
-        print(f"{r.name}: {r.verdict} ({r.seconds:.2f} s)  {r.conclusion}")
-        if r.vacuous:
-            print(f"      vacuous: {r.vacuous}")
-        for s in r.steps:
-            print(f"  step {s.index} {s.relation:<2} {s.verdict:<12} {s.justification}")
-            if s.verdict != "verified":
-                print(f"      {s.exact}")
-            if s.counterexample:
-                values = "; ".join(f"{n} = {v['value']}"
-                                   for n, v in s.counterexample["values"].items())
-                print(f"      counterexample (exact): {values}")
-    verified = sum(r.verdict == "verified" for r in results)
-    print(f"{verified} of {len(results)} derivation(s) verified in every step")
+        for line in result_lines(r):
+            print(line)
+    print(summary_line(results))
     if args.json:
         write_atomic(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
-                                           indent=2) + "\n")
-    return 0 if verified == len(results) else 1
+                                           indent=2, ensure_ascii=True) + "\n")
+    return 0 if all(r.verdict == "verified" for r in results) else 1
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
@@ -406,7 +415,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         if args.indices:
             add_indices(results, stage)
         for r in results:
-            print(r.line(), flush=True)
+            print(shown(r.line()), flush=True)
         passed = sum(r.passed for r in results)
         where = "" if band is None else \
             f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
@@ -459,7 +468,8 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
     files = certificate_files(paths)
     if not files:
         where = ", ".join(str(p) for p in paths)
-        print(f"verify: no certificate found in {where} (no *.json file)", file=sys.stderr)
+        print(shown(f"verify: no certificate found in {where} (no *.json file)"),
+              file=sys.stderr)
         return 1
     marks = {CertificateStatus.VALID: "ok     ", CertificateStatus.UNBOUND: "UNBOUND",
              CertificateStatus.INVALID: "INVALID"}
@@ -474,7 +484,7 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
         except RuntimeError as exc:
             c = CertificateCheck(CertificateStatus.INVALID, f"not checked: {exc}")
         checks.append((f, c))
-        print(f"{marks[c.status]} {f}: {c.reason}", flush=True)
+        print(shown(f"{marks[c.status]} {f}: {c.reason}"), flush=True)
     valid = sum(c.status is CertificateStatus.VALID for _, c in checks)
     unbound = [(f, c) for f, c in checks if c.status is CertificateStatus.UNBOUND]
     print(f"{valid} of {len(files)} certificate(s) valid (bound to their claims, exact "
@@ -484,7 +494,7 @@ def _cmd_certificates(args: argparse.Namespace) -> int:
             "not accepted (source file not found; --allow-unbound accepts them)"
         print(f"{len(unbound)} unbound, {verdict}; labels not checked:")
         for f, c in unbound:
-            print(f"  {f}: {', '.join(c.unchecked)}")
+            print(shown(f"  {f}: {', '.join(c.unchecked)}"))
     return 0 if all(c.ok for _, c in checks) else 1
 
 
@@ -538,7 +548,7 @@ def _cmd_network(args: argparse.Namespace) -> int:
     for path, net in zip(args.files, networks, strict=True):
         d = diagnose(net.attitudes)
         sv = ", ".join(f"{v:.3g}" for v in d.singular_values)
-        print(f"{path}: {net.name} (n = {d.n})")
+        print(shown(f"{path}: {net.name} (n = {d.n})"))
         if net.projected_by:
             print(f"  projected onto SO(3): entries moved by up to {net.projected_by:.3g}")
         print(f"  |sum d_i| = {d.abs_sum:.6g}, dbar = {np.array2string(d.dbar, precision=6)}")
@@ -627,13 +637,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:
-        print(f"verify: error: {exc}", file=sys.stderr)
+        print(f"verify: error: {shown(str(exc))}", file=sys.stderr)
         return 2
     except Exception as exc:  # a bug of ours: one line, the traceback on request
         if os.environ.get("VERIFY_DEBUG"):
             raise
         print(
-            f"verify: internal error: {type(exc).__name__}: {exc} "
+            f"verify: internal error: {type(exc).__name__}: {shown(str(exc))} "
             "(set VERIFY_DEBUG=1 for the traceback)",
             file=sys.stderr,
         )

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
+from verify.artefacts.text import shown
 from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
 from verify.proof import Derivation, DerivationResult, SearchSettings, check
+from verify.proof.report_lines import counterexample_text
 
 
 def search_settings(context: CheckContext, salt: int = 0) -> SearchSettings:
@@ -28,24 +30,21 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
     out = [
         Evidence(
             EvidenceKind.DERIVATION,
-            f"{result.name}: {result.conclusion} — {verdict} "
-            f"({len(result.steps)} step(s))"
-            + (f"; vacuous: {result.vacuous}" if result.vacuous else ""),
+            shown(f"{result.name}: {result.conclusion} — {verdict} "
+                  f"({len(result.steps)} step(s))"
+                  + (f"; vacuous: {result.vacuous}" if result.vacuous else "")),
             result.to_json(),
             passed=verdict == expected,
         )
     ]
     for step in result.steps:
         if step.counterexample is not None:
-            values = "; ".join(
-                f"{name} = {v['value']} (parameters {', '.join(v['parameters'])})"
-                for name, v in step.counterexample["values"].items()
-            )
+            values = counterexample_text(step.counterexample["values"])
             out.append(
                 Evidence(
                     EvidenceKind.COUNTEREXAMPLE,
-                    f"{result.name}, step {step.index} ({step.relation}) fails exactly at: "
-                    f"{values}",
+                    shown(f"{result.name}, step {step.index} ({step.relation}) fails "
+                          f"exactly at: {values}"),
                     step.counterexample,
                     passed=True,
                 )

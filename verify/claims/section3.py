@@ -1,7 +1,9 @@
 """Claims of Section 3: Lemma 1 and Theorem 1, every step.
 
-The derivations live in :mod:`verify.paper_proofs`; each claim below checks a group of
-them with :func:`verify.proof.check` and states the finding. Verdicts of steps rest on
+The derivations are written in :mod:`verify.paper_proofs` and committed as data
+(``verify/data/derivations``, :mod:`verify.paper_proofs.data`); each claim below checks a
+group of them, decoded from that data by the checker's own classes, with
+:func:`verify.proof.check` and states the finding. Verdicts of steps rest on
 exact identities between rational functions of quaternion (and stereographic,
 half-angle) parameters, with inequalities reduced exactly to non-negative terms of a
 small trusted kernel (:data:`verify.proof.KERNEL`).
@@ -13,7 +15,7 @@ from verify.claims.evidence import argument
 from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.proofs import check_all, outcome_from
 from verify.claims.registry import REGISTRY
-from verify.paper_proofs import lemma1, theorem1
+from verify.paper_proofs.data import derivations as paper_data
 from verify.proof import KERNEL
 
 LEMMA = "3, Lemma 1"
@@ -50,7 +52,7 @@ def _kernel_evidence() -> Evidence:
     ),
 )
 def rodrigues_spectrum(context: CheckContext) -> Outcome:
-    results = check_all(lemma1.rodrigues_spectrum(), context, 1)
+    results = check_all(paper_data("lemma1.rodrigues_spectrum"), context, 1)
     return outcome_from(
         results,
         "The spectral decomposition gives eigenvalue 2 on ξ and 2cosθ (twice) on ξ⊥, so "
@@ -77,7 +79,7 @@ def rodrigues_spectrum(context: CheckContext) -> Outcome:
     ),
 )
 def rbar_dot_form(context: CheckContext) -> Outcome:
-    results = check_all(lemma1.rbar_dot_form(), context, 2)
+    results = check_all(paper_data("lemma1.rbar_dot_form"), context, 2)
     return outcome_from(results, "The attitude-synchronisation form (13) holds.")
 
 
@@ -103,7 +105,7 @@ def rbar_dot_form(context: CheckContext) -> Outcome:
     ),
 )
 def h_dot(context: CheckContext) -> Outcome:
-    results = check_all(lemma1.h_dot(), context, 3)
+    results = check_all(paper_data("lemma1.h_dot"), context, 3)
     return outcome_from(results, "Every step of eq. (15) holds exactly.")
 
 
@@ -133,7 +135,7 @@ def h_dot(context: CheckContext) -> Outcome:
     ),
 )
 def boundary(context: CheckContext) -> Outcome:
-    results = check_all(lemma1.boundary(), context, 4)
+    results = check_all(paper_data("lemma1.boundary"), context, 4)
     return outcome_from(
         results,
         "Every step holds. The trace-inequality step is valid here because its matrix B = "
@@ -164,7 +166,7 @@ def boundary(context: CheckContext) -> Outcome:
     ),
 )
 def trace_inequality(context: CheckContext) -> Outcome:
-    results = check_all(lemma1.trace_inequality(), context, 5)
+    results = check_all(paper_data("lemma1.trace_inequality"), context, 5)
     return outcome_from(
         results,
         "As quoted the inequality is false (exact counterexample above). It holds when "
@@ -204,7 +206,7 @@ def trace_inequality(context: CheckContext) -> Outcome:
     ),
 )
 def nagumo_gradient(context: CheckContext) -> Outcome:
-    results = check_all(lemma1.gradient(), context, 6)
+    results = check_all(paper_data("lemma1.gradient"), context, 6)
     return outcome_from(
         results,
         "The paper's argument uses the gradient in R^{3x3}, which is I everywhere, including "
@@ -262,7 +264,7 @@ def invariance(context: CheckContext) -> Outcome:
     paper_latex=r"$\varphi(R) = \operatorname{tr}(I - R)/2 = \lVert I - R \rVert_F^{2} / 4$.",
 )
 def phi(context: CheckContext) -> Outcome:
-    results = check_all(theorem1.phi_identity(), context, 7)
+    results = check_all(paper_data("theorem1.phi_identity"), context, 7)
     return outcome_from(results, "Holds (it uses RᵀR = I).")
 
 
@@ -287,8 +289,7 @@ def phi(context: CheckContext) -> Outcome:
     ),
 )
 def storage_derivatives(context: CheckContext) -> Outcome:
-    loop = theorem1.ClosedLoop()
-    derivations = theorem1.s_r_dot(loop) + theorem1.s_rl_dot(loop) + theorem1.storage_sign()
+    derivations = paper_data("theorem1.storage")
     results = check_all(derivations, context, 8)
     return outcome_from(
         results,
@@ -323,8 +324,7 @@ def storage_derivatives(context: CheckContext) -> Outcome:
 def v_dot(context: CheckContext) -> Outcome:
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
 
-    loop = theorem1.ClosedLoop()
-    derivations = theorem1.v_dot(loop)
+    derivations = paper_data("theorem1.v_dot")
     results = check_all(derivations, context, 9)
     return cross_checked(outcome_from(
         results,
@@ -356,7 +356,7 @@ def v_dot(context: CheckContext) -> Outcome:
     ),
 )
 def lasalle_derivative(context: CheckContext) -> Outcome:
-    results = check_all(theorem1.lasalle(), context, 10)
+    results = check_all(paper_data("theorem1.lasalle"), context, 10)
     return outcome_from(
         results,
         "On R_l = R̄ the derivative is -hat(R_lᵀω_h^s), zero only for ω_h^s = 0, as the "

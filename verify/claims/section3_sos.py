@@ -1,7 +1,8 @@
 """Claims: the inequality steps of Lemma 1 and Theorem 1, re-proved by SOS certificates.
 
-Each inequality step of the hand-written proofs (:mod:`verify.paper_proofs`) has an SOS
-twin (:mod:`verify.paper_proofs.sos_proofs`): the same step justified by ``by_sos()``,
+Each inequality step of the hand-written proofs (:mod:`verify.paper_proofs`, decoded from
+their committed data) has an SOS twin (:mod:`verify.paper_proofs.sos_proofs`): the same
+step justified by ``by_sos()``,
 whose certificate the checker finds, rounds to rationals and checks exactly. The step
 tables of the report mark which steps rest on hand terms, on SOS, or on both.
 Certificates are reused from and written to the run's certificates directory, so a

@@ -28,9 +28,14 @@ from verify.proof.expr import (
 )
 
 
-def ddt(e: Expr, dynamics: Mapping[int, Expr | None]) -> Expr:
-    """d/dt of ``e``; ``dynamics`` maps a variable uid to its derivative (None: constant)."""
-    cache: dict[int, Expr | None] = {}
+def ddt(e: Expr, dynamics: Mapping[int, Expr | None],
+        cache: dict[int, Expr | None] | None = None) -> Expr:
+    """d/dt of ``e``; ``dynamics`` maps a variable uid to its derivative (None: constant).
+
+    ``cache`` (node id -> derivative) may be shared by calls with the same dynamics, so
+    that differentiating many trees with common subtrees visits each node once; the
+    caller keeps those trees alive while the cache is in use."""
+    cache = {} if cache is None else cache
     result = _ddt(e, dynamics, cache)
     return result if result is not None else zero(e.shape)
 

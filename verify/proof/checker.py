@@ -81,6 +81,9 @@ class StepResult:
     conditions: list[str] = field(default_factory=list)
     assumptions: list[str] = field(default_factory=list)
     kernel: list[str] = field(default_factory=list)
+    # signs the step may rest on without an assumption: scalars declared positive (a
+    # kernel term ``positive``, or an SOS multiplier)
+    declarations: list[str] = field(default_factory=list)
     counterexample: dict | None = None
     unconfirmed_violation: bool = False
     falsification: dict = field(default_factory=dict)
@@ -119,16 +122,18 @@ class DerivationResult:
         text = f"{self.start} {self.relation} {self.end}"
         if self.conditions:
             text += " where " + "; ".join(self.conditions)
-        if self.assumptions:
-            text += " assuming " + "; ".join(self.assumptions)
+        grounds = self.declarations + self.assumptions
+        if grounds:
+            text += " assuming " + "; ".join(grounds)
         return text
 
     @property
+    def declarations(self) -> list[str]:
+        return _unique(d for s in self.steps for d in s.declarations)
+
+    @property
     def assumptions(self) -> list[str]:
-        out: list[str] = []
-        for s in self.steps:
-            out += [a for a in s.assumptions if a not in out]
-        return out
+        return _unique(a for s in self.steps for a in s.assumptions)
 
     def to_json(self) -> dict:
         return {
@@ -140,10 +145,22 @@ class DerivationResult:
             "verdict": self.verdict,
             "conditions": self.conditions,
             "assumptions": self.assumptions,
+            "declarations": self.declarations,
             "vacuous": self.vacuous,
             "seconds": round(self.seconds, 3),
             "steps": [s.to_json() for s in self.steps],
         }
+
+
+def _unique(items) -> list[str]:
+    """The items once each, in first-appearance order (linear)."""
+    out: list[str] = []
+    seen: set[str] = set()
+    for x in items:
+        if x not in seen:
+            seen.add(x)
+            out.append(x)
+    return out
 
 
 def step_problem(d: Derivation, step: Step) -> StepProblem:
@@ -308,6 +325,8 @@ def check_step(d: Derivation, index: int, cfg: SearchSettings) -> StepResult:
         conditions=[c.label for c in problem.conditions],
         assumptions=[a.label + (f" ({a.cite})" if a.cite else "") for a in problem.assumptions],
         kernel=kernel,
+        declarations=[f"{v.name} > 0 (declared)" for v in problem.variables
+                      if v.kind == "scalar" and v.positive],
         counterexample=None if counterexample is None else counterexample.to_json(),
         unconfirmed_violation=bool(report.candidates) and counterexample is None,
         falsification=report.to_json(),
@@ -449,6 +468,7 @@ def validate_derivation(d: Derivation) -> None:
         type(a) is Assumption for a in d.assumes
     ):
         raise ProofSyntaxError(f"{d.name}: where= takes conditions, assumes= assumptions")
+    validate_tree(*_every_expression(d))  # each shared node once, for all steps together
     previous, relations = d.start, set()
     for i, step in enumerate(d.steps, 1):
         if type(step) is not Step or step.relation not in RELATIONS:
@@ -462,7 +482,6 @@ def validate_derivation(d: Derivation) -> None:
             raise ProofSyntaxError(f"{d.name}: step {i}: where= takes conditions")
         if isinstance(step.because, ByBound) and type(step.because.terms) is not tuple:
             raise ProofSyntaxError(f"{d.name}: step {i}: by_bound's terms were replaced")
-        validate_tree(step.lhs, step.rhs)
         if step.lhs is not previous and structural_key(step.lhs) != structural_key(previous):
             raise ProofSyntaxError(
                 f"{d.name}: step {i} does not start where "
@@ -475,17 +494,39 @@ def validate_derivation(d: Derivation) -> None:
         previous = step.rhs
     if {"<=", ">="} <= relations:
         raise ProofSyntaxError(f"{d.name}: a chain cannot mix <= and >=")
-    for step in d.steps:  # conditions, assumptions, terms and premises too
-        validate_tree(*step_problem(d, step).all_exprs)
+
+
+def _every_expression(d: Derivation) -> list:
+    """The trees of every step's problem (sides, conditions, assumptions, terms and their
+    premises), each derivation-wide part listed once (linear in the derivation's size)."""
+    out: list = [d.start]
+    for c in d.where:
+        out += [c.lhs, c.rhs]
+    out += [a.expr for a in d.assumes]
+    for step in d.steps:
+        if type(step) is not Step or not all(type(c) is Condition for c in step.where):
+            continue  # refused with its reason by the caller
+        out += [step.lhs, step.rhs]
+        for c in step.where:
+            out += [c.lhs, c.rhs]
+        because = step.because
+        if isinstance(because, ByBound) and type(because.terms) is tuple:
+            for t in because.terms:
+                if issued(t):
+                    out += [t.value, *(p.expr for p in t.premises),
+                            *(a.expr for a in t.assumptions)]
+        if isinstance(because, BySos):
+            out += [a.expr for a in because.assumptions]
+    return out
 
 
 def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> str:
     """Why the union of every step's conditions and assumptions is vacuous, or ""."""
     conditions, assumptions = _union(problems)
     if any(
-        all(any(c is x for x in p.conditions) for c in conditions)
-        and all(any(a is x for x in p.assumptions) for a in assumptions)
-        for p in problems
+        len({id(c) for c in p.conditions}) == len(conditions)
+        and len({id(a) for a in p.assumptions}) == len(assumptions)
+        for p in problems  # each problem's own are a part of the union
     ):
         return ""  # one verified step carries all of them: its samples witnessed them
     joint = StepProblem("=", d.start, d.current, conditions, assumptions)
@@ -505,11 +546,20 @@ def _joint(d: Derivation, problems: list[StepProblem], cfg: SearchSettings) -> s
 
 
 def _union(problems: list[StepProblem]) -> tuple[tuple, tuple]:
+    """Every problem's conditions and assumptions, each object once, in first-appearance
+    order (linear: identities in a set)."""
     conditions: list = []
     assumptions: list = []
+    seen: set[int] = set()
     for p in problems:
-        conditions += [c for c in p.conditions if all(c is not x for x in conditions)]
-        assumptions += [a for a in p.assumptions if all(a is not x for x in assumptions)]
+        for c in p.conditions:
+            if id(c) not in seen:
+                seen.add(id(c))
+                conditions.append(c)
+        for a in p.assumptions:
+            if id(a) not in seen:
+                seen.add(id(a))
+                assumptions.append(a)
     return tuple(conditions), tuple(assumptions)
 
 

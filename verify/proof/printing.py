@@ -15,6 +15,8 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
+from verify.artefacts.text import shown
+
 if TYPE_CHECKING:
     from verify.proof.expr import Expr
 
@@ -33,8 +35,15 @@ _FUNCS = {
 }
 
 
-def to_text(e: Expr) -> str:
-    return _Printer().text(e, 0)
+def to_text(e: Expr, labels: bool = True) -> str:
+    """The expression as text; with ``labels=False`` every author's label is ignored and
+    the tree itself is printed (variables by their names), so the text says what is
+    evaluated. Labels and names are user text: shown escaped
+    (:func:`verify.artefacts.text.shown`)."""
+    return _Printer(labels).text(e, 0)
+
+
+_CHART_GAPS = {"angle": "π", "unit_vector": "(0, 0, 1)"}
 
 
 def integer_text(n: int) -> str:
@@ -59,8 +68,9 @@ def _wrap(s: str, inner: int, outer: int) -> str:
 
 
 class _Printer:
-    def __init__(self) -> None:
+    def __init__(self, labels: bool = True) -> None:
         self.memo: dict[tuple[int, int], str] = {}
+        self.labels = labels
 
     def text(self, e: Expr, prec: int) -> str:
         key = (id(e), prec)
@@ -72,9 +82,16 @@ class _Printer:
         return self.memo[key]
 
     def _text(self, e: Expr, prec: int) -> str:
-        if e.label is not None:
-            return e.label
         op, t = e.op, self.text
+        if not self.labels:  # the tree, whatever its labels say
+            if op == "var":
+                return shown(e.data.name)
+            if op == "identity":
+                return "I"
+            if op == "chart_gap":
+                return _CHART_GAPS.get(e.data, "gap")
+        elif e.label is not None:
+            return shown(e.label)
         if op == "const":
             v: Fraction = e.data
             s = (integer_text(v.numerator) if v.denominator == 1

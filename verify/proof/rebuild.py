@@ -18,6 +18,7 @@ from fractions import Fraction
 from typing import Any
 
 from verify.errors import VerifyInputError
+from verify.proof import calculus
 from verify.proof.derivation import RELATIONS, Context, Derivation, Step
 from verify.proof.expr import (
     CHART_GAPS,
@@ -43,6 +44,7 @@ from verify.proof.justify import (
     trace_lower_bound,
     trace_psd_product,
 )
+from verify.proof.size import over_limits
 from verify.proof.wire import _SHAPES, LIMITS, SCHEMA
 
 
@@ -125,6 +127,10 @@ class _Decoder:
             self.contexts.append(ctx)
             self.dynamics.append(_list(c["dynamics"], f"context {k}", LIMITS["variables"]))
         self.declared = [False] * len(self.contexts)
+        # one derivative cache per context (its dynamics are fixed once declared), so
+        # every node is differentiated once however many ddt nodes reach it
+        self.ddt_cache: list[dict] = [{} for _ in self.contexts]
+        self.differentiated = 0
         raw = _list(data["nodes"], "nodes", LIMITS["nodes"])
         self.nodes: list[Expr] = []
         self.depth: dict[int, int] = {}
@@ -159,7 +165,12 @@ class _Decoder:
                 if self.variables[i].kind != "scalar":
                     ctx.constant(x)
                 continue
-            ctx.dynamics(x, self._node_ref(entry[1], f"context {k} dynamics"))
+            rate = self._node_ref(entry[1], f"context {k} dynamics")
+            too_large = over_limits(rate)
+            if too_large:  # the tangency check is exact algebra on this expression
+                raise WireError(f"context {k}: budget exceeded: the declared derivative of "
+                                f"variable {i}: {too_large}")
+            ctx.dynamics(x, rate)
 
     def _node_ref(self, x: Any, what: str) -> Expr:
         return self.nodes[_index(x, len(self.nodes), what)]
@@ -180,7 +191,14 @@ class _Decoder:
             if len(args) != 1 or label is not None:
                 raise WireError(f"{what}: ddt takes one expression")
             self._declare(ctx)
-            out = self.contexts[ctx].ddt(args[0])
+            cache = self.ddt_cache[ctx]
+            before = len(cache)
+            out = calculus.ddt(args[0], self.contexts[ctx]._dynamics, cache)
+            self.contexts[ctx]._derived.append((out, args[0]))
+            self.differentiated += len(cache) - before
+            if self.differentiated > LIMITS["differentiated"]:
+                raise WireError(f"budget exceeded: the ddt nodes differentiate more than "
+                                f"{LIMITS['differentiated']} distinct nodes")
             if out.shape != shape:
                 raise WireError(f"{what}: the derivative has another shape")
             return out
@@ -202,18 +220,38 @@ class _Decoder:
         """Issue every term again with the kernel's constructors, in order (a term's
         arguments come before it, so nothing recurses)."""
         out: list[Nonneg] = []
+        sizes: list[int] = []  # characters of reason plus premises and assumptions
+        total = 0
         for k, t in enumerate(_list(self.data["terms"], "terms", LIMITS["terms"])):
             what = f"term {k}"
             t = _fields(t, what, ("make", "args"))
-            args = [self._argument(a, out, what) for a in _list(t["args"], what, 6)]
+            raw = _list(t["args"], what, 6)
+            args = [self._argument(a, out, what) for a in raw]
             make = t["make"]
             if make not in _MAKERS or _MAKERS[make][0] != len(args):
                 raise WireError(f"{what}: unknown constructor or wrong number of arguments")
             if make in ("add", "mul") and not all(type(a) is Nonneg for a in args):
                 raise WireError(f"{what}: {make} combines two non-negative terms")
+            # a combination's reason, premises and assumptions are those of its parts
+            # together: measured before it is made (t(k+1) = t(k) + t(k) doubles)
+            parts = [sizes[a["term"]] for a in raw if type(a) is dict and "term" in a]
+            size = _COMBINED + sum(parts) if parts else 0
+            total += size
+            if size > LIMITS["term_size"] or total > LIMITS["terms_size"]:
+                raise WireError(f"{what}: budget exceeded: the non-negative terms' reasons "
+                                "and premises grow past "
+                                f"{min(LIMITS['term_size'], LIMITS['terms_size'])} units")
+            sizes.append(size)
             term = _MAKERS[make][1](args)  # the kernel's own checks apply
             if type(term) is not Nonneg:
                 raise WireError(f"{what}: {make} did not make a non-negative term")
+            if not parts:  # a kernel term made from expressions: its printed size
+                sizes[-1] = len(term.reason) + len(term.premises) + len(term.assumptions)
+                total += sizes[-1]
+                if total > LIMITS["terms_size"]:
+                    raise WireError(f"{what}: budget exceeded: the non-negative terms' "
+                                    f"reasons and premises grow past {LIMITS['terms_size']} "
+                                    "units")
             out.append(term)
         return out
 
@@ -308,6 +346,10 @@ class _Decoder:
                             for a in assumptions), degree=degree, note=note)
         raise WireError(f"{what}: unknown justification kind")
 
+
+#: Characters a combination adds to its parts' reasons (brackets, an operator and a
+#: constant printed with at most 4000 digits in numerator and denominator).
+_COMBINED = 8200
 
 _MAKERS = {
     "square": (1, lambda a: square(a[0])),

@@ -47,6 +47,7 @@ from pathlib import Path
 
 from verify.proof.expr import ProofSyntaxError, sym, variables_of
 from verify.proof.justify import BySos
+from verify.proof.printing import to_text
 from verify.proof.problem import StepProblem
 from verify.sos import poly as pl
 from verify.sos.program import Multiplier, SosProgram, StepProgram, scalar_multiplier
@@ -149,7 +150,10 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
                 mults.append(Multiplier(f"{prod.grounds} × {mat.grounds}", scaled))
     program = SosProgram(names, target, tuple(mults))
     statement = f"{problem.lhs} {problem.relation} {problem.rhs}"
-    return StepProgram(program, groups, pl.from_ring(slack.num), factors, statement)
+    plain = f"{to_text(problem.lhs, labels=False)} {problem.relation} " \
+            f"{to_text(problem.rhs, labels=False)}"
+    return StepProgram(program, groups, pl.from_ring(slack.num), factors, statement,
+                       plain)
 
 
 def _names(space) -> tuple[str, ...]:

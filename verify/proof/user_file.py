@@ -14,6 +14,7 @@ import os
 import runpy
 import sys
 import traceback
+import types
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -83,6 +84,31 @@ def _load(path: Path) -> list[Derivation]:
         namespace = runpy.run_path(str(path), run_name="__verify_check__")
     except SyntaxError as exc:
         raise VerifyInputError(f"{path}:{exc.lineno}: syntax error: {exc.msg}") from None
+    return _collect(path, namespace)
+
+
+def run_source(name: str, source: bytes) -> list[Derivation]:
+    """Run a derivation file's text (read by the checker and handed to the sandboxed
+    child, which may not see the file itself) as module ``__verify_check__`` with
+    ``name`` as its file name; its derivations, or one VerifyInputError line."""
+    path = Path(name)
+    with contained(path, "loading"):
+        try:
+            code = compile(source, name, "exec", dont_inherit=True)
+        except SyntaxError as exc:
+            raise VerifyInputError(f"{path}:{exc.lineno}: syntax error: {exc.msg}") from None
+        except ValueError as exc:  # e.g. a NUL byte
+            raise VerifyInputError(f"{path}: not Python text ({exc})") from None
+        module = types.ModuleType("__verify_check__")
+        module.__file__ = name
+        sys.modules["__verify_check__"] = module
+        if str(path.parent) not in sys.path:
+            sys.path.insert(0, str(path.parent))  # its own helper modules, where readable
+        exec(code, module.__dict__)
+        return _collect(path, dict(module.__dict__))
+
+
+def _collect(path: Path, namespace: dict) -> list[Derivation]:
     if "DERIVATIONS" in namespace:
         found = namespace["DERIVATIONS"]
         if not isinstance(found, list | tuple) or not all(

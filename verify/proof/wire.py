@@ -82,6 +82,9 @@ LIMITS = {
     "text": 20_000,          # characters of one name, label, note or citation
     "constant_bits": 65_536,  # bits of a constant's numerator or denominator
     "bytes": 64 * 2**20,     # the whole JSON document
+    "differentiated": 1_000_000,  # distinct nodes all ddt nodes differentiate together
+    "term_size": 2**20,      # one term's reason, premises and assumptions (characters)
+    "terms_size": 2**24,     # the same over all terms
 }
 
 _SHAPES = {"scalar": SCALAR, "vector": VECTOR, "matrix": MATRIX, "angle": ANGLE}

@@ -313,8 +313,17 @@ def check_against_program(data: dict, sp: StepProgram, bound: str) -> SosCheck:
     result = check_bound(data, sp)
     if not result.ok:
         return result
-    return SosCheck(True, f"{sp.statement}: {result.reason}; {bound}")
+    return SosCheck(True, f"{printed_statement(sp)}: {result.reason}; {bound}")
+
+
+def printed_statement(sp: StepProgram) -> str:
+    """What a checked certificate is reported as: the claim as its tree says (labels
+    are the author's and bind nothing), and the labelled text beside it if it reads
+    otherwise."""
+    if not sp.plain or sp.plain == sp.statement:
+        return sp.statement
+    return f"{sp.plain} (written {sp.statement!r})"
 
 
 __all__ = ["PAPER", "SCHEMA", "check_against_program", "check_bound", "check_form", "claim_key",
-           "file_name", "lookup", "to_data", "write"]
+           "file_name", "lookup", "printed_statement", "to_data", "write"]

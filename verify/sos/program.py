@@ -113,3 +113,6 @@ class StepProgram:
     numerator: pl.Poly
     factors: list[tuple[pl.Poly, int]]
     statement: str
+    #: the statement with every label replaced by the tree it names ("" if not known):
+    #: what a certificate is printed as, since a label is only the author's word
+    plain: str = ""
