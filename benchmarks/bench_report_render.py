@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import sys
 import time
-from datetime import UTC, datetime
 
 sys.path.insert(0, "tests")
 
@@ -21,9 +20,6 @@ from report_fixtures import claim, derivation, registry_run, run_of, step
 from verify.report.latex import render_latex
 from verify.report.mathml import mathml
 from verify.report.render import render_html, render_json, render_markdown
-from verify.report.run_info import RunInfo
-
-FIXED = RunInfo(datetime(2026, 1, 1, tzinfo=UTC), reproducible=True)
 
 CHAIN = [  # the shape of the paper's S_r-dot chain (Theorem 1)
     ("=", "(-1/2) tr((d/dt R̄_r))"),
@@ -48,7 +44,7 @@ def timed(fn, run, repeat: int = 3) -> float:
     for _ in range(repeat):
         mathml.cache_clear()
         start = time.perf_counter()
-        fn(run, FIXED)
+        fn(run)
         best = min(best, time.perf_counter() - start)
     return best
 
@@ -62,7 +58,7 @@ def main(copies: int) -> None:
         t = timed(fn, run)
         print(f"{name:>10} {t:9.4f} {t / base:8.1f}")
     mathml.cache_clear()
-    render_html(run, FIXED)
+    render_html(run)
     n = mathml.cache_info().currsize
     t = timed(render_html, run) - timed(render_markdown, run)
     print(f"{n} distinct formulas through latex2mathml: about {1e3 * t / n:.2f} ms each")

@@ -13,7 +13,6 @@ import shutil
 import subprocess
 import xml.etree.ElementTree as ET
 from dataclasses import replace
-from datetime import UTC, datetime
 
 import pytest
 from report_fixtures import claim, derivation, run_of, step
@@ -22,9 +21,6 @@ from verify.report.latex import render_latex
 from verify.report.mathml import mathml, split_math
 from verify.report.mathtex import latex_text, prose_to_latex, to_latex
 from verify.report.render import render_html, render_markdown
-from verify.report.run_info import RunInfo
-
-FIXED = RunInfo(datetime(2026, 1, 1, tzinfo=UTC), reproducible=True)
 
 
 def _balanced(tex: str) -> bool:
@@ -55,13 +51,13 @@ ALL = MARKUP + LATEX + NOTATION
 class TestMarkupInjection:
     @pytest.mark.parametrize("text", MARKUP + LATEX)
     def test_html_gains_no_elements(self, text):
-        page = render_html(_hostile_run(text), FIXED)
+        page = render_html(_hostile_run(text))
         assert "<script>" not in page and "<img src=x" not in page
         assert "onmouseover='alert" not in page and "<!-- comment -->" not in page
 
     @pytest.mark.parametrize("text", MARKUP)
     def test_every_math_block_stays_wellformed(self, text):
-        page = render_html(_hostile_run(text), FIXED)
+        page = render_html(_hostile_run(text))
         for block in re.findall(r"<math\b.*?</math>", page, flags=re.S):
             ET.fromstring(block)
 
@@ -69,7 +65,7 @@ class TestMarkupInjection:
 class TestLatexInjection:
     @pytest.mark.parametrize("text", ALL)
     def test_appendix_is_ascii_with_balanced_groups(self, text):
-        tex = render_latex(_hostile_run(text), FIXED)
+        tex = render_latex(_hostile_run(text))
         assert tex.isascii()
         body = tex.split("% begin appendix", 1)[1]
         assert _balanced(body), text
@@ -84,7 +80,7 @@ class TestLatexInjection:
     def test_appendix_of_every_hostile_text_compiles(self, tmp_path):
         results = [replace(r, claim=replace(r.claim, id=f"x.hostile{k}"))
                    for k, text in enumerate(ALL) for r in _hostile_run(text).results]
-        (tmp_path / "appendix.tex").write_text(render_latex(run_of(*results), FIXED))
+        (tmp_path / "appendix.tex").write_text(render_latex(run_of(*results)))
         done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
                                "appendix.tex"], cwd=tmp_path, capture_output=True, text=True,
                               timeout=300, check=False)
@@ -105,7 +101,7 @@ class TestDollarsAndDelimiters:
 class TestMarkdownTables:
     @pytest.mark.parametrize("text", ["a | b", "|s| > 0", "x || y", "‖x‖ | y"])
     def test_a_pipe_does_not_split_a_table_row(self, text):
-        md = render_markdown(_hostile_run(text), FIXED)
+        md = render_markdown(_hostile_run(text))
         rows = [line for line in md.splitlines() if line.startswith("| 1 |")
                 or (line.startswith("| |") and line.endswith("** |"))]
         assert rows

@@ -16,10 +16,6 @@ from verify.report.latex import render_latex
 from verify.report.mathml import markdown_prose, mathml, prose_html, split_math
 from verify.report.mathtex import prose_to_latex, to_latex
 from verify.report.render import render_html, render_markdown
-from verify.report.run_info import RunInfo
-
-FIXED = RunInfo(__import__("datetime").datetime(2026, 1, 1, tzinfo=__import__("datetime").UTC),
-                reproducible=True)
 
 
 @pytest.mark.parametrize(("plain", "latex"), [
@@ -68,7 +64,7 @@ def _run():
 
 
 def test_html_formulas_are_wellformed_mathml():
-    page = render_html(_run(), FIXED)
+    page = render_html(_run())
     blocks = re.findall(r"<math\b.*?</math>", page, flags=re.S)
     assert len(blocks) >= 10
     for block in blocks:
@@ -85,7 +81,7 @@ def _visible_text(page: str) -> str:
 
 
 def test_no_ascii_math_left_in_the_html_of_statements_and_steps():
-    text = _visible_text(render_html(_run(), FIXED))
+    text = _visible_text(render_html(_run()))
     for ascii_math in (">=", "lambda_min", "^T", "λmin", "ᵀ", "R_rl"):
         assert ascii_math not in text, ascii_math
 
@@ -109,11 +105,11 @@ def test_every_registered_claim_has_latex_forms_that_typeset():
 
 def test_each_section_heading_appears_once():
     run = registry_run()
-    md = render_markdown(run, FIXED)
+    md = render_markdown(run)
     headings = [line for line in md.splitlines() if line.startswith("## Section")]
     assert len(headings) == len(set(headings)) >= 5
     assert "## Section 3, Lemma 1" in headings and "## Section 3, Theorem 1" in headings
-    page = render_html(run, FIXED)
+    page = render_html(run)
     h2 = re.findall(r"<h2>(Section [^<]*)</h2>", page)
     assert len(h2) == len(set(h2)) == len(headings)
     # every claim is still there, once
@@ -122,7 +118,7 @@ def test_each_section_heading_appears_once():
 
 
 def test_steps_have_their_relation_on_their_own_row_and_shared_evidence_once():
-    page = render_html(_run(), FIXED)
+    page = render_html(_run())
     table = re.search(r"<table class='proof'>.*?</table>", page, flags=re.S).group(0)
     rel_rows = re.findall(r"<tr class='rel'>(.*?)</tr>", table, flags=re.S)
     assert len(rel_rows) == 4  # start + 3 steps, each a row holding only the formula
@@ -135,7 +131,7 @@ def test_steps_have_their_relation_on_their_own_row_and_shared_evidence_once():
 
 
 def test_markdown_keeps_dollar_math_in_table_rows():
-    md = render_markdown(_run(), FIXED)
+    md = render_markdown(_run())
     assert r"| 1 | $= \tfrac{1}{2} k_{s} \operatorname{tr}(" in md
     rows = [line for line in md.splitlines() if line.startswith("| 2 |")]
     assert rows and rows[0].count("|") - rows[0].count("\\|") == 4
@@ -150,7 +146,7 @@ def test_markdown_and_html_come_from_the_same_source():
 
 
 def test_appendix_is_ascii_latex_with_every_claim():
-    tex = render_latex(_run(), FIXED)
+    tex = render_latex(_run())
     assert tex.isascii()
     assert tex.startswith(r"\documentclass") and tex.rstrip().endswith(r"\end{document}")
     assert "% begin appendix" in tex and "% end appendix" in tex
@@ -182,7 +178,7 @@ def test_appendix_compiles_with_pdflatex(tmp_path):
     drawn = claim("sec9.figure", "9 Other", evidence=[
         figure("a line, $5 & 100% of it", path="figures/line.png")])
     run = registry_run()
-    tex = render_latex(run_of(*_run().results, drawn, *run.results), FIXED)
+    tex = render_latex(run_of(*_run().results, drawn, *run.results))
     assert r"\includegraphics[width=0.8\linewidth]{figures/line.png}" in tex
     done = _pdflatex(tex, tmp_path)
     assert done.returncode == 0, done.stdout[-2000:]
@@ -216,7 +212,7 @@ def _chromium() -> str | None:
 def test_chromium_parses_the_formulas_as_mathml(tmp_path):
     """The DOM Chromium builds holds the MathML elements (not text), and it renders."""
     page = tmp_path / "report.html"
-    page.write_text(render_html(_run(), FIXED))
+    page.write_text(render_html(_run()))
     common = [_chromium(), "--headless", "--no-sandbox", "--disable-gpu",
               "--disable-background-networking", "--no-first-run",
               "--disable-component-update", "--disable-sync",

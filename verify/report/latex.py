@@ -29,7 +29,6 @@ from verify.report.render import (
     report_data,
     sections,
 )
-from verify.report.run_info import RunInfo
 from verify.report.steps import (
     DerivationTable,
     common_evidence,
@@ -142,10 +141,9 @@ def _claim(r: ClaimResult) -> list[str]:
     return out
 
 
-def render_latex(run: RunResult, info: RunInfo | None = None) -> str:
+def render_latex(run: RunResult) -> str:
     """``appendix.tex``: the run as a LaTeX appendix (see the module docstring)."""
-    info = info or RunInfo.from_environment()
-    data = report_data(run, info)
+    data = report_data(run)
     lines = [_PREAMBLE.rstrip("\n"), "% begin appendix", r"\appendix",
              r"\section{Machine verification of the claims}",
              "Every checkable claim of the paper, checked by the \\texttt{verify} tool (seed "
@@ -178,8 +176,6 @@ def render_latex(run: RunResult, info: RunInfo | None = None) -> str:
         lines.append(r"\clearpage")
     lines += [r"\subsection{Environment}", latex_text(ENVIRONMENT_NOTE), r"\begin{itemize}"]
     lines += [r"\item " + latex_text(f"{k}: {v}") for k, v in data["environment"].items()]
-    lines += [r"\end{itemize}", "Generated " + latex_text(info.stamp)
-              + (" (SOURCE\\_DATE\\_EPOCH)." if info.reproducible else "."),
-              "% end appendix", r"\end{document}"]
+    lines += [r"\end{itemize}", "% end appendix", r"\end{document}"]
     text = "\n".join(lines) + "\n"
     return text.encode("ascii", "replace").decode("ascii")
