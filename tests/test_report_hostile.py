@@ -17,7 +17,7 @@ from dataclasses import replace
 import pytest
 from report_fixtures import claim, derivation, run_of, step
 
-from verify.report.latex import render_latex
+from verify.report.latex import render_latex, render_supplement
 from verify.report.mathml import mathml, split_math
 from verify.report.mathtex import latex_text, prose_to_latex, to_latex
 from verify.report.render import render_html, render_markdown
@@ -65,11 +65,11 @@ class TestMarkupInjection:
 class TestLatexInjection:
     @pytest.mark.parametrize("text", ALL)
     def test_appendix_is_ascii_with_balanced_groups(self, text):
-        tex = render_latex(_hostile_run(text))
-        assert tex.isascii()
-        body = tex.split("% begin appendix", 1)[1]
-        assert _balanced(body), text
-        assert r"\input{" not in body and r"\def\x" not in body
+        for tex in (render_latex(_hostile_run(text)), render_supplement(_hostile_run(text))):
+            assert tex.isascii()
+            body = tex.split(r"\begin{document}", 1)[1]
+            assert _balanced(body), text
+            assert r"\input{" not in body and r"\def\x" not in body
 
     @pytest.mark.parametrize("text", ALL)
     def test_each_formula_is_balanced_ascii(self, text):
@@ -80,11 +80,12 @@ class TestLatexInjection:
     def test_appendix_of_every_hostile_text_compiles(self, tmp_path):
         results = [replace(r, claim=replace(r.claim, id=f"x.hostile{k}"))
                    for k, text in enumerate(ALL) for r in _hostile_run(text).results]
-        (tmp_path / "appendix.tex").write_text(render_latex(run_of(*results)))
-        done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
-                               "appendix.tex"], cwd=tmp_path, capture_output=True, text=True,
-                              timeout=300, check=False)
-        assert done.returncode == 0, done.stdout[-3000:]
+        for name, render in (("appendix", render_latex), ("supplement", render_supplement)):
+            (tmp_path / f"{name}.tex").write_text(render(run_of(*results)))
+            done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                                   f"{name}.tex"], cwd=tmp_path, capture_output=True,
+                                  text=True, timeout=300, check=False)
+            assert done.returncode == 0, done.stdout[-3000:]
 
 
 class TestDollarsAndDelimiters:

@@ -11,6 +11,7 @@ from verify.report.run_info import RUN_RECORD, write_run_record
 
 REPORT_FILES = ("report.md", "report.html", "report.json")
 APPENDIX_FILE = "appendix.tex"
+SUPPLEMENT_FILE = "supplement.tex"
 
 
 def write_report(run: RunResult, out_dir: Path, *, latex: bool = False) -> list[Path]:
@@ -23,12 +24,20 @@ def write_report(run: RunResult, out_dir: Path, *, latex: bool = False) -> list[
         out_dir / "report.json": render_json(run),
     }
     if latex:
-        from verify.report.latex import render_latex
+        from verify.report.latex import render_latex, render_supplement
 
         rendered[out_dir / APPENDIX_FILE] = render_latex(run)
+        rendered[out_dir / SUPPLEMENT_FILE] = render_supplement(run)
     write_all_atomic(rendered)
     return list(rendered)
 
 
-__all__ = ["APPENDIX_FILE", "REPORT_FILES", "RUN_RECORD", "write_atomic", "write_report",
-           "write_run_record"]
+__all__ = [
+    "APPENDIX_FILE",
+    "REPORT_FILES",
+    "RUN_RECORD",
+    "SUPPLEMENT_FILE",
+    "write_atomic",
+    "write_report",
+    "write_run_record",
+]
