@@ -75,8 +75,10 @@ _SPELLINGS = (
     (re.compile(r"\b([A-Za-z])((?:_[A-Za-z0-9]+)?)-dot(?![A-Za-z])"),
      "\\1\u0307\\2"),  # S_h-dot: Ṡ_h
     (re.compile(r"\b([A-Z])~"), "\\1\u0303"),  # W~: W̃
+    (re.compile(r"\b([dR])bar\b"), "\\1\u0304"),  # dbar: d̄
     (re.compile(r"\bkappa\b"), "κ"), (re.compile(r"\bchi2\b"), "χ²"),
     (re.compile(r"\balpha\b"), "α"), (re.compile(r"\bpi\b"), "π"),
+    (re.compile(r"\bphi(?=\()"), "φ"),
     (re.compile(r"\beps\b"), "ε"),
     (re.compile(r"\bsum (?!of\b)(?=[A-Za-z](?:_\w+)?\b)"), "∑"),  # sum d_i: ∑d_i
     (re.compile(r"\bhat ([A-Za-z\u0370-\u03ff])(?![\w(])"), "hat(\\1)"),  # hat v: hat(v)
@@ -511,6 +513,7 @@ def prose_to_latex(text: str) -> str:
               and words[k - 1] in ("=", ">=", "<=", ">", "<", "≥", "≤", "≠")):
             joined[k] = True
     _extend(words, joined)
+    _balance(words, joined)
     out: list[str] = []
     k = 0
     while k < n:
@@ -576,6 +579,48 @@ def _extend(words: list[str], joined: list[bool]) -> None:
             elif joined[k + 1] and short(words[k - 1]) \
                     and not words[k - 1].endswith(tuple(_TRAIL)):
                 joined[k] = joined[k - 1] = True
+
+
+def _depth(word: str) -> int:
+    return word.count("(") - word.count(")")
+
+
+def _balance(words: list[str], joined: list[bool], reach: int = 4) -> None:
+    """Grow a formula whose parentheses do not balance over the few words that close
+    them (``10/(s + 0.5)^2`` is one formula, not ``10/(s +`` and ``0.5)^2``)."""
+    n = len(words)
+    k = 0
+    while k < n:
+        if not joined[k]:
+            k += 1
+            continue
+        j = k
+        while j < n and joined[j]:
+            j += 1
+        depth = sum(_depth(w) for w in words[k:j])
+        if depth > 0:  # an open parenthesis: close it within reach to the right
+            total, end = depth, None
+            for m in range(j, min(j + reach, n)):
+                total += _depth(words[m])
+                if total == 0:
+                    end = m
+                    break
+            if end is not None:
+                for m in range(j, end + 1):
+                    joined[m] = True
+        elif depth < 0:  # a closing one: open it within reach to the left
+            total, start = depth, None
+            for m in range(k - 1, max(k - 1 - reach, -1), -1):
+                total += _depth(words[m])
+                if total == 0:
+                    start = m
+                    break
+            if start is not None:
+                for m in range(start, k):
+                    joined[m] = True
+                k = start
+                continue
+        k = j
 
 
 def _open_angle(text: str) -> bool:
