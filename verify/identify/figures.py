@@ -170,7 +170,7 @@ def _nu_figure(structure: Structure, center: np.ndarray, omega: np.ndarray,
         where.fill_between(omega, values, 0, where=values < 0, color="C3", alpha=0.35,
                            lw=0, label=r"$\nu < 0$: not passive there")
         where.plot([omega[low]], [values[low]], "o", color="C3", ms=4,
-                   label=rf"minimum $\nu = {values[low]:.2g}$ at $\omega = {omega[low]:.3g}$"
+                   label=rf"lowest drawn: $\nu = {values[low]:.2g}$ at $\omega = {omega[low]:.3g}$"
                    " rad/s")
     if hidden:
         axes[1].set_ylim(3 * values[low], -3 * values[low])
