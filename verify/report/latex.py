@@ -57,6 +57,7 @@ _APPENDIX_PREAMBLE = r"""\documentclass[10pt,twocolumn]{article}
 \usepackage{tabularx,array}
 \usepackage[margin=1.8cm]{geometry}
 \usepackage{url}
+\raggedbottom
 \begin{document}
 """
 
@@ -282,6 +283,11 @@ def _summary_table(results: list[ClaimResult]) -> list[str]:
     return out
 
 
+def _code_spans(text: str) -> str:
+    """Text between backquotes (a command such as `verify gate`) in typewriter type."""
+    return re.sub(r"`([^`$\n]+)`", r"\\texttt{\1}", text)
+
+
 def _claim_paragraph(r: ClaimResult) -> str:
     tex = claim_latex(r)
     text = (r"\noindent " + _tt(r.claim.id) + " --- "
@@ -290,7 +296,7 @@ def _claim_paragraph(r: ClaimResult) -> str:
         text += r" \emph{Repair:} " + tex["repair"]
         if not text.rstrip().endswith("."):
             text += "."
-    return text + _certificates_line(r) + r"\par\smallskip"
+    return _code_spans(text) + _certificates_line(r) + r"\par\smallskip"
 
 
 def render_latex(run: RunResult) -> str:

@@ -79,6 +79,7 @@ _SPELLINGS = (
     (re.compile(r"\bkappa\b"), "κ"), (re.compile(r"\bchi2\b"), "χ²"),
     (re.compile(r"\balpha\b"), "α"), (re.compile(r"\bpi\b"), "π"),
     (re.compile(r"\bphi(?=\()"), "φ"),
+    (re.compile(r"\bnu(?=[ (_]|$)"), "ν"),
     (re.compile(r"\beps\b"), "ε"),
     (re.compile(r"\bsum (?!of\b)(?=[A-Za-z](?:_\w+)?\b)"), "∑"),  # sum d_i: ∑d_i
     (re.compile(r"\bhat ([A-Za-z\u0370-\u03ff])(?![\w(])"), "hat(\\1)"),  # hat v: hat(v)
