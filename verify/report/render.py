@@ -25,7 +25,7 @@ from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.runner import RunResult
 from verify.report.canonical import canonical_data
 from verify.report.mathml import markdown_prose, mathml, prose_html
-from verify.report.mathtex import prose_to_latex
+from verify.report.mathtex import normalise, prose_to_latex
 from verify.report.steps import (
     StepRow,
     common_evidence,
@@ -155,7 +155,7 @@ def _evidence_line(e) -> str:
     href = _figure_href(e)
     if href:
         return (f"- [{e.kind.value}, {status}] {summary} (`{href}`)\n\n"
-                f"    ![{_md_escape(e.summary)[:80]}]({href})\n")
+                f"    ![{_md_escape(normalise(e.summary))[:80]}]({href})\n")
     path = f" (`{e.path}`)" if e.path else ""
     return f"- [{e.kind.value}, {status}] {summary}{path}"
 
@@ -301,7 +301,7 @@ def _evidence_html(e) -> str:
         f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
         f"{'pass' if e.passed else 'FAIL'}] {prose_html(prose_to_latex(e.summary))}"
         + (f" (<code>{esc(e.path)}</code>)" if e.path and not href else "")
-        + (f"<br><img src='{esc(href)}' alt='{esc(e.summary)}'>" if href else "")
+        + (f"<br><img src='{esc(href)}' alt='{esc(normalise(e.summary))}'>" if href else "")
         + (f"<details><summary>data</summary><pre>"
            f"{esc(json.dumps(_evidence_data(e), indent=1, ensure_ascii=False))}</pre>"
            "</details>" if e.data else "")
