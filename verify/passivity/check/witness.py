@@ -85,8 +85,9 @@ def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Wi
     if found is None:
         return None
     v, value = found
-    shown = f"{gmpy2.mpfr(value):.3g}"
-    vector = [str(x) for x in v]
+    exact = str(value)  # an exact rational: written as such when it is short
+    shown = exact if len(exact) <= 24 else f"{gmpy2.mpfr(value):.3g} (rounded; exact in data)"
+    vector = "(" + ", ".join(str(x) for x in v) + ")"
     if margin:
         nu = short_text(margin)
         summary = (f"H − νI is not passive for ν = {nu}: D + Dᵀ − 2νI is not PSD, "
@@ -95,7 +96,7 @@ def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Wi
     else:
         summary = (f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {shown} < 0 at v = {vector}, so "
                    "H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞")
-    return Witness("infinity", summary, {"v": vector, "value": str(value)})
+    return Witness("infinity", summary, {"v": [str(x) for x in v], "value": exact})
 
 
 def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
