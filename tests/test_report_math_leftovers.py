@@ -124,11 +124,11 @@ def test_the_leftover_patterns_catch_the_old_spellings():
 
 
 def test_an_exact_counterexample_is_written_in_rationals():
-    from verify.claims.proofs import _exact_value
+    from verify.claims.proofs import exact_value_text
 
     value = {"parameters": ["-7/8", "-19/7", "15/2", "39/5", "-36/5", "-12/5"],
              "value": [-0.875, 7.8, -7.2, 7.8, -2.714286, -2.4, -7.2, -2.4, 7.5]}
-    assert _exact_value("A", value) == ("A = ((-7/8, 39/5, -36/5), (39/5, -19/7, -12/5), "
+    assert exact_value_text("A", value) == ("A = ((-7/8, 39/5, -36/5), (39/5, -19/7, -12/5), "
                                         "(-36/5, -12/5, 15/2)) exactly (rows)")
     value["value"][4] = -2.71  # matches no parameter: the rounding is stated
-    assert "rounded to 6 decimals; exact parameters -7/8" in _exact_value("A", value)
+    assert "rounded to 6 decimals; exact parameters -7/8" in exact_value_text("A", value)

@@ -37,7 +37,7 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
     ]
     for step in result.steps:
         if step.counterexample is not None:
-            values = "; ".join(_exact_value(name, v)
+            values = "; ".join(exact_value_text(name, v)
                                for name, v in step.counterexample["values"].items())
             out.append(
                 Evidence(
@@ -51,7 +51,7 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
     return out
 
 
-def _exact_value(name: str, v: dict) -> str:
+def exact_value_text(name: str, v: dict) -> str:
     """A counterexample's variable shown exactly: each entry of its (rounded) value is
     matched to the one rational parameter it rounds from, so the matrix is written in
     rationals; when an entry matches no parameter or several, the rounded value is

@@ -76,6 +76,7 @@ _SPELLINGS = (
      "\\1\u0307\\2"),  # S_h-dot: Ṡ_h
     (re.compile(r"\b([A-Z])~"), "\\1\u0303"),  # W~: W̃
     (re.compile(r"\b([dR])bar\b"), "\\1\u0304"),  # dbar: d̄
+    (re.compile(r"\+/-"), "±"),
     (re.compile(r"\bkappa\b"), "κ"), (re.compile(r"\bchi2\b"), "χ²"),
     (re.compile(r"\balpha\b"), "α"), (re.compile(r"\bpi\b"), "π"),
     (re.compile(r"\bphi(?=\()"), "φ"),
