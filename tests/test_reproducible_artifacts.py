@@ -63,6 +63,12 @@ def test_only_never_writes_over_the_full_report(tmp_path, monkeypatch):
     assert sorted(p.name for p in (tmp_path / "reports").iterdir()) == ["report.md"]
     assert sorted(p.name for p in (tmp_path / "certificates").iterdir()) == ["keep.json"]
     assert (tmp_path / "build" / "only" / "reports" / "report.md").is_file()
+    assert main(["all", "--quick", "--jobs", "1", "--only", "sec4.nu-criterion", "--out",
+                 "mine", "--run-record", "mine/when.json"]) == 0
+    assert (tmp_path / "mine" / "report.md").is_file()
+    record = json.loads((tmp_path / "mine" / "when.json").read_text())
+    assert list(record["timings"]) == ["sec4.nu-criterion"]
+    assert "mine/report.md" in record["reports"]
 
 
 def test_parallel_claim_checks_give_the_sequential_report(tmp_path, monkeypatch):

@@ -54,9 +54,10 @@ def _build_parser() -> argparse.ArgumentParser:
                        help="where the date and timings of the run are written (default "
                        "build/run.json, git-ignored; they are never in the reports)")
     p_all.add_argument("--latex", action=argparse.BooleanOptionalAction, default=True,
-                       help="write appendix.tex in the report directory too: the report as "
-                            "a LaTeX appendix for the paper (pdflatex appendix.tex there "
-                            "builds it; default on, --no-latex leaves it out)")
+                       help="write appendix.tex and supplement.tex in the report directory "
+                            "too: a short two-column appendix for the paper (one pdflatex "
+                            "pass) and the full supplement (three passes); default on, "
+                            "--no-latex leaves them out")
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
