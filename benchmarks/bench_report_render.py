@@ -4,8 +4,9 @@ Run: ``python benchmarks/bench_report_render.py [copies]``. It builds a run of e
 registered claim with a derivation of ``copies`` x the paper's longest chain (no checks are
 run: the renderers see the same data a real run gives them), renders it as JSON (the
 baseline: no formulas), Markdown (LaTeX sources), HTML (LaTeX sources and MathML) and
-the LaTeX appendix in one process, and prints each time and its ratio to JSON, and how
-many formulas went through ``latex2mathml`` and at what cost each (cache cleared).
+the LaTeX appendix and supplement in one process, and prints each time and its ratio to
+JSON, and how many formulas went through ``latex2mathml`` and at what cost each (cache
+cleared).
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ sys.path.insert(0, "tests")
 
 from report_fixtures import claim, derivation, registry_run, run_of, step
 
-from verify.report.latex import render_latex
+from verify.report.latex import render_latex, render_supplement
 from verify.report.mathml import mathml
 from verify.report.render import render_html, render_json, render_markdown
 
@@ -54,7 +55,8 @@ def main(copies: int) -> None:
     base = timed(render_json, run)
     print(f"{'format':>10} {'seconds':>9} {'/ json':>8}")
     for name, fn in (("json", render_json), ("markdown", render_markdown),
-                     ("html", render_html), ("latex", render_latex)):
+                     ("html", render_html), ("appendix", render_latex),
+                     ("supplement", render_supplement)):
         t = timed(fn, run)
         print(f"{name:>10} {t:9.4f} {t / base:8.1f}")
     mathml.cache_clear()
