@@ -303,7 +303,7 @@ def render_latex(run: RunResult) -> str:
     """``appendix.tex``: the short appendix (see the module docstring)."""
     counts = run.counts()
     said = ", ".join(f"{n} {_SHORT_VERDICT[Verdict(v)]}" for v, n in counts.items() if n)
-    lines = [_APPENDIX_PREAMBLE.rstrip("\n"),
+    lines = [_APPENDIX_PREAMBLE.rstrip("\n"), r"\appendix",
              "% begin appendix (needs \\usepackage{" + ",".join(APPENDIX_PACKAGES) + "})",
              r"\section{Machine verification of the claims}",
              "Every checkable claim of Sections 2--4 was checked by machine (the "
