@@ -132,3 +132,18 @@ def test_an_exact_counterexample_is_written_in_rationals():
                                         "(-36/5, -12/5, 15/2)) exactly (rows)")
     value["value"][4] = -2.71  # matches no parameter: the rounding is stated
     assert "rounded to 6 decimals; exact parameters -7/8" in exact_value_text("A", value)
+
+
+def test_a_witness_value_is_written_exactly_or_said_to_be_rounded():
+    from fractions import Fraction
+
+    from verify.passivity.check.witness import _rounded_up, vector_witness
+
+    short = vector_witness(Fraction(21, 8), 2.625, "-0.0938", [1, 0], Fraction(-3, 32), 1)
+    assert "v = -3/32 < 0" in short.summary
+    long = vector_witness(Fraction(21, 8), 2.625, "-0.0938", [1, 0],
+                          Fraction(-93841234567, 10 ** 12), 1)
+    assert "-0.0938 (rounded; exact in the data)" in long.summary
+    assert long.data["value"] == "-93841234567/1000000000000"
+    bound = Fraction(-9386, 100000)  # rounded to nearest: -0.0939, below the bound
+    assert _rounded_up(bound) == "-0.0938" and Fraction("-0.0938") >= bound
