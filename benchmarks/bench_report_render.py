@@ -4,26 +4,23 @@ Run: ``python benchmarks/bench_report_render.py [copies]``. It builds a run of e
 registered claim with a derivation of ``copies`` x the paper's longest chain (no checks are
 run: the renderers see the same data a real run gives them), renders it as JSON (the
 baseline: no formulas), Markdown (LaTeX sources), HTML (LaTeX sources and MathML) and
-the LaTeX appendix in one process, and prints each time and its ratio to JSON, and how
-many formulas went through ``latex2mathml`` and at what cost each (cache cleared).
+the LaTeX appendix and supplement in one process, and prints each time and its ratio to
+JSON, and how many formulas went through ``latex2mathml`` and at what cost each (cache
+cleared).
 """
 
 from __future__ import annotations
 
 import sys
 import time
-from datetime import UTC, datetime
 
 sys.path.insert(0, "tests")
 
 from report_fixtures import claim, derivation, registry_run, run_of, step
 
-from verify.report.latex import render_latex
+from verify.report.latex import render_latex, render_supplement
 from verify.report.mathml import mathml
 from verify.report.render import render_html, render_json, render_markdown
-from verify.report.run_info import RunInfo
-
-FIXED = RunInfo(datetime(2026, 1, 1, tzinfo=UTC), reproducible=True)
 
 CHAIN = [  # the shape of the paper's S_r-dot chain (Theorem 1)
     ("=", "(-1/2) tr((d/dt R̄_r))"),
@@ -48,7 +45,7 @@ def timed(fn, run, repeat: int = 3) -> float:
     for _ in range(repeat):
         mathml.cache_clear()
         start = time.perf_counter()
-        fn(run, FIXED)
+        fn(run)
         best = min(best, time.perf_counter() - start)
     return best
 
@@ -58,11 +55,12 @@ def main(copies: int) -> None:
     base = timed(render_json, run)
     print(f"{'format':>10} {'seconds':>9} {'/ json':>8}")
     for name, fn in (("json", render_json), ("markdown", render_markdown),
-                     ("html", render_html), ("latex", render_latex)):
+                     ("html", render_html), ("appendix", render_latex),
+                     ("supplement", render_supplement)):
         t = timed(fn, run)
         print(f"{name:>10} {t:9.4f} {t / base:8.1f}")
     mathml.cache_clear()
-    render_html(run, FIXED)
+    render_html(run)
     n = mathml.cache_info().currsize
     t = timed(render_html, run) - timed(render_markdown, run)
     print(f"{n} distinct formulas through latex2mathml: about {1e3 * t / n:.2f} ms each")

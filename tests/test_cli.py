@@ -45,7 +45,9 @@ def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys)
     assert len(steps) > 40 and all(s["verdict"] in ("verified", "refuted") for s in steps)
     md = (tmp_path / "report.md").read_text()
     assert "Repaired statement" in md and "sec2.stealthiness" in md
-    assert "<table>" in (tmp_path / "report.html").read_text()
+    page = (tmp_path / "report.html").read_text()
+    assert "<table class='summary'>" in page and "<table class='proof'>" in page
+    assert "<h2>Run</h2>" not in page and "## Run" not in md  # no date, no timings
     assert not list(tmp_path.glob(".*.tmp"))
     assert main(["all", "--quick", "--out", str(tmp_path), "--only", "sec2.wtw", "--strict"]) == 1
     assert main(["all", "--quick", "--out", str(tmp_path), "--only", "sec2.d-dot", "--strict"]) == 0

@@ -26,6 +26,8 @@ def test_all_documents_its_outputs():
     (all_parser,) = [a for a in _build_parser()._actions
                      if isinstance(a, argparse._SubParsersAction)]
     text = all_parser.choices["all"].format_help()
-    for flag in ("--latex", "--certificates", "--out", "--only", "--jobs", "--seed"):
+    for flag in ("--latex", "--certificates", "--out", "--only", "--jobs", "--seed",
+                 "--run-record"):
         assert flag in text
     assert "appendix.tex" in text and "default: 20261121" in text
+    assert "build/run.json" in text and "build/only/reports" in text

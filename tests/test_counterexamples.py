@@ -41,6 +41,31 @@ def test_simulated_lemma1_counterexample_is_found_shrunk_and_confirmed():
     assert found.parameters["lambda_min(sym R_rl(0))"] < 0  # item 2 fails at the start
     assert found.parameters["tr(R-bar_r(0))"] >= 1  # Lemma 1's own premise holds
     assert found.measure > 1e-3
+    _check_figure(found)
+
+
+def _check_figure(found) -> None:
+    """The run's figure: SVG and PDF (vector, no raster inside), both panels with a
+    y-axis label, set in Computer Modern; the same bytes when drawn twice."""
+    import re
+    from unittest import mock
+
+    from verify.sim import outputs
+    from verify.sim.energy import energy
+
+    E = energy(found.trajectory, False)
+    files = outputs.counterexample_figure(found.trajectory, E, r"$\mathrm{tr}\,\bar R_r$")
+    assert files["pdf"].startswith(b"%PDF-") and b"<svg" in files["svg"][:400]
+    assert b"<image" not in files["svg"] and b"/Subtype /Image" not in files["pdf"]
+    assert files == outputs.counterexample_figure(found.trajectory, E,
+                                                  r"$\mathrm{tr}\,\bar R_r$")
+    with mock.patch("verify.artefacts.figure_bytes.vector_figures",
+                    side_effect=lambda fig: fig) as caught:
+        fig = outputs.counterexample_figure(found.trajectory, E, "t")
+    assert caught.called
+    assert all(ax.get_ylabel() for ax in fig.axes)
+    fonts = set(re.findall(rb"/BaseFont /(?:[A-Z]{6}\+)?(\w+)", files["pdf"]))
+    assert fonts and all(f.lower().startswith(b"cm") for f in fonts), fonts  # no DejaVu
 
 
 def test_non_passive_lagging_human_breaks_convergence():

@@ -35,3 +35,32 @@ def test_ellipsoid_samples_lie_in_the_ellipsoid():
     d = pts - theta
     q = np.einsum("ki,ij,kj->k", d, np.linalg.inv(cov), d)
     assert np.all(q <= 18.3 * (1 + 1e-9)) and q.max() > 0.5 * 18.3
+
+
+def _drawn_axes(monkeypatch, values: np.ndarray) -> list:
+    """The axes nu_figure draws for the given nu values (the figure is caught before it
+    becomes bytes)."""
+    import verify.identify.robust.verdict as verdict
+
+    caught = []
+    monkeypatch.setattr(verdict, "float_nu", lambda structure, center, omega: values)
+    monkeypatch.setattr(fg, "figure_bytes", lambda fig: caught.append(fig) or b"")
+    fg.nu_figure(Structure.paper(), np.array(PAPER_THETA), OMEGA, None, None)
+    (fig,) = caught
+    return fig.axes
+
+
+def test_a_tiny_negative_tail_of_nu_gets_a_zoomed_panel(monkeypatch):
+    """The passive human's nu dips to about -1.4e-4 beside values near 0.6: at full scale
+    that is the zero line, so a second panel shows it, its lower limit below the dip."""
+    values = 0.6 * np.exp(-OMEGA) - 1.4e-4 * (OMEGA > 30)
+    axes = _drawn_axes(monkeypatch, values)
+    assert len(axes) == 2
+    low, high = axes[1].get_ylim()
+    assert low < -1.4e-4 < 0 < high < 1e-3
+    assert any("not passive" in t.get_text() for t in axes[1].get_legend().get_texts())
+
+
+def test_a_visible_negative_part_needs_no_zoom(monkeypatch):
+    values = 0.6 * np.exp(-OMEGA) - 0.05 * (OMEGA > 3)
+    assert len(_drawn_axes(monkeypatch, values)) == 1

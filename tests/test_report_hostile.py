@@ -13,18 +13,14 @@ import shutil
 import subprocess
 import xml.etree.ElementTree as ET
 from dataclasses import replace
-from datetime import UTC, datetime
 
 import pytest
 from report_fixtures import claim, derivation, run_of, step
 
-from verify.report.latex import render_latex
+from verify.report.latex import render_latex, render_supplement
 from verify.report.mathml import mathml, split_math
 from verify.report.mathtex import latex_text, prose_to_latex, to_latex
 from verify.report.render import render_html, render_markdown
-from verify.report.run_info import RunInfo
-
-FIXED = RunInfo(datetime(2026, 1, 1, tzinfo=UTC), reproducible=True)
 
 
 def _balanced(tex: str) -> bool:
@@ -55,13 +51,13 @@ ALL = MARKUP + LATEX + NOTATION
 class TestMarkupInjection:
     @pytest.mark.parametrize("text", MARKUP + LATEX)
     def test_html_gains_no_elements(self, text):
-        page = render_html(_hostile_run(text), FIXED)
+        page = render_html(_hostile_run(text))
         assert "<script>" not in page and "<img src=x" not in page
         assert "onmouseover='alert" not in page and "<!-- comment -->" not in page
 
     @pytest.mark.parametrize("text", MARKUP)
     def test_every_math_block_stays_wellformed(self, text):
-        page = render_html(_hostile_run(text), FIXED)
+        page = render_html(_hostile_run(text))
         for block in re.findall(r"<math\b.*?</math>", page, flags=re.S):
             ET.fromstring(block)
 
@@ -69,11 +65,11 @@ class TestMarkupInjection:
 class TestLatexInjection:
     @pytest.mark.parametrize("text", ALL)
     def test_appendix_is_ascii_with_balanced_groups(self, text):
-        tex = render_latex(_hostile_run(text), FIXED)
-        assert tex.isascii()
-        body = tex.split("% begin appendix", 1)[1]
-        assert _balanced(body), text
-        assert r"\input{" not in body and r"\def\x" not in body
+        for tex in (render_latex(_hostile_run(text)), render_supplement(_hostile_run(text))):
+            assert tex.isascii()
+            body = tex.split(r"\begin{document}", 1)[1]
+            assert _balanced(body), text
+            assert r"\input{" not in body and r"\def\x" not in body
 
     @pytest.mark.parametrize("text", ALL)
     def test_each_formula_is_balanced_ascii(self, text):
@@ -84,11 +80,12 @@ class TestLatexInjection:
     def test_appendix_of_every_hostile_text_compiles(self, tmp_path):
         results = [replace(r, claim=replace(r.claim, id=f"x.hostile{k}"))
                    for k, text in enumerate(ALL) for r in _hostile_run(text).results]
-        (tmp_path / "appendix.tex").write_text(render_latex(run_of(*results), FIXED))
-        done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
-                               "appendix.tex"], cwd=tmp_path, capture_output=True, text=True,
-                              timeout=300, check=False)
-        assert done.returncode == 0, done.stdout[-3000:]
+        for name, render in (("appendix", render_latex), ("supplement", render_supplement)):
+            (tmp_path / f"{name}.tex").write_text(render(run_of(*results)))
+            done = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
+                                   f"{name}.tex"], cwd=tmp_path, capture_output=True,
+                                  text=True, timeout=300, check=False)
+            assert done.returncode == 0, done.stdout[-3000:]
 
 
 class TestDollarsAndDelimiters:
@@ -105,7 +102,7 @@ class TestDollarsAndDelimiters:
 class TestMarkdownTables:
     @pytest.mark.parametrize("text", ["a | b", "|s| > 0", "x || y", "‖x‖ | y"])
     def test_a_pipe_does_not_split_a_table_row(self, text):
-        md = render_markdown(_hostile_run(text), FIXED)
+        md = render_markdown(_hostile_run(text))
         rows = [line for line in md.splitlines() if line.startswith("| 1 |")
                 or (line.startswith("| |") and line.endswith("** |"))]
         assert rows

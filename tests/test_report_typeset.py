@@ -12,14 +12,10 @@ import xml.etree.ElementTree as ET
 import pytest
 from report_fixtures import claim, derivation, registry_run, run_of, step
 
-from verify.report.latex import render_latex
+from verify.report.latex import render_latex, render_supplement
 from verify.report.mathml import markdown_prose, mathml, prose_html, split_math
 from verify.report.mathtex import prose_to_latex, to_latex
 from verify.report.render import render_html, render_markdown
-from verify.report.run_info import RunInfo
-
-FIXED = RunInfo(__import__("datetime").datetime(2026, 1, 1, tzinfo=__import__("datetime").UTC),
-                reproducible=True)
 
 
 @pytest.mark.parametrize(("plain", "latex"), [
@@ -68,7 +64,7 @@ def _run():
 
 
 def test_html_formulas_are_wellformed_mathml():
-    page = render_html(_run(), FIXED)
+    page = render_html(_run())
     blocks = re.findall(r"<math\b.*?</math>", page, flags=re.S)
     assert len(blocks) >= 10
     for block in blocks:
@@ -85,7 +81,7 @@ def _visible_text(page: str) -> str:
 
 
 def test_no_ascii_math_left_in_the_html_of_statements_and_steps():
-    text = _visible_text(render_html(_run(), FIXED))
+    text = _visible_text(render_html(_run()))
     for ascii_math in (">=", "lambda_min", "^T", "λmin", "ᵀ", "R_rl"):
         assert ascii_math not in text, ascii_math
 
@@ -109,11 +105,11 @@ def test_every_registered_claim_has_latex_forms_that_typeset():
 
 def test_each_section_heading_appears_once():
     run = registry_run()
-    md = render_markdown(run, FIXED)
+    md = render_markdown(run)
     headings = [line for line in md.splitlines() if line.startswith("## Section")]
     assert len(headings) == len(set(headings)) >= 5
     assert "## Section 3, Lemma 1" in headings and "## Section 3, Theorem 1" in headings
-    page = render_html(run, FIXED)
+    page = render_html(run)
     h2 = re.findall(r"<h2>(Section [^<]*)</h2>", page)
     assert len(h2) == len(set(h2)) == len(headings)
     # every claim is still there, once
@@ -122,7 +118,7 @@ def test_each_section_heading_appears_once():
 
 
 def test_steps_have_their_relation_on_their_own_row_and_shared_evidence_once():
-    page = render_html(_run(), FIXED)
+    page = render_html(_run())
     table = re.search(r"<table class='proof'>.*?</table>", page, flags=re.S).group(0)
     rel_rows = re.findall(r"<tr class='rel'>(.*?)</tr>", table, flags=re.S)
     assert len(rel_rows) == 4  # start + 3 steps, each a row holding only the formula
@@ -135,7 +131,7 @@ def test_steps_have_their_relation_on_their_own_row_and_shared_evidence_once():
 
 
 def test_markdown_keeps_dollar_math_in_table_rows():
-    md = render_markdown(_run(), FIXED)
+    md = render_markdown(_run())
     assert r"| 1 | $= \tfrac{1}{2} k_{s} \operatorname{tr}(" in md
     rows = [line for line in md.splitlines() if line.startswith("| 2 |")]
     assert rows and rows[0].count("|") - rows[0].count("\\|") == 4
@@ -149,11 +145,25 @@ def test_markdown_and_html_come_from_the_same_source():
     assert "(100% of _runs)." in prose_html(source)
 
 
-def test_appendix_is_ascii_latex_with_every_claim():
-    tex = render_latex(_run(), FIXED)
+def test_appendix_is_short_ascii_latex_with_every_claim():
+    tex = render_latex(_run())
+    assert tex.isascii()
+    assert tex.startswith(r"\documentclass[10pt,twocolumn]{article}")
+    assert tex.rstrip().endswith(r"\end{document}")
+    part = tex.split("% begin appendix", 1)[1].split("% end appendix", 1)[0]
+    assert "longtable" not in part and r"\begin{tabularx}{\columnwidth}" in part
+    for cid in ("lemma9.a", "sec9.b", "lemma9.c"):
+        assert part.count(r"\noindent \path{" + cid + "}") == 1
+    assert "Repair:" in part and r"\ref{" not in part
+    for internal in ("[exact-identity", "(declared)", "latex2mathml", "pass]"):
+        assert internal not in tex
+
+
+def test_supplement_is_ascii_latex_with_every_claim():
+    tex = render_supplement(_run())
     assert tex.isascii()
     assert tex.startswith(r"\documentclass") and tex.rstrip().endswith(r"\end{document}")
-    assert "% begin appendix" in tex and "% end appendix" in tex
+    assert "latex2mathml typesets" not in tex
     for cid in ("lemma9.a", "sec9.b", "lemma9.c"):
         assert tex.count(r"\subsubsection*{\texttt{" + cid.replace("_", r"\_")) == 1
     assert tex.count(r"\subsection{Section 3, Lemma 9}") == 1
@@ -161,15 +171,15 @@ def test_appendix_is_ascii_latex_with_every_claim():
     assert "Repaired statement" in tex
 
 
-def _pdflatex(tex: str, where) -> subprocess.CompletedProcess:
-    (where / "appendix.tex").write_text(tex)
+def _pdflatex(tex: str, where, name: str = "appendix") -> subprocess.CompletedProcess:
+    (where / f"{name}.tex").write_text(tex)
     return subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error",
-                           "appendix.tex"], cwd=where, capture_output=True, text=True,
+                           f"{name}.tex"], cwd=where, capture_output=True, text=True,
                           timeout=300, check=False)
 
 
 @pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
-def test_appendix_compiles_with_pdflatex(tmp_path):
+def test_supplement_compiles_with_pdflatex(tmp_path):
     from report_fixtures import registry_run
 
     from verify.claims.evidence import figure
@@ -182,12 +192,45 @@ def test_appendix_compiles_with_pdflatex(tmp_path):
     drawn = claim("sec9.figure", "9 Other", evidence=[
         figure("a line, $5 & 100% of it", path="figures/line.png")])
     run = registry_run()
-    tex = render_latex(run_of(*_run().results, drawn, *run.results), FIXED)
+    tex = render_supplement(run_of(*_run().results, drawn, *run.results))
     assert r"\includegraphics[width=0.8\linewidth]{figures/line.png}" in tex
-    done = _pdflatex(tex, tmp_path)
+    done = _pdflatex(tex, tmp_path, "supplement")
     assert done.returncode == 0, done.stdout[-2000:]
-    assert (tmp_path / "appendix.pdf").read_bytes()[:5] == b"%PDF-"
+    assert (tmp_path / "supplement.pdf").read_bytes()[:5] == b"%PDF-"
     assert "Overfull \\hbox" not in done.stdout or done.stdout.count("Overfull") < 5
+
+
+#: a two-column paper as an author's would be (the paper's own ifacconf class is not in
+#: Debian's TeX packages): its preamble loads the packages the appendix asks for
+TWO_COLUMN_PAPER = (r"\documentclass[10pt,twocolumn]{article}" "\n"
+                    r"\usepackage{amsmath,amssymb,graphicx,tabularx,array,url}" "\n"
+                    r"\begin{document}" "\n" r"\section{Introduction} Text." "\n"
+                    "%s\n" r"\end{document}" "\n")
+
+
+def _pages(done: subprocess.CompletedProcess) -> int:
+    """The page count pdflatex reports ("Output written on x.pdf (3 pages, ...)")."""
+    return int(re.search(r"Output written on \S+ \((\d+) pages?", done.stdout).group(1))
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+def test_the_short_appendix_pastes_into_a_two_column_paper(tmp_path):
+    """The part between the markers, pasted into a two-column paper, builds in one pass
+    with nothing wider than its column, and the committed run's appendix is 2-4 pages."""
+    from report_fixtures import committed_run
+
+    tex = render_latex(committed_run())
+    part = tex.split("% begin appendix", 1)[1].split("% end appendix", 1)[0]
+    part = part.split("\n", 1)[1]  # the marker line's remainder names the packages
+    done = _pdflatex(TWO_COLUMN_PAPER % (r"\appendix" + "\n" + part), tmp_path, "paper")
+    assert done.returncode == 0, done.stdout[-3000:]
+    log = (tmp_path / "paper.log").read_text(errors="replace")
+    assert "Rerun" not in log and "undefined" not in log.lower()
+    assert not re.findall(r"Overfull \\hbox \((\d+\.\d+)pt", log) or max(
+        float(x) for x in re.findall(r"Overfull \\hbox \((\d+\.\d+)pt", log)) < 2
+    done = _pdflatex(tex, tmp_path, "appendix")
+    assert done.returncode == 0, done.stdout[-3000:]
+    assert 2 <= _pages(done) <= 4
 
 
 def test_verify_all_latex_writes_the_appendix(tmp_path, capsys):
@@ -196,14 +239,16 @@ def test_verify_all_latex_writes_the_appendix(tmp_path, capsys):
     out = tmp_path / "reports"
     assert main(["all", "--only", "thm1.phi", "--quick", "--latex", "--out", str(out),
                  "--certificates", str(tmp_path / "certs"), "--jobs", "1"]) == 0
-    tex = (out / "appendix.tex").read_text()
+    tex = (out / "supplement.tex").read_text()
     assert r"\subsubsection*{\texttt{thm1.phi}" in tex and tex.isascii()
+    assert r"\path{thm1.phi}" in (out / "appendix.tex").read_text()
     assert "appendix.tex" in capsys.readouterr().out
     assert not (tmp_path / "reports" / "appendix.pdf").exists()
     assert main(["all", "--only", "thm1.phi", "--quick", "--no-latex", "--out",
                  str(tmp_path / "r2"), "--certificates", str(tmp_path / "certs"),
                  "--jobs", "1"]) == 0
     assert not (tmp_path / "r2" / "appendix.tex").exists()  # left out on request
+    assert not (tmp_path / "r2" / "supplement.tex").exists()
 
 
 
@@ -216,7 +261,7 @@ def _chromium() -> str | None:
 def test_chromium_parses_the_formulas_as_mathml(tmp_path):
     """The DOM Chromium builds holds the MathML elements (not text), and it renders."""
     page = tmp_path / "report.html"
-    page.write_text(render_html(_run(), FIXED))
+    page.write_text(render_html(_run()))
     common = [_chromium(), "--headless", "--no-sandbox", "--disable-gpu",
               "--disable-background-networking", "--no-first-run",
               "--disable-component-update", "--disable-sync",

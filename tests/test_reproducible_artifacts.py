@@ -1,9 +1,10 @@
 """Reproducible artefacts: `verify all` writes the same bytes twice.
 
-With SOURCE_DATE_EPOCH set, reports (Markdown, HTML, JSON, figures) and certificates are
-byte-identical between runs; without it, the reports differ only in their final Run
-block (date and timings). Run on the Section 4 claims, which write certificates and
-figures, to keep the test short.
+With no environment variable, reports (Markdown, HTML, JSON, LaTeX, figures) and
+certificates are byte-identical between runs: the date and the timings go to standard
+output and to the run record (build/run.json), never into a report. `--only` writes to
+build/only unless --out says otherwise. Run on the Section 4 claims, which write
+certificates and figures, to keep the test short.
 """
 
 from __future__ import annotations
@@ -33,61 +34,47 @@ def run_all(where: Path) -> dict[str, bytes]:
     return snapshot(where / "out")
 
 
-def without_run_block(name: str, data: bytes) -> bytes:
-    """A report with its Run block (date, timings) removed."""
-    if name.endswith("report.json"):
-        doc = json.loads(data)
-        assert set(doc["run"]) >= {"generated", "timings"}
-        del doc["run"]
-        return json.dumps(doc).encode()
-    if name.endswith("report.md"):
-        text, _, run = data.decode().partition("\n## Run\n")
-        assert run
-        return text.encode()
-    if name.endswith("report.html"):
-        text, _, run = data.decode().partition("<h2>Run</h2>")
-        assert run
-        return text.encode()
-    if name.endswith("appendix.tex"):  # its only run figure: the date it was generated
-        text, n = re.subn(r"\nGenerated [^\n]*\n", "\n", data.decode())
-        assert n == 1
-        return text.encode()
-    return data
-
-
-def test_verify_all_is_byte_identical_with_source_date_epoch(tmp_path, monkeypatch, capsys):
+def test_verify_all_is_byte_identical_with_no_environment(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
-    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    monkeypatch.delenv("SOURCE_DATE_EPOCH", raising=False)
     first = run_all(tmp_path)
     assert any(name.startswith("certificates/") for name in first)
-    assert any(name.endswith(".png") for name in first)
+    assert any(name.endswith(".png") or name.endswith(".svg") for name in first)
+    record = json.loads((tmp_path / "build" / "run.json").read_text())
+    assert record["timings"] and record["generated"]
+    assert "date and timings: build/run.json" in capsys.readouterr().out
     assert run_all(tmp_path) == first
-    md = first["reports/report.md"].decode()
-    assert "Generated 2023-11-14T22:13:20+00:00 (SOURCE_DATE_EPOCH)" in md
-    assert not re.search(r"\d+\.\d+ s\b", md)  # no timing anywhere
-
-    monkeypatch.delenv("SOURCE_DATE_EPOCH")
-    clock = run_all(tmp_path)
-    assert clock.keys() == first.keys()
-    for name, data in clock.items():
-        assert without_run_block(name, data) == without_run_block(name, first[name]), name
-    assert json.loads(clock["reports/report.json"])["run"]["timings"]
+    for name in ("reports/report.md", "reports/report.html", "reports/appendix.tex"):
+        text = first[name].decode()
+        assert not re.search(r"\d+\.\d+ s\b|Generated |\b20\d\d-\d\d-\d\dT", text), name
+    assert "run" not in json.loads(first["reports/report.json"])
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")  # has no say any more
+    assert run_all(tmp_path) == first
 
 
-@pytest.mark.parametrize("value", ["yesterday", "-1", "1e9"])
-def test_bad_source_date_epoch_is_one_line_and_exit_2(monkeypatch, capsys, value, tmp_path):
-    monkeypatch.setenv("SOURCE_DATE_EPOCH", value)
-    assert main(["all", "--only", "sec4.model", "--out", str(tmp_path)]) == 2
-    err = capsys.readouterr().err
-    assert "SOURCE_DATE_EPOCH" in err and len(err.strip().splitlines()) == 1
-    assert not list(tmp_path.iterdir())
+def test_only_never_writes_over_the_full_report(tmp_path, monkeypatch):
+    """--only with no --out writes to build/only/reports and its certificates there."""
+    monkeypatch.chdir(tmp_path)
+    for name in ("reports/report.md", "certificates/keep.json"):
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text("full\n")
+    assert main(["all", "--quick", "--jobs", "1", "--only", "sec4.nu-criterion"]) == 0
+    assert (tmp_path / "reports" / "report.md").read_text() == "full\n"
+    assert sorted(p.name for p in (tmp_path / "reports").iterdir()) == ["report.md"]
+    assert sorted(p.name for p in (tmp_path / "certificates").iterdir()) == ["keep.json"]
+    assert (tmp_path / "build" / "only" / "reports" / "report.md").is_file()
+    assert main(["all", "--quick", "--jobs", "1", "--only", "sec4.nu-criterion", "--out",
+                 "mine", "--run-record", "mine/when.json"]) == 0
+    assert (tmp_path / "mine" / "report.md").is_file()
+    record = json.loads((tmp_path / "mine" / "when.json").read_text())
+    assert list(record["timings"]) == ["sec4.nu-criterion"]
+    assert "mine/report.md" in record["reports"]
 
 
 def test_parallel_claim_checks_give_the_sequential_report(tmp_path, monkeypatch):
     """verify all --jobs 2 renders byte for byte what --jobs 1 renders (fast claims)."""
     from verify.cli import main
 
-    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
     outs = []
     for jobs in ("1", "2"):
         out = tmp_path / f"jobs{jobs}"
@@ -129,7 +116,7 @@ def _verify_all_in_child(where: Path, *, threads: int, coretype: str | None,
     where.mkdir(parents=True)
     env = {k: v for k, v in os.environ.items()
            if not k.startswith(("OPENBLAS", "OMP_", "MKL_"))}
-    env.update(SOURCE_DATE_EPOCH="1795431493", OPENBLAS_NUM_THREADS=str(threads),
+    env.update(OPENBLAS_NUM_THREADS=str(threads),
                OMP_NUM_THREADS=str(threads), MKL_NUM_THREADS=str(threads),
                PYTHONPATH=str(Path(__file__).resolve().parents[1]))
     if coretype:
@@ -143,7 +130,9 @@ def _verify_all_in_child(where: Path, *, threads: int, coretype: str | None,
                           timeout=1200, check=False)
     if done.returncode != 0:  # not an AssertionError: the expected failure is the bytes
         raise RuntimeError(done.stdout[-2000:] + done.stderr[-2000:])
-    return snapshot(where)
+    files = snapshot(where)
+    assert "build/run.json" in files  # the date and timings, the one file meant to differ
+    return {name: data for name, data in files.items() if not name.startswith("build/")}
 
 
 def _differences(a: dict[str, bytes], b: dict[str, bytes]) -> list[str]:
@@ -157,7 +146,8 @@ def test_another_blas_gives_the_same_bytes(tmp_path):
     there = _verify_all_in_child(tmp_path / "there", threads=2, coretype="Sandybridge",
                                  claims=FAST_CLAIMS, quick=True)
     assert any(n.startswith("certificates/") for n in here)
-    assert {"reports/appendix.tex", "reports/figures/nu_reconstructed.png"} <= here.keys()
+    assert {"reports/appendix.tex", "reports/figures/nu_reconstructed.svg",
+            "reports/figures/nu_reconstructed.pdf"} <= here.keys()
     assert _differences(here, there) == []
 
 

@@ -20,6 +20,8 @@ from verify.errors import VerifyInputError
 #: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
 #: git-ignored build/; ``verify all`` writes the paper's into certificates/).
 GATE_CERTIFICATES = Path("build") / "certificates"
+#: Where ``verify all --only`` writes unless --out says otherwise (git-ignored build/).
+ONLY_OUT = Path("build") / "only"
 
 
 def _build_parser() -> argparse.ArgumentParser:
@@ -34,8 +36,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_all = sub.add_parser("all", help="run every registered claim check and write reports/ "
                            "(and certificates/)")
     p_all.add_argument(
-        "--out", type=Path, default=Path("reports"), metavar="DIR",
-        help="report directory (default: reports)"
+        "--out", type=Path, default=None, metavar="DIR",
+        help=f"report directory (default: reports; with --only, {ONLY_OUT / 'reports'}, so "
+        "a partial run never overwrites the full report)"
     )
     p_all.add_argument(
         "--strict", action="store_true", help="exit 1 unless every claim is 'verified'"
@@ -45,12 +48,17 @@ def _build_parser() -> argparse.ArgumentParser:
     )
     p_all.add_argument("--seed", type=int, default=20261121,
                        help="seed of the random samples (default: 20261121)")
-    p_all.add_argument("--certificates", type=Path, default=Path("certificates"),
-                       metavar="DIR", help="where certificates are written (default certificates)")
+    p_all.add_argument("--certificates", type=Path, default=None, metavar="DIR",
+                       help="where certificates are written (default: certificates; with "
+                       "--only, a certificates folder inside the report directory)")
+    p_all.add_argument("--run-record", type=Path, default=None, metavar="FILE",
+                       help="where the date and timings of the run are written (default "
+                       "build/run.json, git-ignored; they are never in the reports)")
     p_all.add_argument("--latex", action=argparse.BooleanOptionalAction, default=True,
-                       help="write appendix.tex in the report directory too: the report as "
-                            "a LaTeX appendix for the paper (pdflatex appendix.tex there "
-                            "builds it; default on, --no-latex leaves it out)")
+                       help="write appendix.tex and supplement.tex in the report directory "
+                            "too: a short two-column appendix for the paper (one pdflatex "
+                            "pass) and the full supplement (three passes); default on, "
+                            "--no-latex leaves them out")
     p_all.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4), metavar="N",
                        help="claim checks run in N processes (default: the cores, at most 4); "
                             "the report does not depend on N")
@@ -280,21 +288,38 @@ def _add_campaign_parser(sub) -> None:
                    help="show progress on stderr even when it is not a terminal")
 
 
+def _all_paths(args: argparse.Namespace) -> tuple[Path, Path, Path]:
+    """Report folder, certificate folder and run record of ``verify all``: a run of some
+    claims (--only) writes under build/only unless told, never over reports/ or
+    certificates/."""
+    from verify.report import RUN_RECORD
+
+    if args.only:
+        out = args.out if args.out is not None else ONLY_OUT / "reports"
+        certificates = args.certificates if args.certificates is not None \
+            else out / "certificates"
+    else:
+        out = args.out if args.out is not None else Path("reports")
+        certificates = args.certificates if args.certificates is not None \
+            else Path("certificates")
+    return out, certificates, args.run_record or RUN_RECORD
+
+
 def _cmd_all(args: argparse.Namespace) -> int:
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
     from verify.claims.runner import run_claims
-    from verify.report import RunInfo, write_report
+    from verify.report import write_report, write_run_record
     from verify.report.render import VERDICT_MARK
 
-    info = RunInfo.from_environment()  # a bad SOURCE_DATE_EPOCH fails before any work
     if args.jobs < 1:
         raise VerifyInputError(f"--jobs must be at least 1, got {args.jobs}")
     claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
-    context = CheckContext(seed=args.seed, quick=args.quick, out_dir=args.out,
-                           certificates_dir=args.certificates)
+    out, certificates, record = _all_paths(args)
+    context = CheckContext(seed=args.seed, quick=args.quick, out_dir=out,
+                           certificates_dir=certificates)
     width = max(len(c.id) for c in claims)
 
     def progress(result) -> None:
@@ -304,15 +329,18 @@ def _cmd_all(args: argparse.Namespace) -> int:
     from verify.progress import Stages
 
     stage = Stages.for_command("verify all", forced=args.progress)
-    print(f"verify all: {len(claims)} claims (seed {args.seed})")
+    noun = "claim" if len(claims) == 1 else "claims"
+    print(f"verify all: {len(claims)} {noun} (seed {args.seed})")
     stage(f"checking {len(claims)} claims in {min(args.jobs, len(claims))} process(es); a "
           "line on stdout as each one ends")
     run = run_claims(claims, context, progress=progress, jobs=args.jobs)
-    stage(f"writing the report to {args.out}")
-    paths = write_report(run, args.out, info, latex=args.latex)
+    stage(f"writing the report to {out}")
+    paths = write_report(run, out, latex=args.latex)
+    write_run_record(run, record, reports=paths)
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))
+    print(f"date and timings: {record}")
     if args.strict and not run.all_verified():
         print("--strict: some claims are not 'verified'", file=sys.stderr)
         return 1

@@ -6,10 +6,12 @@ the shipped reconstructions: illustrations only, no verdict rests on a picture. 
 minimum marked on the nu curve is the one located by Hamiltonian level crossings
 (:mod:`verify.passivity.search.hamiltonian`), not the lowest grid point.
 
-Matplotlib runs with the Agg backend; each PNG is rendered in memory and written with a
-temporary file and a rename (:func:`verify.artefacts.atomic.write_atomic`), without the
-version and date stamps that would make two runs differ
-(:func:`verify.artefacts.figure_bytes.figure_bytes`).
+Matplotlib runs with the Agg backend in the paper's font (Computer Modern,
+:func:`verify.artefacts.figure_bytes.paper_style`); a figure named ``x.svg`` is written as
+``x.svg`` (for the HTML report) and ``x.pdf`` (for the LaTeX supplement), both vector, any
+other name as PNG. Each file is rendered in memory and written with a temporary file and
+a rename (:func:`verify.artefacts.atomic.write_atomic`), without the version and date
+stamps that would make two runs differ (:mod:`verify.artefacts.figure_bytes`).
 """
 
 from __future__ import annotations
@@ -22,7 +24,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from verify.artefacts.atomic import write_atomic
-from verify.artefacts.figure_bytes import figure_bytes
+from verify.artefacts.figure_bytes import figure_bytes, paper_style, vector_figures
 from verify.passivity.search.hamiltonian import NuMinimum, nu_values
 
 if TYPE_CHECKING:
@@ -44,7 +46,13 @@ def _math_name(name: str) -> str:
 
 
 def _save(fig, path: Path) -> Path:
-    write_atomic(path, figure_bytes(fig, "png", dpi=110))
+    """Write ``fig`` to ``path``: SVG plus a PDF beside it for ``.svg``, else PNG."""
+    if path.suffix == ".svg":
+        files = vector_figures(fig)
+        write_atomic(path, files["svg"])
+        write_atomic(path.with_suffix(".pdf"), files["pdf"])
+    else:
+        write_atomic(path, figure_bytes(fig, "png", dpi=110))
     return path
 
 
@@ -62,6 +70,11 @@ def nu_figure(curves: Sequence[tuple[LTIModel, NuMinimum]], path: Path) -> Path:
     The located minimum of each curve is named in the legend (below the axes), not in
     annotations that could cover each other, a curve or the zero line.
     """
+    with paper_style():
+        return _nu_figure(curves, path)
+
+
+def _nu_figure(curves: Sequence[tuple[LTIModel, NuMinimum]], path: Path) -> Path:
     plt = _pyplot()
     w = frequency_grid([m for m, _ in curves])
     fig, ax = plt.subplots(figsize=(7, 4.6))
@@ -89,6 +102,11 @@ def nu_figure(curves: Sequence[tuple[LTIModel, NuMinimum]], path: Path) -> Path:
 def bode_figure(models: Sequence[LTIModel], path: Path) -> Path:
     """Magnitude (dB) and phase (deg) of every element H_ij(jw) of each model; the legend
     stands beside the axes, not on the curves."""
+    with paper_style():
+        return _bode_figure(models, path)
+
+
+def _bode_figure(models: Sequence[LTIModel], path: Path) -> Path:
     plt = _pyplot()
     w = frequency_grid(models)
     fig, (mag, phase) = plt.subplots(2, 1, figsize=(8.5, 6), sharex=True)

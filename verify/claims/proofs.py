@@ -7,7 +7,6 @@ from collections.abc import Iterable
 from verify.artefacts.text import shown
 from verify.claims.model import CheckContext, Evidence, EvidenceKind, Outcome, Verdict
 from verify.proof import Derivation, DerivationResult, SearchSettings, check
-from verify.proof.report_lines import counterexample_text
 
 
 def search_settings(context: CheckContext, salt: int = 0) -> SearchSettings:
@@ -39,7 +38,8 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
     ]
     for step in result.steps:
         if step.counterexample is not None:
-            values = counterexample_text(step.counterexample["values"])
+            values = "; ".join(exact_value_text(name, v)
+                               for name, v in step.counterexample["values"].items())
             out.append(
                 Evidence(
                     EvidenceKind.COUNTEREXAMPLE,
@@ -50,6 +50,27 @@ def derivation_evidence(result: DerivationResult, expected: str = "verified") ->
                 )
             )
     return out
+
+
+def exact_value_text(name: str, v: dict) -> str:
+    """A counterexample's variable shown exactly: each entry of its (rounded) value is
+    matched to the one rational parameter it rounds from, so the matrix is written in
+    rationals; when an entry matches no parameter or several, the rounded value is
+    shown with its exact parameters and says so."""
+    from fractions import Fraction
+
+    params = [Fraction(p) for p in v["parameters"] if "/" in p or p.lstrip("-").isdigit()]
+    exact = []
+    for x in v["value"] if isinstance(v["value"], list) else [v["value"]]:
+        found = {p for p in params if round(float(p), 6) == x}
+        if len(found) != 1:
+            return (f"{name} = {v['value']} (entries rounded to 6 decimals; exact parameters "
+                    f"{', '.join(v['parameters'])})")
+        exact.append(found.pop())
+    if len(exact) == 9:
+        rows = ("(" + ", ".join(str(x) for x in exact[3 * i:3 * i + 3]) + ")" for i in range(3))
+        return f"{name} = ({', '.join(rows)}) exactly (rows)"
+    return f"{name} = ({', '.join(str(x) for x in exact)}) exactly"
 
 
 def check_all(

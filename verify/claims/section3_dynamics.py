@@ -84,10 +84,12 @@ def cross_checked(outcome: Outcome, evidence: Evidence) -> Outcome:
 
 
 def _figure(ctx: CheckContext, name: str, found: cx.Found, title: str) -> str:
-    path = Path(ctx.out_dir) / FIGURES / name
-    write_atomic(path, counterexample_figure(found.trajectory, energy(found.trajectory, False),
-                                             title))
-    return f"{FIGURES}/{name}"
+    """Write the run's figure as ``name``.svg and ``name``.pdf; returns the SVG's link."""
+    files = counterexample_figure(found.trajectory, energy(found.trajectory, False), title)
+    folder = Path(ctx.out_dir) / FIGURES
+    for fmt, data in files.items():
+        write_atomic(folder / f"{name}.{fmt}", data)
+    return f"{FIGURES}/{name}.svg"
 
 
 @REGISTRY.claim(
@@ -122,8 +124,8 @@ def premise_needed(ctx: CheckContext) -> Outcome:
         exact_ok, witness.to_json() if witness else {})]
     found = cx.lemma1_counterexample(budget=40 if ctx.quick else 150)
     if found is not None:
-        path = _figure(ctx, "lemma1-without-item2.png", found,
-                       "Lemma 1 without item 2: tr(R-bar_r) leaves [1, 3]")
+        path = _figure(ctx, "lemma1-without-item2", found,
+                       r"Lemma 1 without item 2: $\mathrm{tr}\,\bar R_r$ leaves $[1, 3]$")
         evidence.append(figure(
             f"simulated run (shrunk by hypothesis, {found.evaluations} runs): "
             f"min tr(R-bar_r) = {1 - found.measure:.4g} < 1, integration error "
@@ -167,7 +169,7 @@ def passivity_needed(ctx: CheckContext) -> Outcome:
     evidence = []
     lag = cx.passivity_counterexample(cx.lagging_human(), budget=15 if ctx.quick else 30)
     if lag is not None:
-        path = _figure(ctx, "theorem1-non-passive-human.png", lag,
+        path = _figure(ctx, "theorem1-non-passive-human", lag,
                        "Theorem 1 with a non-passive human: no convergence")
         evidence.append(figure(
             f"human {cx.lagging_human().name}: |dbar - d_r| starts at "

@@ -272,8 +272,8 @@ def nu_curves_indices(context: CheckContext) -> Outcome:
         evidence.append(kind(f"{m25.name} on [{band[0]}, {band[1]}] rad/s: {d.verdict}; "
                              f"{d.reason}", good, path=str(path) if path else None))
     figures = context.out_dir / "figures"
-    nu_path = nu_figure(lows, figures / "nu_reconstructed.png")
-    bode_path = bode_figure([m25, m30], figures / "bode_reconstructed.png")
+    nu_path = nu_figure(lows, figures / "nu_reconstructed.svg")
+    bode_path = bode_figure([m25, m30], figures / "bode_reconstructed.svg")
     for p, what in ((nu_path, "ν(ω) of both reconstructions, minimum marked"),
                     (bode_path, "Bode magnitude and phase of both reconstructions")):
         evidence.append(figure(what, data={"href": f"figures/{p.name}"}, path=str(p)))

@@ -1,27 +1,35 @@
-"""The report as a LaTeX appendix for the paper (``verify all --latex``).
+r"""The report in LaTeX for the paper (``verify all --latex``): an appendix and a supplement.
 
-``reports/appendix.tex`` is a self-contained document (``pdflatex appendix.tex`` in the
-report folder builds it; the figures are read from beside it): a summary table of every
-claim of Sections 2-4 with its verdict, then per section of the paper the step tables of
-its derivations (Lemma 1 and Theorem 1 step by step) and per claim what the paper
-writes, what was checked, the verdict, the finding, the repair, the evidence with the
-file names of its certificates, and its figures. Everything between
-``% begin appendix`` and ``% end appendix`` can be pasted into the paper's source.
+Two self-contained documents, each built by ``pdflatex`` in the report folder:
+
+* ``appendix.tex`` (:func:`render_latex`) is the short appendix an author pastes into the
+  paper: everything between ``% begin appendix`` and ``% end appendix`` is plain
+  ``tabularx`` and paragraphs that fit one column of a two-column paper (the paper's
+  ``ifacconf`` class, or ``\documentclass[twocolumn]{article}`` as here): per section of
+  the paper (Sections 2-4), a table of its claims with their verdicts, then per claim the
+  finding, the repair where one is needed and the certificates that back it. It has no
+  cross-references, so one pdflatex pass builds it.
+* ``supplement.tex`` (:func:`render_supplement`) is the full record, one column: the step
+  tables of the derivations (Lemma 1 and Theorem 1 step by step), per claim what the
+  paper writes, what was checked and how, the evidence with the file names of its
+  certificates, and the figures (vector PDF beside the report's SVG where the claim drew
+  one). Its figure references need a second pdflatex pass.
 
 The text comes from the same LaTeX sources as the HTML and Markdown reports
 (:mod:`verify.report.mathtex`); it is ASCII and uses only amsmath, amssymb, graphicx,
-longtable, array, geometry and url, which every TeX distribution ships.
+tabularx, longtable, array, geometry and url, which every TeX distribution ships
+(Debian's ``texlive-latex-base`` and ``lmodern``).
 """
 
 from __future__ import annotations
 
+import re
 from pathlib import PurePosixPath
 
-from verify.claims.model import ClaimResult
+from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.runner import RunResult
 from verify.report.mathtex import latex_text, prose_to_latex
 from verify.report.render import (
-    ENVIRONMENT_NOTE,
     VERDICT_MARK,
     VERDICT_MEANING,
     _figure_href,
@@ -29,7 +37,6 @@ from verify.report.render import (
     report_data,
     sections,
 )
-from verify.report.run_info import RunInfo
 from verify.report.steps import (
     DerivationTable,
     common_evidence,
@@ -38,7 +45,33 @@ from verify.report.steps import (
     table_evidence,
 )
 
-__all__ = ["render_latex"]
+__all__ = ["APPENDIX_PACKAGES", "render_latex", "render_supplement"]
+
+#: the packages the pasteable part of appendix.tex needs in the paper's preamble
+APPENDIX_PACKAGES = ("amsmath", "amssymb", "tabularx", "array", "url")
+
+_APPENDIX_PREAMBLE = r"""\documentclass[10pt,twocolumn]{article}
+\usepackage[T1]{fontenc}
+\usepackage{lmodern}
+\usepackage{amsmath,amssymb}
+\usepackage{tabularx,array}
+\usepackage[margin=1.8cm]{geometry}
+\usepackage{url}
+\raggedbottom
+\begin{document}
+"""
+
+#: the environment note of the LaTeX documents (what typesets them is LaTeX itself)
+ENVIRONMENT_NOTE_LATEX = ("The libraries whose versions can change a verdict, a certificate "
+                          "or the bytes of an artefact (solvers propose, exact arithmetic "
+                          "decides; matplotlib draws the figures, pyarrow writes campaign "
+                          "stores):")
+
+#: evidence kinds as a reader says them
+KIND_WORDS = {
+    EvidenceKind.DERIVATION: "Derivation",
+    EvidenceKind.FIGURE: "Figure",
+}
 
 _PREAMBLE = r"""\documentclass[10pt]{article}
 \usepackage[T1]{fontenc}
@@ -95,9 +128,20 @@ def _table(t: DerivationTable, common: str) -> list[str]:
     return out
 
 
+def _kind_words(e) -> str:
+    """``Exact identity:``, ``Counterexample:``: the evidence kind as words, and a failed
+    piece of evidence says so."""
+    words = KIND_WORDS.get(e.kind, e.kind.value.replace("-", " ").capitalize())
+    return latex_text(words) + (r" (\textbf{failed})" if not e.passed else "") + ": "
+
+
+def _graphic(href: str) -> str:
+    """The file LaTeX includes for a figure: the vector PDF drawn beside an SVG."""
+    return href[:-4] + ".pdf" if href.endswith(".svg") else href
+
+
 def _evidence(e, figures: list[str]) -> str:
-    text = f"[{latex_text(e.kind.value)}, {'pass' if e.passed else 'FAIL'}] " \
-        + prose_to_latex(e.summary)
+    text = _kind_words(e) + prose_to_latex(e.summary)
     href = _figure_href(e)
     if href:
         figures.append(href)
@@ -136,18 +180,17 @@ def _claim(r: ClaimResult) -> list[str]:
         href = _figure_href(e)
         if href:
             out += [r"\begin{figure}[htbp]\centering",
-                    r"\includegraphics[width=0.8\linewidth]{" + href + "}",
+                    r"\includegraphics[width=0.8\linewidth]{" + _graphic(href) + "}",
                     r"\caption{" + _code(c.id) + ": " + prose_to_latex(e.summary)
                     + r"}\label{fig:" + _label(href) + "}", r"\end{figure}"]
     return out
 
 
-def render_latex(run: RunResult, info: RunInfo | None = None) -> str:
-    """``appendix.tex``: the run as a LaTeX appendix (see the module docstring)."""
-    info = info or RunInfo.from_environment()
-    data = report_data(run, info)
-    lines = [_PREAMBLE.rstrip("\n"), "% begin appendix", r"\appendix",
-             r"\section{Machine verification of the claims}",
+def render_supplement(run: RunResult) -> str:
+    """``supplement.tex``: the full record of the run (see the module docstring)."""
+    data = report_data(run)
+    lines = [_PREAMBLE.rstrip("\n"), r"\appendix",
+             r"\section{Machine verification of the claims: supplement}",
              "Every checkable claim of the paper, checked by the \\texttt{verify} tool (seed "
              f"{run.seed}). Verdicts mean:", r"\begin{itemize}"]
     lines += [r"\item \textbf{" + latex_text(VERDICT_MARK[v]) + "}: " + latex_text(m) + "."
@@ -176,10 +219,108 @@ def render_latex(run: RunResult, info: RunInfo | None = None) -> str:
         for r in results:
             lines += _claim(r)
         lines.append(r"\clearpage")
-    lines += [r"\subsection{Environment}", latex_text(ENVIRONMENT_NOTE), r"\begin{itemize}"]
+    lines += [r"\subsection{Environment}", latex_text(ENVIRONMENT_NOTE_LATEX),
+              r"\begin{itemize}"]
     lines += [r"\item " + latex_text(f"{k}: {v}") for k, v in data["environment"].items()]
-    lines += [r"\end{itemize}", "Generated " + latex_text(info.stamp)
-              + (" (SOURCE\\_DATE\\_EPOCH)." if info.reproducible else "."),
-              "% end appendix", r"\end{document}"]
+    lines += [r"\end{itemize}", r"\end{document}"]
+    text = "\n".join(lines) + "\n"
+    return text.encode("ascii", "replace").decode("ascii")
+
+
+# ---------------------------------------------------------------------- the short appendix
+
+_SHORT_VERDICT = {
+    Verdict.VERIFIED: "verified",
+    Verdict.REPAIRED: "repaired",
+    Verdict.REFUTED: "refuted",
+    Verdict.ASSUMPTION: "assumption",
+    Verdict.INCONCLUSIVE: "inconclusive",
+}
+_HASHED = re.compile(r"^(?P<stem>.+?)-[0-9a-f]{12,}(?P<ext>\.json)$")
+
+
+def certificate_names(r: ClaimResult) -> list[str]:
+    """The certificate files that back a claim, in order, each once: those its evidence
+    stores and the SOS certificates its derivation steps name."""
+    names: list[str] = []
+    for e in r.outcome.evidence:
+        if e.kind is EvidenceKind.CERTIFICATE and e.path:
+            names.append(PurePosixPath(e.path).name)
+        if e.kind is EvidenceKind.DERIVATION:
+            for step in e.data.get("steps", ()):
+                names += re.findall(r"certificate (sos-[0-9a-f]+\.json)", step.get("exact", ""))
+    return list(dict.fromkeys(names))
+
+
+def _short_name(name: str) -> str:
+    """A certificate file name without its content hash (the supplement has the full
+    name): ``reconstructed-k_s-3.0-99babda880e6.json`` is ``reconstructed-k_s-3.0``."""
+    m = _HASHED.match(name)
+    return m.group("stem") if m else name
+
+
+def _certificates_line(r: ClaimResult) -> str:
+    names = certificate_names(r)
+    if not names:
+        return ""
+    sos = [n for n in names if n.startswith("sos-")]
+    named = [_short_name(n) for n in names if not n.startswith("sos-")]
+    parts = [_tt(n) for n in dict.fromkeys(named)]
+    if sos:
+        parts.append(f"{len(sos)} SOS certificate" + ("s" if len(sos) > 1 else ""))
+    return r" \emph{Certificates:} " + ", ".join(parts) + "."
+
+
+def _summary_table(results: list[ClaimResult]) -> list[str]:
+    out = [r"\par\smallskip\noindent{\footnotesize",
+           r"\begin{tabularx}{\columnwidth}{@{}>{\raggedright\arraybackslash}X"
+           r">{\raggedright\arraybackslash}p{0.22\columnwidth}@{}}",
+           r"\hline claim (where in the paper) & verdict\\ \hline"]
+    for r in results:
+        out.append(_tt(r.claim.id) + " (" + prose_to_latex(r.claim.paper_ref) + ") & "
+                   + _verdict(_SHORT_VERDICT[r.outcome.verdict]) + r"\\")
+    out += [r"\hline", r"\end{tabularx}}\par\smallskip"]
+    return out
+
+
+def _code_spans(text: str) -> str:
+    """Text between backquotes (a command such as `verify gate`) in typewriter type."""
+    return re.sub(r"`([^`$\n]+)`", r"\\texttt{\1}", text)
+
+
+def _claim_paragraph(r: ClaimResult) -> str:
+    tex = claim_latex(r)
+    text = (r"\noindent " + _tt(r.claim.id) + " --- "
+            + _verdict(_SHORT_VERDICT[r.outcome.verdict]) + ". " + tex["finding"])
+    if "repair" in tex:
+        text += r" \emph{Repair:} " + tex["repair"]
+        if not text.rstrip().endswith("."):
+            text += "."
+    return _code_spans(text) + _certificates_line(r) + r"\par\smallskip"
+
+
+def render_latex(run: RunResult) -> str:
+    """``appendix.tex``: the short appendix (see the module docstring)."""
+    counts = run.counts()
+    said = ", ".join(f"{n} {_SHORT_VERDICT[Verdict(v)]}" for v, n in counts.items() if n)
+    lines = [_APPENDIX_PREAMBLE.rstrip("\n"), r"\appendix",
+             "% begin appendix (needs \\usepackage{" + ",".join(APPENDIX_PACKAGES) + "})",
+             r"\section{Machine verification of the claims}",
+             "Every checkable claim of Sections 2--4 was checked by machine (the "
+             r"\texttt{verify} tool, seed " + f"{run.seed}" + "): identities and inequalities "
+             "by exact rational arithmetic, passivity by exactly re-checked KYP, band and SOS "
+             "certificates, dynamic conclusions by seeded simulation. Of "
+             f"{len(run.results)} claims: {said}. "
+             r"\emph{Verified}: holds exactly; \emph{repaired}: fails or is undefined as "
+             r"written, the stated repair holds exactly; \emph{refuted}: false, with an "
+             r"exactly checked witness; \emph{assumption}: needed by the argument, not "
+             "checkable. The supplement gives every step, the evidence and the figures; "
+             "the certificates are re-checked with no solver by "
+             r"\texttt{verify certificates check}."]
+    for section, results in sections(run.results):
+        lines.append(r"\subsection*{Section " + latex_text(section) + "}")
+        lines += _summary_table(results)
+        lines += [_claim_paragraph(r) for r in results]
+    lines += ["% end appendix", r"\end{document}"]
     text = "\n".join(lines) + "\n"
     return text.encode("ascii", "replace").decode("ascii")

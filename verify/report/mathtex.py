@@ -20,7 +20,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
-__all__ = ["latex_text", "prose_to_latex", "to_latex"]
+__all__ = ["CLAIM_ID", "latex_text", "normalise", "prose_to_latex", "to_latex"]
 
 _GREEK = {
     "α": r"\alpha", "β": r"\beta", "γ": r"\gamma", "δ": r"\delta", "ε": r"\varepsilon",
@@ -39,8 +39,12 @@ _WORDS = {
 }
 _OPERATORS = {"tr", "sk", "sym", "rank", "null", "grad", "det", "diag", "blockdiag", "Re",
               "Im", "vec", "range"}
-_FUNCTIONS = {"cos": r"\cos", "sin": r"\sin", "exp": r"\exp", "log": r"\log", "min": r"\min",
-              "max": r"\max"}
+_FUNCTIONS = {"cos": r"\cos", "sin": r"\sin", "tan": r"\tan", "exp": r"\exp",
+              "log": r"\log", "min": r"\min", "max": r"\max"}
+#: two-letter English words that stay words inside a formula ('V̇ at R_l = R̄'), not a
+#: product of two symbols
+_TEXT_WORDS = {"at", "on", "of", "in", "is", "if", "or", "as", "to", "by", "an", "be", "so",
+               "no", "we", "it"}
 _SYMBOLS = {
     "≥": r"\geq", "≤": r"\leq", "⪰": r"\succeq", "⪯": r"\preceq", "≻": r"\succ",
     "≺": r"\prec", "≠": r"\neq", "⟺": r"\iff", "⇔": r"\iff", "⇒": r"\Rightarrow",
@@ -61,6 +65,45 @@ _TWO = {">=": r"\geq", "<=": r"\leq", "!=": r"\neq", "->": r"\to", "=>": r"\Righ
 _LETTER = re.compile(r"[A-Za-z\u0370-\u03ff]")
 _TRAIL = ".,;:"
 _FRACTION = re.compile(r"\((-?)(\d+)/(\d+)\)")
+
+
+#: a claim id (``lemma1.boundary``, ``thm1.S_rl-dot.step4-sos``): a name, set as text
+CLAIM_ID = re.compile(r"\b(?:sec\d|lemma\d|thm\d)\.[A-Za-z0-9_.\-]*[A-Za-z0-9]")
+#: ASCII spellings of the plain notation and the symbol each stands for
+_SPELLINGS = (
+    (re.compile(r"\b([A-Za-z])-bar(?![A-Za-z])"), "\\1\u0304"),  # R-bar_r: R̄_r
+    (re.compile(r"\b([A-Za-z])((?:_[A-Za-z0-9]+)?)-dot(?![A-Za-z])"),
+     "\\1\u0307\\2"),  # S_h-dot: Ṡ_h
+    (re.compile(r"\b([A-Z])~"), "\\1\u0303"),  # W~: W̃
+    (re.compile(r"\b([dR])bar\b"), "\\1\u0304"),  # dbar: d̄
+    (re.compile(r"\+/-"), "±"),
+    (re.compile(r"\bkappa\b"), "κ"), (re.compile(r"\bchi2\b"), "χ²"),
+    (re.compile(r"\balpha\b"), "α"), (re.compile(r"\bpi\b"), "π"),
+    (re.compile(r"\bphi(?=\()"), "φ"),
+    (re.compile(r"\bnu(?=[ (_]|$)"), "ν"),
+    (re.compile(r"\beps\b"), "ε"),
+    (re.compile(r"\bsum (?!of\b)(?=[A-Za-z](?:_\w+)?\b)"), "∑"),  # sum d_i: ∑d_i
+    (re.compile(r"\bhat ([A-Za-z\u0370-\u03ff])(?![\w(])"), "hat(\\1)"),  # hat v: hat(v)
+    (re.compile(r"\[((?:'[^'\]]*'(?:, )?)+)\]"),  # a Python list ['-1', '1']: (-1, 1)
+     lambda m: "(" + m.group(1).replace("'", "") + ")"),
+)
+
+
+def normalise(text: str) -> str:
+    """``text`` with the ASCII spellings of the notation (``R-bar_r``, ``kappa(W)``, ``W~``,
+    ``sum d_i``, ``hat v``, a Python list of numbers) replaced by the symbols they stand
+    for; claim ids are left exactly as they are."""
+    out, pos = [], 0
+    for m in [*CLAIM_ID.finditer(text), None]:
+        end = m.start() if m else len(text)
+        piece = text[pos:end]
+        for pattern, repl in _SPELLINGS:
+            piece = pattern.sub(repl, piece)
+        out.append(piece)
+        if m:
+            out.append(m.group(0))
+            pos = m.end()
+    return "".join(out)
 
 
 def _is_letter(ch: str) -> bool:
@@ -349,7 +392,7 @@ class _Scanner:
             if re.fullmatch(r"[A-Za-z]\d+", plain) and w == plain:
                 return self.suffixes(f"{plain[0]}_{{{plain[1:]}}}")
             return self.suffixes("".join(_decorate(c) for c in parts))
-        if len(plain) == 2 and w == plain:  # 'AB', 'jw': a product of two symbols
+        if len(plain) == 2 and w == plain and plain not in _TEXT_WORDS:  # AB, jw: products
             return self.suffixes(plain)
         return rf"\text{{{w}}}"
 
@@ -414,7 +457,7 @@ def to_latex(text: str) -> str:
     """The LaTeX math source (ASCII, no surrounding ``$``) of one formula in the plain
     notation; ``to_latex("tr(R̄_rᵀ) >= 1")`` is ``\\operatorname{tr}(\\bar{R}_{r}^{\\top})
     \\geq 1``."""
-    tokens = _Scanner(text).run()
+    tokens = _Scanner(normalise(text)).run()
     out = _merge_text(tokens) or "{}"
     return out.encode("ascii", "replace").decode("ascii")
 
@@ -432,6 +475,8 @@ _WEAK = re.compile(r"^[-+=<>*/x·×]$|^\(?-?[A-Za-z0-9]\)?$|^\(?-?\d+(\.\d+)?\)?
 
 def _is_math_word(word: str) -> bool:
     core = word.rstrip(_TRAIL)
+    if CLAIM_ID.search(core) or re.fullmatch(r"\(?[A-Za-z]+(_[A-Za-z0-9]+)+\(\)\)?", core):
+        return False  # a claim id or a function name (by_sos()) is a name
     if not core or re.fullmatch(r"[A-Za-z]+(-[A-Za-z]+)+", core):
         return False  # hyphenated words ("rank-1" excepted below) are prose
     if re.fullmatch(r"\(?eqs?\.|\(\d+[a-z]?\)[,.;:)]*|\d+(\.\d+)?\s*%?", core):
@@ -450,7 +495,7 @@ def prose_to_latex(text: str) -> str:
     operators between two formulas join them (``R + Rᵀ`` is one formula, ``a model`` is
     prose). Trailing punctuation stays in the text.
     """
-    words = text.split(" ")
+    words = normalise(text).split(" ")
     kinds = [_is_math_word(w) for w in words]
     # weak words join the formulas on both sides of them
     n = len(words)
@@ -470,6 +515,7 @@ def prose_to_latex(text: str) -> str:
               and words[k - 1] in ("=", ">=", "<=", ">", "<", "≥", "≤", "≠")):
             joined[k] = True
     _extend(words, joined)
+    _balance(words, joined)
     out: list[str] = []
     k = 0
     while k < n:
@@ -535,6 +581,48 @@ def _extend(words: list[str], joined: list[bool]) -> None:
             elif joined[k + 1] and short(words[k - 1]) \
                     and not words[k - 1].endswith(tuple(_TRAIL)):
                 joined[k] = joined[k - 1] = True
+
+
+def _depth(word: str) -> int:
+    return word.count("(") - word.count(")")
+
+
+def _balance(words: list[str], joined: list[bool], reach: int = 4) -> None:
+    """Grow a formula whose parentheses do not balance over the few words that close
+    them (``10/(s + 0.5)^2`` is one formula, not ``10/(s +`` and ``0.5)^2``)."""
+    n = len(words)
+    k = 0
+    while k < n:
+        if not joined[k]:
+            k += 1
+            continue
+        j = k
+        while j < n and joined[j]:
+            j += 1
+        depth = sum(_depth(w) for w in words[k:j])
+        if depth > 0:  # an open parenthesis: close it within reach to the right
+            total, end = depth, None
+            for m in range(j, min(j + reach, n)):
+                total += _depth(words[m])
+                if total == 0:
+                    end = m
+                    break
+            if end is not None:
+                for m in range(j, end + 1):
+                    joined[m] = True
+        elif depth < 0:  # a closing one: open it within reach to the left
+            total, start = depth, None
+            for m in range(k - 1, max(k - 1 - reach, -1), -1):
+                total += _depth(words[m])
+                if total == 0:
+                    start = m
+                    break
+            if start is not None:
+                for m in range(start, k):
+                    joined[m] = True
+                k = start
+                continue
+        k = j
 
 
 def _open_angle(text: str) -> bool:

@@ -4,11 +4,11 @@ The three renderings come from the same data: the claim registry's results. The 
 says, per claim, what the paper writes, what was checked, the verdict, the finding in
 plain words, the repair where one is needed, and the evidence.
 
-Reproducible text: everything but the final "Run" block is a function of the code, the
-inputs and the seed. The generation time and the timings of the checks (including the
-per-step times the proof checker records) appear only in that block, and not at all
-when ``SOURCE_DATE_EPOCH`` is set (:mod:`verify.report.run_info`), so committed reports
-diff cleanly.
+Reproducible text: every report is a function of the code, the inputs and the seed. The
+generation time and the timings of the checks (including the per-step times the proof
+checker records) are never written into a report; ``verify all`` prints them and keeps
+them in a separate run record (:mod:`verify.report.run_info`), so a committed report stays
+byte-identical when it is regenerated.
 """
 
 from __future__ import annotations
@@ -25,8 +25,7 @@ from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.runner import RunResult
 from verify.report.canonical import canonical_data
 from verify.report.mathml import markdown_prose, mathml, prose_html
-from verify.report.mathtex import prose_to_latex
-from verify.report.run_info import RunInfo
+from verify.report.mathtex import normalise, prose_to_latex
 from verify.report.steps import (
     StepRow,
     common_evidence,
@@ -35,7 +34,7 @@ from verify.report.steps import (
     table_evidence,
 )
 
-REPORT_SCHEMA = "verify-report/2"
+REPORT_SCHEMA = "verify-report/3"
 
 VERDICT_MARK = {
     Verdict.VERIFIED: "verified",
@@ -96,43 +95,19 @@ def _claim_json(r: ClaimResult) -> dict[str, Any]:
     return data
 
 
-def run_block(run: RunResult, info: RunInfo) -> dict[str, Any]:
-    """The only part of a report that changes between runs: date and timings."""
-    if info.reproducible:
-        return {"generated": info.stamp, "source": "SOURCE_DATE_EPOCH",
-                "timings": "omitted (SOURCE_DATE_EPOCH is set)"}
-    return {"generated": info.stamp, "source": "clock", "seconds": round(run.seconds, 3),
-            "timings": {r.claim.id: round(r.seconds, 4) for r in run.results}}
-
-
-def report_data(run: RunResult, info: RunInfo | None = None) -> dict[str, Any]:
-    """The JSON document of a run (schema ``verify-report/2``; ``run`` holds the date and
-    timings, everything before it is reproducible)."""
-    info = info or RunInfo.from_environment()
+def report_data(run: RunResult) -> dict[str, Any]:
+    """The JSON document of a run (schema ``verify-report/3``: no date, no timings)."""
     return {
         "schema": REPORT_SCHEMA,
         "seed": run.seed,
         "environment": _versions(),
         "counts": run.counts(),
         "claims": [_claim_json(r) for r in run.results],
-        "run": run_block(run, info),
     }
 
 
-def render_json(run: RunResult, info: RunInfo | None = None) -> str:
-    return json.dumps(report_data(run, info), indent=2, sort_keys=False) + "\n"
-
-
-def _run_lines(run: RunResult, info: RunInfo) -> list[str]:
-    """The Markdown "Run" block."""
-    if info.reproducible:
-        return [f"Generated {info.stamp} (SOURCE_DATE_EPOCH). Timings omitted, so that the "
-                "report is identical between runs."]
-    lines = [f"Generated {info.stamp} in {run.seconds:.1f} s. This block is the only part "
-             "of the report that changes between runs (set SOURCE_DATE_EPOCH to omit it).",
-             "", "| claim | seconds |", "|---|---|"]
-    lines += [f"| `{r.claim.id}` | {r.seconds:.2f} |" for r in run.results]
-    return lines
+def render_json(run: RunResult) -> str:
+    return json.dumps(report_data(run), indent=2, sort_keys=False) + "\n"
 
 
 def _md_escape(text: str) -> str:
@@ -180,7 +155,7 @@ def _evidence_line(e) -> str:
     href = _figure_href(e)
     if href:
         return (f"- [{e.kind.value}, {status}] {summary} (`{href}`)\n\n"
-                f"    ![{_md_escape(e.summary)[:80]}]({href})\n")
+                f"    ![{_md_escape(normalise(e.summary))[:80]}]({href})\n")
     path = f" (`{e.path}`)" if e.path else ""
     return f"- [{e.kind.value}, {status}] {summary}{path}"
 
@@ -221,18 +196,16 @@ def _steps_markdown(results, twins) -> list[str]:
     return out
 
 
-def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
+def render_markdown(run: RunResult) -> str:
     """The Markdown report; formulas are ``$...$`` LaTeX (GitHub and most viewers typeset
     them), one heading per section of the paper."""
-    info = info or RunInfo.from_environment()
-    data = report_data(run, info)
+    data = report_data(run)
     lines = [
         "# Verification report",
         "",
         "Machine checks of *Passivity-based Semi-autonomous Rotational Motion Navigation for "
         "Rigid-body Networks* (the paper's LaTeX source is not distributed with this "
-        f"repository), by `verify all` (seed {run.seed}). Date and timings are in the last "
-        "section, Run.",
+        f"repository), by `verify all` (seed {run.seed}).",
         "",
         "## Summary",
         "",
@@ -256,8 +229,6 @@ def render_markdown(run: RunResult, info: RunInfo | None = None) -> str:
             lines += _claim_markdown(r)
     lines += ["", "## Environment", "", ENVIRONMENT_NOTE, ""]
     lines += [f"- {k}: {v}" for k, v in data["environment"].items()]
-    lines += ["", "## Run", ""]
-    lines += _run_lines(run, info)
     return "\n".join(lines) + "\n"
 
 
@@ -280,20 +251,6 @@ def _claim_markdown(r: ClaimResult) -> list[str]:
     out += ["  " + _evidence_line(e) for e in o.evidence]
     out.append("")
     return out
-
-
-def _run_html(run: RunResult, info: RunInfo) -> str:
-    """The HTML "Run" block (date and timings)."""
-    esc = html.escape
-    if info.reproducible:
-        return (f"<h2>Run</h2><p>Generated {esc(info.stamp)} (SOURCE_DATE_EPOCH). Timings "
-                "omitted, so that the report is identical between runs.</p>")
-    rows = "".join(f"<tr><td><code>{esc(r.claim.id)}</code></td><td>{r.seconds:.2f}</td></tr>"
-                   for r in run.results)
-    return (f"<h2>Run</h2><p>Generated {esc(info.stamp)} in {run.seconds:.1f} s. This block "
-            "is the only part of the report that changes between runs (set "
-            "SOURCE_DATE_EPOCH to omit it).</p>"
-            f"<table><tr><th>claim</th><th>seconds</th></tr>{rows}</table>")
 
 
 def _steps_html(results, twins) -> str:
@@ -344,7 +301,7 @@ def _evidence_html(e) -> str:
         f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
         f"{'pass' if e.passed else 'FAIL'}] {prose_html(prose_to_latex(e.summary))}"
         + (f" (<code>{esc(e.path)}</code>)" if e.path and not href else "")
-        + (f"<br><img src='{esc(href)}' alt='{esc(e.summary)}'>" if href else "")
+        + (f"<br><img src='{esc(href)}' alt='{esc(normalise(e.summary))}'>" if href else "")
         + (f"<details><summary>data</summary><pre>"
            f"{esc(json.dumps(_evidence_data(e), indent=1, ensure_ascii=False))}</pre>"
            "</details>" if e.data else "")
@@ -372,12 +329,11 @@ def _claim_html(r: ClaimResult) -> str:
     )
 
 
-def render_html(run: RunResult, info: RunInfo | None = None) -> str:
+def render_html(run: RunResult) -> str:
     """The HTML report: formulas as MathML (rendered natively by current browsers), one
     heading per section, one table per derivation."""
     esc = html.escape
-    info = info or RunInfo.from_environment()
-    data = report_data(run, info)
+    data = report_data(run)
     rows = "".join(
         f"<tr><td><a href='#{esc(r.claim.id)}'><code>{esc(r.claim.id)}</code></a></td>"
         f"<td>{prose_html(prose_to_latex(r.claim.paper_ref))}</td>"
@@ -391,8 +347,7 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
         "<title>Verification report</title>",
         f"<style>{REPORT_CSS}</style></head><body>",
         "<h1>Verification report</h1>",
-        f"<p>By <code>verify all</code> (seed {run.seed}). Date and timings are in the last "
-        "section, Run.</p>",
+        f"<p>By <code>verify all</code> (seed {run.seed}).</p>",
         "<h2>Summary</h2><table class='summary'><tr><th>claim</th><th>paper</th>"
         "<th>verdict</th>"
         f"</tr>{rows}</table>",
@@ -412,5 +367,5 @@ def render_html(run: RunResult, info: RunInfo | None = None) -> str:
         parts += [_claim_html(r) for r in results]
     env = "".join(f"<li>{esc(k)}: {esc(v)}</li>" for k, v in data["environment"].items())
     parts.append(f"<h2>Environment</h2><p>{esc(ENVIRONMENT_NOTE)}</p><ul>{env}</ul>")
-    parts.append(_run_html(run, info) + "</body></html>")
+    parts.append("</body></html>")
     return "\n".join(parts) + "\n"

@@ -1,48 +1,44 @@
-"""When a report was generated, and whether its timings may be printed.
+"""The run record: when ``verify all`` ran and how long each check took.
 
-Everything a report says is a function of the code, the inputs and the seed, except the
-time it was generated and how long each check took. Those two are kept in one block at
-the end of each format ("Run"), so two runs' reports differ only there. With the
-``SOURCE_DATE_EPOCH`` convention of reproducible builds
-(https://reproducible-builds.org/specs/source-date-epoch/) set, the date is that value
-and the timings are left out, so the reports are byte-identical between runs.
+A report is a function of the code, the inputs and the seed; the clock time and the
+timings are not, so they are kept out of every report (Markdown, HTML, JSON, LaTeX) and
+written instead to a separate JSON file, ``build/run.json`` by default (git-ignored), and
+to standard output. A committed report therefore stays byte-identical when ``verify all``
+runs again, with no environment variable to set.
 """
 
 from __future__ import annotations
 
-import os
-from dataclasses import dataclass
+import json
 from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
 
-from verify.errors import VerifyInputError
+from verify.artefacts.atomic import write_atomic
+from verify.claims.runner import RunResult
 
+#: Where ``verify all`` records its date and timings unless told otherwise.
+RUN_RECORD = Path("build") / "run.json"
 
-@dataclass(frozen=True)
-class RunInfo:
-    """The generation time of a report; ``reproducible`` omits the timings."""
-
-    generated: datetime
-    reproducible: bool = False
-
-    @classmethod
-    def from_environment(cls) -> RunInfo:
-        """The current time, or SOURCE_DATE_EPOCH (seconds since 1970, UTC) when set."""
-        text = os.environ.get("SOURCE_DATE_EPOCH")
-        if text is None or not text.strip():
-            return cls(datetime.now(UTC))
-        try:
-            seconds = int(text.strip())
-            if seconds < 0:
-                raise ValueError
-            when = datetime.fromtimestamp(seconds, UTC)
-        except (ValueError, OverflowError, OSError):
-            raise VerifyInputError(f"SOURCE_DATE_EPOCH={text!r} is not a whole number of "
-                                   "seconds since 1970-01-01 UTC") from None
-        return cls(when, reproducible=True)
-
-    @property
-    def stamp(self) -> str:
-        return self.generated.isoformat(timespec="seconds")
+RUN_SCHEMA = "verify-run/1"
 
 
-__all__ = ["RunInfo"]
+def run_record(run: RunResult, *, generated: datetime | None = None,
+               reports: list[Path] | None = None) -> dict[str, Any]:
+    """The date, the total time and each claim's time of one run (never in a report)."""
+    when = (generated or datetime.now(UTC)).isoformat(timespec="seconds")
+    return {"schema": RUN_SCHEMA, "generated": when, "seed": run.seed,
+            "seconds": round(run.seconds, 3),
+            "timings": {r.claim.id: round(r.seconds, 4) for r in run.results},
+            "reports": [str(p) for p in reports or ()]}
+
+
+def write_run_record(run: RunResult, path: Path = RUN_RECORD, *,
+                     reports: list[Path] | None = None) -> Path:
+    """Write :func:`run_record` to ``path`` atomically; returns the path."""
+    text = json.dumps(run_record(run, reports=reports), indent=2) + "\n"
+    write_atomic(Path(path), text.encode())
+    return Path(path)
+
+
+__all__ = ["RUN_RECORD", "RUN_SCHEMA", "run_record", "write_run_record"]

@@ -77,8 +77,10 @@ def _proved_by(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
 
 def _evidence(step: dict) -> str:
     if step["counterexample"]:
+        from verify.claims.proofs import exact_value_text
+
         values = step["counterexample"]["values"]
-        return "counterexample: " + "; ".join(f"{k} = {v['value']}" for k, v in values.items())
+        return "counterexample: " + "; ".join(exact_value_text(k, v) for k, v in values.items())
     return step["exact"] or ""
 
 

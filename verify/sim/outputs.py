@@ -178,12 +178,23 @@ def write_outputs(out_dir: Path, traj: Trajectory, E: Energy, fmt: str, title: s
     return list(files)
 
 
-def counterexample_figure(traj: Trajectory, E: Energy, title: str) -> bytes:
-    """Two panels: Lemma 1's quantities, and |dbar - d_r| with the human's supply."""
+def counterexample_figure(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:
+    """Two panels: Lemma 1's quantities, and |dbar - d_r| with the human's supply; SVG and
+    PDF bytes (``{"svg": ..., "pdf": ...}``) in the paper's font. ``title`` may hold
+    mathtext (``$\\mathrm{tr}\\,\\bar R_r$``)."""
+    from verify.artefacts.figure_bytes import paper_style
+
+    with paper_style():
+        return _counterexample_figure(traj, E, title)
+
+
+def _counterexample_figure(traj: Trajectory, E: Energy, title: str) -> dict[str, bytes]:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+
+    from verify.artefacts.figure_bytes import vector_figures
 
     s = series(traj, E)
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8.4, 4.8), sharex=True)
@@ -194,8 +205,10 @@ def counterexample_figure(traj: Trajectory, E: Energy, title: str) -> bytes:
     top.set_title(title, fontsize=10)
     bottom.plot(s["t"], s["dbar_error"], label=r"$\Vert\bar d - d_r\Vert$")
     bottom.plot(s["t"], traj.supply, lw=0.8, label=r"$\int e^{\top}\omega_h^b\,dt$")
-    bottom.set_xlabel("t [s]")
+    bottom.set_xlabel(r"$t$ [s]")
+    top.set_ylabel(r"$\mathrm{tr}\,\bar R_r$ (Lemma 1)")
+    bottom.set_ylabel(r"$\Vert\bar d - d_r\Vert$ and supply")
     for ax in (top, bottom):  # legends beside the axes, never on the curves
         ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     fig.tight_layout()
-    return _png(fig)
+    return vector_figures(fig)

@@ -85,9 +85,9 @@ def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Wi
     if found is None:
         return None
     v, value = found
-    shown = f"{gmpy2.mpfr(value):.3g}"
-    vector = [str(x) for x in v]
-    shown_v = "(" + ", ".join(vector) + ")"  # a vector, not a Python list of strings
+    exact = str(value)  # an exact rational: written as such when it is short
+    shown = exact if len(exact) <= 24 else f"{gmpy2.mpfr(value):.3g} (rounded; exact in data)"
+    shown_v = "(" + ", ".join(str(x) for x in v) + ")"  # a vector, not a Python list
     if margin:
         nu = short_text(margin)
         summary = (f"H − νI is not passive for ν = {nu}: D + Dᵀ − 2νI is not PSD, "
@@ -96,7 +96,7 @@ def infinity_witness(model: ExactModel, *, margin: Fraction = Fraction(0)) -> Wi
     else:
         summary = (f"D + Dᵀ is not PSD: vᵀ(D + Dᵀ)v = {shown} < 0 at v = {shown_v}, so "
                    "H(jω) + H(jω)ᴴ has a negative eigenvalue as ω → ∞")
-    return Witness("infinity", summary, {"v": vector, "value": str(value)})
+    return Witness("infinity", summary, {"v": [str(x) for x in v], "value": exact})
 
 
 def response_at(model: ExactModel, omega: Fraction) -> tuple[ex.RationalMatrix,
@@ -173,12 +173,24 @@ def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
         return None
     return Witness(
         "frequency",
-        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ {float(bound):.3g} "
-        "< 0 for an exact rational vector v = a + jb (exact bound of a verified "
-        "floating-point solve)",
+        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ "
+        f"{_rounded_up(bound)} (the exact bound rounded up) < 0 for an exact rational "
+        "vector v = a + jb (exact bound of a verified floating-point solve)",
         {"omega": str(w), "a": [str(x) for x in a], "b": [str(x) for x in b],
          "value_bound": str(bound), "method": "verified solve (Neumann bound)"},
     )
+
+
+def _rounded_up(x: object, digits: int = 3) -> str:
+    """The exact rational ``x`` rounded up to ``digits`` significant digits, so that a
+    written upper bound stays an upper bound."""
+    import math
+
+    q = Fraction(str(x))
+    if q == 0:
+        return "0"
+    step = Fraction(10) ** (math.floor(math.log10(abs(float(q)))) - digits + 1)
+    return f"{float(math.ceil(q / step) * step):.{digits}g}"
 
 
 def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
@@ -210,10 +222,12 @@ def vector_witness(w: object, approx: float, shown_value: str, v: list, value: o
     ``shown_value`` their readable forms; ``note`` says how ω* was found.
     """
     how = f" ({note})" if note else ""
+    exact = str(value)  # an exact rational: written as such when it is short
+    shown = exact if len(exact) <= 24 else f"{shown_value} (rounded; exact in the data)"
     return Witness(
         "frequency",
         f"at ω* = {w} (≈ {approx:.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
-        f"{shown_value} < 0 for an exact rational vector v = a + jb{how}",
+        f"{shown} < 0 for an exact rational vector v = a + jb{how}",
         {"omega": str(w), "a": [str(x) for x in v[:m]],
          "b": [str(x) for x in v[m:]], "value": str(value)},
     )
