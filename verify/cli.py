@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import sys
 from collections.abc import Sequence
 from pathlib import Path
@@ -256,6 +257,7 @@ def _add_campaign_parser(sub) -> None:
 
 
 def _cmd_all(args: argparse.Namespace) -> int:
+    from verify.artefacts.outputs import OutputPlan
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
     from verify.claims.runner import run_claims
@@ -268,6 +270,9 @@ def _cmd_all(args: argparse.Namespace) -> int:
     claims = [c for c in REGISTRY if not args.only or any(c.id.startswith(p) for p in args.only)]
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
+    outputs = OutputPlan()  # both folders checked (and probed) before any work
+    outputs.folder("--out", args.out)
+    outputs.folder("--certificates", args.certificates)
     context = CheckContext(seed=args.seed, quick=args.quick, out_dir=args.out,
                            certificates_dir=args.certificates)
     width = max(len(c.id) for c in claims)
@@ -306,13 +311,16 @@ def _cmd_check(args: argparse.Namespace) -> int:
     import json
     import time
 
-    from verify.artefacts.atomic import write_atomic
+    from verify.artefacts.outputs import OutputPlan
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
     from verify.proof import ProofSyntaxError, certificate_store, check
     from verify.proof.isolate import load_isolated
 
     budget = _budget(args)
+    outputs = OutputPlan(inputs=[args.file])  # checked before the file runs
+    outputs.file("--json", args.json, stream=True)
+    outputs.folder("--certificates", args.certificates)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
     derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
     context = CheckContext(seed=args.seed, quick=args.quick)
@@ -339,21 +347,23 @@ def _cmd_check(args: argparse.Namespace) -> int:
     verified = sum(r.verdict == "verified" for r in results)
     print(f"{verified} of {len(results)} derivation(s) verified in every step")
     if args.json:
-        write_atomic(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
-                                           indent=2) + "\n")
+        outputs.write(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
+                                            indent=2) + "\n")
     return 0 if verified == len(results) else 1
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
+    from verify.artefacts.outputs import OutputPlan, is_stream
     from verify.inputs.number_text import short_text, unlimited_int_text
     from verify.passivity.gate import (
         add_indices,
+        gate_cases,
+        json_text,
+        junit_text,
         parse_margin,
         parse_tolerance,
         run_band_gate,
         run_gate,
-        write_json,
-        write_junit,
     )
     from verify.passivity.io.model_file import load_model
 
@@ -367,29 +377,43 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
+    outputs = OutputPlan(inputs=args.models)  # every output checked before any work
+    outputs.file("--json", args.json, stream=True)
+    outputs.file("--junit", args.junit, stream=True)
+    if is_stream(args.json) and is_stream(args.junit):
+        raise VerifyInputError("--json - and --junit -: only one output can go to standard "
+                               "output")
+    outputs.folder("--certificates", args.certificates)
+    # with an output on standard output, the verdict lines go to standard error
+    text = sys.stderr if is_stream(args.json) or is_stream(args.junit) else sys.stdout
     models = [load_model(path) for path in args.models]  # validate all before any work
     with unlimited_int_text():  # every input is validated: exact numbers of any size now
         if band is None:
-            results = run_gate(models, margin, args.certificates, tolerance)
+            results = run_gate(models, margin, args.certificates, tolerance,
+                               keep_going=True)
         else:
-            results = run_band_gate(models, band, margin, args.certificates)
+            results = run_band_gate(models, band, margin, args.certificates,
+                                    keep_going=True)
         if args.indices:
             add_indices(results)
         for r in results:
-            print(r.line(), flush=True)
+            print(r.line(), file=text, flush=True)
         passed = sum(r.passed for r in results)
+        errors = sum(r.error is not None for r in results)
         where = "" if band is None else \
             f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
         within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
         spelled = args.tolerance if len(args.tolerance) <= 24 else short_text(tolerance)
         print(f"{passed} of {len(results)} model(s) passive{where}"
               + (f" ({within} within tolerance {spelled})" if within else "")
-              + (f" with margin {short_text(margin)}" if margin else ""))
+              + (f" with margin {short_text(margin)}" if margin else "")
+              + (f"; {errors} ended in an internal error (no verdict; set "
+                 "VERIFY_DEBUG=1 and report it)" if errors else ""), file=text)
         if args.json:
-            write_json(results, args.json)
+            outputs.write(args.json, json_text(results))
         if args.junit:
-            write_junit(results, args.junit)
-    return 0 if passed == len(results) else 1
+            outputs.write(args.junit, junit_text(gate_cases(results)))
+    return 3 if errors else 0 if passed == len(results) else 1
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
@@ -571,10 +595,21 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
                 "identify": _cmd_identify, "campaign": _cmd_campaign}
+    stop = _StopSignals()
     try:
-        return handlers[args.command](args)
+        with stop:
+            return handlers[args.command](args)
+    except KeyboardInterrupt:
+        print(f"verify: {stop.name()}: stopped; files written before it are whole, "
+              "nothing was written after it", file=sys.stderr)
+        return stop.exit_code()
     except VerifyInputError as exc:
         print(f"verify: error: {exc}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # the system refused a read or a write: not a bug of ours
+        where = f"{exc.filename}: " if exc.filename else ""
+        reason = exc.strerror or os.strerror(exc.errno or 0) or type(exc).__name__
+        print(f"verify: error: {where}{reason}", file=sys.stderr)
         return 2
     except Exception as exc:  # a bug of ours: one line, the traceback on request
         if os.environ.get("VERIFY_DEBUG"):
@@ -585,9 +620,42 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 3
-    except KeyboardInterrupt:
-        print("verify: interrupted", file=sys.stderr)
-        return 130
+
+
+class _StopSignals:
+    """SIGTERM (a batch system's or CI runner's stop) ends a command as Ctrl-C does: both
+    raise ``KeyboardInterrupt`` in the main thread, every command stops its workers and
+    writes nothing more, and the exit code is 128 + the signal (130 SIGINT, 143 SIGTERM).
+    """
+
+    def __init__(self) -> None:
+        self.signum = signal.SIGINT
+        self.fired = False
+        self._previous = None
+
+    def _handler(self, signum, frame) -> None:
+        if self.fired:  # a second signal must not interrupt the cleanup of the first
+            return
+        self.fired, self.signum = True, signum
+        raise KeyboardInterrupt
+
+    def __enter__(self) -> _StopSignals:
+        import threading
+
+        if threading.current_thread() is threading.main_thread():
+            self._previous = {s: signal.signal(s, self._handler)
+                              for s in (signal.SIGTERM, signal.SIGINT)}
+        return self
+
+    def __exit__(self, *exc) -> None:
+        for s, previous in (self._previous or {}).items():
+            signal.signal(s, previous)
+
+    def name(self) -> str:
+        return signal.Signals(self.signum).name
+
+    def exit_code(self) -> int:
+        return 128 + int(self.signum)
 
 
 if __name__ == "__main__":

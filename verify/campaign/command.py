@@ -9,12 +9,8 @@ or was lost (its row is missing: ``--resume`` runs it again); 2 on bad input.
 
 from __future__ import annotations
 
-import contextlib
 import os
-import signal
 import sys
-import threading
-from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -77,24 +73,6 @@ def _check_address(address: str) -> str:
     return text
 
 
-@contextlib.contextmanager
-def _terminate_as_interrupt() -> Iterator[None]:
-    """SIGTERM (a batch system's stop) ends the campaign as Ctrl-C does: the rows in hand
-    are stored before the process exits."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def interrupt(signum, frame):
-        raise KeyboardInterrupt
-
-    previous = signal.signal(signal.SIGTERM, interrupt)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-
-
 def run_campaign_command(s: CampaignSettings) -> int:
     from verify.campaign.engine import run_campaign
     from verify.campaign.execute import FAILED, UNRESOLVED, column
@@ -137,11 +115,11 @@ def run_campaign_command(s: CampaignSettings) -> int:
     if stored:
         print(f"  resuming: {len(stored)} rows already in {store.folder}", flush=True)
     try:
-        with _terminate_as_interrupt():
-            outcome = run_campaign(iter_runs(spec, humans), store, scheduler=scheduler,
-                                   workers=workers, progress=not s.quiet,
-                                   force_progress=s.progress, stream=sys.stderr,
-                                   total=total)
+        # SIGTERM arrives here as KeyboardInterrupt too (the command line's handler)
+        outcome = run_campaign(iter_runs(spec, humans), store, scheduler=scheduler,
+                               workers=workers, progress=not s.quiet,
+                               force_progress=s.progress, stream=sys.stderr,
+                               total=total)
     except KeyboardInterrupt:
         print(f"verify campaign: interrupted; {len(store.keys())} rows stored in "
               f"{store.folder}; rerun with --resume to continue", file=sys.stderr)

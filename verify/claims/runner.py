@@ -7,6 +7,7 @@ registry of :mod:`verify.claims.catalog`.
 
 from __future__ import annotations
 
+import contextlib
 import time
 import traceback
 from collections.abc import Callable, Iterable
@@ -108,8 +109,8 @@ def run_claims(
     # fork keeps locks of native thread pools (clarabel's rayon pool once a solver ran
     # here) whose threads it does not copy, and the worker's first solve then waits forever
     start_method = multiprocessing.get_context("forkserver")
-    with ProcessPoolExecutor(max_workers=min(jobs, len(claims)),
-                             mp_context=start_method) as pool:
+    pool = ProcessPoolExecutor(max_workers=min(jobs, len(claims)), mp_context=start_method)
+    try:
         futures = [pool.submit(_run_by_id, c.id, context) for c in claims]
         for claim, future in zip(claims, futures, strict=True):
             outcome, seconds = future.result()
@@ -117,4 +118,33 @@ def run_claims(
             results.append(result)
             if progress is not None:
                 progress(result)
+    except BaseException:  # a signal (KeyboardInterrupt), or an output that failed
+        stop_pool(pool)
+        raise
+    pool.shutdown(wait=True)
     return RunResult(tuple(results), time.perf_counter() - start, context.seed)
+
+
+def stop_pool(pool, grace: float = 2.0) -> None:
+    """End a process pool now: queued checks are cancelled, the workers (and so any file
+    they were about to write) are terminated, and the forkserver and resource tracker
+    that the pool started are stopped, so no process of the call outlives it (a survivor
+    would keep the caller's stdout open and hang a CI step that waits for it)."""
+    import multiprocessing.forkserver as forkserver
+    import multiprocessing.resource_tracker as resource_tracker
+
+    workers = list((getattr(pool, "_processes", None) or {}).values())
+    for w in workers:  # first, so that no worker takes the next queued check
+        with contextlib.suppress(Exception):
+            w.terminate()
+    pool.shutdown(wait=False, cancel_futures=True)
+    deadline = time.monotonic() + grace
+    for w in workers:
+        with contextlib.suppress(Exception):
+            w.join(max(0.0, deadline - time.monotonic()))
+            if w.is_alive():
+                w.kill()
+                w.join(1.0)
+    for stop in (forkserver._forkserver._stop, resource_tracker._resource_tracker._stop):
+        with contextlib.suppress(Exception):
+            stop()

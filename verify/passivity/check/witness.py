@@ -37,7 +37,7 @@ import gmpy2
 import numpy as np
 from gmpy2 import mpq
 
-from verify.inputs.number_text import short_text
+from verify.inputs.number_text import approx_text, float_or_none, short_text
 from verify.passivity.check import exact as ex
 from verify.passivity.check import intmat
 from verify.passivity.check.certificate import ExactModel
@@ -163,7 +163,10 @@ def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
                   for x in (model.A, model.B, model.C, model.D))
     if not all(np.all(np.isfinite(x)) for x in (A, B, C, D)):
         return None
-    proposal = float_direction(A, B, C, D, float(w))
+    wf = float_or_none(w)
+    if wf is None:  # beyond the float range: the exact route decides
+        return None
+    proposal = float_direction(A, B, C, D, wf)
     if proposal is None:
         return None
     a, b = proposal
@@ -172,7 +175,8 @@ def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
         return None
     return Witness(
         "frequency",
-        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ {float(bound):.3g} "
+        f"at ω* = {w} (≈ {approx_text(w)} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ "
+        f"{approx_text(bound, 3)} "
         "< 0 for an exact rational vector v = a + jb (exact bound of a verified "
         "floating-point solve)",
         {"omega": str(w), "a": [str(x) for x in a], "b": [str(x) for x in b],
@@ -198,20 +202,22 @@ def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
     if found is None:
         return None
     v, value = found
-    return vector_witness(w, float(w), f"{gmpy2.mpfr(value):.3g}", v, value, model.m)
+    return vector_witness(w, approx_text(w), f"{gmpy2.mpfr(value):.3g}", v, value, model.m)
 
 
-def vector_witness(w: object, approx: float, shown_value: str, v: list, value: object,
+def vector_witness(w: object, approx: str, shown_value: str, v: list, value: object,
                    m: int, note: str = "") -> Witness:
     """The frequency witness record: v = a + jb with vᴴ(H(jω*) + H(jω*)ᴴ)v = value < 0.
 
     ``w`` and ``value`` are exact rationals (printed as they print), ``approx`` and
-    ``shown_value`` their readable forms; ``note`` says how ω* was found.
+    ``shown_value`` their readable forms (text, so that an ω* beyond the float range,
+    such as 10^1500, is shown, never converted to a float); ``note`` says how ω* was
+    found.
     """
     how = f" ({note})" if note else ""
     return Witness(
         "frequency",
-        f"at ω* = {w} (≈ {approx:.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
+        f"at ω* = {w} (≈ {approx} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
         f"{shown_value} < 0 for an exact rational vector v = a + jb{how}",
         {"omega": str(w), "a": [str(x) for x in v[:m]],
          "b": [str(x) for x in v[m:]], "value": str(value)},
