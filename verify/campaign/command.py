@@ -74,19 +74,9 @@ def _check_address(address: str) -> str:
 
 
 def run_campaign_command(s: CampaignSettings) -> int:
-    from verify.campaign.engine import run_campaign
-    from verify.campaign.execute import FAILED, UNRESOLVED, column
+    from verify.artefacts.atomic import remove_empty
+    from verify.artefacts.outputs import OutputPlan
     from verify.campaign.models import load_spec
-    from verify.campaign.progress import clock
-    from verify.campaign.report import Campaign, write_report
-    from verify.campaign.runs import (
-        distinct_humans,
-        iter_runs,
-        place_family_files,
-        run_total,
-        spec_fingerprint,
-    )
-    from verify.campaign.store import ResultStore
 
     scheduler = _check_address(s.scheduler) if s.scheduler is not None else None
     workers = default_workers() if s.workers is None else s.workers
@@ -98,6 +88,33 @@ def run_campaign_command(s: CampaignSettings) -> int:
     spec = load_spec(s.spec)
     out = s.out if s.out is not None else DEFAULT_OUT / s.spec.stem
     check_out(out)
+    outputs = OutputPlan(inputs=[s.spec])  # the spec is never among the outputs
+    outputs.folder("--out", out)
+    for name in _FILES:
+        outputs.file("--out", out / name)
+    fresh = [p for p in (out, *(out / name for name in _FOLDERS))
+             if not os.path.lexists(p)]
+    try:
+        return _run(s, spec, out, scheduler, workers)
+    except BaseException:  # no empty folder left by a run that failed or was stopped
+        remove_empty(fresh)
+        raise
+
+
+def _run(s: CampaignSettings, spec, out: Path, scheduler: str | None, workers: int) -> int:
+    from verify.campaign.engine import run_campaign
+    from verify.campaign.execute import FAILED, UNRESOLVED, column
+    from verify.campaign.progress import clock
+    from verify.campaign.report import Campaign, write_report
+    from verify.campaign.runs import (
+        distinct_humans,
+        iter_runs,
+        place_family_files,
+        run_total,
+        spec_fingerprint,
+    )
+    from verify.campaign.store import ResultStore
+
     store = ResultStore(out / "results")
     stored = store.keys()
     if stored and not s.resume:

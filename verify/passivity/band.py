@@ -72,7 +72,9 @@ def parse_band(text: str) -> tuple[Fraction, Fraction]:
         raise VerifyInputError(f"--band {text!r}: expected W1:W2, e.g. 0:1.5 (rad/s)")
     w1, w2 = (parse_number(part, f"--band {text!r}:", "--band 0:1.5") for part in parts)
     if max(abs(w1), abs(w2)) > 10**12:
-        raise VerifyInputError(f"--band {text!r}: frequencies above 1e12 rad/s are not supported")
+        raise VerifyInputError(f"--band {text!r}: band ends are at most 10^12 rad/s (the "
+                               "exact band route's bound); above it, omit --band: the "
+                               "full-axis gate covers every frequency")
     if w1 < 0:
         raise VerifyInputError(f"--band {text!r}: frequencies must be >= 0 rad/s")
     if w1 >= w2:
