@@ -236,8 +236,8 @@ def _rss_kib(pid: int) -> int:
 def test_a_million_run_spec_starts_at_once_and_stops_on_a_signal(tmp_path, sig):
     """10^6 runs: rows are stored within seconds (the runs are submitted in a bounded
     window, not as one graph), the client stays small, and a signal ends the command
-    within 10 s with exit 128 + the signal (130, 143), no traceback or Dask warning, and every stored row whole
-    and unique."""
+    within 10 s with exit 128 + the signal (130, 143), no traceback or Dask warning, and
+    every stored row whole and unique."""
     import subprocess
 
     import pyarrow.parquet as pq

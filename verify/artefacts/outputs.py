@@ -134,7 +134,7 @@ class OutputPlan:
         label = f"{flag} {path}" if flag else str(path)
         try:
             info = os.stat(path)
-        except FileNotFoundError:
+        except (FileNotFoundError, NotADirectoryError):  # the probe says what is wrong
             info = None
         except OSError as exc:
             raise OutputError(f"{label}: cannot use this path ({os_error_text(exc)})") from None

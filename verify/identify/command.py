@@ -149,18 +149,16 @@ def validate(settings: IdentifySettings) -> Plan:
 
     structure = parse_structure(settings.structure)
     band = parse_band(settings.band) if settings.band is not None else None
-    if settings.out.exists() and not settings.out.is_dir():
-        raise VerifyInputError(f"--out {settings.out}: exists and is not a directory")
-    if not _ours(settings.out):
-        raise VerifyInputError(f"--out {settings.out}: a non-empty directory that is not an "
-                               "output of verify identify (it would be replaced); choose a "
-                               "new or empty directory")
     if not settings.logs:
         raise VerifyInputError("no log files given; pass one or more .csv or .npz logs")
     outputs = OutputPlan(inputs=settings.logs)  # no log replaced, no device written
     outputs.folder("--out", settings.out, replaced=True)
     outputs.file("--json", settings.json)
     outputs.file("--junit", settings.junit)
+    if not _ours(settings.out):
+        raise VerifyInputError(f"--out {settings.out}: a non-empty directory that is not an "
+                               "output of verify identify (it would be replaced); choose a "
+                               "new or empty directory")
     name = settings.name or Path(settings.logs[0]).stem
     return Plan(tuple(Path(p) for p in settings.logs), structure, parse_rate(settings.rate),
                 parse_split(settings.split), band, settings.out, settings.json,
