@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import argparse
 import os
-import signal
 import sys
 from collections.abc import Sequence
 from pathlib import Path
 
 from verify import __version__
 from verify.errors import VerifyInputError
+from verify.stopping import StopSignals
 
 #: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
 #: git-ignored build/; ``verify all`` writes the paper's into certificates/).
@@ -595,7 +595,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
                 "identify": _cmd_identify, "campaign": _cmd_campaign}
-    stop = _StopSignals()
+    stop = StopSignals()
     try:
         with stop:
             return handlers[args.command](args)
@@ -621,41 +621,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         )
         return 3
 
-
-class _StopSignals:
-    """SIGTERM (a batch system's or CI runner's stop) ends a command as Ctrl-C does: both
-    raise ``KeyboardInterrupt`` in the main thread, every command stops its workers and
-    writes nothing more, and the exit code is 128 + the signal (130 SIGINT, 143 SIGTERM).
-    """
-
-    def __init__(self) -> None:
-        self.signum = signal.SIGINT
-        self.fired = False
-        self._previous = None
-
-    def _handler(self, signum, frame) -> None:
-        if self.fired:  # a second signal must not interrupt the cleanup of the first
-            return
-        self.fired, self.signum = True, signum
-        raise KeyboardInterrupt
-
-    def __enter__(self) -> _StopSignals:
-        import threading
-
-        if threading.current_thread() is threading.main_thread():
-            self._previous = {s: signal.signal(s, self._handler)
-                              for s in (signal.SIGTERM, signal.SIGINT)}
-        return self
-
-    def __exit__(self, *exc) -> None:
-        for s, previous in (self._previous or {}).items():
-            signal.signal(s, previous)
-
-    def name(self) -> str:
-        return signal.Signals(self.signum).name
-
-    def exit_code(self) -> int:
-        return 128 + int(self.signum)
 
 
 if __name__ == "__main__":

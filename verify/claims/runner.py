@@ -8,6 +8,8 @@ registry of :mod:`verify.claims.catalog`.
 from __future__ import annotations
 
 import contextlib
+import os
+import signal
 import time
 import traceback
 from collections.abc import Callable, Iterable
@@ -127,11 +129,11 @@ def run_claims(
 
 def stop_pool(pool, grace: float = 2.0) -> None:
     """End a process pool now: queued checks are cancelled, the workers (and so any file
-    they were about to write) are terminated, and the forkserver and resource tracker
-    that the pool started are stopped, so no process of the call outlives it (a survivor
-    would keep the caller's stdout open and hang a CI step that waits for it)."""
+    they were about to write) are terminated, and the forkserver that started them is
+    stopped (the resource tracker ends by itself when this process does), so no process
+    of the call outlives it (a survivor would keep the caller's stdout open and hang a CI
+    step that waits for it)."""
     import multiprocessing.forkserver as forkserver
-    import multiprocessing.resource_tracker as resource_tracker
 
     workers = list((getattr(pool, "_processes", None) or {}).values())
     for w in workers:  # first, so that no worker takes the next queued check
@@ -145,6 +147,48 @@ def stop_pool(pool, grace: float = 2.0) -> None:
             if w.is_alive():
                 w.kill()
                 w.join(1.0)
-    for stop in (forkserver._forkserver._stop, resource_tracker._resource_tracker._stop):
-        with contextlib.suppress(Exception):
-            stop()
+    for child in _children(getattr(forkserver._forkserver, "_forkserver_pid", None)):
+        with contextlib.suppress(OSError):  # a worker still being started
+            os.kill(child, signal.SIGKILL)
+    _stop_helper(forkserver._forkserver, "_forkserver_pid", "_forkserver_alive_fd", grace)
+    # The resource tracker is left to end by itself: this process is now the only holder
+    # of its pipe, so it ends as this process exits, after the pool's semaphores are
+    # released here (stopped earlier, it would release them first, and each release at
+    # exit would print a traceback).
+
+
+def _children(pid: int | None) -> list[int]:
+    """The live child processes of ``pid`` (Linux /proc; empty elsewhere)."""
+    if pid is None or not os.path.isdir("/proc"):
+        return []
+    found = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            with contextlib.suppress(OSError, IndexError, ValueError):
+                with open(f"/proc/{entry}/stat") as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+                if int(fields[1]) == pid and fields[0] != "Z":
+                    found.append(int(entry))
+    return found
+
+
+def _stop_helper(owner, pid_name: str, fd_name: str, grace: float) -> None:
+    """Stop a multiprocessing helper (forkserver, resource tracker) as its own ``_stop``
+    does, by closing the descriptor whose end it waits for, but without waiting for it
+    forever: after ``grace`` seconds it is killed."""
+    pid, fd = getattr(owner, pid_name, None), getattr(owner, fd_name, None)
+    if pid is None:
+        return
+    if fd is not None:
+        with contextlib.suppress(OSError):
+            os.close(fd)
+        setattr(owner, fd_name, None)
+    deadline = time.monotonic() + grace
+    with contextlib.suppress(ChildProcessError, OSError):
+        while os.waitpid(pid, os.WNOHANG) == (0, 0):
+            if time.monotonic() > deadline:
+                os.kill(pid, signal.SIGKILL)
+                os.waitpid(pid, 0)
+                break
+            time.sleep(0.02)
+    setattr(owner, pid_name, None)

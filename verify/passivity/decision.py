@@ -24,6 +24,7 @@ rational).
 
 from __future__ import annotations
 
+import math
 import time
 from dataclasses import dataclass
 from fractions import Fraction
@@ -165,6 +166,41 @@ def clearly_negative(A, B, C, D, omega: float, rel: float = 1e-9) -> bool:
 FLOAT_FAILURES = (ArithmeticError, ValueError, np.linalg.LinAlgError)
 
 
+def nu_rounding_bound(A, B, C, D, omega: float) -> float:
+    """A first-order bound on the rounding error of ν(ω) evaluated in floating point:
+    n u cond(jωI - A) |C| |(jωI - A)^-1| |B| + u |D| (2-norms, u the unit roundoff), the
+    usual forward-error size of a linear solve. Infinite when jωI - A is singular."""
+    n = A.shape[0]
+    u = np.finfo(float).eps / 2
+    with np.errstate(all="ignore"):
+        try:
+            s = np.linalg.svd(1j * omega * np.eye(n) - A, compute_uv=False)
+        except np.linalg.LinAlgError:
+            return math.inf
+        if n and (s[-1] == 0 or not np.all(np.isfinite(s))):
+            return math.inf
+        inverse = 1 / s[-1] if n else 0.0
+        cond = s[0] / s[-1] if n else 1.0
+        bound = n * u * cond * np.linalg.norm(C, 2) * inverse * np.linalg.norm(B, 2) \
+            + u * np.linalg.norm(D, 2)
+    return float(bound) if math.isfinite(bound) else math.inf
+
+
+def nu_estimate_text(A, B, C, D, best: tuple[float, float] | None) -> str:
+    """The smallest ν estimate for an inconclusive reason: its value only when it stands
+    above the rounding error of its own evaluation (:func:`nu_rounding_bound`); a value
+    inside it is rounding noise, and the reason says so instead of quoting it."""
+    if best is None:
+        return "no ν estimate"
+    omega, value = best
+    bound = propose(nu_rounding_bound, A, B, C, D, omega, default=math.inf)
+    if abs(value) <= bound:
+        return (f"the smallest ν found, at ω ≈ {omega:.4g}, is within the rounding error of "
+                f"its floating-point evaluation (bound {bound:.1e}): no sign can be read "
+                "from it")
+    return f"smallest ν found {value:.3g} at ω = {omega:.4g}"
+
+
 def propose(fn, *args, default=None):
     """fn(*args) from the untrusted float route, or ``default`` if it fails numerically."""
     try:
@@ -302,7 +338,6 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0)) -> Decision:
     w = propose(pole_witness, em)
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
-    smallest = "no ν estimate" if best is None else \
-        f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g}"
+    smallest = nu_estimate_text(A, B, C, D, best)
     return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search_reason}; "
                 f"{smallest})", nu_min=best)
