@@ -365,3 +365,26 @@ def test_the_output_plan_api(tmp_path):
     plan.write(tmp_path / "new" / "out.json", "{}\n")
     assert (tmp_path / "new" / "out.json").read_text() == "{}\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["in.toml", "new"]  # no probe left
+
+
+def test_an_inconclusive_reason_never_quotes_rounding_noise():
+    """A lossless model (A skew, C = Bᵀ, D = 0) has ν(ω) = 0 exactly; whatever its float
+    evaluation gives lies inside the rounding bound, and the reason then gives no number
+    (a 150-state model's reason once quoted ν ≈ -5e16)."""
+    import numpy as np
+
+    from verify.passivity.decision import nu_estimate_text
+    from verify.passivity.search.hamiltonian import nu_rounding_bound, nu_values
+
+    rng = np.random.default_rng(2)
+    n = 60
+    S = np.triu(np.round(rng.normal(size=(n, n)), 3), 1)
+    A, B = S - S.T, np.round(rng.normal(size=(n, 1)), 3)
+    C, D = B.T.copy(), np.zeros((1, 1))
+    for omega in (0.178, 1.0, 7.5):
+        bound = nu_rounding_bound(A, B, C, D, omega)
+        noise = float(nu_values(A, B, C, D, np.array([omega]))[0])
+        assert abs(noise) <= bound  # the float value of an exact 0 is inside the bound
+        text = nu_estimate_text(A, B, C, D, (omega, -bound / 2))
+        assert "within the rounding error" in text and f"{-bound / 2:.3g}" not in text
+        assert f"{-10 * bound:.3g}" in nu_estimate_text(A, B, C, D, (omega, -10 * bound))

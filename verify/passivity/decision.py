@@ -46,7 +46,7 @@ from verify.passivity.check.witness import (
     real_axis_witness,
 )
 from verify.passivity.rescaled import restore
-from verify.passivity.search.hamiltonian import nu_minimum, nu_values
+from verify.passivity.search.hamiltonian import nu_minimum, nu_rounding_bound, nu_values
 from verify.passivity.search.kyp import SDP_STATE_LIMIT, find_certificate
 from verify.passivity.search.scaling import rescale
 from verify.passivity.verdicts import (
@@ -164,26 +164,6 @@ def clearly_negative(A, B, C, D, omega: float, rel: float = 1e-9) -> bool:
 #: What a floating-point proposal may raise on extreme data (entries near the float
 #: range, subnormals, overflow to inf); the proposal then yields nothing.
 FLOAT_FAILURES = (ArithmeticError, ValueError, np.linalg.LinAlgError)
-
-
-def nu_rounding_bound(A, B, C, D, omega: float) -> float:
-    """A first-order bound on the rounding error of ν(ω) evaluated in floating point:
-    n u cond(jωI - A) |C| |(jωI - A)^-1| |B| + u |D| (2-norms, u the unit roundoff), the
-    usual forward-error size of a linear solve. Infinite when jωI - A is singular."""
-    n = A.shape[0]
-    u = np.finfo(float).eps / 2
-    with np.errstate(all="ignore"):
-        try:
-            s = np.linalg.svd(1j * omega * np.eye(n) - A, compute_uv=False)
-        except np.linalg.LinAlgError:
-            return math.inf
-        if n and (s[-1] == 0 or not np.all(np.isfinite(s))):
-            return math.inf
-        inverse = 1 / s[-1] if n else 0.0
-        cond = s[0] / s[-1] if n else 1.0
-        bound = n * u * cond * np.linalg.norm(C, 2) * inverse * np.linalg.norm(B, 2) \
-            + u * np.linalg.norm(D, 2)
-    return float(bound) if math.isfinite(bound) else math.inf
 
 
 def nu_estimate_text(A, B, C, D, best: tuple[float, float] | None) -> str:
