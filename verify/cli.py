@@ -1,8 +1,10 @@
 """The ``verify`` command.
 
 Exit codes: 0 the run completed (and, with ``--strict`` or for gates, everything passed);
-1 some check failed or a claim is not verified under ``--strict``; 2 bad input, printed
-as one line on stderr; 3 an internal error of the tool (a bug; VERIFY_DEBUG=1 shows it).
+1 some check failed or a claim is not verified under ``--strict``; 2 bad input or an
+output that cannot be written (an OS error), printed as one line on stderr; 3 an internal
+error of the tool (a bug; VERIFY_DEBUG=1 shows it); 130 and 143 after SIGINT and SIGTERM
+(:mod:`verify.stopping`).
 """
 
 from __future__ import annotations
@@ -108,7 +110,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "gate",
         help="passivity gate for human models H(s): exact KYP certificates or witnesses",
         description="Exit 0 if every model is passive (with an exactly checked certificate), "
-        "1 if some model is not passive or inconclusive, 2 on bad input.",
+        "1 if some model is not passive or inconclusive, 2 on bad input, 3 if the tool "
+        "failed on some model (the others keep their verdicts).",
     )
     p_gate.add_argument("models", nargs="+", type=Path, metavar="MODEL",
                         help="TOML model file ([state_space] or [transfer_function])")
@@ -129,8 +132,10 @@ def _build_parser() -> argparse.ArgumentParser:
                         f"{GATE_CERTIFICATES}, git-ignored: gating a model never adds "
                         "files to a checkout; the paper's certificates/ are written by "
                         "'verify all')")
-    p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
-    p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+    p_gate.add_argument("--json", type=Path, metavar="OUT",
+                        help="write a JSON summary (- for standard output)")
+    p_gate.add_argument("--junit", type=Path, metavar="OUT",
+                        help="write JUnit XML (- for standard output)")
 
     p_id = sub.add_parser(
         "identify",
@@ -319,7 +324,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
     budget = _budget(args)
     outputs = OutputPlan(inputs=[args.file])  # checked before the file runs
-    outputs.file("--json", args.json, stream=True)
+    outputs.file("--json", args.json)
     outputs.folder("--certificates", args.certificates)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
     derivations = load_isolated(args.file, budget=budget)  # the file runs in a child
