@@ -14,8 +14,6 @@ instead (an entry with a pole in Re s > 0, a repeated axis pole, a residue's sig
 
 from __future__ import annotations
 
-from fractions import Fraction
-
 from flint import fmpq, fmpq_poly
 from gmpy2 import mpq
 
@@ -111,8 +109,7 @@ def frequency_vector_witness(model: ExactModel, w: fmpq, note: str, tm=None
     if found is None:
         return None
     v, value = found
-    exact_w = Fraction(int(w.p), int(w.q))
-    return vector_witness(w, approx_text(exact_w), approx_text(value, 3), v, value,
+    return vector_witness(w, approx_text(w), approx_text(value, 3), v, value,
                           model.m, note)
 
 

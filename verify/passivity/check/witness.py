@@ -375,8 +375,9 @@ def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
             return Witness(
                 "rhp-point",
                 f"at the real point s* = {s} of the right half-plane, vᵀ(H(s*) + H(s*)ᵀ)v "
-                f"≈ {float(main):.3g} < 0 for a rational v in ker(D + Dᵀ) (exact bound on "
-                f"the error of a rounded solve; Nᵀ C B N has vᵀ C B v = {float(g):.3g} < 0); "
+                f"≈ {approx_text(main, 3)} < 0 for a rational v in ker(D + Dᵀ) (exact bound "
+                "on the error of a rounded solve; Nᵀ C B N has vᵀ C B v = "
+                f"{approx_text(g, 3)} < 0); "
                 "a passive H has H(s) + H(s)ᴴ ≥ 0 for Re s > 0",
                 {"s": str(s), "v": [str(q) for q in v], "value_bound": str(main),
                  "mu": str(mu), "residual_norm2": str(_norm2(r))},
