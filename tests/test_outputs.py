@@ -388,3 +388,18 @@ def test_an_inconclusive_reason_never_quotes_rounding_noise():
         text = nu_estimate_text(A, B, C, D, (omega, -bound / 2))
         assert "within the rounding error" in text and f"{-bound / 2:.3g}" not in text
         assert f"{-10 * bound:.3g}" in nu_estimate_text(A, B, C, D, (omega, -10 * bound))
+
+
+def test_a_claim_whose_certificate_cannot_be_written_ends_the_run(tmp_path):
+    """A full disk while a check writes its certificate is not an inconclusive claim."""
+    from verify.claims.model import CheckContext, Claim
+    from verify.claims.runner import run_claim
+
+    def writes(context):
+        write_atomic(tmp_path / "file" / "x.json", "{}")  # under a regular file
+
+    (tmp_path / "file").write_text("x")
+    claim = Claim(id="test.output", section="none", paper_ref="none", paper_says="",
+                  statement="a claim that writes", method="", scope="", check=writes)
+    with pytest.raises(OutputError, match="not a folder"):
+        run_claim(claim, CheckContext(seed=1, quick=True))

@@ -101,7 +101,7 @@ def refuse_non_regular(path: Path) -> None:
     file or a symbolic link (the link itself is replaced, never what it points to)."""
     try:
         mode = os.lstat(path).st_mode
-    except FileNotFoundError:
+    except (FileNotFoundError, NotADirectoryError):  # the parents are checked next
         return
     except OSError as exc:
         raise OutputError(f"{path}: cannot write ({os_error_text(exc)})") from None

@@ -1,8 +1,9 @@
 """The claim runner: run registered checks and collect their results in order.
 
 The runner never lets a crashing check pass: an exception becomes an INCONCLUSIVE
-outcome that names the error. Worker processes find the claims by id in the full
-registry of :mod:`verify.claims.catalog`.
+outcome that names the error, except an output that cannot be written (a full disk),
+which ends the run as it ends every command (one line, exit 2). Worker processes find
+the claims by id in the full registry of :mod:`verify.claims.catalog`.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import traceback
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
+from verify.artefacts.atomic import OutputError
 from verify.claims.model import (
     CheckContext,
     Claim,
@@ -52,6 +54,8 @@ def run_claim(claim: Claim, context: CheckContext) -> ClaimResult:
         outcome = claim.check(context)
         if not isinstance(outcome, Outcome):
             raise TypeError(f"check returned {type(outcome).__name__}, not Outcome")
+    except OutputError:  # a full disk is not a verdict on the claim: the run stops (exit 2)
+        raise
     except Exception as exc:  # a broken check must never count as a pass
         outcome = Outcome(
             verdict=Verdict.INCONCLUSIVE,
