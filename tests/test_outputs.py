@@ -133,6 +133,12 @@ def test_a_device_is_never_replaced(model, tmp_path, capsys):
     with pytest.raises(OutputError, match="is a device"):  # the writer itself refuses too
         write_atomic(dev, "x")
     assert stat.S_ISCHR(os.lstat(dev).st_mode)
+    link = tmp_path / "link.json"  # a symbolic link to the device is the device
+    link.symlink_to(dev)
+    assert main(["gate", str(model), "--junit", str(link), "--certificates",
+                 str(tmp_path / "c")]) == 2
+    assert "is a device" in _one_error_line(capsys)
+    assert stat.S_ISCHR(os.lstat(dev).st_mode) and link.is_symlink()
 
 
 def test_fifo_socket_and_directory_are_refused(model, tmp_path, capsys):

@@ -6,6 +6,8 @@ directory (with ``--band W1:W2``, a generalized KYP certificate for that band, s
 :mod:`verify.passivity.band`), naming its model file by a path relative to that
 directory, so ``verify certificates check`` finds the file from the certificate wherever
 it runs; a JSON summary and a JUnit XML file (one test case per model) are optional.
+In the command's batch, a model on which the tool itself fails gets an ``error`` result
+(its own line, JSON entry and JUnit ``<error>``) and the other models keep theirs.
 """
 
 from __future__ import annotations
