@@ -189,10 +189,19 @@ def test_decimal_exponent_is_bounded_and_non_finite_is_refused(tmp_path):
             load_model(path)
 
 
-def test_an_integer_beyond_the_digit_limit_is_one_line(tmp_path):
+def test_an_integer_beyond_pythons_digit_limit_is_read_and_one_beyond_ours_refused(tmp_path):
+    """Integers of any size up to 20000 digits are read exactly (Python's own limit of 4300
+    digits does not apply to a model file); a longer run of digits is one line."""
+    import sys
+
     path = tmp_path / "m.toml"
     path.write_text("[state_space]\nA = []\nB = []\nC = []\nD = [[" + "9" * 5000 + "]]\n")
-    with pytest.raises(VerifyInputError, match="number out of range") as err:
+    limit = sys.get_int_max_str_digits()
+    model = load_model(path)
+    assert sys.get_int_max_str_digits() == limit  # restored after the parse
+    assert model.exact.D[0][0] == 10**5000 - 1
+    path.write_text("[state_space]\nA = []\nB = []\nC = []\nD = [[" + "9" * 20001 + "]]\n")
+    with pytest.raises(VerifyInputError, match="more than 20000 digits") as err:
         load_model(path)
     assert "\n" not in str(err.value)
 

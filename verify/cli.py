@@ -1,8 +1,10 @@
 """The ``verify`` command.
 
 Exit codes: 0 the run completed (and, with ``--strict`` or for gates, everything passed);
-1 some check failed or a claim is not verified under ``--strict``; 2 bad input, printed
-as one line on stderr; 3 an internal error of the tool (a bug; VERIFY_DEBUG=1 shows it).
+1 some check failed or a claim is not verified under ``--strict``; 2 bad input or an
+output that cannot be written (an OS error), printed as one line on stderr; 3 an internal
+error of the tool (a bug; VERIFY_DEBUG=1 shows it); 130 and 143 after SIGINT and SIGTERM
+(:mod:`verify.stopping`).
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from pathlib import Path
 from verify import __version__
 from verify.artefacts.text import shown
 from verify.errors import VerifyInputError
+from verify.stopping import StopSignals
 
 #: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
 #: git-ignored build/; ``verify all`` writes the paper's into certificates/).
@@ -130,7 +133,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "gate",
         help="passivity gate for human models H(s): exact KYP certificates or witnesses",
         description="Exit 0 if every model is passive (with an exactly checked certificate), "
-        "1 if some model is not passive or inconclusive, 2 on bad input.",
+        "1 if some model is not passive or inconclusive, 2 on bad input, 3 if the tool "
+        "failed on some model (the others keep their verdicts).",
     )
     p_gate.add_argument("models", nargs="+", type=Path, metavar="MODEL",
                         help="TOML model file ([state_space] or [transfer_function])")
@@ -151,8 +155,10 @@ def _build_parser() -> argparse.ArgumentParser:
                         f"{GATE_CERTIFICATES}, git-ignored: gating a model never adds "
                         "files to a checkout; the paper's certificates/ are written by "
                         "'verify all')")
-    p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
-    p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+    p_gate.add_argument("--json", type=Path, metavar="OUT",
+                        help="write a JSON summary (- for standard output)")
+    p_gate.add_argument("--junit", type=Path, metavar="OUT",
+                        help="write JUnit XML (- for standard output)")
     p_gate.add_argument("--progress", action="store_true",
                         help="stage lines on stderr (which model is being decided) even when "
                         "it is not a terminal")
@@ -306,6 +312,7 @@ def _all_paths(args: argparse.Namespace) -> tuple[Path, Path, Path]:
 
 
 def _cmd_all(args: argparse.Namespace) -> int:
+    from verify.artefacts.outputs import OutputPlan
     from verify.claims.catalog import REGISTRY
     from verify.claims.model import CheckContext
     from verify.claims.runner import run_claims
@@ -318,6 +325,10 @@ def _cmd_all(args: argparse.Namespace) -> int:
     if not claims:
         raise VerifyInputError(f"no claim id starts with {', '.join(args.only)}")
     out, certificates, record = _all_paths(args)
+    outputs = OutputPlan()  # both folders and the run record checked before any work
+    outputs.folder("--out", out)
+    outputs.folder("--certificates", certificates)
+    outputs.file("--run-record", record)
     context = CheckContext(seed=args.seed, quick=args.quick, out_dir=out,
                            certificates_dir=certificates)
     width = max(len(c.id) for c in claims)
@@ -365,7 +376,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     import json
     import time
 
-    from verify.artefacts.atomic import write_atomic
+    from verify.artefacts.outputs import OutputPlan
     from verify.claims.model import CheckContext, to_jsonable
     from verify.claims.proofs import search_settings
     from verify.progress import Stages
@@ -375,6 +386,11 @@ def _cmd_check(args: argparse.Namespace) -> int:
 
     budget = _budget(args)
     stage = Stages.for_command("verify check", forced=args.progress)
+    outputs = OutputPlan(inputs=[args.file])  # checked before the file runs
+    outputs.file("--json", args.json)
+    if args.emit:
+        outputs.file("--emit", args.emit)
+    outputs.folder("--certificates", args.certificates)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
     if args.file.suffix == ".json":
         stage(shown(f"reading {args.file} as data"))
@@ -384,7 +400,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
         derivations = load_isolated(args.file, budget=budget,
                                     sandboxed=not args.unsandboxed)
     if args.emit:
-        write_atomic(args.emit, data_text(derivations))
+        outputs.write(args.emit, data_text(derivations))
     context = CheckContext(seed=args.seed, quick=args.quick)
     results = []
     for k, d in enumerate(derivations):
@@ -400,21 +416,23 @@ def _cmd_check(args: argparse.Namespace) -> int:
             print(line)
     print(summary_line(results))
     if args.json:
-        write_atomic(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
-                                           indent=2, ensure_ascii=True) + "\n")
+        outputs.write(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
+                                            indent=2, ensure_ascii=True) + "\n")
     return 0 if all(r.verdict == "verified" for r in results) else 1
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:
+    from verify.artefacts.outputs import OutputPlan, is_stream
     from verify.inputs.number_text import short_text, unlimited_int_text
     from verify.passivity.gate import (
         add_indices,
+        gate_cases,
+        json_text,
+        junit_text,
         parse_margin,
         parse_tolerance,
         run_band_gate,
         run_gate,
-        write_json,
-        write_junit,
     )
     from verify.passivity.io.model_file import load_model
 
@@ -428,41 +446,62 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
+    outputs = OutputPlan(inputs=args.models)  # every output checked before any work
+    outputs.file("--json", args.json, stream=True)
+    outputs.file("--junit", args.junit, stream=True)
+    if is_stream(args.json) and is_stream(args.junit):
+        raise VerifyInputError("--json - and --junit -: only one output can go to standard "
+                               "output")
+    outputs.folder("--certificates", args.certificates)
     plots = None
     if args.plot is not None:  # a bad --plot fails before any work
         from verify.passivity.figure import figure_paths
 
         plots = figure_paths(args.plot, list(args.models))
+        for path in plots:
+            outputs.file("--plot", path)
+    # with an output on standard output, the verdict lines go to standard error
+    text = sys.stderr if is_stream(args.json) or is_stream(args.junit) else sys.stdout
     models = [load_model(path) for path in args.models]  # validate all before any work
     stage = _gate_stages(args.progress, models, args.indices)
     with unlimited_int_text():  # every input is validated: exact numbers of any size now
         if band is None:
-            results = run_gate(models, margin, args.certificates, tolerance, stage=stage)
+            results = run_gate(models, margin, args.certificates, tolerance,
+                               keep_going=True, stage=stage)
         else:
-            results = run_band_gate(models, band, margin, args.certificates, stage=stage)
+            results = run_band_gate(models, band, margin, args.certificates,
+                                    keep_going=True, stage=stage)
         if args.indices:
             add_indices(results, stage)
         for r in results:
-            print(shown(r.line()), flush=True)
+            print(shown(r.line()), file=text, flush=True)
         passed = sum(r.passed for r in results)
+        errors = sum(r.error is not None for r in results)
         where = "" if band is None else \
             f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
         within = sum(getattr(r.decision, "perturbation", None) is not None for r in results)
         spelled = args.tolerance if len(args.tolerance) <= 24 else short_text(tolerance)
         print(f"{passed} of {len(results)} model(s) passive{where}"
               + (f" ({within} within tolerance {spelled})" if within else "")
-              + (f" with margin {short_text(margin)}" if margin else ""))
+              + (f" with margin {short_text(margin)}" if margin else "")
+              + (f"; {errors} ended in an internal error (no verdict; set "
+                 "VERIFY_DEBUG=1 and report it)" if errors else ""), file=text)
         if args.json:
-            write_json(results, args.json)
+            outputs.write(args.json, json_text(results))
         if args.junit:
-            write_junit(results, args.junit)
+            outputs.write(args.junit, junit_text(gate_cases(results)))
         if plots is not None:
-            from verify.passivity.figure import write_passivity_figure
+            from verify.passivity.figure import figure_format, passivity_figure_bytes
 
             for r, path in zip(results, plots, strict=True):
+                if r.error is not None:
+                    print(shown(f"figure: none for {r.decision.model.name} (internal "
+                                "error)"), file=text)
+                    continue
                 stage(f"drawing {path}")
-                print(f"figure: {write_passivity_figure(r.decision, path)}")
-    return 0 if passed == len(results) else 1
+                outputs.write(path, passivity_figure_bytes(r.decision, figure_format(path)))
+                print(shown(f"figure: {path}"), file=text)
+    return 3 if errors else 0 if passed == len(results) else 1
 
 
 #: Models up to this many states decide in well under 2 s: on a terminal no stage lines
@@ -662,10 +701,21 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
                 "identify": _cmd_identify, "campaign": _cmd_campaign}
+    stop = StopSignals()
     try:
-        return handlers[args.command](args)
+        with stop:
+            return handlers[args.command](args)
+    except KeyboardInterrupt:
+        print(f"verify: {stop.name()}: stopped; files written before it are whole, "
+              "nothing was written after it", file=sys.stderr)
+        return stop.exit_code()
     except VerifyInputError as exc:
         print(f"verify: error: {shown(str(exc))}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # the system refused a read or a write: not a bug of ours
+        where = f"{exc.filename}: " if exc.filename else ""
+        reason = exc.strerror or os.strerror(exc.errno or 0) or type(exc).__name__
+        print(f"verify: error: {where}{reason}", file=sys.stderr)
         return 2
     except Exception as exc:  # a bug of ours: one line, the traceback on request
         if os.environ.get("VERIFY_DEBUG"):
@@ -676,9 +726,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 3
-    except KeyboardInterrupt:
-        print("verify: interrupted", file=sys.stderr)
-        return 130
+
 
 
 if __name__ == "__main__":

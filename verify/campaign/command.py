@@ -9,12 +9,8 @@ or was lost (its row is missing: ``--resume`` runs it again); 2 on bad input.
 
 from __future__ import annotations
 
-import contextlib
 import os
-import signal
 import sys
-import threading
-from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -77,38 +73,10 @@ def _check_address(address: str) -> str:
     return text
 
 
-@contextlib.contextmanager
-def _terminate_as_interrupt() -> Iterator[None]:
-    """SIGTERM (a batch system's stop) ends the campaign as Ctrl-C does: the rows in hand
-    are stored before the process exits."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    def interrupt(signum, frame):
-        raise KeyboardInterrupt
-
-    previous = signal.signal(signal.SIGTERM, interrupt)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
-
-
 def run_campaign_command(s: CampaignSettings) -> int:
-    from verify.campaign.engine import run_campaign
-    from verify.campaign.execute import FAILED, UNRESOLVED, column
+    from verify.artefacts.atomic import remove_empty
+    from verify.artefacts.outputs import OutputPlan
     from verify.campaign.models import load_spec
-    from verify.campaign.progress import clock
-    from verify.campaign.report import Campaign, write_report
-    from verify.campaign.runs import (
-        distinct_humans,
-        iter_runs,
-        place_family_files,
-        run_total,
-        spec_fingerprint,
-    )
-    from verify.campaign.store import ResultStore
 
     scheduler = _check_address(s.scheduler) if s.scheduler is not None else None
     workers = default_workers() if s.workers is None else s.workers
@@ -120,6 +88,33 @@ def run_campaign_command(s: CampaignSettings) -> int:
     spec = load_spec(s.spec)
     out = s.out if s.out is not None else DEFAULT_OUT / s.spec.stem
     check_out(out)
+    outputs = OutputPlan(inputs=[s.spec])  # the spec is never among the outputs
+    outputs.folder("--out", out)
+    for name in _FILES:
+        outputs.file("--out", out / name)
+    fresh = [p for p in (out, *(out / name for name in _FOLDERS))
+             if not os.path.lexists(p)]
+    try:
+        return _run(s, spec, out, scheduler, workers)
+    except BaseException:  # no empty folder left by a run that failed or was stopped
+        remove_empty(fresh)
+        raise
+
+
+def _run(s: CampaignSettings, spec, out: Path, scheduler: str | None, workers: int) -> int:
+    from verify.campaign.engine import run_campaign
+    from verify.campaign.execute import FAILED, UNRESOLVED, column
+    from verify.campaign.progress import clock
+    from verify.campaign.report import Campaign, write_report
+    from verify.campaign.runs import (
+        distinct_humans,
+        iter_runs,
+        place_family_files,
+        run_total,
+        spec_fingerprint,
+    )
+    from verify.campaign.store import ResultStore
+
     store = ResultStore(out / "results")
     stored = store.keys()
     if stored and not s.resume:
@@ -137,11 +132,11 @@ def run_campaign_command(s: CampaignSettings) -> int:
     if stored:
         print(f"  resuming: {len(stored)} rows already in {store.folder}", flush=True)
     try:
-        with _terminate_as_interrupt():
-            outcome = run_campaign(iter_runs(spec, humans), store, scheduler=scheduler,
-                                   workers=workers, progress=not s.quiet,
-                                   force_progress=s.progress, stream=sys.stderr,
-                                   total=total)
+        # SIGTERM arrives here as KeyboardInterrupt too (the command line's handler)
+        outcome = run_campaign(iter_runs(spec, humans), store, scheduler=scheduler,
+                               workers=workers, progress=not s.quiet,
+                               force_progress=s.progress, stream=sys.stderr,
+                               total=total)
     except KeyboardInterrupt:
         print(f"verify campaign: interrupted; {len(store.keys())} rows stored in "
               f"{store.folder}; rerun with --resume to continue", file=sys.stderr)

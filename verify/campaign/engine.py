@@ -34,6 +34,7 @@ from verify.campaign.progress import CampaignProgress
 from verify.campaign.runs import Run
 from verify.campaign.store import ResultStore
 from verify.errors import VerifyInputError
+from verify.stopping import deferred_stop
 
 TASK_PREFIX = "verify-run-"
 CONNECT_TIMEOUT = "15s"  # to reach an existing scheduler
@@ -92,14 +93,18 @@ def connect(scheduler: str | None = None, workers: int = 2) -> Iterator[Any]:
         return
     if workers < 1:
         raise VerifyInputError(f"--workers must be at least 1, got {workers}")
-    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                           dashboard_address=":0", silence_logs=logging.CRITICAL)
-    client = Client(cluster, set_as_default=False)
+    cluster = client = None
     try:
+        with deferred_stop():  # a half-started cluster cannot be closed: start it whole
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                   dashboard_address=":0", silence_logs=logging.CRITICAL)
+            client = Client(cluster, set_as_default=False)
         yield client
     finally:
-        client.close()
-        cluster.close()
+        if client is not None:
+            client.close()
+        if cluster is not None:
+            cluster.close()
 
 
 def _why(future: Any, result: Any) -> str:

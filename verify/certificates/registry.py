@@ -23,12 +23,15 @@ accepts unbound certificates, and then the result names the labels left unchecke
 
 from __future__ import annotations
 
+import os
+import stat
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from enum import StrEnum
 from pathlib import Path
 from typing import Any
 
+from verify.artefacts.atomic import kind_of
 from verify.certificates import sos_kind
 from verify.errors import VerifyInputError
 from verify.inputs.number_text import unlimited_int_text
@@ -167,12 +170,19 @@ def certificate_files(paths: Iterable[Path]) -> list[Path]:
     """The files to check: each FILE as given, each DIR's ``*.json`` in name order."""
     files: list[Path] = []
     for p in paths:
-        if p.is_dir():
+        try:
+            mode = os.stat(p).st_mode
+        except FileNotFoundError:
+            raise VerifyInputError(f"{p}: no such file or directory") from None
+        except OSError as exc:
+            raise VerifyInputError(f"{p}: cannot read ({exc.strerror})") from None
+        if stat.S_ISDIR(mode):
             files += sorted(p.glob("*.json"))
-        elif p.is_file():
+        elif stat.S_ISREG(mode):
             files.append(p)
         else:
-            raise VerifyInputError(f"{p}: no such file or directory")
+            raise VerifyInputError(f"{p}: is {kind_of(mode)}, not a certificate file; give "
+                                   "a certificate's .json file or a folder of them")
     return files
 
 

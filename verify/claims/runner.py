@@ -1,17 +1,22 @@
 """The claim runner: run registered checks and collect their results in order.
 
 The runner never lets a crashing check pass: an exception becomes an INCONCLUSIVE
-outcome that names the error. Worker processes find the claims by id in the full
-registry of :mod:`verify.claims.catalog`.
+outcome that names the error, except an output that cannot be written (a full disk),
+which ends the run as it ends every command (one line, exit 2). Worker processes find
+the claims by id in the full registry of :mod:`verify.claims.catalog`.
 """
 
 from __future__ import annotations
 
+import contextlib
+import os
+import signal
 import time
 import traceback
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
+from verify.artefacts.atomic import OutputError
 from verify.claims.model import (
     CheckContext,
     Claim,
@@ -49,6 +54,8 @@ def run_claim(claim: Claim, context: CheckContext) -> ClaimResult:
         outcome = claim.check(context)
         if not isinstance(outcome, Outcome):
             raise TypeError(f"check returned {type(outcome).__name__}, not Outcome")
+    except OutputError:  # a full disk is not a verdict on the claim: the run stops (exit 2)
+        raise
     except Exception as exc:  # a broken check must never count as a pass
         outcome = Outcome(
             verdict=Verdict.INCONCLUSIVE,
@@ -108,8 +115,8 @@ def run_claims(
     # fork keeps locks of native thread pools (clarabel's rayon pool once a solver ran
     # here) whose threads it does not copy, and the worker's first solve then waits forever
     start_method = multiprocessing.get_context("forkserver")
-    with ProcessPoolExecutor(max_workers=min(jobs, len(claims)),
-                             mp_context=start_method) as pool:
+    pool = ProcessPoolExecutor(max_workers=min(jobs, len(claims)), mp_context=start_method)
+    try:
         futures = [pool.submit(_run_by_id, c.id, context) for c in claims]
         for claim, future in zip(claims, futures, strict=True):
             outcome, seconds = future.result()
@@ -117,4 +124,75 @@ def run_claims(
             results.append(result)
             if progress is not None:
                 progress(result)
+    except BaseException:  # a signal (KeyboardInterrupt), or an output that failed
+        stop_pool(pool)
+        raise
+    pool.shutdown(wait=True)
     return RunResult(tuple(results), time.perf_counter() - start, context.seed)
+
+
+def stop_pool(pool, grace: float = 2.0) -> None:
+    """End a process pool now: queued checks are cancelled, the workers (and so any file
+    they were about to write) are terminated, and the forkserver that started them is
+    stopped (the resource tracker ends by itself when this process does), so no process
+    of the call outlives it (a survivor would keep the caller's stdout open and hang a CI
+    step that waits for it)."""
+    import multiprocessing.forkserver as forkserver
+
+    workers = list((getattr(pool, "_processes", None) or {}).values())
+    for w in workers:  # first, so that no worker takes the next queued check
+        with contextlib.suppress(Exception):
+            w.terminate()
+    pool.shutdown(wait=False, cancel_futures=True)
+    deadline = time.monotonic() + grace
+    for w in workers:
+        with contextlib.suppress(Exception):
+            w.join(max(0.0, deadline - time.monotonic()))
+            if w.is_alive():
+                w.kill()
+                w.join(1.0)
+    for child in _children(getattr(forkserver._forkserver, "_forkserver_pid", None)):
+        with contextlib.suppress(OSError):  # a worker still being started
+            os.kill(child, signal.SIGKILL)
+    _stop_helper(forkserver._forkserver, "_forkserver_pid", "_forkserver_alive_fd", grace)
+    # The resource tracker is left to end by itself: this process is now the only holder
+    # of its pipe, so it ends as this process exits, after the pool's semaphores are
+    # released here (stopped earlier, it would release them first, and each release at
+    # exit would print a traceback).
+
+
+def _children(pid: int | None) -> list[int]:
+    """The live child processes of ``pid`` (Linux /proc; empty elsewhere)."""
+    if pid is None or not os.path.isdir("/proc"):
+        return []
+    found = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            with contextlib.suppress(OSError, IndexError, ValueError):
+                with open(f"/proc/{entry}/stat") as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+                if int(fields[1]) == pid and fields[0] != "Z":
+                    found.append(int(entry))
+    return found
+
+
+def _stop_helper(owner, pid_name: str, fd_name: str, grace: float) -> None:
+    """Stop a multiprocessing helper (forkserver, resource tracker) as its own ``_stop``
+    does, by closing the descriptor whose end it waits for, but without waiting for it
+    forever: after ``grace`` seconds it is killed."""
+    pid, fd = getattr(owner, pid_name, None), getattr(owner, fd_name, None)
+    if pid is None:
+        return
+    if fd is not None:
+        with contextlib.suppress(OSError):
+            os.close(fd)
+        setattr(owner, fd_name, None)
+    deadline = time.monotonic() + grace
+    with contextlib.suppress(ChildProcessError, OSError):
+        while os.waitpid(pid, os.WNOHANG) == (0, 0):
+            if time.monotonic() > deadline:
+                os.kill(pid, signal.SIGKILL)
+                os.waitpid(pid, 0)
+                break
+            time.sleep(0.02)
+    setattr(owner, pid_name, None)

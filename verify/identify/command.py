@@ -146,21 +146,21 @@ def parse_rate(text: str | None) -> float | str:
 
 def validate(settings: IdentifySettings) -> Plan:
     """Every flag checked before any work (one-line errors)."""
+    from verify.artefacts.outputs import OutputPlan
     from verify.passivity.band import parse_band
 
     structure = parse_structure(settings.structure)
     band = parse_band(settings.band) if settings.band is not None else None
-    if settings.out.exists() and not settings.out.is_dir():
-        raise VerifyInputError(f"--out {settings.out}: exists and is not a directory")
+    if not settings.logs:
+        raise VerifyInputError("no log files given; pass one or more .csv or .npz logs")
+    outputs = OutputPlan(inputs=settings.logs)  # no log replaced, no device written
+    outputs.folder("--out", settings.out, replaced=True)
+    outputs.file("--json", settings.json)
+    outputs.file("--junit", settings.junit)
     if not _ours(settings.out):
         raise VerifyInputError(f"--out {settings.out}: a non-empty directory that is not an "
                                "output of verify identify (it would be replaced); choose a "
                                "new or empty directory")
-    for flag, path in (("--json", settings.json), ("--junit", settings.junit)):
-        if path is not None and path.is_dir():
-            raise VerifyInputError(f"{flag} {path}: is a directory; give a file name")
-    if not settings.logs:
-        raise VerifyInputError("no log files given; pass one or more .csv or .npz logs")
     name = settings.name or Path(settings.logs[0]).stem
     return Plan(tuple(Path(p) for p in settings.logs), structure, parse_rate(settings.rate),
                 parse_split(settings.split), band, settings.out, settings.json,
@@ -692,24 +692,39 @@ def _write_bundle(out: Path, bundle: dict[Path, bytes | str],
     import os
     import shutil
 
-    from verify.artefacts.atomic import write_all_atomic
+    from verify.artefacts.atomic import (
+        make_parents,
+        os_errors_as_output_errors,
+        remove_empty,
+        write_all_atomic,
+    )
 
-    out.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+    created = make_parents(out.parent)
+    staging: Path | None = None
     try:
-        write_all_atomic({staging / p.relative_to(out): data for p, data in bundle.items()})
-        inside = {p: d for p, d in others.items() if _within(p, out)}
-        write_all_atomic({staging / p.relative_to(out): d for p, d in inside.items()})
-        os.chmod(staging, 0o777 & ~_umask())
-        if out.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=out.parent))
-            os.replace(out, old / "previous")
-            os.replace(staging, out)
-            shutil.rmtree(old, ignore_errors=True)
-        else:
-            os.replace(staging, out)
+        with os_errors_as_output_errors(out):
+            staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.", dir=out.parent))
+            write_all_atomic({staging / p.relative_to(out): data
+                              for p, data in bundle.items()})
+            inside = {p: d for p, d in others.items() if _within(p, out)}
+            write_all_atomic({staging / p.relative_to(out): d for p, d in inside.items()})
+            os.chmod(staging, 0o777 & ~_umask())
+            if out.exists():
+                old = Path(tempfile.mkdtemp(prefix=f".{out.name}.old.", dir=out.parent))
+                os.replace(out, old / "previous")
+                try:
+                    os.replace(staging, out)
+                except BaseException:  # the previous output goes back in place
+                    os.replace(old / "previous", out)
+                    os.rmdir(old)
+                    raise
+                shutil.rmtree(old, ignore_errors=True)
+            else:
+                os.replace(staging, out)
     except BaseException:
-        shutil.rmtree(staging, ignore_errors=True)
+        if staging is not None:
+            shutil.rmtree(staging, ignore_errors=True)
+        remove_empty(created)
         raise
     write_all_atomic({p: d for p, d in others.items() if not _within(p, out)})
 

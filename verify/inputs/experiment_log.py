@@ -151,13 +151,17 @@ def read_log(path: str | Path, *, min_samples: int = 2) -> ExperimentLog:
     _check_min_samples(min_samples)
     if not path.exists():
         raise VerifyInputError(f"{path}: no such log file; check the path")
-    if suffix == ".csv":
+    try:  # a read the system refuses (EIO, a file that vanishes) is one line, exit 2
+        if suffix == ".csv":
+            with open_regular(path) as handle:
+                text = io.TextIOWrapper(handle, encoding="utf-8-sig", newline="")
+                return read_csv_lines(_bounded_lines(text, str(path)), source=str(path),
+                                      min_samples=min_samples)
         with open_regular(path) as handle:
-            text = io.TextIOWrapper(handle, encoding="utf-8-sig", newline="")
-            return read_csv_lines(_bounded_lines(text, str(path)), source=str(path),
-                                  min_samples=min_samples)
-    with open_regular(path) as handle:
-        columns, rate = read_npz(path, handle)
+            columns, rate = read_npz(path, handle)
+    except OSError as exc:
+        reason = exc.strerror or type(exc).__name__
+        raise VerifyInputError(f"{path}: cannot read ({reason})") from None
     builder = TrialChecker(str(path), "entry", min_samples)
     trial = columns["trial"]
     bounds = [0, *(np.flatnonzero(np.diff(trial) != 0) + 1).tolist(), trial.shape[0]]

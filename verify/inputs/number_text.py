@@ -64,7 +64,11 @@ _LOG10_2 = 0.30102999566398120
 
 
 def _fraction(x: Any) -> Fraction:
-    r = mpq(x) if not isinstance(x, Fraction) else x
+    if isinstance(x, Fraction):
+        return x
+    if hasattr(x, "p") and hasattr(x, "q"):  # python-flint's fmpq
+        return Fraction(int(x.p), int(x.q))
+    r = mpq(x)
     return Fraction(int(r.numerator), int(r.denominator))
 
 

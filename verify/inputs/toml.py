@@ -2,12 +2,30 @@
 
 from __future__ import annotations
 
+import re
 import tomllib
 from pathlib import Path
 
 from verify.errors import VerifyInputError
 from verify.inputs.files import MAX_FILE_BYTES, read_bounded
+from verify.inputs.number_text import unlimited_int_text
 from verify.inputs.numbers import decimal_literal, written_decimal
+
+#: The most digits (underscores included) in one run of a TOML file: an integer of up
+#: to this many digits is read exactly, beyond Python's default limit of 4300 (reading
+#: an integer takes time quadratic in its digits, so the bound keeps a 16 MiB file of
+#: digits from taking hours).
+MAX_DIGIT_RUN = 20_000
+_DIGIT_RUN = re.compile(rf"[0-9_]{{{MAX_DIGIT_RUN + 1},}}")
+
+
+def _check_digit_runs(text: str, where: str) -> None:
+    found = _DIGIT_RUN.search(text)
+    if found is not None:
+        line = text.count("\n", 0, found.start()) + 1
+        raise VerifyInputError(f"{where}: line {line}: a number with more than "
+                               f"{MAX_DIGIT_RUN} digits; integers of up to {MAX_DIGIT_RUN} "
+                               "digits are read exactly")
 
 
 def read_toml(path: str | Path, *, exact: bool = False, written: bool = False,
@@ -33,7 +51,13 @@ def parse_toml_bytes(raw: bytes, where: str, *, exact: bool = False,
     """:func:`read_toml` on bytes already read; messages start with ``where``."""
     parse_float = (written_decimal if written else decimal_literal) if exact else float
     try:
-        return tomllib.loads(raw.decode("utf-8"), parse_float=parse_float)
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise VerifyInputError(f"{where}: not valid TOML ({exc})") from None
+    _check_digit_runs(text, where)
+    try:
+        with unlimited_int_text():  # integers of any size up to the bound just checked
+            return tomllib.loads(text, parse_float=parse_float)
     except (UnicodeDecodeError, tomllib.TOMLDecodeError) as exc:
         message = " ".join(str(exc).split())
         raise VerifyInputError(f"{where}: not valid TOML ({message})") from None

@@ -77,7 +77,9 @@ def parse_band(text: str) -> tuple[Fraction, Fraction]:
 def check_band(w1: Fraction, w2: Fraction, where: str) -> tuple[Fraction, Fraction]:
     """(w1, w2) if 0 <= w1 < w2 <= 1e12 rad/s; one-line VerifyInputError naming ``where``."""
     if max(abs(w1), abs(w2)) > 10**12:
-        raise VerifyInputError(f"{where}: frequencies above 1e12 rad/s are not supported")
+        raise VerifyInputError(f"{where}: band ends are at most 10^12 rad/s (the "
+                               "exact band route's bound); above it, omit --band: the "
+                               "full-axis gate covers every frequency")
     if w1 < 0:
         raise VerifyInputError(f"{where}: frequencies must be >= 0 rad/s")
     if w1 >= w2:

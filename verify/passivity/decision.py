@@ -24,6 +24,7 @@ rational).
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -46,7 +47,7 @@ from verify.passivity.check.witness import (
     real_axis_witness,
 )
 from verify.passivity.rescaled import restore
-from verify.passivity.search.hamiltonian import nu_minimum, nu_values
+from verify.passivity.search.hamiltonian import nu_minimum, nu_rounding_bound, nu_values
 from verify.passivity.search.kyp import SDP_STATE_LIMIT, find_certificate
 from verify.passivity.search.scaling import rescale
 from verify.passivity.verdicts import (
@@ -165,6 +166,21 @@ def clearly_negative(A, B, C, D, omega: float, rel: float = 1e-9) -> bool:
 #: What a floating-point proposal may raise on extreme data (entries near the float
 #: range, subnormals, overflow to inf); the proposal then yields nothing.
 FLOAT_FAILURES = (ArithmeticError, ValueError, np.linalg.LinAlgError)
+
+
+def nu_estimate_text(A, B, C, D, best: tuple[float, float] | None) -> str:
+    """The smallest ν estimate for an inconclusive reason: its value only when it stands
+    above the rounding error of its own evaluation (:func:`nu_rounding_bound`); a value
+    inside it is rounding noise, and the reason says so instead of quoting it."""
+    if best is None:
+        return "no ν estimate"
+    omega, value = best
+    bound = propose(nu_rounding_bound, A, B, C, D, omega, default=math.inf)
+    if abs(value) <= bound:
+        return (f"the smallest ν found, at ω ≈ {omega:.4g}, is within the rounding error of "
+                f"its floating-point evaluation (bound {bound:.1e}): no sign can be read "
+                "from it")
+    return f"smallest ν found {value:.3g} at ω = {omega:.4g}"
 
 
 def propose(fn, *args, default=None):
@@ -312,7 +328,6 @@ def decide(model: LTIModel, margin: Fraction = Fraction(0), *,
     w = propose(pole_witness, em)
     if w is not None:
         return done(NOT_PASSIVE, w.summary, witness=w, nu_min=best)
-    smallest = "no ν estimate" if best is None else \
-        f"smallest ν found {best[1]:.3g} at ω = {best[0]:.4g}"
+    smallest = nu_estimate_text(A, B, C, D, best)
     return done(INCONCLUSIVE, f"no exactly checked certificate or witness ({search_reason}; "
                 f"{smallest})", nu_min=best)

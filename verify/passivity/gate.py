@@ -6,18 +6,21 @@ directory (with ``--band W1:W2``, a generalized KYP certificate for that band, s
 :mod:`verify.passivity.band`), naming its model file by a path relative to that
 directory, so ``verify certificates check`` finds the file from the certificate wherever
 it runs; a JSON summary and a JUnit XML file (one test case per model) are optional.
+In the command's batch, a model on which the tool itself fails gets an ``error`` result
+(its own line, JSON entry and JUnit ``<error>``) and the other models keep theirs.
 """
 
 from __future__ import annotations
 
 import json
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from fractions import Fraction
 from pathlib import Path
 from xml.sax.saxutils import escape, quoteattr
 
-from verify.artefacts.atomic import write_atomic
+from verify.artefacts.atomic import OutputError, write_atomic
 from verify.errors import VerifyInputError
 from verify.inputs.number_text import unlimited_int_text
 from verify.inputs.numbers import parse_number
@@ -34,6 +37,7 @@ from verify.passivity.io.binding import (
 )
 from verify.passivity.search.canonical import coarse_band, coarse_kyp
 from verify.passivity.search.tolerance import PASSIVE_WITHIN, within_tolerance
+from verify.passivity.verdicts import INCONCLUSIVE
 from verify.progress import silent
 
 
@@ -59,10 +63,11 @@ class GateResult:
     certificate_path: Path | None
     indices: tuple | None = None  # (IFP, OFP) IndexBounds when asked for
     kept: bool = False  # the certificate file already held a valid one of the same claim
+    error: str | None = None  # the tool failed on this model (a bug): no verdict
 
     @property
     def passed(self) -> bool:
-        return self.decision.verdict in (PASSIVE, PASSIVE_WITHIN)
+        return self.error is None and self.decision.verdict in (PASSIVE, PASSIVE_WITHIN)
 
     def line(self) -> str:
         with unlimited_int_text():  # a reason may hold exact numbers of any size
@@ -70,6 +75,9 @@ class GateResult:
 
     def _line(self) -> str:
         d = self.decision
+        if self.error is not None:
+            return (f"ERROR {d.model.name} ({d.model.source}, {d.model.n} states, "
+                    f"{d.seconds:.2f} s): no verdict: {self.error}")
         head = f"{'PASS' if self.passed else 'FAIL'} {d.model.name} ({d.model.source}, " \
                f"{d.model.n} states, {d.seconds:.2f} s): {d.verdict}"
         perturbation = getattr(d, "perturbation", None)
@@ -112,23 +120,52 @@ def store_pr_certificate(cert: PrCertificate, margin: Fraction,
 
 
 def run_gate(models, margin: Fraction, certificates_dir: Path,
-             tolerance: Fraction = Fraction(0),
+             tolerance: Fraction = Fraction(0), *, keep_going: bool = False,
              stage: Callable[[str], None] = silent) -> list[GateResult]:
     """Decide each model; with ``tolerance`` > 0 a model that is not passive as written may
     pass as *passive within tolerance* (:mod:`verify.passivity.search.tolerance`), and then the
-    certificate written is the perturbed model's (it names that model exactly). ``stage``
-    is told which model is being decided (progress lines)."""
+    certificate written is the perturbed model's (it names that model exactly). With
+    ``keep_going`` (the command's batch), an internal error on one model is that model's
+    ``error`` result (:func:`guarded`) instead of an exception. ``stage`` is told which
+    model is being decided (progress lines)."""
     with unlimited_int_text():  # exact numbers of any size from here (inputs validated)
         results = []
         for k, model in enumerate(models):
             stage(_deciding(k, len(models), model))
-            results.append(_gate_one(model, margin, certificates_dir, tolerance, stage))
+            results.append(_each(model, lambda m=model: _gate_one(
+                m, margin, certificates_dir, tolerance, stage), keep_going))
         return results
 
 
 def _deciding(k: int, count: int, model) -> str:
     return f"deciding model {k + 1} of {count}: {model.name} ({model.n} states, {model.m} " \
         "port(s))"
+
+
+def _each(model, work: Callable[[], GateResult], keep_going: bool) -> GateResult:
+    return guarded(model, work) if keep_going else work()
+
+
+#: At most this many characters of an internal error's message are kept in a result.
+ERROR_TEXT_LIMIT = 300
+
+
+def guarded(model, work: Callable[[], GateResult]) -> GateResult:
+    """``work()`` on one model of a batch; an internal error (a bug of the tool) becomes
+    this model's ``error`` result instead of ending the batch, so the other models keep
+    their verdicts. An output that cannot be written still ends the call (exit 2)."""
+    start = time.perf_counter()
+    try:
+        return work()
+    except OutputError:
+        raise
+    except Exception as exc:
+        text = " ".join(f"{type(exc).__name__}: {exc}".split())
+        if len(text) > ERROR_TEXT_LIMIT:
+            text = text[:ERROR_TEXT_LIMIT] + " ..."
+        d = Decision(model, INCONCLUSIVE, f"internal error of the tool: {text}",
+                     seconds=time.perf_counter() - start)
+        return GateResult(d, None, error=text)
 
 
 def _gate_one(model, margin: Fraction, certificates_dir: Path,
@@ -157,24 +194,28 @@ def _gate_one(model, margin: Fraction, certificates_dir: Path,
 
 def run_band_gate(models, band: tuple[Fraction, Fraction], margin: Fraction,
                   certificates_dir: Path, *, exact_first: bool = True,
+                  keep_going: bool = False,
                   stage: Callable[[str], None] = silent) -> list[GateResult]:
     """The gate on a finite band: exact band or generalized KYP certificates (written), or
-    witnesses (``exact_first``: see :func:`verify.passivity.band.decide_band`)."""
+    witnesses (``exact_first``: see :func:`verify.passivity.band.decide_band`;
+    ``keep_going`` as for :func:`run_gate`)."""
     from verify.passivity.band import decide_band
     from verify.passivity.check.band_fd import BandFdCertificate
 
+    def one(model) -> GateResult:
+        d = decide_band(model, band, margin, exact_first=exact_first)
+        if isinstance(d.certificate, BandFdCertificate):  # the exact band route
+            cert = replace(d.certificate,
+                           source=relative_source(d.certificate.source, certificates_dir))
+            path, kept = cf.store_band_fd_certificate(cert, certificates_dir)
+            return GateResult(d, path, kept=kept)
+        return _band_one(d, model, band, margin, certificates_dir)
+
     results = []
-    for k, model in enumerate(models):
-        stage(_deciding(k, len(models), model))
-        with unlimited_int_text():
-            d = decide_band(model, band, margin, exact_first=exact_first)
-            if isinstance(d.certificate, BandFdCertificate):  # the exact band route
-                cert = replace(d.certificate,
-                               source=relative_source(d.certificate.source, certificates_dir))
-                path, kept = cf.store_band_fd_certificate(cert, certificates_dir)
-                results.append(GateResult(d, path, kept=kept))
-            else:
-                results.append(_band_one(d, model, band, margin, certificates_dir))
+    with unlimited_int_text():
+        for k, model in enumerate(models):
+            stage(_deciding(k, len(models), model))
+            results.append(_each(model, lambda m=model: one(m), keep_going))
     return results
 
 
@@ -197,24 +238,38 @@ def add_indices(results: list[GateResult], stage: Callable[[str], None] = silent
 
     with unlimited_int_text():
         for r in results:
+            if r.error is not None:
+                continue
             stage(f"passivity indices of {r.decision.model.name}")
-            r.indices = indices(r.decision.model)
+            found = guarded(r.decision.model, lambda r=r: replace(
+                r, indices=indices(r.decision.model)))
+            if found.error is not None:
+                r.error = found.error
+            else:
+                r.indices = found.indices
+
+
+def json_text(results: list[GateResult]) -> str:
+    """The JSON summary (one entry per model; a model the tool failed on has the verdict
+    "error" and the error's text)."""
+    with unlimited_int_text():  # exact numbers of any size, written in full
+        return json.dumps([_json_entry(r) for r in results], indent=2) + "\n"
+
+
+def _json_entry(r: GateResult) -> dict:
+    if r.error is not None:
+        d = r.decision
+        return {"name": d.model.name, "source": d.model.source, "verdict": "error",
+                "reason": d.reason, "error": r.error, "seconds": round(d.seconds, 4),
+                "passed": False, "certificate": None}
+    return {**r.decision.to_json(), "passed": r.passed,
+            "certificate": None if r.certificate_path is None else str(r.certificate_path),
+            **({} if r.indices is None else {
+                "indices": {i.kind: i.to_json() for i in r.indices}})}
 
 
 def write_json(results: list[GateResult], path: Path) -> None:
-    with unlimited_int_text():  # exact numbers of any size, written in full
-        _write_json(results, path)
-
-
-def _write_json(results: list[GateResult], path: Path) -> None:
-    data = [
-        {**r.decision.to_json(), "passed": r.passed,
-         "certificate": None if r.certificate_path is None else str(r.certificate_path),
-         **({} if r.indices is None else {
-             "indices": {i.kind: i.to_json() for i in r.indices}})}
-        for r in results
-    ]
-    write_atomic(path, json.dumps(data, indent=2) + "\n")
+    write_atomic(path, json_text(results))
 
 
 @dataclass(frozen=True)
@@ -232,13 +287,15 @@ class JunitCase:
 
 def junit_text(cases: list[JunitCase], suite: str = "passivity gate") -> str:
     """JUnit XML of ``cases`` (one <testcase> each; a failure carries the reason)."""
-    failures = sum(not c.passed for c in cases)
+    errors = sum(c.verdict == "error" for c in cases)  # the tool failed: no verdict
+    failures = sum(not c.passed for c in cases) - errors
     total = sum(c.seconds for c in cases)
     lines = []
     for c in cases:
+        tag = "error" if c.verdict == "error" else "failure"
         body = "" if c.passed else (
-            f"<failure message={quoteattr(c.verdict + ': ' + c.reason)}>"
-            f"{escape(c.reason)}</failure>"
+            f"<{tag} message={quoteattr(c.verdict + ': ' + c.reason)}>"
+            f"{escape(c.reason)}</{tag}>"
         )
         lines.append(
             f'  <testcase classname="{c.classname}" name={quoteattr(c.name)} '
@@ -247,14 +304,16 @@ def junit_text(cases: list[JunitCase], suite: str = "passivity gate") -> str:
     return (
         '<?xml version="1.0" encoding="utf-8"?>\n'
         f'<testsuite name={quoteattr(suite)} tests="{len(cases)}" failures="{failures}" '
-        f'errors="0" time="{total:.4f}">\n' + "\n".join(lines) + "\n</testsuite>\n"
+        f'errors="{errors}" time="{total:.4f}">\n' + "\n".join(lines) + "\n</testsuite>\n"
     )
 
 
 def gate_cases(results: list[GateResult]) -> list[JunitCase]:
     """The JUnit cases of gate results (classname ``verify.gate``)."""
     return [JunitCase("verify.gate", r.decision.model.name, r.decision.model.source,
-                      r.decision.seconds, r.passed, str(r.decision.verdict), r.decision.reason)
+                      r.decision.seconds, r.passed,
+                      "error" if r.error is not None else str(r.decision.verdict),
+                      r.decision.reason)
             for r in results]
 
 

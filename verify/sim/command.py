@@ -20,7 +20,7 @@ from verify.inputs.time_grid import step_count
 from verify.sim.energy import energy
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
-from verify.sim.outputs import write_outputs
+from verify.sim.outputs import PLOT_NAMES, write_outputs
 from verify.sim.properties import largest_rise
 from verify.sim.resolution import stable_step, step_is_stable
 from verify.sim.run import simulate
@@ -158,6 +158,7 @@ def run_simulate(s: SimulateSettings) -> int:
         raise VerifyInputError(f"--n {s.n}: at most {MAX_BODIES} bodies fit in memory here")
     noises = _check_log_settings(s)
     rtol = None if s.adaptive is None else positive_real(s.adaptive, "--adaptive")
+    _check_outputs(s)
     human, human_line = build_human(s)
     scenario = build_scenario(s, human)
     if noises[0] > 0:
@@ -221,6 +222,19 @@ def engine_line(scenario: Scenario, engine: str = "auto") -> str:
     else:
         why = f"the kernels do not model the autonomous input {scenario.autonomous.name}"
     return f"Python field (slow: {why})"
+
+
+def _check_outputs(s: SimulateSettings) -> None:
+    """Every output checked before the run (:class:`verify.artefacts.outputs.OutputPlan`):
+    no input replaced, no device written, the folders writable."""
+    from verify.artefacts.outputs import OutputPlan
+
+    plan = OutputPlan(inputs=[p for p in (s.model, s.network) if p is not None])
+    plan.folder("--out", s.out)
+    names = [f"trajectory.{s.fmt}"] + (list(PLOT_NAMES) if s.plots else [])
+    for name in names:
+        plan.file("--out", Path(s.out) / name)
+    plan.file("--log", s.log)
 
 
 def _check_log_settings(s: SimulateSettings) -> tuple[float, float]:

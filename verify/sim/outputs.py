@@ -24,6 +24,10 @@ CSV_COLUMNS = (
 )
 
 
+#: The figures :func:`plots` writes (checked as outputs before a run).
+PLOT_NAMES = ("energy.png", "lemma1.png", "dbar_error.png", "sphere.png")
+
+
 def series(traj: Trajectory, E: Energy) -> dict[str, np.ndarray]:
     """Named time series of a run (each of length T, or (T, 3) for vectors)."""
     d_r = traj.R_r @ E3

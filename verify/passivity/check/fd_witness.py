@@ -17,6 +17,7 @@ from __future__ import annotations
 from flint import fmpq, fmpq_poly
 from gmpy2 import mpq
 
+from verify.inputs.number_text import approx_text
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check import qpoly as qp
@@ -108,7 +109,7 @@ def frequency_vector_witness(model: ExactModel, w: fmpq, note: str, tm=None
     if found is None:
         return None
     v, value = found
-    return vector_witness(w, float(w.p) / float(w.q), f"{float(value):.3g}", v, value,
+    return vector_witness(w, approx_text(w), approx_text(value, 3), v, value,
                           model.m, note)
 
 

@@ -50,6 +50,7 @@ from dataclasses import dataclass, field
 
 from flint import fmpq, fmpq_mat, fmpq_poly
 
+from verify.inputs.number_text import approx_text
 from verify.passivity.check import qpoly as qp
 from verify.passivity.check.certificate import ExactModel
 from verify.passivity.check.univariate_sos import Nonnegativity, nonnegativity_certificate
@@ -382,7 +383,7 @@ def analyse(model: ExactModel, *, certify: bool = True) -> Analysis:
                 an.failure = {"kind": "residue-not-psd", "pole": pole, "k": bad[0]}
                 where = "0" if pole.hi == 0 else f"j·w0, w0 in ({pole.lo}, {pole.hi}]"
                 an.reason = (f"the residue of H at the imaginary-axis pole s = {where} "
-                             f"(w0 ≈ {float((pole.lo + pole.hi) / 2):.6g}) is not positive "
+                             f"(w0 ≈ {approx_text((pole.lo + pole.hi) / 2)}) is not positive "
                              "semidefinite "
                              f"(exact: E_{bad[0]} of its Hermitian form is negative)")
                 return an

@@ -37,7 +37,7 @@ import gmpy2
 import numpy as np
 from gmpy2 import mpq
 
-from verify.inputs.number_text import short_text
+from verify.inputs.number_text import approx_text, float_or_none, short_text
 from verify.passivity.check import exact as ex
 from verify.passivity.check import intmat
 from verify.passivity.check.certificate import ExactModel
@@ -164,7 +164,10 @@ def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
                   for x in (model.A, model.B, model.C, model.D))
     if not all(np.all(np.isfinite(x)) for x in (A, B, C, D)):
         return None
-    proposal = float_direction(A, B, C, D, float(w))
+    wf = float_or_none(w)
+    if wf is None:  # beyond the float range: the exact route decides
+        return None
+    proposal = float_direction(A, B, C, D, wf)
     if proposal is None:
         return None
     a, b = proposal
@@ -173,7 +176,7 @@ def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
         return None
     return Witness(
         "frequency",
-        f"at ω* = {w} (≈ {float(w):.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ "
+        f"at ω* = {w} (≈ {approx_text(w)} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v ≤ "
         f"{_rounded_up(bound)} (the exact bound rounded up) < 0 for an exact rational "
         "vector v = a + jb (exact bound of a verified floating-point solve)",
         {"omega": str(w), "a": [str(x) for x in a], "b": [str(x) for x in b],
@@ -183,14 +186,19 @@ def _bounded_witness(model: ExactModel, w: Fraction) -> Witness | None:
 
 def _rounded_up(x: object, digits: int = 3) -> str:
     """The exact rational ``x`` rounded up to ``digits`` significant digits, so that a
-    written upper bound stays an upper bound."""
-    import math
-
+    written upper bound stays an upper bound (integers only: any size, no float)."""
     q = Fraction(str(x))
     if q == 0:
         return "0"
-    step = Fraction(10) ** (math.floor(math.log10(abs(float(q)))) - digits + 1)
-    return f"{float(math.ceil(q / step) * step):.{digits}g}"
+    num, den = abs(q.numerator), q.denominator
+    e = len(str(num)) - len(str(den))  # within 1 of log10|q|
+    while Fraction(num, den) >= Fraction(10) ** e:
+        e += 1
+    while Fraction(num, den) < Fraction(10) ** (e - 1):
+        e -= 1
+    step = Fraction(10) ** (e - digits)  # 10^(e-1) <= |q| < 10^e
+    rounded = -((-q) // step) * step  # the ceiling of q on the grid of step
+    return approx_text(rounded, digits + 1)
 
 
 def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
@@ -211,22 +219,24 @@ def frequency_witness_at(model: ExactModel, w: Fraction) -> Witness | None:
     if found is None:
         return None
     v, value = found
-    return vector_witness(w, float(w), f"{gmpy2.mpfr(value):.3g}", v, value, model.m)
+    return vector_witness(w, approx_text(w), f"{gmpy2.mpfr(value):.3g}", v, value, model.m)
 
 
-def vector_witness(w: object, approx: float, shown_value: str, v: list, value: object,
+def vector_witness(w: object, approx: str, shown_value: str, v: list, value: object,
                    m: int, note: str = "") -> Witness:
     """The frequency witness record: v = a + jb with vᴴ(H(jω*) + H(jω*)ᴴ)v = value < 0.
 
     ``w`` and ``value`` are exact rationals (printed as they print), ``approx`` and
-    ``shown_value`` their readable forms; ``note`` says how ω* was found.
+    ``shown_value`` their readable forms (text, so that an ω* beyond the float range,
+    such as 10^1500, is shown, never converted to a float); ``note`` says how ω* was
+    found.
     """
     how = f" ({note})" if note else ""
     exact = str(value)  # an exact rational: written as such when it is short
     shown = exact if len(exact) <= 24 else f"{shown_value} (rounded; exact in the data)"
     return Witness(
         "frequency",
-        f"at ω* = {w} (≈ {approx:.6g} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
+        f"at ω* = {w} (≈ {approx} rad/s), vᴴ(H(jω*) + H(jω*)ᴴ)v = "
         f"{shown} < 0 for an exact rational vector v = a + jb{how}",
         {"omega": str(w), "a": [str(x) for x in v[:m]],
          "b": [str(x) for x in v[m:]], "value": str(value)},
@@ -384,8 +394,9 @@ def real_axis_witness(model: ExactModel, tries: int = 24) -> Witness | None:
             return Witness(
                 "rhp-point",
                 f"at the real point s* = {s} of the right half-plane, vᵀ(H(s*) + H(s*)ᵀ)v "
-                f"≈ {float(main):.3g} < 0 for a rational v in ker(D + Dᵀ) (exact bound on "
-                f"the error of a rounded solve; Nᵀ C B N has vᵀ C B v = {float(g):.3g} < 0); "
+                f"≈ {approx_text(main, 3)} < 0 for a rational v in ker(D + Dᵀ) (exact bound "
+                "on the error of a rounded solve; Nᵀ C B N has vᵀ C B v = "
+                f"{approx_text(g, 3)} < 0); "
                 "a passive H has H(s) + H(s)ᴴ ≥ 0 for Re s > 0",
                 {"s": str(s), "v": [str(q) for q in v], "value_bound": str(main),
                  "mu": str(mu), "residual_norm2": str(_norm2(r))},

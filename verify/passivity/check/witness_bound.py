@@ -68,7 +68,10 @@ def bounded_form(model: ExactModel, w: Fraction, a: list[mpq], b: list[mpq]
     for i in range(n):
         K_int[i, i] += p * p * da * da
     Af = intmat.to_float(A_int)
-    wf = float(w)
+    try:
+        wf = float(w)
+    except OverflowError:  # beyond the float range: no float solve to verify
+        return None
     with np.errstate(all="ignore"):
         Kf = Af @ Af + wf * wf * np.eye(n)
         try:

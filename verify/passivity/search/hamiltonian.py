@@ -191,4 +191,27 @@ def _polish(A: Array, B: Array, C: Array, D: Array, w0: float, v0: float, lo: fl
     return w0, v0
 
 
-__all__ = ["NuMinimum", "hamiltonian", "level_crossings", "nu_minimum", "nu_values"]
+
+
+def nu_rounding_bound(A, B, C, D, omega: float) -> float:
+    """A first-order bound on the rounding error of ν(ω) evaluated in floating point:
+    n u cond(jωI - A) |C| |(jωI - A)^-1| |B| + u |D| (2-norms, u the unit roundoff), the
+    usual forward-error size of a linear solve. Infinite when jωI - A is singular."""
+    n = A.shape[0]
+    u = np.finfo(float).eps / 2
+    with np.errstate(all="ignore"):
+        try:
+            s = np.linalg.svd(1j * omega * np.eye(n) - A, compute_uv=False)
+        except np.linalg.LinAlgError:
+            return math.inf
+        if n and (s[-1] == 0 or not np.all(np.isfinite(s))):
+            return math.inf
+        inverse = 1 / s[-1] if n else 0.0
+        cond = s[0] / s[-1] if n else 1.0
+        bound = n * u * cond * np.linalg.norm(C, 2) * inverse * np.linalg.norm(B, 2) \
+            + u * np.linalg.norm(D, 2)
+    return float(bound) if math.isfinite(bound) else math.inf
+
+
+__all__ = ["NuMinimum", "hamiltonian", "level_crossings", "nu_minimum", "nu_rounding_bound",
+           "nu_values"]

@@ -200,16 +200,20 @@ def _clearly_not_passive(A, B, C, D) -> str:
     exact witness instead. Skipping a search only ever loses a certificate, so a wrong
     float answer costs completeness, never soundness.
     """
-    from verify.passivity.search.hamiltonian import nu_minimum, nu_values
+    from verify.passivity.search.hamiltonian import nu_minimum, nu_rounding_bound, nu_values
 
     try:
         with np.errstate(all="ignore"):
             found = nu_minimum(A, B, C, D)
             ends = np.abs(nu_values(A, B, C, D, np.array([0.0, np.inf])))
+            noise = nu_rounding_bound(A, B, C, D, found.omega) \
+                if np.isfinite(found.omega) else np.inf
     except (np.linalg.LinAlgError, ValueError, OverflowError):
         return ""
     scale = float(np.max(ends[np.isfinite(ends)], initial=0.0))
-    if np.isfinite(found.value) and found.value < -NEGATIVE_NU * (1.0 + scale):
+    # a value inside the rounding error of its own evaluation is noise, not a sign
+    if np.isfinite(found.value) and found.value < -NEGATIVE_NU * (1.0 + scale) \
+            and -found.value > noise:
         return f"ν ≈ {found.value:.3g} < 0 at ω ≈ {found.omega:.4g} in floating point"
     return ""
 

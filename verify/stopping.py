@@ -1,0 +1,92 @@
+"""Stopping a command on SIGINT or SIGTERM: how every command ends when it is told to.
+
+A CI runner or batch system stops a job with SIGTERM, a person with Ctrl-C (SIGINT).
+Inside :class:`StopSignals` (the command line wraps every command in it) both raise
+``KeyboardInterrupt`` in the main thread, so one ``except``/``finally`` path stops worker
+processes and writes nothing more; the exit code is then 128 + the signal (130, 143).
+Every file is written through a temporary file and a rename
+(:mod:`verify.artefacts.atomic`), so what was written before the signal is whole.
+
+A step that must not be cut in two (starting a Dask cluster, whose half-built state
+cannot be closed) runs inside :func:`deferred_stop`: a signal there is held and raised
+as soon as the step is done.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
+
+#: The signals that stop a command.
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+_deferring = 0
+_pending: list[int] = []
+
+
+class StopSignals:
+    """While inside, SIGINT and SIGTERM raise ``KeyboardInterrupt`` (once; a second
+    signal does not cut the cleanup of the first); :meth:`exit_code` is 128 + the
+    signal."""
+
+    def __init__(self) -> None:
+        self.signum = int(signal.SIGINT)
+        self.fired = False
+        self._previous: dict[int, Any] = {}
+
+    def _handler(self, signum: int, frame: object) -> None:
+        if self.fired:
+            return
+        if _deferring:
+            if not _pending:
+                _pending.append(signum)
+            return
+        self.fired, self.signum = True, signum
+        raise KeyboardInterrupt
+
+    def __enter__(self) -> StopSignals:
+        global _active
+        if threading.current_thread() is threading.main_thread():
+            self._previous = {s: signal.signal(s, self._handler) for s in STOP_SIGNALS}
+            _active = self
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        global _active
+        for s, previous in self._previous.items():
+            signal.signal(s, previous)
+        if _active is self:
+            _active = None
+
+    def name(self) -> str:
+        return signal.Signals(self.signum).name
+
+    def exit_code(self) -> int:
+        return 128 + int(self.signum)
+
+
+_active: StopSignals | None = None
+
+
+@contextmanager
+def deferred_stop() -> Iterator[None]:
+    """Hold a stop signal until the block is done, then raise it (``KeyboardInterrupt``).
+
+    Without an active :class:`StopSignals` (a library caller), this does nothing."""
+    global _deferring
+    _deferring += 1
+    try:
+        yield
+    finally:
+        _deferring -= 1
+        if _deferring == 0 and _pending:
+            signum = _pending.pop()
+            if _active is not None and not _active.fired:
+                _active.fired, _active.signum = True, signum
+                raise KeyboardInterrupt  # the signal outranks an error of the block
+
+
+__all__ = ["STOP_SIGNALS", "StopSignals", "deferred_stop"]
