@@ -287,10 +287,10 @@ def test_a_crashing_model_keeps_the_others_verdicts(tmp_path, capsys, monkeypatc
         paths.append(p)
     real = gate.decide
 
-    def crashes_on_b(model, margin):
+    def crashes_on_b(model, margin, **options):
         if model.name == "B":
             raise OverflowError("integer division result too large for a float")
-        return real(model, margin)
+        return real(model, margin, **options)
 
     monkeypatch.setattr(gate, "decide", crashes_on_b)
     code = main(["gate", *map(str, paths), "--json", str(tmp_path / "g.json"), "--junit",
