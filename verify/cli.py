@@ -130,6 +130,28 @@ def _build_parser() -> argparse.ArgumentParser:
                         "'verify all')")
     p_gate.add_argument("--json", type=Path, metavar="OUT", help="write a JSON summary")
     p_gate.add_argument("--junit", type=Path, metavar="OUT", help="write JUnit XML")
+    p_gate.add_argument("--coq", type=Path, metavar="DIR",
+                        help="also write a Coq development of the models' KYP certificates "
+                        "to DIR, and compile it with coqc when coqc is installed")
+
+    p_coq = sub.add_parser(
+        "coq",
+        help="write a Coq development of certificates (default: the paper's, "
+        "certificates/ -> certificates/coq/), --check compiles it with coqc",
+        description="Exit 0 when written (and, with --check, accepted by coqc and the "
+        "audit), 1 when a certificate was refused or coqc failed, 2 on bad input or "
+        "when --check finds no coqc.",
+    )
+    p_coq.add_argument("inputs", nargs="*", type=Path, metavar="CERT",
+                       help="certificate files or folders (default: the paper's "
+                       "development from certificates/)")
+    p_coq.add_argument("--out", type=Path, metavar="DIR",
+                       help="where to write (default certificates/coq for the paper, "
+                       "build/coq for given files)")
+    p_coq.add_argument("--check", action="store_true",
+                       help="compile with coqc (in a temporary copy) and audit: no "
+                       "Admitted/admit/Axiom, Print Assumptions only Coq's real-number "
+                       "axioms")
 
     p_id = sub.add_parser(
         "identify",
@@ -389,7 +411,19 @@ def _cmd_gate(args: argparse.Namespace) -> int:
             write_json(results, args.json)
         if args.junit:
             write_junit(results, args.junit)
-    return 0 if passed == len(results) else 1
+    coq_ok = True
+    if args.coq is not None:
+        from verify.coq.command import gate_development
+
+        paths = [r.certificate_path for r in results if r.certificate_path is not None]
+        coq_ok = gate_development(paths, args.coq)
+    return 0 if passed == len(results) and coq_ok else 1
+
+
+def _cmd_coq(args: argparse.Namespace) -> int:
+    from verify.coq.command import run_coq
+
+    return run_coq(args.inputs, args.out, args.check)
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
@@ -570,7 +604,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
-                "identify": _cmd_identify, "campaign": _cmd_campaign}
+                "identify": _cmd_identify, "campaign": _cmd_campaign, "coq": _cmd_coq}
     try:
         return handlers[args.command](args)
     except VerifyInputError as exc:

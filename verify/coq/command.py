@@ -1,0 +1,117 @@
+"""``verify coq`` and ``verify gate --coq``: write a Coq development, optionally compile it.
+
+``verify coq`` with no file writes the paper's development (the derivation units when
+installed, and every exportable certificate of ``certificates/``) to
+``certificates/coq/``; with files or folders, the development of those certificates.
+``--check`` compiles it with ``coqc`` in a temporary copy (the folder keeps only
+sources), prints each file's time, and audits it (:mod:`verify.coq.audit`).
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+from verify.coq.audit import audit_assumptions, forbidden_commands
+from verify.coq.development import (
+    CompileResult,
+    check_files,
+    coqc_available,
+    render_development,
+    write_development,
+)
+from verify.coq.export import (
+    Export,
+    export_certificates,
+    not_exported_json,
+    paper_development_units,
+)
+
+NOT_EXPORTED_FILE = "NOT_EXPORTED.json"
+INSTALL_HINT = "apt-get install coq libcoq-stdlib"
+
+
+def development_files(export: Export) -> dict[str, str]:
+    """Every file of the development of ``export`` (sources, project, the list left out)."""
+    return render_development(export.units,
+                              extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported)})
+
+
+def write_export(folder: Path, export: Export) -> None:
+    write_development(folder, export.units,
+                      extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported)})
+
+
+def check_and_audit(files: dict[str, str]) -> tuple[CompileResult, list[str]]:
+    """Compile the files with coqc; the audit's problems (empty when all is well)."""
+    result = check_files(files)
+    problems = [f"forbidden command {f}" for f in forbidden_commands(files)]
+    if result.ok:
+        audit = audit_assumptions(result.output)
+        problems += [f"axiom not allowed: {a}" for a in audit.disallowed]
+    return result, problems
+
+
+def _report_check(result: CompileResult, problems: list[str]) -> bool:
+    for rel, seconds in result.timings:
+        failed = rel == result.failed_file
+        print(f"{'FAILED' if failed else 'ok    '} {rel} ({seconds:.1f} s)")
+    if not result.ok:
+        tail = [ln for ln in result.output.splitlines() if ln.strip()][-6:]
+        print("coqc: " + "\n      ".join(tail))
+    for p in problems:
+        print(f"audit: {p}")
+    if result.ok and not problems:
+        print("coqc accepted every file; no Admitted/admit/Axiom; Print Assumptions lists "
+              "only Coq's real-number axioms")
+    return result.ok and not problems
+
+
+def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
+            certificates_dir: Path = Path("certificates")) -> int:
+    """The ``verify coq`` command; returns the exit code."""
+    if check and not coqc_available():
+        print(f"verify: coqc not found (on Debian/Ubuntu: {INSTALL_HINT})", file=sys.stderr)
+        return 2
+    if inputs:
+        missing = [str(p) for p in inputs if not Path(p).exists()]
+        if missing:
+            print(f"verify: no such file or folder: {missing[0]}", file=sys.stderr)
+            return 2
+        export = export_certificates(list(inputs))
+        folder = out or Path("build/coq")
+    else:
+        export = paper_development_units(certificates_dir)
+        folder = out or certificates_dir / "coq"
+    files = development_files(export)
+    write_export(folder, export)
+    print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
+          f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
+    refused = [i for i in export.not_exported if i.schema.startswith("verify-kyp-certificate")]
+    for item in refused:
+        print(f"not exported: {item.reason}")
+    ok = not refused
+    if check:
+        ok = _report_check(*check_and_audit(files)) and ok
+    return 0 if ok else 1
+
+
+def gate_development(certificate_paths: Sequence[Path], folder: Path) -> bool:
+    """``verify gate --coq DIR``: the development of the gate's certificates; compiled when
+    coqc is installed. Prints one line per step; False when coqc rejected it."""
+    export = export_certificates(list(certificate_paths))
+    write_export(folder, export)
+    print(f"coq: wrote {folder} ({len(export.units)} unit(s))")
+    for item in export.not_exported:
+        print(f"coq: {item.file} not exported: {item.reason}")
+    if not coqc_available():
+        print(f"coq: coqc not found, not compiled ({INSTALL_HINT})")
+        return True
+    result, problems = check_and_audit(development_files(export))
+    if result.ok and not problems:
+        total = sum(s for _, s in result.timings)
+        print(f"coq: compiled by coqc, accepted ({total:.1f} s)")
+        return True
+    _report_check(result, problems)
+    return False
