@@ -116,8 +116,7 @@ def _dyadic_below(x: float) -> mpq:
 def _rounded(m: ex.RationalMatrix, strict: bool) -> Witness | None:
     """Rounded Cholesky factor of M - (eps + delta) I, columns as integers / 2^e."""
     n = len(m)
-    s = intmat.normalised(intmat.from_rational(m))
-    F = intmat.to_float(s) / float(s.d)
+    F = intmat.to_float(intmat.from_rational(m))
     if not np.all(np.isfinite(F)):
         return None
     lam = float(np.linalg.eigvalsh(F)[0])

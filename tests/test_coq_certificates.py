@@ -1,0 +1,245 @@
+"""Certificates checked by Coq's kernel: the exporter, the audit and attacks on both.
+
+Tests that run ``coqc`` skip where it is not installed; the rest (witnesses, refusals,
+the audit's reading of sources and of ``Print Assumptions``) run everywhere. The prelude
+is compiled once per module, then each attacked unit alone.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from gmpy2 import mpq
+
+from verify.cli import main
+from verify.coq.audit import audit_assumptions, forbidden_commands, printed_axioms
+from verify.coq.command import development_files
+from verify.coq.development import LOGICAL_ROOT, coqc_available, prelude_sources
+from verify.coq.export import export_certificates, paper_development_units
+from verify.coq.kyp import CoqExportError, kyp_unit_from_file
+from verify.coq.witness import Witness, psd_witness, residual_dominant
+
+ROOT = Path(__file__).resolve().parents[1]
+CERTS = ROOT / "certificates"
+KS3 = CERTS / "reconstructed-k_s-3.0-99babda880e6.json"
+COMMITTED = CERTS / "coq"
+
+needs_coqc = pytest.mark.skipif(not coqc_available(), reason="coqc not installed")
+
+
+def q(rows):
+    return [[mpq(x) for x in row] for row in rows]
+
+
+# ---------------------------------------------------------------- witnesses (no coqc)
+
+
+def test_witness_of_a_definite_matrix_is_accepted_by_the_python_replica():
+    m = q([[4, 1, 0], [1, 3, 1], [0, 1, 2]])
+    w = psd_witness(m, strict=True)
+    assert w is not None and w.eps > 0 and residual_dominant(m, w)
+
+
+def test_no_witness_for_an_indefinite_or_singular_matrix():
+    assert psd_witness(q([[1, 2], [2, 1]])) is None
+    assert psd_witness(q([[1, 0], [0, 0]]), strict=True) is None
+    w = psd_witness(q([[1, 0], [0, 0]]))  # semidefinite: fine without strictness
+    assert w is not None and w.eps == 0
+
+
+def test_a_witness_for_one_matrix_fails_for_a_changed_one():
+    m = q([[2, 1], [1, 2]])
+    w = psd_witness(m, strict=True)
+    assert w is not None
+    changed = q([[2, 1], [1, 1]])
+    assert not residual_dominant(changed, w)
+    assert not residual_dominant(m, Witness(mpq(-1), w.terms, w.method))
+
+
+def test_rounded_witness_for_a_large_float_matrix():
+    import numpy as np
+
+    rng = np.random.default_rng(3)
+    G = rng.standard_normal((20, 20))
+    F = G @ G.T + 20 * np.eye(20)
+    m = [[mpq(float(x)) for x in row] for row in F]
+    w = psd_witness(m, strict=True)
+    assert w is not None and w.method.startswith("rounded") and residual_dominant(m, w)
+
+
+# ---------------------------------------------------------------- exporter refusals
+
+
+def _tampered(tmp_path: Path, edit) -> Path:
+    data = json.loads(KS3.read_text())
+    edit(data)
+    out = tmp_path / KS3.name
+    out.write_text(json.dumps(data, indent=1) + "\n")
+    return out
+
+
+def test_the_exporter_refuses_a_certificate_of_another_model(tmp_path):
+    def edit(data):
+        data["model"]["A"][1][0] = "-7/4"  # the fingerprint names the stored model
+    with pytest.raises(CoqExportError, match="fingerprint"):
+        kyp_unit_from_file(_tampered(tmp_path, edit))
+
+
+def test_the_exporter_refuses_a_matrix_that_is_not_a_certificate(tmp_path):
+    def edit(data):
+        data["P"][0][0] = "-109/32"
+    with pytest.raises(CoqExportError, match="P > 0"):
+        kyp_unit_from_file(_tampered(tmp_path, edit))
+
+
+def test_the_exporter_refuses_a_changed_statement(tmp_path):
+    def edit(data):
+        data["statement"] = "H is strictly passive"
+    with pytest.raises(CoqExportError, match="statement"):
+        kyp_unit_from_file(_tampered(tmp_path, edit))
+
+
+def test_other_certificate_kinds_are_listed_with_a_reason():
+    export = export_certificates([CERTS])
+    names = {u.name for u in export.units}
+    assert "Cert_reconstructed_k_s_3_0_99babda880e6" in names
+    left = {i.file: i for i in export.not_exported}
+    assert all(i.reason for i in left.values())
+    assert any(i.schema == "verify-band-fd-certificate/1" for i in left.values())
+    assert KS3.name not in left
+
+
+def test_the_development_is_the_same_bytes_twice():
+    a = development_files(paper_development_units(CERTS))
+    b = development_files(paper_development_units(CERTS))
+    assert a == b
+
+
+def test_the_unit_names_the_model_and_states_the_lmi():
+    text = kyp_unit_from_file(KS3).text
+    assert "99babda880e694ef995d0c7ea536c7385aff424110cd10f829a99cc382daffe8" in text
+    assert "verify/data/models/reconstructed_ks3p0.toml" in text
+    assert "Theorem passive : kyp_certified 4 2 A B C D P." in text
+
+
+# ---------------------------------------------------------------- audit (no coqc)
+
+
+def test_forbidden_commands_are_found_outside_comments_only():
+    files = {"X.v": "(* Admitted in a comment is fine *)\nLemma a : True.\nProof. admit.\n"
+                    "Admitted.\n", "Y.v": "Axiom oops : False.\n", "Z.txt": "Axiom"}
+    found = forbidden_commands(files)
+    assert found == ["X.v: admit", "X.v: Admitted", "Y.v: Axiom"]
+    assert forbidden_commands({"W.v": '(* (* nested *) Axiom *) Definition s := "Axiom".'}) == []
+
+
+def test_the_prelude_has_no_forbidden_command():
+    assert forbidden_commands({f"{k}.v": v for k, v in prelude_sources().items()}) == []
+
+
+PRINTED = """Axioms:
+ClassicalDedekindReals.sig_forall_dec
+  : forall P : nat -> Prop,
+    (forall n : nat, {P n} + {~ P n}) -> {n : nat | ~ P n} + {forall n : nat, P n}
+Classical_Prop.classic : forall P : Prop, P \\/ ~ P
+Closed under the global context
+"""
+
+
+def test_print_assumptions_output_is_read_and_foreign_axioms_refused():
+    assert printed_axioms(PRINTED) == ["ClassicalDedekindReals.sig_forall_dec",
+                                       "Classical_Prop.classic"]
+    audit = audit_assumptions(PRINTED)
+    assert not audit.ok and audit.disallowed == ("Classical_Prop.classic",)
+    assert audit_assumptions("Closed under the global context\n").ok
+
+
+# ---------------------------------------------------------------- coqc
+
+
+@pytest.fixture(scope="module")
+def prelude_dir(tmp_path_factory):
+    if not coqc_available():
+        pytest.skip("coqc not installed")
+    folder = tmp_path_factory.mktemp("coq")
+    for name, text in prelude_sources().items():
+        (folder / f"{name}.v").write_text(text)
+        _coqc(folder, f"{name}.v", check=True)
+    return folder
+
+
+def _coqc(folder: Path, rel: str, check: bool = False) -> subprocess.CompletedProcess:
+    done = subprocess.run([shutil.which("coqc") or "coqc", "-R", ".", LOGICAL_ROOT, rel],
+                          cwd=folder, capture_output=True, text=True, timeout=600)
+    if check:
+        assert done.returncode == 0, done.stdout + done.stderr
+    return done
+
+
+def _compiles(folder: Path, text: str, name: str = "Attack") -> bool:
+    (folder / f"{name}.v").write_text(text)
+    return _coqc(folder, f"{name}.v").returncode == 0
+
+
+@needs_coqc
+def test_coqc_accepts_the_k_s_3_certificate(prelude_dir):
+    assert _compiles(prelude_dir, kyp_unit_from_file(KS3).text)
+
+
+@needs_coqc
+@pytest.mark.parametrize("old, new", [
+    ("[[(109 # 32); (4 # 5);", "[[(9 # 32); (4 # 5);"),        # a changed number of P
+    ("[(-3 # 2); (-2 # 1); (0 # 1); (0 # 1)]", "[(3 # 2); (-2 # 1); (0 # 1); (0 # 1)]"),
+    # ^ the certificate against another model (A changed, P and witnesses kept)
+    ("Definition eP : Q := (1 # 8).", "Definition eP : Q := (1 # 2)."),  # a wrong witness
+    ("kyp_certified 4 2 A B C D P.", "kyp_certified 4 2 A B C Dm P."),  # swapped: H - I
+    ("kyp_check_sound 4 2 A B C D P eP wP eM wM).",
+     "kyp_check_sound 4 2 A B C D P eP wP eM (tl wM))."),  # a dropped witness term
+])
+def test_coqc_rejects_a_tampered_unit(prelude_dir, old, new):
+    text = kyp_unit_from_file(KS3).text
+    assert old in text
+    bad = text.replace(old, new, 1)
+    if "Dm" in new:  # the statement swapped (H - I for H), the proof left as it was
+        bad = bad.replace("kyp_check_sound 4 2 A B C D P", "kyp_check_sound 4 2 A B C Dm P")
+        bad = bad.replace("(** The certificate. *)",
+                          "Definition Dm : matQ := msub D (scaled_identity 2 1).\n")
+    assert not _compiles(prelude_dir, bad)
+
+
+@needs_coqc
+def test_a_strengthened_statement_is_rejected(prelude_dir):
+    """Claiming M(P) < 0 (strict) where the certificate only gives <= 0."""
+    text = kyp_unit_from_file(KS3).text
+    extra = ("\nTheorem too_strong : pos_def 6 (mneg (kyp A B C D P)).\n"
+             "Proof. apply (pd_check_sound 6 _ eM wM). vm_compute. reflexivity. Qed.\n")
+    assert not _compiles(prelude_dir, text + extra)
+
+
+@needs_coqc
+def test_the_committed_development_is_current_and_accepted(tmp_path):
+    fresh = development_files(paper_development_units(CERTS))
+    committed = {p.name: p.read_text() for p in COMMITTED.iterdir() if p.is_file()}
+    assert committed == fresh, "certificates/coq/ differs from a fresh export"
+    assert main(["coq", "--check", "--out", str(tmp_path / "dev")]) == 0
+
+
+@needs_coqc
+def test_gate_with_coq_compiles_the_gate_certificate(tmp_path, capsys):
+    model = ROOT / "verify" / "data" / "models" / "reconstructed_ks3p0.toml"
+    rc = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+               "--coq", str(tmp_path / "coq")])
+    out = capsys.readouterr().out
+    assert rc == 0, out
+    assert "coq: compiled by coqc, accepted" in out
+    assert any(p.name.startswith("Cert_") for p in (tmp_path / "coq").iterdir())
+
+
+def test_coq_command_refuses_a_missing_input(tmp_path, capsys):
+    assert main(["coq", str(tmp_path / "nope.json"), "--out", str(tmp_path / "o")]) == 2
+    assert "no such file" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
