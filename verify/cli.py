@@ -304,6 +304,9 @@ def _cmd_all(args: argparse.Namespace) -> int:
     counts = ", ".join(f"{v} {k}" for k, v in run.counts().items() if v)
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))
+    from verify.coq.command import write_paper_development
+
+    print(write_paper_development(args.certificates))
     if args.strict and not run.all_verified():
         print("--strict: some claims are not 'verified'", file=sys.stderr)
         return 1

@@ -97,6 +97,16 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
     return 0 if ok else 1
 
 
+def write_paper_development(certificates_dir: Path) -> str:
+    """``verify all``'s last step: the paper's development in ``certificates_dir/coq``
+    (not compiled here); returns the line to print."""
+    export = paper_development_units(certificates_dir)
+    folder = Path(certificates_dir) / "coq"
+    write_export(folder, export)
+    return (f"coq: wrote {folder} ({len(export.units)} unit(s); 'verify coq --check' "
+            "compiles it)")
+
+
 def gate_development(certificate_paths: Sequence[Path], folder: Path) -> bool:
     """``verify gate --coq DIR``: the development of the gate's certificates; compiled when
     coqc is installed. Prints one line per step; False when coqc rejected it."""
