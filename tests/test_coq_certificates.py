@@ -231,12 +231,40 @@ def test_the_committed_development_is_current_and_accepted(tmp_path):
 @needs_coqc
 def test_gate_with_coq_compiles_the_gate_certificate(tmp_path, capsys):
     model = ROOT / "verify" / "data" / "models" / "reconstructed_ks3p0.toml"
-    rc = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+    rc = main(["gate", str(model), "--margin=-1/10", "--certificates", str(tmp_path / "c"),
                "--coq", str(tmp_path / "coq")])
     out = capsys.readouterr().out
     assert rc == 0, out
     assert "coq: compiled by coqc, accepted" in out
-    assert any(p.name.startswith("Cert_") for p in (tmp_path / "coq").iterdir())
+    units = [p for p in (tmp_path / "coq").iterdir() if p.name.startswith("Cert_")]
+    assert len(units) == 1
+    text = units[0].read_text()  # the margin is in the statement, D - nu0 I computed by Coq
+    assert "Definition nu0 : Q := (-1 # 10)." in text
+    assert "Theorem passive : kyp_certified 4 2 A B C D_shifted P." in text
+
+
+@needs_coqc
+def test_coqc_accepts_a_rounded_witness_and_rejects_it_for_a_changed_matrix(prelude_dir):
+    """Long entries take the rounded-Cholesky route; Coq re-checks its residual."""
+    big = mpq(2**200 + 1, 2**199)  # about 2, with 200-bit numerator and denominator
+    m = q([[big, 1, 0], [1, big, 1], [0, 1, big]])
+    w = psd_witness(m, strict=True)
+    assert w is not None and w.method.startswith("rounded")
+    from verify.coq.kyp import matrix_literal, q_literal, terms_literal
+
+    def unit(matrix):
+        return ("From Coq Require Import QArith List.\nFrom VerifyCoq Require Import QCert.\n"
+                "Import ListNotations.\nLocal Open Scope Q_scope.\n"
+                f"Definition M : matQ := {matrix_literal(matrix)}.\n"
+                f"Definition e : Q := {q_literal(w.eps)}.\n"
+                f"Definition ws : list term := {terms_literal(w)}.\n"
+                "Theorem t : pos_def 3 M.\n"
+                "Proof. apply (pd_check_sound 3 M e ws). vm_compute. reflexivity. Qed.\n")
+    assert _compiles(prelude_dir, unit(m), "Rounded")
+    changed = [row[:] for row in m]
+    changed[0][0] = mpq(1, 2)  # no longer dominant after the same terms
+    assert not residual_dominant(changed, w)
+    assert not _compiles(prelude_dir, unit(changed), "Rounded")
 
 
 def test_coq_command_refuses_a_missing_input(tmp_path, capsys):

@@ -112,10 +112,12 @@ def not_exported_json(items: Sequence[NotExported]) -> str:
 def derivation_units() -> list[CoqUnit]:
     """The paper's derivation units (:func:`verify.coq.paper.paper_units`) when that
     module is installed, else none."""
-    try:
-        from verify.coq import paper  # type: ignore[attr-defined]
-    except ImportError:
+    import importlib
+    import importlib.util
+
+    if importlib.util.find_spec("verify.coq.paper") is None:
         return []
+    paper = importlib.import_module("verify.coq.paper")  # its own errors are not hidden
     return list(paper.paper_units())
 
 
