@@ -54,5 +54,5 @@ Definition wM : list term :=
 Theorem passive : kyp_certified 4 2 A B C D P.
 Proof.
   apply (kyp_check_sound 4 2 A B C D P eP wP eM wM).
-  vm_compute. reflexivity.
+  vm_cast_no_check (eq_refl true).  (* the kernel evaluates the check once, at Qed *)
 Qed.

@@ -141,7 +141,7 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
         f"Theorem {THEOREM} : kyp_certified {n} {m} A B C {d_name} P.",
         "Proof.",
         f"  apply (kyp_check_sound {n} {m} A B C {d_name} P eP wP eM wM).",
-        "  vm_compute. reflexivity.",
+        "  vm_cast_no_check (eq_refl true).  (* the kernel evaluates the check once, at Qed *)",
         "Qed.",
         "",
     ]
