@@ -26,9 +26,23 @@ Definition matQ := list (list Q).
 (** The entry in row [i], column [j] (0 outside the data). *)
 Definition entry (M : matQ) (i j : nat) : Q := nth j (nth i M nil) 0%Q.
 
-(** Arithmetic that keeps fractions in lowest terms ([Qred x == x]). *)
-Definition qadd (a b : Q) : Q := Qred (a + b).
-Definition qmul (a b : Q) : Q := Qred (a * b).
+(** Exact arithmetic on [Q] with shortcuts for speed: [qadd a b == a + b] and
+    [qmul a b = a * b] (lemmas [Q2R_qadd], [Q2R_qmul] below).  Fractions are not reduced:
+    the exporter writes each matrix over one common denominator, so that the terms of a
+    sum share theirs and are added by their numerators; a product multiplies the shorter
+    number into the longer. *)
+Definition pmul (x y : positive) : positive :=
+  if Pos.leb (Pos.size x) (Pos.size y) then Pos.mul x y else Pos.mul y x.
+Definition zmul (x y : Z) : Z :=
+  match x, y with
+  | Z0, _ | _, Z0 => Z0
+  | Zpos a, Zpos b | Zneg a, Zneg b => Zpos (pmul a b)
+  | Zpos a, Zneg b | Zneg a, Zpos b => Zneg (pmul a b)
+  end.
+Definition qmul (a b : Q) : Q := Qmake (zmul (Qnum a) (Qnum b)) (pmul (Qden a) (Qden b)).
+Definition qadd (a b : Q) : Q :=
+  if Z.eqb (Qnum a) 0 then b else if Z.eqb (Qnum b) 0 then a
+  else if Pos.eqb (Qden a) (Qden b) then Qmake (Qnum a + Qnum b) (Qden a) else a + b.
 
 Fixpoint zipw (f : Q -> Q -> Q) (u v : list Q) : list Q :=
   match u, v with
@@ -269,11 +283,28 @@ Proof. unfold Q2R. simpl. lra. Qed.
 Lemma Q2R_red q : Q2R (Qred q) = Q2R q.
 Proof. apply Qeq_eqR, Qred_correct. Qed.
 
+Lemma Q2R_num0 d : Q2R (Qmake 0 d) = 0.
+Proof. unfold Q2R. simpl. ring. Qed.
+
 Lemma Q2R_qadd a b : Q2R (qadd a b) = Q2R a + Q2R b.
-Proof. unfold qadd. rewrite Q2R_red. apply Q2R_plus. Qed.
+Proof.
+  destruct a as [na da], b as [nb db]. unfold qadd. simpl.
+  destruct (Z.eqb_spec na 0) as [->|Ha]; [rewrite Q2R_num0; ring|].
+  destruct (Z.eqb_spec nb 0) as [->|Hb]; [rewrite Q2R_num0; ring|].
+  destruct (Pos.eqb_spec da db) as [<-|Hd]; [|apply Q2R_plus].
+  unfold Q2R. simpl. rewrite plus_IZR. ring.
+Qed.
+
+Lemma pmul_mul x y : pmul x y = Pos.mul x y.
+Proof. unfold pmul. destruct (Pos.leb _ _); [reflexivity | apply Pos.mul_comm]. Qed.
+
+Lemma zmul_mul x y : zmul x y = Z.mul x y.
+Proof. destruct x, y; simpl; rewrite ?pmul_mul; reflexivity. Qed.
 
 Lemma Q2R_qmul a b : Q2R (qmul a b) = Q2R a * Q2R b.
-Proof. unfold qmul. rewrite Q2R_red. apply Q2R_mult. Qed.
+Proof.
+  unfold qmul. rewrite zmul_mul, pmul_mul. apply Q2R_mult.
+Qed.
 
 Lemma Q2R_Qabs q : Q2R (Qabs q) = Rabs (Q2R q).
 Proof.
@@ -306,7 +337,7 @@ Definition delta (eps : Q) (i j : nat) : Q := if Nat.eqb i j then eps else 0%Q.
 
 (** R = M - eps I - sum_k d_k l_k l_k^T, entry by entry. *)
 Definition resid (M : matQ) (eps : Q) (ws : list term) (i j : nat) : Q :=
-  Qred (entry M i j - delta eps i j - termsQ ws i j).
+  qadd (entry M i j) (Qopp (qadd (delta eps i j) (termsQ ws i j))).
 
 Fixpoint sumQ (n : nat) (f : nat -> Q) : Q :=
   match n with O => 0%Q | S k => qadd (sumQ k f) (f k) end.
@@ -351,7 +382,7 @@ Lemma qform_split n M eps ws x :
 Proof.
   unfold qform. rewrite <- !sumR_plus. apply sumR_ext. intros i _.
   rewrite <- !sumR_plus. apply sumR_ext. intros j _.
-  unfold resid. rewrite Q2R_red, !Q2R_minus. ring.
+  unfold resid. rewrite Q2R_qadd, Q2R_opp, Q2R_qadd. ring.
 Qed.
 
 Lemma delta_part n eps x :

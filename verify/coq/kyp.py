@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import re
 from fractions import Fraction
+from functools import reduce
+from math import lcm
 from pathlib import Path
 
 from gmpy2 import mpq
@@ -42,25 +44,38 @@ class CoqExportError(ValueError):
     """A certificate that cannot be exported (one line, says why)."""
 
 
-def q_literal(x: mpq | Fraction | int) -> str:
-    """A rational as a Coq ``Q`` literal ``(p # q)``."""
+def q_literal(x: mpq | Fraction | int, den: int | None = None) -> str:
+    """A rational as a Coq ``Q`` literal ``(p # q)``; over ``den`` (a multiple of its
+    denominator) when given: the same rational, written unreduced."""
     x = mpq(x)
-    return f"({int(x.numerator)} # {int(x.denominator)})"
+    if den is None or x == 0:
+        return f"({int(x.numerator)} # {int(x.denominator)})"
+    return f"({int(x * den)} # {den})"
+
+
+def common_denominator(values) -> int:
+    """The least common denominator of the values (1 for none)."""
+    return int(reduce(lcm, (int(mpq(x).denominator) for x in values), 1))
 
 
 def matrix_literal(m: ex.RationalMatrix, indent: str = "  ") -> str:
-    """A matrix as a Coq ``list (list Q)``, one row a line."""
+    """A matrix as a Coq ``list (list Q)``, one row a line, its entries over one common
+    denominator (``QCert.qadd`` then adds them by their numerators)."""
     if not m:
         return "[]"
-    rows = [f"[{'; '.join(q_literal(x) for x in row)}]" for row in m]
+    den = common_denominator(x for row in m for x in row)
+    rows = [f"[{'; '.join(q_literal(x, den) for x in row)}]" for row in m]
     return "[" + (";\n" + indent + " ").join(rows) + "]"
 
 
 def terms_literal(w: Witness) -> str:
-    """The terms of a witness as a Coq ``list term``."""
+    """The terms of a witness as a Coq ``list term`` (the weights over one denominator,
+    the vectors' entries over another)."""
     if not w.terms:
         return "[]"
-    items = [f"({q_literal(d)}, [{'; '.join(q_literal(x) for x in vec)}])"
+    dd = common_denominator(d for d, _ in w.terms)
+    dl = common_denominator(x for _, vec in w.terms for x in vec)
+    items = [f"({q_literal(d, dd)}, [{'; '.join(q_literal(x, dl) for x in vec)}])"
              for d, vec in w.terms]
     return "[" + ";\n   ".join(items) + "]"
 
@@ -114,7 +129,8 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
         "Import ListNotations.",
         "Local Open Scope Q_scope.",
         "",
-        f"(** The model: {n} states, {m} ports; x' = A x + B u, y = C x + D u. *)",
+        f"(** The model: {n} states, {m} ports; x' = A x + B u, y = C x + D u.",
+        "    Each matrix is written over one common denominator ((2 # 2) is 1). *)",
         f"Definition A : matQ :=\n  {matrix_literal(model.A)}.",
         f"Definition B : matQ :=\n  {matrix_literal(model.B)}.",
         f"Definition C : matQ :=\n  {matrix_literal(model.C)}.",
