@@ -271,3 +271,30 @@ def test_coq_command_refuses_a_missing_input(tmp_path, capsys):
     assert main(["coq", str(tmp_path / "nope.json"), "--out", str(tmp_path / "o")]) == 2
     assert "no such file" in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
+
+
+def test_verify_all_step_writes_the_paper_development_only_into_an_existing_folder(tmp_path):
+    from verify.coq.command import write_paper_development
+
+    missing = tmp_path / "none"
+    assert "no Coq development written" in write_paper_development(missing)
+    assert not missing.exists()
+    certs = tmp_path / "certs"
+    certs.mkdir()
+    shutil.copy(KS3, certs / KS3.name)
+    write_paper_development(certs)
+    written = {p.name: p.read_text() for p in (certs / "coq").iterdir()}
+    assert written == development_files(paper_development_units(certs))
+    assert "Cert_reconstructed_k_s_3_0_99babda880e6.v" in written
+
+
+def test_coq_command_on_a_certificate_of_another_model_exits_1(tmp_path, capsys):
+    def edit(data):
+        data["model"]["C"][0][0] = "1"
+    bad = _tampered(tmp_path, edit)
+    assert main(["coq", str(bad), "--out", str(tmp_path / "dev")]) == 1
+    out = capsys.readouterr().out
+    assert "not exported" in out and "fingerprint" in out
+    listed = json.loads((tmp_path / "dev" / "NOT_EXPORTED.json").read_text())
+    assert [i["file"] for i in listed["not_exported"]] == [KS3.name]
+    assert not [p for p in (tmp_path / "dev").iterdir() if p.name.startswith("Cert_")]

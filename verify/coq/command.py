@@ -99,7 +99,10 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
 
 def write_paper_development(certificates_dir: Path) -> str:
     """``verify all``'s last step: the paper's development in ``certificates_dir/coq``
-    (not compiled here); returns the line to print."""
+    (not compiled here); returns the line to print. Nothing is written when the run
+    wrote no certificate folder (a partial run elsewhere)."""
+    if not Path(certificates_dir).is_dir():
+        return f"coq: {certificates_dir} does not exist; no Coq development written"
     export = paper_development_units(certificates_dir)
     folder = Path(certificates_dir) / "coq"
     write_export(folder, export)
