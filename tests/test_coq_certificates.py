@@ -298,3 +298,18 @@ def test_coq_command_on_a_certificate_of_another_model_exits_1(tmp_path, capsys)
     listed = json.loads((tmp_path / "dev" / "NOT_EXPORTED.json").read_text())
     assert [i["file"] for i in listed["not_exported"]] == [KS3.name]
     assert not [p for p in (tmp_path / "dev").iterdir() if p.name.startswith("Cert_")]
+
+
+def test_rewriting_a_development_removes_units_no_longer_exported(tmp_path):
+    from verify.coq.command import write_export
+
+    certs = tmp_path / "certs"
+    certs.mkdir()
+    shutil.copy(KS3, certs / KS3.name)
+    out = tmp_path / "dev"
+    write_export(out, export_certificates([certs]))
+    (out / "notes.txt").write_text("mine")
+    assert (out / "Cert_reconstructed_k_s_3_0_99babda880e6.v").exists()
+    write_export(out, export_certificates([tmp_path / "empty"]))
+    assert not (out / "Cert_reconstructed_k_s_3_0_99babda880e6.v").exists()
+    assert (out / "notes.txt").read_text() == "mine" and (out / "QCert.v").exists()

@@ -70,12 +70,30 @@ def render_development(units: Sequence[CoqUnit], *,
 
 def write_development(folder: Path, units: Sequence[CoqUnit], *,
                       extra: Mapping[str, str] | None = None) -> list[Path]:
-    """Write the development into ``folder``; return the ``.v`` files in compile order."""
+    """Write the development into ``folder``; return the ``.v`` files in compile order.
+
+    Files an earlier development listed in its ``_CoqProject`` and this one does not are
+    removed, so the folder is exactly the development (nothing else is touched).
+    """
     files = render_development(units, extra=extra)
     folder = Path(folder)
+    stale = [rel for rel in _listed(folder) if rel not in files]
     write_all_atomic({folder / rel: text for rel, text in files.items()})
+    for rel in stale:
+        (folder / rel).unlink(missing_ok=True)
     order = files["_CoqProject"].splitlines()[1:]
     return [folder / rel for rel in order]
+
+
+def _listed(folder: Path) -> list[str]:
+    """The ``.v`` files of an earlier development of ours in ``folder`` (plain names)."""
+    try:
+        lines = (folder / "_CoqProject").read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return []
+    if not lines or lines[0] != f"-R . {LOGICAL_ROOT}":
+        return []
+    return [ln for ln in lines[1:] if ln.endswith(".v") and "/" not in ln and ln != ".v"]
 
 
 @dataclass(frozen=True)
