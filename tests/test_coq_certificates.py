@@ -193,7 +193,7 @@ def test_coqc_accepts_the_k_s_3_certificate(prelude_dir):
 @needs_coqc
 @pytest.mark.parametrize("old, new", [
     ("[[(545 # 160); (128 # 160);", "[[(45 # 160); (128 # 160);"),  # a changed number of P
-    ("[(-3 # 2); (-4 # 2); (0 # 1); (0 # 1)]", "[(3 # 2); (-4 # 2); (0 # 1); (0 # 1)]"),
+    ("[(-3 # 2); (-4 # 2); (0 # 2); (0 # 2)]", "[(3 # 2); (-4 # 2); (0 # 2); (0 # 2)]"),
     # ^ the certificate against another model (A changed, P and witnesses kept)
     ("Definition eP : Q := (1 # 8).", "Definition eP : Q := (1 # 2)."),  # a wrong witness
     ("kyp_certified 4 2 A B C D P.", "kyp_certified 4 2 A B C Dm P."),  # swapped: H - I

@@ -50,9 +50,29 @@ Fixpoint zipw (f : Q -> Q -> Q) (u v : list Q) : list Q :=
   | _, _ => nil
   end.
 
-Fixpoint dot (u v : list Q) : Q :=
+Fixpoint dot_plain (u v : list Q) : Q :=
   match u, v with
-  | a :: u', b :: v' => qadd (qmul a b) (dot u' v')
+  | a :: u', b :: v' => qadd (qmul a b) (dot_plain u' v')
+  | _, _ => 0%Q
+  end.
+
+Fixpoint same_den (d : positive) (u : list Q) : bool :=
+  match u with nil => true | a :: u' => Pos.eqb (Qden a) d && same_den d u' end.
+
+Fixpoint dot_num (u v : list Q) : Z :=
+  match u, v with
+  | a :: u', b :: v' => (zmul (Qnum a) (Qnum b) + dot_num u' v')%Z
+  | _, _ => 0%Z
+  end.
+
+(** The dot product u . v (lemma [Q2R_dot]); when the entries of u share one
+    denominator and those of v another, the numerators' products are summed once over
+    the product of the two denominators. *)
+Definition dot (u v : list Q) : Q :=
+  match u, v with
+  | a :: _, b :: _ =>
+      if same_den (Qden a) u && same_den (Qden b) v
+      then Qmake (dot_num u v) (pmul (Qden a) (Qden b)) else dot_plain u v
   | _, _ => 0%Q
   end.
 
@@ -306,6 +326,39 @@ Proof.
   unfold qmul. rewrite zmul_mul, pmul_mul. apply Q2R_mult.
 Qed.
 
+Fixpoint dotR (u v : list Q) : R :=
+  match u, v with
+  | a :: u', b :: v' => Q2R a * Q2R b + dotR u' v'
+  | _, _ => 0
+  end.
+
+Lemma Q2R_dot_plain u v : Q2R (dot_plain u v) = dotR u v.
+Proof.
+  revert v. induction u as [|a u IH]; intros [|b v]; simpl; try apply Q2R_zero.
+  rewrite Q2R_qadd, Q2R_qmul, IH. reflexivity.
+Qed.
+
+Lemma Q2R_dot_num du dv u v :
+  same_den du u = true -> same_den dv v = true ->
+  Q2R (Qmake (dot_num u v) (pmul du dv)) = dotR u v.
+Proof.
+  revert v. induction u as [|[na da] u IH]; intros [|[nb db] v] Hu Hv; simpl;
+    try apply Q2R_num0.
+  simpl in Hu, Hv. apply andb_true_iff in Hu as [Hu Hu']. apply andb_true_iff in Hv as [Hv Hv'].
+  apply Pos.eqb_eq in Hu. apply Pos.eqb_eq in Hv. subst.
+  rewrite <- (IH v Hu' Hv'). rewrite zmul_mul, pmul_mul.
+  unfold Q2R. simpl. rewrite plus_IZR, mult_IZR, Pos2Z.inj_mul, mult_IZR. field.
+  split; apply not_0_IZR; discriminate.
+Qed.
+
+Lemma Q2R_dot u v : Q2R (dot u v) = dotR u v.
+Proof.
+  destruct u as [|a u'], v as [|b v']; try apply Q2R_zero.
+  unfold dot. destruct (same_den (Qden a) (a :: u') && same_den (Qden b) (b :: v')) eqn:H.
+  - apply andb_true_iff in H as [Hu Hv]. apply Q2R_dot_num; assumption.
+  - apply Q2R_dot_plain.
+Qed.
+
 Lemma Q2R_Qabs q : Q2R (Qabs q) = Rabs (Q2R q).
 Proof.
   destruct q as [a b]. unfold Q2R, Qabs. simpl. rewrite Rabs_mult, abs_IZR.
@@ -346,7 +399,7 @@ Definition offdQ (i j : nat) (q : Q) : Q := if Nat.eqb i j then 0%Q else q.
 
 (** Every row i of r: sum_(j <> i) (|r_ij| + |r_ji|) <= 2 r_ii. *)
 Definition dominant (n : nat) (r : nat -> nat -> Q) : bool :=
-  forallb (fun i => Qle_bool (sumQ n (fun j => offdQ i j (Qabs (r i j) + Qabs (r j i))))
+  forallb (fun i => Qle_bool (sumQ n (fun j => offdQ i j (qadd (Qabs (r i j)) (Qabs (r j i)))))
                              (2 * r i i)) (seq 0 n).
 
 Definition psd_check (n : nat) (M : matQ) (eps : Q) (ws : list term) : bool :=
@@ -356,8 +409,20 @@ Definition psd_check (n : nat) (M : matQ) (eps : Q) (ws : list term) : bool :=
 Definition pd_check (n : nat) (M : matQ) (eps : Q) (ws : list term) : bool :=
   negb (Qle_bool eps 0) && psd_check n M eps ws.
 
+(** Equality of rationals; over one denominator, of their numerators. *)
+Definition qeqb (a b : Q) : bool :=
+  if Pos.eqb (Qden a) (Qden b) then Z.eqb (Qnum a) (Qnum b) else Qeq_bool a b.
+
+Lemma qeqb_sound a b : qeqb a b = true -> (a == b)%Q.
+Proof.
+  destruct a as [na da], b as [nb db]. unfold qeqb. simpl.
+  destruct (Pos.eqb_spec da db) as [<-|_].
+  - intros H. apply Z.eqb_eq in H. subst. reflexivity.
+  - apply Qeq_bool_iff.
+Qed.
+
 Definition sym_check (n : nat) (M : matQ) : bool :=
-  forallb (fun i => forallb (fun j => Qeq_bool (entry M i j) (entry M j i)) (seq 0 n))
+  forallb (fun i => forallb (fun j => qeqb (entry M i j) (entry M j i)) (seq 0 n))
           (seq 0 n).
 
 Lemma Q2R_termsQ ws i j :
@@ -435,11 +500,11 @@ Proof.
     pose proof (forallb_seq _ n Hdom i Hi) as H. apply Qle_bool_R in H.
     rewrite Q2R_sumQ, Q2R_mult in H.
     replace (Q2R 2) with 2 in H by (unfold Q2R; simpl; field).
-    rewrite (sumR_ext n _ (fun j => Q2R (offdQ i j (Qabs (resid M eps ws i j)
-                                                  + Qabs (resid M eps ws j i))))).
+    rewrite (sumR_ext n _ (fun j => Q2R (offdQ i j (qadd (Qabs (resid M eps ws i j))
+                                                        (Qabs (resid M eps ws j i)))))).
     - lra.
     - intros j _. unfold offd, offdQ. destruct (Nat.eqb i j); [apply eq_sym, Q2R_zero|].
-      rewrite Q2R_plus, !Q2R_Qabs. reflexivity. }
+      rewrite Q2R_qadd, !Q2R_Qabs. reflexivity. }
   lra.
 Qed.
 
@@ -478,7 +543,7 @@ Qed.
 
 Theorem sym_check_sound n M : sym_check n M = true -> symmetric n M.
 Proof.
-  intros H i j Hi Hj. apply Qeq_bool_iff.
+  intros H i j Hi Hj. apply qeqb_sound.
   exact (forallb_seq _ n (forallb_seq _ n H i Hi) j Hj).
 Qed.
 

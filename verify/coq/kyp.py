@@ -48,7 +48,7 @@ def q_literal(x: mpq | Fraction | int, den: int | None = None) -> str:
     """A rational as a Coq ``Q`` literal ``(p # q)``; over ``den`` (a multiple of its
     denominator) when given: the same rational, written unreduced."""
     x = mpq(x)
-    if den is None or x == 0:
+    if den is None:
         return f"({int(x.numerator)} # {int(x.denominator)})"
     return f"({int(x * den)} # {den})"
 
@@ -130,7 +130,8 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
         "Local Open Scope Q_scope.",
         "",
         f"(** The model: {n} states, {m} ports; x' = A x + B u, y = C x + D u.",
-        "    Each matrix is written over one common denominator ((2 # 2) is 1). *)",
+        "    Each matrix is written over one common denominator ((2 # 2) is 1, (0 # 2) is 0).",
+        "    *)",
         f"Definition A : matQ :=\n  {matrix_literal(model.A)}.",
         f"Definition B : matQ :=\n  {matrix_literal(model.B)}.",
         f"Definition C : matQ :=\n  {matrix_literal(model.C)}.",
