@@ -313,3 +313,9 @@ def test_rewriting_a_development_removes_units_no_longer_exported(tmp_path):
     write_export(out, export_certificates([tmp_path / "empty"]))
     assert not (out / "Cert_reconstructed_k_s_3_0_99babda880e6.v").exists()
     assert (out / "notes.txt").read_text() == "mine" and (out / "QCert.v").exists()
+
+
+def test_the_paper_development_has_no_forbidden_command():
+    files = development_files(paper_development_units(CERTS))
+    assert forbidden_commands(files) == []
+    assert "Print Assumptions Cert_reconstructed_k_s_3_0_99babda880e6.passive." in files["All.v"]
