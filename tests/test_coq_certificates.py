@@ -319,3 +319,23 @@ def test_the_paper_development_has_no_forbidden_command():
     files = development_files(paper_development_units(CERTS))
     assert forbidden_commands(files) == []
     assert "Print Assumptions Cert_reconstructed_k_s_3_0_99babda880e6.passive." in files["All.v"]
+
+
+@pytest.mark.parametrize("case", ["not-json", "no-schema", "out-is-input"])
+def test_coq_command_refuses_bad_input_in_one_line_and_writes_nothing(tmp_path, capsys, case):
+    out = tmp_path / "dev"
+    if case == "not-json":
+        arg = tmp_path / "x.json"
+        arg.write_text("not json")
+    elif case == "no-schema":
+        arg = tmp_path / "x.json"
+        arg.write_text("{}")
+    else:
+        arg = tmp_path / KS3.name
+        shutil.copy(KS3, arg)
+        out = tmp_path
+    before = sorted(p.name for p in tmp_path.iterdir())
+    assert main(["coq", str(arg), "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == before

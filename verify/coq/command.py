@@ -26,7 +26,9 @@ from verify.coq.export import (
     export_certificates,
     not_exported_json,
     paper_development_units,
+    schema_of,
 )
+from verify.errors import VerifyInputError
 
 NOT_EXPORTED_FILE = "NOT_EXPORTED.json"
 INSTALL_HINT = "apt-get install coq libcoq-stdlib"
@@ -68,6 +70,28 @@ def _report_check(result: CompileResult, problems: list[str]) -> bool:
     return result.ok and not problems
 
 
+def _same_folder(a: Path, b: Path) -> bool:
+    try:
+        return Path(a).resolve() == Path(b).resolve()
+    except OSError:
+        return False
+
+
+def _input_problem(inputs: Sequence[Path], out: Path) -> str | None:
+    """Why the named inputs cannot be exported (one line), or None."""
+    for p in inputs:
+        p = Path(p)
+        if not p.exists():
+            return f"no such file or folder: {p}"
+        folder = p if p.is_dir() else p.parent
+        if _same_folder(folder, out):
+            return (f"--out {out} holds the input {p}; write the development to another "
+                    "folder")
+        if p.is_file() and not schema_of(p):
+            return f"{p}: not a certificate file (JSON with a 'schema' field)"
+    return None
+
+
 def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
             certificates_dir: Path = Path("certificates")) -> int:
     """The ``verify coq`` command; returns the exit code."""
@@ -75,17 +99,25 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
         print(f"verify: coqc not found (on Debian/Ubuntu: {INSTALL_HINT})", file=sys.stderr)
         return 2
     if inputs:
-        missing = [str(p) for p in inputs if not Path(p).exists()]
-        if missing:
-            print(f"verify: no such file or folder: {missing[0]}", file=sys.stderr)
+        problem = _input_problem(inputs, out or Path("build/coq"))
+        if problem:
+            print(f"verify: {problem}", file=sys.stderr)
             return 2
         export = export_certificates(list(inputs))
         folder = out or Path("build/coq")
     else:
+        if out is not None and _same_folder(out, certificates_dir):
+            print(f"verify: --out {out} is the certificates folder; write the development "
+                  "elsewhere (default: its coq/ subfolder)", file=sys.stderr)
+            return 2
         export = paper_development_units(certificates_dir)
         folder = out or certificates_dir / "coq"
     files = development_files(export)
-    write_export(folder, export)
+    try:
+        write_export(folder, export)
+    except OSError as exc:
+        print(f"verify: cannot write {folder}: {exc.strerror or exc}", file=sys.stderr)
+        return 2
     print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
           f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
     refused = [i for i in export.not_exported if i.schema.startswith("verify-kyp-certificate")]
@@ -114,7 +146,10 @@ def gate_development(certificate_paths: Sequence[Path], folder: Path) -> bool:
     """``verify gate --coq DIR``: the development of the gate's certificates; compiled when
     coqc is installed. Prints one line per step; False when coqc rejected it."""
     export = export_certificates(list(certificate_paths))
-    write_export(folder, export)
+    try:
+        write_export(folder, export)
+    except OSError as exc:
+        raise VerifyInputError(f"cannot write {folder}: {exc.strerror or exc}") from None
     print(f"coq: wrote {folder} ({len(export.units)} unit(s))")
     for item in export.not_exported:
         print(f"coq: {item.file} not exported: {item.reason}")

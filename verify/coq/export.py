@@ -70,10 +70,15 @@ def certificate_files(paths: Iterable[Path]) -> list[Path]:
     return files
 
 
-def _schema(path: Path) -> str:
-    try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+def schema_of(path: Path) -> str:
+    """The ``schema`` field of a JSON file, or "" when it has none (or is no JSON)."""
+    from verify.errors import VerifyInputError
+    from verify.inputs.files import read_bounded
+    from verify.passivity.io.strict_json import MAX_CERTIFICATE_BYTES
+
+    try:  # a regular file of bounded size (a FIFO or a device is not read)
+        data = json.loads(read_bounded(path, max_bytes=MAX_CERTIFICATE_BYTES).decode("utf-8"))
+    except (OSError, VerifyInputError, UnicodeDecodeError, json.JSONDecodeError):
         return ""
     schema = data.get("schema") if isinstance(data, dict) else None
     return schema if isinstance(schema, str) else ""
@@ -88,7 +93,7 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
     units: list[CoqUnit] = []
     left: list[NotExported] = []
     for path in certificate_files(paths):
-        schema = _schema(path)
+        schema = schema_of(path)
         if schema in KYP_SCHEMAS:
             try:
                 units.append(kyp_unit_from_file(path))
