@@ -339,3 +339,43 @@ def test_coq_command_refuses_bad_input_in_one_line_and_writes_nothing(tmp_path, 
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == before
+
+
+@pytest.fixture(scope="module")
+def band_certificate(tmp_path_factory):
+    """A generalized KYP certificate of the k_s = 2.5 model on [0, 3/2] (the gate's band
+    route with the exact band decision turned off)."""
+    from fractions import Fraction
+
+    from verify.passivity.gate import run_band_gate
+    from verify.passivity.io.model_file import load_model
+
+    folder = tmp_path_factory.mktemp("band")
+    model = load_model(ROOT / "verify" / "data" / "models" / "reconstructed_ks2p5.toml")
+    [result] = run_band_gate([model], (Fraction(0), Fraction(3, 2)), Fraction(0), folder,
+                             exact_first=False)
+    assert result.certificate_path is not None
+    assert json.loads(result.certificate_path.read_text())["schema"].startswith(
+        "verify-gkyp-certificate")
+    return result.certificate_path
+
+
+def test_band_certificates_are_exported(band_certificate):
+    from verify.coq.band import gkyp_unit_from_file
+
+    unit = gkyp_unit_from_file(band_certificate)
+    assert "Theorem passive_on_band : gkyp_certified 4 2 A B C D Pr Pi Qr Qi w1 w2." in unit.text
+    assert "Definition w2 : Q := (3 # 2)." in unit.text
+    export = export_certificates([band_certificate.parent])
+    assert [u.name for u in export.units] == [unit.name] and not export.not_exported
+
+
+@needs_coqc
+def test_coqc_accepts_a_band_certificate_and_rejects_a_wider_band(prelude_dir,
+                                                                  band_certificate):
+    from verify.coq.band import gkyp_unit_from_file
+
+    text = gkyp_unit_from_file(band_certificate).text
+    assert _compiles(prelude_dir, text, "Band")
+    wider = text.replace("Definition w2 : Q := (3 # 2).", "Definition w2 : Q := (5 # 1).")
+    assert not _compiles(prelude_dir, wider, "Band")

@@ -120,7 +120,8 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
         return 2
     print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
           f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
-    refused = [i for i in export.not_exported if i.schema.startswith("verify-kyp-certificate")]
+    refused = [i for i in export.not_exported
+               if i.schema.startswith(("verify-kyp-certificate", "verify-gkyp-certificate"))]
     for item in refused:
         print(f"not exported: {item.reason}")
     ok = not refused

@@ -1,7 +1,8 @@
 """Which stored certificates become Coq units, and why the others do not.
 
 :func:`export_certificates` turns certificate files into :class:`~verify.coq.unit.CoqUnit`
-s (KYP certificates, :mod:`verify.coq.kyp`) and lists every file it does not export with
+s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`)
+and lists every file it does not export with
 the reason, machine-readably (:func:`not_exported_json`, written beside the development
 as ``NOT_EXPORTED.json``). :func:`paper_development_units` is the paper's development:
 the derivation units of :mod:`verify.coq.paper` when that module is installed, then the
@@ -15,22 +16,18 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from verify.coq.band import gkyp_unit_from_file
 from verify.coq.kyp import CoqExportError, kyp_unit_from_file
 from verify.coq.unit import CoqUnit
 
 KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
+BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
 
 #: Certificate kinds not exported, with the reason (shown in the README and the list).
 NOT_EXPORTED_REASONS: dict[str, str] = {
     "verify-sos-certificate/1":
         "SOS certificate of a derivation step: exported with the step it proves (the "
         "paper's derivation units), not as a certificate unit",
-    "verify-gkyp-certificate/1":
-        "band (generalized KYP) certificate with Gaussian-rational P, Q: no Coq statement "
-        "of the complex embedding yet; checked by the Python exact checker only",
-    "verify-gkyp-certificate/2":
-        "band (generalized KYP) certificate with Gaussian-rational P, Q: no Coq statement "
-        "of the complex embedding yet; checked by the Python exact checker only",
     "verify-band-fd-certificate/1":
         "exact-band certificate (polynomial non-negativity on an interval from Descartes "
         "and breakpoint data): not exported yet; checked by the Python exact checker only",
@@ -94,9 +91,10 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
     left: list[NotExported] = []
     for path in certificate_files(paths):
         schema = schema_of(path)
-        if schema in KYP_SCHEMAS:
+        if schema in KYP_SCHEMAS or schema in BAND_SCHEMAS:
             try:
-                units.append(kyp_unit_from_file(path))
+                units.append(kyp_unit_from_file(path) if schema in KYP_SCHEMAS
+                             else gkyp_unit_from_file(path))
             except CoqExportError as exc:
                 if strict:
                     raise

@@ -578,3 +578,97 @@ Proof.
     (conj (has_shape_b_sound _ _ _ HP) (conj (sym_check_sound n P Hs)
     (conj (pd_check_sound n P eP wP Hpd) (nsd_check_sound (n + m) _ eM wM Hnsd)))))))).
 Qed.
+
+(** ** Passivity on a band: the generalized KYP lemma (Iwasaki and Hara, IEEE TAC 2005) *)
+
+Definition mscale (c : Q) (M : matQ) : matQ := map (map (qmul c)) M.
+Definition zeros (r c : nat) : matQ := map (fun _ => map (fun _ => 0%Q) (seq 0 c)) (seq 0 r).
+
+(** The real form [[Re, -Im], [Im, Re]] of the complex matrix Xr + j Xi: a Hermitian
+    matrix is >= 0 exactly when its real form is. *)
+Definition embed (Xr Xi : matQ) : matQ := block Xr (mneg Xi) Xi Xr.
+
+(** L(P, Q) = N^H (Phi (x) P + Psi (x) Q) N + Theta for the band [w1, w2], with
+    N = [[A, B], [I, 0]], Phi = [[0, 1], [1, 0]], Psi = [[-1, j wc], [-j wc, -w1 w2]],
+    wc = (w1 + w2)/2 and Theta = -[[0, C^T], [C, D + D^T]]; its real and imaginary
+    parts, for P = Pr + j Pi and Q = Qr + j Qi. *)
+Definition gkyp_N (n m : nat) (A B : matQ) : matQ :=
+  block A B (scaled_identity n 1) (zeros n m).
+Definition gkyp_re (n m : nat) (A B C D Pr Pi Qr Qi : matQ) (w1 w2 : Q) : matQ :=
+  let wc := ((w1 + w2) / 2)%Q in
+  let N := gkyp_N n m A B in
+  let Wr := block (mneg Qr) (msub Pr (mscale wc Qi)) (madd Pr (mscale wc Qi))
+                  (mneg (mscale (w1 * w2) Qr)) in
+  let Theta := block (zeros n n) (mneg (tr C)) (mneg C) (mneg (madd D (tr D))) in
+  madd (mmul (mmul (tr N) Wr) N) Theta.
+Definition gkyp_im (n m : nat) (A B C D Pr Pi Qr Qi : matQ) (w1 w2 : Q) : matQ :=
+  let wc := ((w1 + w2) / 2)%Q in
+  let N := gkyp_N n m A B in
+  let Wi := block (mneg Qi) (madd Pi (mscale wc Qr)) (msub Pi (mscale wc Qr))
+                  (mneg (mscale (w1 * w2) Qi)) in
+  mmul (mmul (tr N) Wi) N.
+
+(** M = -M^T. *)
+Definition skew (n : nat) (M : matQ) : Prop :=
+  forall i j, (i < n)%nat -> (j < n)%nat -> (entry M i j == - entry M j i)%Q.
+
+Definition skew_check (n : nat) (M : matQ) : bool :=
+  forallb (fun i => forallb (fun j => qeqb (entry M i j) (Qopp (entry M j i))) (seq 0 n))
+          (seq 0 n).
+
+Lemma skew_check_sound n M : skew_check n M = true -> skew n M.
+Proof.
+  intros H i j Hi Hj. apply qeqb_sound.
+  exact (forallb_seq _ n (forallb_seq _ n H i Hi) j Hj).
+Qed.
+
+Theorem psd_check_semidef n M eps ws : psd_check n M eps ws = true -> pos_semidef n M.
+Proof.
+  intros Hc x. pose proof (psd_check_sound n M eps ws Hc x) as H.
+  assert (0 <= Q2R eps * sumR n (fun i => x i * x i)).
+  { apply Rmult_le_pos; [|apply sumR_nonneg; intros; apply Rle_0_sqr].
+    unfold psd_check in Hc. rewrite !andb_true_iff in Hc. destruct Hc as [[He _] _].
+    rewrite <- Q2R_zero. apply Qle_bool_R, He. }
+  lra.
+Qed.
+
+(** The band certificate: P, Q Hermitian, Q >= 0 and L(P, Q) <= 0 on 0 <= w1 < w2, both
+    as real quadratic forms of the real forms.  Then H(jw) + H(jw)^H >= 0 for every w in
+    [w1, w2] where H(jw) is defined (the generalized KYP lemma). *)
+Definition gkyp_certified (n m : nat) (A B C D Pr Pi Qr Qi : matQ) (w1 w2 : Q) : Prop :=
+  has_shape n n A /\ has_shape n m B /\ has_shape m n C /\ has_shape m m D
+  /\ has_shape n n Pr /\ has_shape n n Pi /\ has_shape n n Qr /\ has_shape n n Qi
+  /\ (0 <= w1)%Q /\ (w1 < w2)%Q
+  /\ symmetric n Pr /\ skew n Pi /\ symmetric n Qr /\ skew n Qi
+  /\ pos_semidef (2 * n) (embed Qr Qi)
+  /\ neg_semidef (2 * (n + m)) (embed (gkyp_re n m A B C D Pr Pi Qr Qi w1 w2)
+                                      (gkyp_im n m A B C D Pr Pi Qr Qi w1 w2)).
+
+Definition gkyp_check (n m : nat) (A B C D Pr Pi Qr Qi : matQ) (w1 w2 : Q)
+    (eQ : Q) (wQ : list term) (eL : Q) (wL : list term) : bool :=
+  has_shape_b n n A && has_shape_b n m B && has_shape_b m n C && has_shape_b m m D
+  && has_shape_b n n Pr && has_shape_b n n Pi && has_shape_b n n Qr && has_shape_b n n Qi
+  && Qle_bool 0 w1 && negb (Qle_bool w2 w1)
+  && sym_check n Pr && skew_check n Pi && sym_check n Qr && skew_check n Qi
+  && psd_check (2 * n) (embed Qr Qi) eQ wQ
+  && psd_check (2 * (n + m)) (mneg (embed (gkyp_re n m A B C D Pr Pi Qr Qi w1 w2)
+                                          (gkyp_im n m A B C D Pr Pi Qr Qi w1 w2))) eL wL.
+
+Theorem gkyp_check_sound n m A B C D Pr Pi Qr Qi w1 w2 eQ wQ eL wL :
+  gkyp_check n m A B C D Pr Pi Qr Qi w1 w2 eQ wQ eL wL = true ->
+  gkyp_certified n m A B C D Pr Pi Qr Qi w1 w2.
+Proof.
+  unfold gkyp_check. rewrite !andb_true_iff, negb_true_iff.
+  intros [[[[[[[[[[[[[[[HA HB] HC] HD] HPr] HPi] HQr] HQi] Hw1] Hw2] HsP] HkP] HsQ] HkQ] HQ] HL].
+  assert (Hlt : (w1 < w2)%Q).
+  { apply Qnot_le_lt. intros Hle. apply Qle_bool_iff in Hle. congruence. }
+  split; [apply has_shape_b_sound, HA|]. split; [apply has_shape_b_sound, HB|].
+  split; [apply has_shape_b_sound, HC|]. split; [apply has_shape_b_sound, HD|].
+  split; [apply has_shape_b_sound, HPr|]. split; [apply has_shape_b_sound, HPi|].
+  split; [apply has_shape_b_sound, HQr|]. split; [apply has_shape_b_sound, HQi|].
+  split; [apply Qle_bool_iff, Hw1|]. split; [exact Hlt|].
+  split; [apply sym_check_sound, HsP|]. split; [apply skew_check_sound, HkP|].
+  split; [apply sym_check_sound, HsQ|]. split; [apply skew_check_sound, HkQ|].
+  split; [apply (psd_check_semidef _ _ _ _ HQ)|].
+  apply (nsd_check_sound _ _ _ _ HL).
+Qed.
