@@ -1,5 +1,9 @@
 (** * QCert: rational matrices, the KYP matrix, and definiteness from exact witnesses
 
+    For the certificates of the paper's Section 4: the human's model H is passive when
+    its realisation has a KYP certificate P ([kyp_certified]), and passive on a band
+    when it has a generalized KYP certificate ([gkyp_certified]).
+
     Matrices are data: lists of rows of rationals [Q].  Products, transposes and the
     KYP matrix of the positive-real lemma are computed by Coq from that data.  What a
     reader audits are the definitions [qform], [pos_def], [neg_semidef] and [kyp]
