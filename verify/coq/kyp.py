@@ -1,8 +1,9 @@
 """KYP certificates as Coq units: passivity in the LMI form of the positive-real lemma.
 
 The paper's Section 4 asks that the human's model H be passive, and Theorem 1's storage
-function of the human is then x^T P x / 2 for a KYP certificate P. A certificate file (``verify-kyp-certificate/1`` or ``/2``) stores the model H as exact
-matrices (A, B, C, D), a margin nu0 and the matrix P. The unit written here states,
+function of the human is then x^T P x / 2 for a KYP certificate P. A certificate file
+(``verify-kyp-certificate/1`` or ``/2``) stores the model H as exact matrices
+(A, B, C, D), a margin nu0 and the matrix P. The unit written here states,
 from the definitions of the prelude ``QCert.v``,
 
     kyp_certified n m A B C (D - nu0 I) P :
