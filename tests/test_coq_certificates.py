@@ -379,3 +379,11 @@ def test_coqc_accepts_a_band_certificate_and_rejects_a_wider_band(prelude_dir,
     assert _compiles(prelude_dir, text, "Band")
     wider = text.replace("Definition w2 : Q := (3 # 2).", "Definition w2 : Q := (5 # 1).")
     assert not _compiles(prelude_dir, wider, "Band")
+
+
+def test_gate_refuses_a_coq_folder_that_is_the_certificates_folder(tmp_path, capsys):
+    model = ROOT / "verify" / "data" / "models" / "reconstructed_ks3p0.toml"
+    assert main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+                 "--coq", str(tmp_path / "c")]) == 2
+    assert "--coq" in capsys.readouterr().err
+    assert not (tmp_path / "c").exists()

@@ -392,6 +392,10 @@ def _cmd_gate(args: argparse.Namespace) -> int:
     if tolerance and band is not None:
         raise VerifyInputError("--tolerance applies to the full frequency axis, not with "
                                "--band")
+    if args.coq is not None and args.coq.resolve() == args.certificates.resolve():
+        raise VerifyInputError("--coq DIR must not be the --certificates folder (the Coq "
+                               "development is written beside the certificates, not "
+                               "among them)")
     models = [load_model(path) for path in args.models]  # validate all before any work
     with unlimited_int_text():  # every input is validated: exact numbers of any size now
         if band is None:
