@@ -166,6 +166,28 @@ def _build_parser() -> argparse.ArgumentParser:
                         help="draw nu(w) and the relative index R(w) with the band, margin "
                         "and exact witness marked (PNG or PDF by the suffix); with several "
                         "models, one file per model: nu.pdf gives nu-<model stem>.pdf")
+    p_gate.add_argument("--coq", type=Path, metavar="DIR",
+                        help="also write a Coq development of the models' KYP certificates "
+                        "to DIR, and compile it with coqc when coqc is installed")
+
+    p_coq = sub.add_parser(
+        "coq",
+        help="write a Coq development of certificates (default: the paper's, "
+        "certificates/ -> certificates/coq/), --check compiles it with coqc",
+        description="Exit 0 when written (and, with --check, accepted by coqc and the "
+        "audit), 1 when a certificate was refused or coqc failed, 2 on bad input or "
+        "when --check finds no coqc.",
+    )
+    p_coq.add_argument("inputs", nargs="*", type=Path, metavar="CERT",
+                       help="certificate files or folders (default: the paper's "
+                       "development from certificates/)")
+    p_coq.add_argument("--out", type=Path, metavar="DIR",
+                       help="where to write (default certificates/coq for the paper, "
+                       "build/coq for given files)")
+    p_coq.add_argument("--check", action="store_true",
+                       help="compile with coqc (in a temporary copy) and audit: no "
+                       "Admitted/admit/Axiom, Print Assumptions only Coq's real-number "
+                       "axioms")
 
     p_id = sub.add_parser(
         "identify",
@@ -352,6 +374,9 @@ def _cmd_all(args: argparse.Namespace) -> int:
     print(f"{counts}; {run.seconds:.1f} s")
     print("reports: " + ", ".join(str(p) for p in paths))
     print(f"date and timings: {record}")
+    from verify.coq.command import write_paper_development
+
+    print(write_paper_development(certificates))
     if args.strict and not run.all_verified():
         print("--strict: some claims are not 'verified'", file=sys.stderr)
         return 1
@@ -453,6 +478,12 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         raise VerifyInputError("--json - and --junit -: only one output can go to standard "
                                "output")
     outputs.folder("--certificates", args.certificates)
+    if args.coq is not None:
+        if args.coq.resolve() == args.certificates.resolve():
+            raise VerifyInputError("--coq DIR must not be the --certificates folder (the Coq "
+                                   "development is written beside the certificates, not "
+                                   "among them)")
+        outputs.folder("--coq", args.coq)
     plots = None
     if args.plot is not None:  # a bad --plot fails before any work
         from verify.passivity.figure import figure_paths
@@ -501,7 +532,14 @@ def _cmd_gate(args: argparse.Namespace) -> int:
                 stage(f"drawing {path}")
                 outputs.write(path, passivity_figure_bytes(r.decision, figure_format(path)))
                 print(shown(f"figure: {path}"), file=text)
-    return 3 if errors else 0 if passed == len(results) else 1
+    coq_ok = True
+    if args.coq is not None:
+        from verify.coq.command import gate_development
+
+        stage(f"writing the Coq development to {args.coq}")
+        paths = [r.certificate_path for r in results if r.certificate_path is not None]
+        coq_ok = gate_development(paths, args.coq)
+    return 3 if errors else 0 if passed == len(results) and coq_ok else 1
 
 
 #: Models up to this many states decide in well under 2 s: on a terminal no stage lines
@@ -518,6 +556,12 @@ def _gate_stages(forced: bool, models, indices: bool):
     stage = Stages.for_command("verify gate", forced=forced)
     stage.enabled = stage.enabled and (forced or big)
     return stage
+
+
+def _cmd_coq(args: argparse.Namespace) -> int:
+    from verify.coq.command import run_coq
+
+    return run_coq(args.inputs, args.out, args.check)
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:
@@ -700,7 +744,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"all": _cmd_all, "check": _cmd_check, "list": _cmd_list,
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
-                "identify": _cmd_identify, "campaign": _cmd_campaign}
+                "identify": _cmd_identify, "campaign": _cmd_campaign, "coq": _cmd_coq}
     stop = StopSignals()
     try:
         with stop:
@@ -715,7 +759,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except OSError as exc:  # the system refused a read or a write: not a bug of ours
         where = f"{exc.filename}: " if exc.filename else ""
         reason = exc.strerror or os.strerror(exc.errno or 0) or type(exc).__name__
-        print(f"verify: error: {where}{reason}", file=sys.stderr)
+        print(shown(f"verify: error: {where}{reason}"), file=sys.stderr)
         return 2
     except Exception as exc:  # a bug of ours: one line, the traceback on request
         if os.environ.get("VERIFY_DEBUG"):
@@ -726,7 +770,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             file=sys.stderr,
         )
         return 3
-
 
 
 if __name__ == "__main__":

@@ -8,5 +8,9 @@ are written from the readable definitions of the prelude (``prelude/*.v``) and w
 proofs Coq's kernel checks without trusting this package: only data (numbers,
 polynomials, matrices) crosses over, and Coq re-checks it. :mod:`~verify.coq.unit`
 holds the unit of export, :mod:`~verify.coq.development` writes and compiles a
-development.
+development; :mod:`~verify.coq.kyp` and :mod:`~verify.coq.band` export KYP and band
+(generalized KYP) certificates of the paper's Section 4 from witnesses proposed by
+:mod:`~verify.coq.witness`; :mod:`~verify.coq.export` decides what is exported and lists
+the rest with the reason; :mod:`~verify.coq.audit` checks sources and ``Print
+Assumptions``; :mod:`~verify.coq.command` is the ``verify coq`` command.
 """

@@ -10,7 +10,9 @@ from __future__ import annotations
 
 import shutil
 import subprocess
-from collections.abc import Sequence
+import tempfile
+import time
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -21,7 +23,7 @@ from verify.coq.unit import CoqUnit
 LOGICAL_ROOT = "VerifyCoq"
 
 # Prelude modules in dependency order (each may Require the ones before it).
-PRELUDE_ORDER: tuple[str, ...] = ()
+PRELUDE_ORDER: tuple[str, ...] = ("QCert",)
 
 
 def prelude_sources() -> dict[str, str]:
@@ -37,8 +39,12 @@ def prelude_sources() -> dict[str, str]:
     return {name: found[name] for name in ordered}
 
 
-def render_development(units: Sequence[CoqUnit]) -> dict[str, str]:
-    """Every file of the development by relative path (no I/O; bytes depend only on units)."""
+def render_development(units: Sequence[CoqUnit], *,
+                       extra: Mapping[str, str] | None = None) -> dict[str, str]:
+    """Every file of the development by relative path (no I/O; bytes depend only on units).
+
+    ``extra``: further files (not Coq sources, e.g. the list of certificates not exported).
+    """
     names = [unit.name for unit in units]
     if len(set(names)) != len(names):
         raise ValueError("two Coq units share a module name")
@@ -55,16 +61,39 @@ def render_development(units: Sequence[CoqUnit]) -> dict[str, str]:
         lines += [f"Print Assumptions {unit.name}.{theorem}." for theorem in unit.theorems]
     files["All.v"] = "\n".join(lines) + "\n"
     files["_CoqProject"] += "All.v\n"
+    for rel, text in (extra or {}).items():
+        if rel in files or rel.endswith(".v") or "/" in rel:
+            raise ValueError(f"extra file name clashes or is not a plain name: {rel!r}")
+        files[rel] = text
     return files
 
 
-def write_development(folder: Path, units: Sequence[CoqUnit]) -> list[Path]:
-    """Write the development into ``folder``; return the ``.v`` files in compile order."""
-    files = render_development(units)
+def write_development(folder: Path, units: Sequence[CoqUnit], *,
+                      extra: Mapping[str, str] | None = None) -> list[Path]:
+    """Write the development into ``folder``; return the ``.v`` files in compile order.
+
+    Files an earlier development listed in its ``_CoqProject`` and this one does not are
+    removed, so the folder is exactly the development (nothing else is touched).
+    """
+    files = render_development(units, extra=extra)
     folder = Path(folder)
+    stale = [rel for rel in _listed(folder) if rel not in files]
     write_all_atomic({folder / rel: text for rel, text in files.items()})
+    for rel in stale:
+        (folder / rel).unlink(missing_ok=True)
     order = files["_CoqProject"].splitlines()[1:]
     return [folder / rel for rel in order]
+
+
+def _listed(folder: Path) -> list[str]:
+    """The ``.v`` files of an earlier development of ours in ``folder`` (plain names)."""
+    try:
+        lines = (folder / "_CoqProject").read_text(encoding="utf-8").splitlines()
+    except (OSError, UnicodeDecodeError):
+        return []
+    if not lines or lines[0] != f"-R . {LOGICAL_ROOT}":
+        return []
+    return [ln for ln in lines[1:] if ln.endswith(".v") and "/" not in ln and ln != ".v"]
 
 
 @dataclass(frozen=True)
@@ -74,6 +103,8 @@ class CompileResult:
     ok: bool
     failed_file: str | None
     output: str
+    #: (file, seconds) for every file compiled, in order (the failed one last).
+    timings: tuple[tuple[str, float], ...] = ()
 
 
 def coqc_available(coqc: str = "coqc") -> bool:
@@ -87,12 +118,29 @@ def compile_development(folder: Path, *, coqc: str = "coqc",
     folder = Path(folder)
     project = (folder / "_CoqProject").read_text(encoding="utf-8").splitlines()
     outputs: list[str] = []
+    timings: list[tuple[str, float]] = []
     for rel in project[1:]:
-        done = subprocess.run(
-            [coqc, "-R", ".", LOGICAL_ROOT, rel], cwd=folder, capture_output=True,
-            text=True, timeout=timeout_seconds, check=False,
-        )
+        start = time.perf_counter()
+        try:
+            done = subprocess.run(
+                [coqc, "-R", ".", LOGICAL_ROOT, rel], cwd=folder, capture_output=True,
+                text=True, timeout=timeout_seconds, check=False,
+            )
+        except subprocess.TimeoutExpired:
+            timings.append((rel, time.perf_counter() - start))
+            outputs.append(f"coqc: {rel} not done within {timeout_seconds:g} s\n")
+            return CompileResult(False, rel, "".join(outputs), tuple(timings))
+        timings.append((rel, time.perf_counter() - start))
         outputs.append(done.stdout + done.stderr)
         if done.returncode != 0:
-            return CompileResult(False, rel, "".join(outputs))
-    return CompileResult(True, None, "".join(outputs))
+            return CompileResult(False, rel, "".join(outputs), tuple(timings))
+    return CompileResult(True, None, "".join(outputs), tuple(timings))
+
+
+def check_files(files: Mapping[str, str], *, coqc: str = "coqc",
+                timeout_seconds: float = 600.0) -> CompileResult:
+    """Compile rendered files in a temporary folder (leaves no ``.vo`` beside the sources)."""
+    with tempfile.TemporaryDirectory(prefix="verify-coq-") as tmp:
+        for rel, text in files.items():
+            (Path(tmp) / rel).write_text(text, encoding="utf-8")
+        return compile_development(Path(tmp), coqc=coqc, timeout_seconds=timeout_seconds)

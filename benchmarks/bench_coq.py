@@ -1,0 +1,107 @@
+"""Cost of the Coq kernel check of KYP certificates, against the Python exact checker.
+
+For the paper's k_s = 3.0 certificate and for gate certificates of random passive
+port-Hamiltonian models (float data, the test suite's family) of the sizes given, it
+exports the unit, compiles it with ``coqc`` (the prelude compiled once, not counted),
+and prints coqc's wall time and peak memory beside the Python exact check
+(:func:`verify.passivity.check.certificate.check_kyp`) on the same certificate, and the
+ratio. A compile past ``--timeout`` seconds is reported as such.
+
+    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--timeout 900]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+
+from verify.coq.development import LOGICAL_ROOT, prelude_sources
+from verify.coq.kyp import kyp_unit, kyp_unit_from_file
+from verify.passivity.check.certificate import check_kyp
+from verify.passivity.decision import decide
+from verify.passivity.io import certificate_files as cf
+from verify.passivity.io.strict_json import read_strict
+from verify.passivity.model import from_state_space
+from verify.passivity.port_hamiltonian import random_port_hamiltonian
+
+ROOT = Path(__file__).resolve().parents[1]
+KS3 = ROOT / "certificates" / "reconstructed-k_s-3.0-99babda880e6.json"
+
+
+def coqc(folder: Path, rel: str, timeout: float) -> tuple[float, float, float, bool]:
+    """(wall seconds, CPU seconds, peak MB, ok) of one coqc run; ok False on failure or
+    timeout. CPU time is the robust figure on a shared machine."""
+    start = time.perf_counter()
+    proc = subprocess.Popen(["coqc", "-R", ".", LOGICAL_ROOT, rel], cwd=folder,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = start + timeout
+    while True:
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+        if pid:
+            break
+        if time.perf_counter() > deadline:
+            proc.kill()
+            _, status, usage = os.wait4(proc.pid, 0)
+            return (time.perf_counter() - start, usage.ru_utime + usage.ru_stime,
+                    usage.ru_maxrss / 1024, False)
+        time.sleep(0.05)
+    ok = os.waitstatus_to_exitcode(status) == 0
+    return (time.perf_counter() - start, usage.ru_utime + usage.ru_stime,
+            usage.ru_maxrss / 1024, ok)
+
+
+def python_check_seconds(model, P, repeat: int = 3) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        assert check_kyp(model, P).ok
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--sizes", type=int, nargs="*", default=[4, 10, 30])
+    ap.add_argument("--timeout", type=float, default=900.0)
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        for name, text in prelude_sources().items():
+            (folder / f"{name}.v").write_text(text)
+            secs, cpu, mb, ok = coqc(folder, f"{name}.v", args.timeout)
+            print(f"prelude {name}.v: {secs:.1f} s wall, {cpu:.1f} s CPU, {mb:.0f} MB, "
+                  f"ok={ok}")
+        cases = []
+        cert = cf.parse_kyp(read_strict(KS3))
+        cases.append(("paper k_s=3.0 (4 states)", kyp_unit_from_file(KS3), cert.model, cert.P))
+        for n in args.sizes:
+            A, B, C, D = random_port_hamiltonian(n, 2, np.random.default_rng([11, n]), False)
+            d = decide(from_state_space(A, B, C, D, name=f"pH n={n}"))
+            c = d.certificate
+            assert c is not None, d.reason
+            unit = kyp_unit(f"Gate{n}", model=c.model, P=c.P, margin=Fraction(0),
+                            label=f"pH n={n}", source="(benchmark)",
+                            fingerprint=c.model.fingerprint(), origin=f"gate n={n}")
+            cases.append((f"gate pH {n} states", unit, c.model, c.P))
+        print(f"{'certificate':<26} {'coqc wall':>9} {'coqc CPU':>9} {'peak MB':>8} "
+              f"{'python s':>9} {'CPU ratio':>9}  unit size")
+        for label, unit, model, P in cases:
+            (folder / f"{unit.name}.v").write_text(unit.text)
+            secs, cpu, mb, ok = coqc(folder, f"{unit.name}.v", args.timeout)
+            py = python_check_seconds(model, P)
+            state = "" if ok else ("  TIMEOUT" if secs >= args.timeout else "  FAILED")
+            print(f"{label:<26} {secs:9.1f} {cpu:9.1f} {mb:8.0f} {py:9.4f} {cpu / py:9.0f}  "
+                  f"{len(unit.text) // 1024} KiB{state}", flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

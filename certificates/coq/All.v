@@ -1,0 +1,2 @@
+From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
+Print Assumptions Cert_reconstructed_k_s_3_0_99babda880e6.passive.

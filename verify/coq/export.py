@@ -1,0 +1,130 @@
+"""Which stored certificates become Coq units, and why the others do not.
+
+:func:`export_certificates` turns certificate files into :class:`~verify.coq.unit.CoqUnit`
+s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`)
+and lists every file it does not export with
+the reason, machine-readably (:func:`not_exported_json`, written beside the development
+as ``NOT_EXPORTED.json``). :func:`paper_development_units` is the paper's development:
+the derivation units of :mod:`verify.coq.paper` when that module is installed, then the
+certificate units.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from verify.coq.band import gkyp_unit_from_file
+from verify.coq.kyp import CoqExportError, kyp_unit_from_file
+from verify.coq.unit import CoqUnit
+
+KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
+BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
+
+#: Certificate kinds not exported, with the reason (shown in the README and the list).
+NOT_EXPORTED_REASONS: dict[str, str] = {
+    "verify-sos-certificate/1":
+        "SOS certificate of a derivation step: exported with the step it proves (the "
+        "paper's derivation units), not as a certificate unit",
+    "verify-band-fd-certificate/1":
+        "exact-band certificate (polynomial non-negativity on an interval from Descartes "
+        "and breakpoint data): not exported yet; checked by the Python exact checker only",
+    "verify-pr-certificate/1":
+        "positive-real (frequency-domain) certificate: not exported yet; checked by the "
+        "Python exact checker only",
+    "verify-robust-band-certificate/1":
+        "robust certificate over a set of identified models (interval data): not "
+        "exported; checked by the Python exact checker only",
+    "verify-robust-refutation-certificate/1":
+        "refutation (a witness that a model is not passive): not a passivity proof; "
+        "checked by the Python exact checker only",
+}
+
+
+@dataclass(frozen=True)
+class NotExported:
+    """A certificate file left out of the development, and why."""
+
+    file: str
+    schema: str
+    reason: str
+
+
+@dataclass(frozen=True)
+class Export:
+    units: tuple[CoqUnit, ...]
+    not_exported: tuple[NotExported, ...]
+
+
+def certificate_files(paths: Iterable[Path]) -> list[Path]:
+    """The ``*.json`` files named or inside the folders named (not recursive), sorted."""
+    files: list[Path] = []
+    for p in paths:
+        p = Path(p)
+        files += sorted(p.glob("*.json")) if p.is_dir() else [p]
+    return files
+
+
+def schema_of(path: Path) -> str:
+    """The ``schema`` field of a JSON file, or "" when it has none (or is no JSON)."""
+    from verify.errors import VerifyInputError
+    from verify.inputs.files import read_bounded
+    from verify.passivity.io.strict_json import MAX_CERTIFICATE_BYTES
+
+    try:  # a regular file of bounded size (a FIFO or a device is not read)
+        data = json.loads(read_bounded(path, max_bytes=MAX_CERTIFICATE_BYTES).decode("utf-8"))
+    except (OSError, VerifyInputError, UnicodeDecodeError, json.JSONDecodeError):
+        return ""
+    schema = data.get("schema") if isinstance(data, dict) else None
+    return schema if isinstance(schema, str) else ""
+
+
+def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Export:
+    """Units for the KYP certificates among ``paths``; the rest listed with the reason.
+
+    ``strict``: a KYP certificate that cannot be exported (unbound, no witness) raises
+    :class:`CoqExportError` instead of being listed.
+    """
+    units: list[CoqUnit] = []
+    left: list[NotExported] = []
+    for path in certificate_files(paths):
+        schema = schema_of(path)
+        if schema in KYP_SCHEMAS or schema in BAND_SCHEMAS:
+            try:
+                units.append(kyp_unit_from_file(path) if schema in KYP_SCHEMAS
+                             else gkyp_unit_from_file(path))
+            except CoqExportError as exc:
+                if strict:
+                    raise
+                left.append(NotExported(path.name, schema, str(exc)))
+        else:
+            reason = NOT_EXPORTED_REASONS.get(schema, "unknown certificate kind: not exported")
+            left.append(NotExported(path.name, schema, reason))
+    return Export(tuple(units), tuple(left))
+
+
+def not_exported_json(items: Sequence[NotExported]) -> str:
+    """The machine-readable list of files left out (stable bytes)."""
+    rows = [{"file": i.file, "schema": i.schema, "reason": i.reason}
+            for i in sorted(items, key=lambda i: i.file)]
+    return json.dumps({"not_exported": rows}, indent=1) + "\n"
+
+
+def derivation_units() -> list[CoqUnit]:
+    """The paper's derivation units (:func:`verify.coq.paper.paper_units`) when that
+    module is installed, else none."""
+    import importlib
+    import importlib.util
+
+    if importlib.util.find_spec("verify.coq.paper") is None:
+        return []
+    paper = importlib.import_module("verify.coq.paper")  # its own errors are not hidden
+    return list(paper.paper_units())
+
+
+def paper_development_units(certificates_dir: Path) -> Export:
+    """The paper's development: derivation units, then the certificates' units."""
+    certs = export_certificates([certificates_dir])
+    return Export((*derivation_units(), *certs.units), certs.not_exported)
