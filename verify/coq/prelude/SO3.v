@@ -279,3 +279,27 @@ Proof.
   try (apply Rlt_le, H; intro E; rewrite E in *; simpl in *; lra).
   destruct v; simpl in *; subst. unfold qform. so3_unfold. lra.
 Qed.
+
+(** [tr(A B) >= 0] for [A = sym X] with [X] assumed positive (semi)definite. *)
+Lemma trace_pd_product (A X B G : M3) (c : R) :
+  mT A = A -> A = sym X -> pd X -> sym B = mscale c (mmul (mT G) G) -> 0 <= c ->
+  0 <= tr (mmul A B).
+Proof.
+  intros HA HX Hp HB Hc. apply (trace_psd_product A B G c HA); [| exact HB | exact Hc].
+  intro v. rewrite (sym_of_symmetric A HA), HX. apply pd_psd. exact Hp.
+Qed.
+
+Lemma trace_psd_assumed_product (A X B G : M3) (c : R) :
+  mT A = A -> A = sym X -> psd X -> sym B = mscale c (mmul (mT G) G) -> 0 <= c ->
+  0 <= tr (mmul A B).
+Proof.
+  intros HA HX Hp HB Hc. apply (trace_psd_product A B G c HA); [| exact HB | exact Hc].
+  intro v. rewrite (sym_of_symmetric A HA), HX. apply Hp.
+Qed.
+
+(** An inequality from its slack written as a sum of non-negative terms. *)
+Lemma le_by_slack (a b s : R) : b + - a = s -> 0 <= s -> a <= b.
+Proof. intros E H. lra. Qed.
+
+Lemma ge_by_slack (a b s : R) : a + - b = s -> 0 <= s -> a >= b.
+Proof. intros E H. lra. Qed.
