@@ -19,7 +19,7 @@ LAYERS: list[tuple[str, tuple[str, ...]]] = [
     ("checks and searches", ("verify.sos", "verify.proof", "verify.passivity")),
     ("simulation, identification, campaigns", ("verify.sim", "verify.identify",
                                                "verify.campaign", "verify.strategies")),
-    ("claims", ("verify.paper_proofs", "verify.certificates", "verify.claims")),
+    ("claims", ("verify.paper_proofs", "verify.certificates", "verify.claims", "verify.coq")),
     ("reports", ("verify.report",)),
     ("command line", ("verify.cli",)),
 ]

@@ -78,6 +78,11 @@ def module_name(derivation_name: str) -> str:
     return ascii_identifier(derivation_name)
 
 
+def theorem_name(derivation_name: str, step: int) -> str:
+    """The qualified Coq name of step ``step`` (1-based) of a derivation."""
+    return f"{module_name(derivation_name)}.step{step}"
+
+
 def derivation_unit(d: Derivation, *, module: str | None = None,
                     source: str = "") -> tuple[CoqUnit | None, list[StepExport]]:
     """The Coq unit of ``d`` (None if no step could be exported) and each step's fate."""
@@ -316,14 +321,24 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
         free = [c for c in conds
                 if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
         prefix = [f"generalize (rot q_{n}) as G_{n}; intro G_{n}." for n in rotations]
-        attempts.append((sec.gatoms, free, prefix))
-    attempts.append((sec.atoms, conds, []))
+        attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
+        ortho_prefix, ortho = [], []
+        for n in rotations:
+            ortho_prefix += [
+                f"pose proof (rot_orthogonal q_{n} q_{n}_nonzero) as OL_{n}.",
+                f"pose proof (rot_orthogonal_r q_{n} q_{n}_nonzero) as OR_{n}.",
+                f"pose proof (rot_det q_{n} q_{n}_nonzero) as D_{n}.",
+                f"revert OL_{n} OR_{n} D_{n}; generalize (rot q_{n}) as G_{n}; "
+                f"intros G_{n} OL_{n} OR_{n} D_{n}."]
+            ortho += _orthogonality(sec.gatoms, n)
+        attempts.append((sec.gatoms, ortho + _generators(sec, sec.gatoms, free),
+                         ortho_prefix, False))
+    attempts.append((sec.atoms, _generators(sec, sec.atoms, conds), [], True))
     failure = CoqExportError("no attempt")
-    for atoms, cs, prefix in attempts:
-        gens = _generators(sec, atoms, cs)
+    for atoms, gens, prefix, complete in attempts:
         left, right = entries(evaluate(lhs, atoms)), entries(evaluate(rhs, atoms))
         try:
-            tactics = [_entry_tactic(atoms, a - b, gens)
+            tactics = [_entry_tactic(atoms, a - b, gens, complete)
                        for a, b in zip(left, right, strict=True)]
         except CoqExportError as exc:
             failure = exc
@@ -334,28 +349,49 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
     raise failure
 
 
-def _entry_tactic(atoms: Atoms, diff, gens: list[tuple]) -> str:
+def _orthogonality(atoms: Atoms, n: str) -> list[tuple]:
+    """G^T G = I, G G^T = I (upper triangles) and det G = 1 of a generalised rotation."""
+    g = [[atoms.gens[f"r{i}{j}_{n}"] for j in "123"] for i in "123"]
+    out = []
+    for side, hyp in (("left", f"OL_{n}"), ("right", f"OR_{n}")):
+        for i in range(3):
+            for j in range(i, 3):
+                if side == "left":
+                    e = sum(g[k][i] * g[k][j] for k in range(3))
+                    term = f"(mmul (mT G_{n}) G_{n})"
+                else:
+                    e = sum(g[i][k] * g[j][k] for k in range(3))
+                    term = f"(mmul G_{n} (mT G_{n}))"
+                e = e - int(i == j)
+                entry = f"m{i + 1}{j + 1}"
+                out.append((atoms.poly(e), f"({entry} {term} - {entry} I3)",
+                            f"(Rminus_diag_eq _ _ (f_equal {entry} {hyp}))"))
+    det = (g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1])
+           - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0])
+           + g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]))
+    out.append((atoms.poly(det - 1), f"(det G_{n} - 1)", f"(Rminus_diag_eq _ _ D_{n})"))
+    return out
+
+
+def _entry_tactic(atoms: Atoms, diff, gens: list[tuple], complete: bool = True) -> str:
     num = diff.num
     if num == 0:
         return "so3_unfold; field; so3_nonzero."
     values = [g[0] for g in gens]
-    cof = cofactors(num, [v.num for v in values])
+    cof = cofactors(num, [v.num for v in values], complete=complete)
     if cof is None:
         raise CoqExportError("not an identity of rational functions, even with the unit "
                              "vectors', angles' and side conditions' equations (a lambda_min "
                              "merge, or a step the checker did not verify)")
     used = [(c, g) for c, g in zip(cof, gens, strict=True) if c != 0]
-    if len(used) > 4:
-        raise CoqExportError("more than 4 generators in one entry's cofactor identity")
     den = denominator_text(diff.den, atoms)
-    args = []
-    proofs = []
+    parts, proofs = [], []
     for c, (value, text, proof) in used:
         gden = denominator_text(value.den, atoms)
-        args.append(f"({_poly_text(c, atoms)} * ({gden}) / ({den})) {text}")
+        parts.append(f"({_poly_text(c, atoms)} * ({gden}) / ({den})) * {text}")
         proofs.append(proof)
-    return (f"apply (eq_by_cofactors_{len(used)} _ _ {' '.join(args)} {' '.join(proofs)}); "
-            "so3_unfold; field; so3_nonzero.")
+    return (f"apply (eq_by_sum _ _ ({' + '.join(parts)})); "
+            f"[rewrite {', '.join(proofs)}; ring | so3_unfold; field; so3_nonzero].")
 
 
 def _inequality_script(sec: _Section, step: Step, gens: list[tuple]) -> list[str]:

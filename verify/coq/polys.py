@@ -283,11 +283,12 @@ def _const(c: Fraction) -> str:
 
 
 # -- ideal membership with cofactors -----------------------------------------------------
-def cofactors(target, generators: list) -> list | None:
+def cofactors(target, generators: list, *, complete: bool = True) -> list | None:
     """Polynomials c_k with target = sum_k c_k * generators[k], or None if none exist.
 
     Buchberger's algorithm over the ring's order, each basis element carrying its
-    representation in the original generators; then division of ``target``.
+    representation in the original generators; then division of ``target``. Without
+    ``complete``, division by the generators only (cheap, may miss a membership).
     """
     if target == 0:
         return [target.ring.zero for _ in generators]
@@ -298,7 +299,7 @@ def cofactors(target, generators: list) -> list | None:
             rep = [ring.zero] * len(generators)
             rep[i] = ring.one
             basis.append((g, rep))
-    pairs = [(i, j) for j in range(len(basis)) for i in range(j)]
+    pairs = [(i, j) for j in range(len(basis)) for i in range(j)] if complete else []
     while pairs:
         i, j = pairs.pop(0)
         (f, rf), (g, rg) = basis[i], basis[j]

@@ -189,12 +189,19 @@ Proof.
   intros a b c1 g1 c2 g2 c3 g3 c4 g4 H1 H2 H3 H4 E. rewrite H1, H2, H3, H4 in E. lra.
 Qed.
 
+(** From [a - b = s] and [s = 0] (a sum of cofactors times vanishing generators). *)
+Lemma eq_by_sum (a b s : R) : s = 0 -> a - b = s -> a = b.
+Proof. intros H E. rewrite H in E. lra. Qed.
+
 (** [sin^2 + cos^2 = 1] as a generator that vanishes. *)
 Lemma circle (t : R) : cos t * cos t + sin t * sin t - 1 = 0.
 Proof. pose proof (sin2_cos2 t) as H. unfold Rsqr in H. lra. Qed.
 
 (** [rot q] is a rotation: orthogonal with determinant 1. *)
 Lemma rot_orthogonal (q : quat) : qn q <> 0 -> mmul (mT (rot q)) (rot q) = I3.
+Proof. intro H. destruct q as [w x y z]. so3_split; so3_unfold; field; exact H. Qed.
+
+Lemma rot_orthogonal_r (q : quat) : qn q <> 0 -> mmul (rot q) (mT (rot q)) = I3.
 Proof. intro H. destruct q as [w x y z]. so3_split; so3_unfold; field; exact H. Qed.
 
 Lemma rot_det (q : quat) : qn q <> 0 -> det (rot q) = 1.
