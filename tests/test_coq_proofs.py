@@ -15,8 +15,19 @@ import pytest
 
 from verify.coq.derivations import derivation_unit
 from verify.coq.development import coqc_available, write_development
-from verify.proof import Context, Derivation, by_algebra, by_bound, cos, positive, sin, square
-from verify.proof import I3, rodrigues, tr
+from verify.proof import (
+    I3,
+    Context,
+    Derivation,
+    by_algebra,
+    by_bound,
+    cos,
+    positive,
+    rodrigues,
+    sin,
+    square,
+    tr,
+)
 
 needs_coqc = pytest.mark.skipif(not coqc_available(), reason="coqc is not installed")
 

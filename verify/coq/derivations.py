@@ -71,6 +71,9 @@ class _Section:
     assumptions: dict[int, str] = field(default_factory=dict)
     variables: list[str] = field(default_factory=list)
     gatoms: Atoms | None = None  # the same atoms with rotations as free matrices
+    variables_list: list = field(default_factory=list)
+    lambda_nodes: list = field(default_factory=list)
+    mixed: dict = field(default_factory=dict)  # frozenset of free rotations -> Atoms
     units: list[tuple[str, str]] = field(default_factory=list)  # (kind, Coq name)
 
 
@@ -93,7 +96,8 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
                  if v.uid in {w.uid for w in variables_of(*exprs)}]
     atoms = atoms_for(variables, lambda_nodes, naming)
     sec = _Section(naming, atoms, gatoms=atoms_for(variables, lambda_nodes, naming,
-                                                   generic=True))
+                                                   generic=True),
+                   variables_list=variables, lambda_nodes=lambda_nodes)
     _declare(sec, d, variables, lambda_nodes)
     fates: list[StepExport] = []
     theorems: list[str] = []
@@ -281,9 +285,9 @@ def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) ->
     else:
         return None
     using = " ".join(dict.fromkeys(sec.variables + hyps))
-    return "\n".join(head + [f"Theorem {thm} : {statement}.",
-                             f"Proof using {using}." if using else "Proof.",
-                             *("  " + line for line in body), "Qed.", ""])
+    proof = f"Proof using {using}." if using else "Proof."
+    return "\n".join([*head, f"Theorem {thm} : {statement}.", proof,
+                      *("  " + line for line in body), "Qed.", ""])
 
 
 def _generators(sec: _Section, atoms: Atoms, conds: list[Condition]) -> list[tuple]:
@@ -331,6 +335,7 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
                 f"revert OL_{n} OR_{n} D_{n}; generalize (rot q_{n}) as G_{n}; "
                 f"intros G_{n} OL_{n} OR_{n} D_{n}."]
             ortho += _orthogonality(sec.gatoms, n)
+        attempts += _mixed_attempts(sec, lhs, rhs, conds)
         attempts.append((sec.gatoms, ortho + _generators(sec, sec.gatoms, free),
                          ortho_prefix, False))
     attempts.append((sec.atoms, _generators(sec, sec.atoms, conds), [], True))
@@ -344,9 +349,31 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
             failure = exc
             continue
         if lhs.shape == SCALAR:
-            return prefix + [tactics[0]]
+            return [*prefix, tactics[0]]
         return prefix + ["so3_split."] + [f"- {t}" for t in tactics]
     raise failure
+
+
+def _mixed_attempts(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]) -> list:
+    """Attempts keeping one rotation (then two) as a quaternion, the others free."""
+    import itertools
+
+    rots = [v for v in variables_of(lhs, rhs) if v.kind == "rotation"]
+    out = []
+    for size in range(1, len(rots)):
+        for kept in itertools.combinations(rots, size):
+            free_rots = frozenset(v.uid for v in sec.variables_list
+                                  if v.kind == "rotation" and v not in kept)
+            if free_rots not in sec.mixed:
+                sec.mixed[free_rots] = atoms_for(sec.variables_list, sec.lambda_nodes,
+                                                 sec.naming, generic=free_rots)
+            atoms = sec.mixed[free_rots]
+            usable = [c for c in conds if all(v.kind != "rotation" or v.uid not in free_rots
+                                              for v in variables_of(c.lhs, c.rhs))]
+            prefix = [f"generalize (rot q_{sec.naming.variable(v)}) as G_{sec.naming.variable(v)}; "
+                      f"intro G_{sec.naming.variable(v)}." for v in rots if v not in kept]
+            out.append((atoms, _generators(sec, atoms, usable), prefix, True))
+    return out
 
 
 def _orthogonality(atoms: Atoms, n: str) -> list[tuple]:
@@ -428,7 +455,7 @@ def _term(sec: _Section, t: Nonneg, lines: list[str], names: dict[int, str],
         lemma = "Rplus_le_le_0_compat" if kind == "add" else "Rmult_le_pos"
         proof = f"({lemma} _ _ {a} {b})"
     elif kind == "scale":
-        c, x = args
+        _c, x = args
         inner = _term(sec, x, lines, names, gens)
         proof = f"(Rmult_le_pos _ _ ltac:(lra) {inner})"
     elif kind == "square":
@@ -451,7 +478,7 @@ def _term(sec: _Section, t: Nonneg, lines: list[str], names: dict[int, str],
                  f"{coq_text(gram, naming)} {c_text} {lam} {psym} {pgram} {c_proof} "
                  f"{lam}_spec)")
     elif kind == "trace_psd_product":
-        a, b, a_psd, a_gram, b_gram, b_scale = args
+        a, b, a_psd, _a_gram, b_gram, b_scale = args
         if a_psd is None:
             raise CoqExportError("trace_psd_product with a_gram= is not exported")
         psym = _premise(sec, lines, a.T, a, gens)

@@ -10,19 +10,23 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from verify.coq.derivations import StepExport, derivation_unit
+from verify.coq.derivations import StepExport, derivation_unit, module_name
 from verify.coq.unit import CoqUnit
 from verify.proof.derivation import Derivation
 
 
-def derivation_units(derivations: Sequence[Derivation], *,
-                     prefix: str = "") -> tuple[list[CoqUnit], list[StepExport]]:
+def derivation_units(derivations: Sequence[Derivation], *, prefix: str = "") -> list[CoqUnit]:
+    """One unit per derivation with an exportable step (deterministic text)."""
+    return derivation_exports(derivations, prefix=prefix)[0]
+
+
+def derivation_exports(derivations: Sequence[Derivation], *,
+                       prefix: str = "") -> tuple[list[CoqUnit], list[StepExport]]:
     """One unit per derivation with an exportable step, and every step's fate."""
     units: list[CoqUnit] = []
     fates: list[StepExport] = []
     taken: set[str] = set()
     for d in derivations:
-        from verify.coq.derivations import module_name
         base = prefix + module_name(d.name)
         name, k = base, 2
         while name in taken:
@@ -48,7 +52,7 @@ def paper_derivations() -> list[Derivation]:
 
 
 def paper_exports() -> tuple[list[CoqUnit], list[StepExport]]:
-    return derivation_units(paper_derivations())
+    return derivation_exports(paper_derivations())
 
 
 def paper_units() -> list[CoqUnit]:

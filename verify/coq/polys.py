@@ -85,19 +85,22 @@ class Atoms:
 
 
 def atoms_for(variables: list[Variable], lambda_nodes: list[Expr], naming: Naming, *,
-              generic: bool = False) -> Atoms:
+              generic: bool | frozenset[int] = False) -> Atoms:
     """Polynomial generators for every variable and lambda_min atom of a section.
 
     With ``generic``, a rotation is a matrix of nine free entries (``G_R`` in Coq, after
     ``generalize (rot q_R)``): an identity that holds there holds for every rotation
-    and is proved by ``field`` on low-degree polynomials.
+    and is proved by ``field`` on low-degree polynomials. A set of variable uids makes
+    only those rotations free matrices.
     """
+    if not isinstance(generic, frozenset):
+        generic = frozenset(v.uid for v in variables) if generic else frozenset()
     names: list[str] = []
     coq: dict[str, str] = {}
     plan: list[tuple[Variable, list[str]]] = []
     for v in variables:
         n = naming.variable(v)
-        if v.kind == "rotation" and generic:
+        if v.kind == "rotation" and v.uid in generic:
             parts = [(f"r{i}{j}_{n}", f"(m{i}{j} G_{n})") for i in "123" for j in "123"]
         elif v.kind == "rotation":
             parts = [(f"q{c}_{n}", f"(q{c} q_{n})") for c in "wxyz"]
@@ -129,16 +132,17 @@ def atoms_for(variables: list[Variable], lambda_nodes: list[Expr], naming: Namin
         coq["unused"] = "0"
     P, *gens = ring(names, QQ, grevlex)
     g = dict(zip(names, gens, strict=True))
-    rotations = [naming.variable(v) for v, _ in plan if v.kind == "rotation" and not generic]
+    rotations = [naming.variable(v) for v, _ in plan
+                 if v.kind == "rotation" and v.uid not in generic]
     norms = []
     for v, ps in plan:
-        if v.kind == "rotation" and not generic:
+        if v.kind == "rotation" and v.uid not in generic:
             w, a, b, c = (g[p] for p in ps)
             norms.append(w * w + a * a + b * b + c * c)
     atoms = Atoms(P, g, coq, rotations, norms)
     for v, ps in plan:
         x = [atoms.poly(g[p]) for p in ps]
-        if v.kind == "rotation" and generic:
+        if v.kind == "rotation" and v.uid in generic:
             atoms.values[v.uid] = [x[0:3], x[3:6], x[6:9]]
         elif v.kind == "rotation":
             i = rotations.index(naming.variable(v))
