@@ -35,7 +35,7 @@ from fractions import Fraction
 
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
-from verify.coq.terms import CoqExportError, Naming, ascii_identifier, coq_text
+from verify.coq.terms import CoqExportError, Naming, ascii_identifier, constant, coq_text
 from verify.coq.unit import CoqUnit
 from verify.proof.derivation import Derivation, Step
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, nodes, variables_of
@@ -455,9 +455,10 @@ def _term(sec: _Section, t: Nonneg, lines: list[str], names: dict[int, str],
         lemma = "Rplus_le_le_0_compat" if kind == "add" else "Rmult_le_pos"
         proof = f"({lemma} _ _ {a} {b})"
     elif kind == "scale":
-        _c, x = args
+        c, x = args
         inner = _term(sec, x, lines, names, gens)
-        proof = f"(Rmult_le_pos _ _ ltac:(lra) {inner})"
+        proof = (f"(Rmult_le_pos {constant(Fraction(c))} {coq_text(x.value, naming)} "
+                 f"ltac:(lra) {inner})")
     elif kind == "square":
         (g,) = args
         lemma = {MATRIX: "fro2_nonneg", VECTOR: "vdot_self_nonneg", SCALAR: "sq_nonneg"}
@@ -511,7 +512,6 @@ def _gram(scale, gram: Expr) -> Expr:
 def _scale(sec: _Section, scale, lines, names, gens) -> tuple[str, str]:
     if isinstance(scale, Nonneg):
         return coq_text(scale.value, sec.naming), _term(sec, scale, lines, names, gens)
-    from verify.coq.terms import constant
     return constant(Fraction(scale)), "ltac:(lra)"
 
 
