@@ -327,7 +327,7 @@ def cofactors(target, generators: list, *, complete: bool = True) -> list | None
 
 def _reduce(f, frep: list, basis: list) -> tuple:
     """f - sum q_b b (remainder) and frep - sum q_b rep_b."""
-    if not basis:
+    if not basis or f == 0:
         return f, frep
     quotients, r = f.div([b for b, _ in basis])
     rep = list(frep)
