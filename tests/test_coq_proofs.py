@@ -189,3 +189,14 @@ def test_identity_entries_are_split_per_entry():
     d = Derivation("split", R.T * R, ctx).equals(I3, by_algebra())
     (unit,) = _units([d])
     assert unit.text.count("\n  - ") == 9
+
+
+def test_check_writes_a_development(tmp_path, capsys):
+    from verify.cli import _write_coq
+
+    _write_coq(tmp_path / "coq", _small())
+    out = capsys.readouterr().out
+    assert "4 of 4 steps as theorems" in out
+    project = (tmp_path / "coq" / "_CoqProject").read_text().splitlines()
+    assert project == ["-R . VerifyCoq", "SO3.v", "small_trace.v", "small_bound.v",
+                       "small_condition.v", "All.v"]

@@ -25,7 +25,7 @@ prelude's definitions (``SO3.v``):
 Derivatives (``ctx.ddt``) arrive as the trees :mod:`verify.proof.calculus` formed by
 the product rule from the declared dynamics; Coq checks the algebra from there on (the
 README says so). A step justified by a citation is not exported; an SOS step is
-exported with its certificate by :mod:`verify.coq.sos`.
+not exported: SOS certificates are not yet turned into Coq units.
 """
 
 from __future__ import annotations
@@ -131,7 +131,7 @@ def _not_exported_reason(step: Step) -> str:
     if kind == "citation":
         return "cited, not proved: there is nothing for Coq to check"
     if kind == "sos":
-        return "proved by an SOS certificate (see the certificate's Coq unit)"
+        return "proved by an SOS certificate, which is not exported to Coq yet"
     return f"justification {kind!r} is not exported"
 
 
