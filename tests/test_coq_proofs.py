@@ -76,6 +76,8 @@ def test_statements_use_the_prelude_and_name_every_hypothesis():
     assert "Hypothesis xi_unit : vdot xi xi = 1." in trace.text
     assert "Hypothesis k_pos : 0 < k." in bound.text
     assert "Theorem step1 : " in bound.text and " >= k." in bound.text
+    assert "Theorem claim : " in bound.text and "Rge_trans" in bound.text
+    assert bound.theorems == ("step1", "step2", "claim")
     assert "Hypothesis condition1 : (cos theta) = 0." in cond.text
     assert re.search(r"Proof using .*condition1", cond.text)
 

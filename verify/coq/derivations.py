@@ -117,6 +117,9 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
         fates.append(StepExport(d.name, k, f"{name}.{thm}"))
     if not theorems:
         return None, fates
+    if len(theorems) == len(d.steps) > 1:
+        body.append(_claim_theorem(sec, d))
+        theorems.append("claim")
     section = ascii_identifier(d.name)
     head = [f"(** Exported from the derivation {d.name!r} (verify.proof).",
             f"    Statement: {_comment(d.statement)}",
@@ -124,6 +127,31 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
             f"Section {section}.", ""]
     text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
     return CoqUnit(name, text, tuple(theorems), source or d.name), fates
+
+
+def _claim_theorem(sec: _Section, d: Derivation) -> str:
+    """The derivation's conclusion, start REL end, chained from its step theorems."""
+    rels = {s.relation for s in d.steps} - {"="}
+    rel = rels.pop() if rels else "="
+    names = {("=", "="): "eq_trans", ("<=", "<="): "Rle_trans", (">=", ">="): "Rge_trans",
+             ("=", "<="): "eq_le_trans", ("<=", "="): "le_eq_trans",
+             ("=", ">="): "eq_ge_trans", (">=", "="): "ge_eq_trans"}
+    proof, acc = "step1", d.steps[0].relation
+    for k, s in enumerate(d.steps[1:], start=2):
+        lemma = names[(acc, s.relation)]
+        holes = "" if lemma == "eq_trans" else " _ _ _"
+        proof = f"({lemma}{holes} {proof} step{k})"
+        acc = acc if s.relation == "=" else s.relation
+    conds = list(d.where) + [c for s in d.steps for c in s.where]
+    hyps = list(sec.basic) + [sec.conditions[id(c)] for c in conds]
+    hyps += list(sec.assumptions.values())
+    using = " ".join(dict.fromkeys(sec.variables + hyps))
+    start, end = coq_text(d.start, sec.naming), coq_text(d.current, sec.naming)
+    coq_rel = {"=": "=", "<=": "<=", ">=": ">="}[rel]
+    return "\n".join([
+        f"(** The derivation's claim: {_comment(str(d.start))} {rel} {_comment(str(d.current))} *)",
+        f"Theorem claim : {start} {coq_rel} {end}.",
+        f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""])
 
 
 def _not_exported_reason(step: Step) -> str:
