@@ -310,3 +310,16 @@ Proof. intros E H. lra. Qed.
 
 Lemma ge_by_slack (a b s : R) : a + - b = s -> 0 <= s -> a >= b.
 Proof. intros E H. lra. Qed.
+
+(** Chaining the steps of a derivation into its claim. *)
+Lemma eq_le_trans (a b c : R) : a = b -> b <= c -> a <= c.
+Proof. intros -> H. exact H. Qed.
+
+Lemma le_eq_trans (a b c : R) : a <= b -> b = c -> a <= c.
+Proof. intros H <-. exact H. Qed.
+
+Lemma eq_ge_trans (a b c : R) : a = b -> b >= c -> a >= c.
+Proof. intros -> H. exact H. Qed.
+
+Lemma ge_eq_trans (a b c : R) : a >= b -> b = c -> a >= c.
+Proof. intros H <-. exact H. Qed.

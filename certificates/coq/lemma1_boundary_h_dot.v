@@ -89,4 +89,10 @@ Proof using xi theta q_R_rl k_s lam1 xi_unit q_R_rl_nonzero k_s_pos lam1_spec co
   exact (ge_by_slack _ _ _ E T5).
 Qed.
 
+(** The derivation's claim: (1/2) k_s tr(R_rl - R_rlᵀ R̄_r R̄_r) >= 0 *)
+Theorem claim : (((1/2) * k_s) * (tr (madd R_rl (mneg (mmul (mmul (mT R_rl) (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi))))) (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi))))))))) >= 0.
+Proof using xi theta q_R_rl k_s lam1 xi_unit q_R_rl_nonzero k_s_pos lam1_spec condition1 assumption1.
+  exact (Rge_trans _ _ _ (eq_ge_trans _ _ _ (eq_trans (eq_trans step1 step2) step3) step4) step5).
+Qed.
+
 End lemma1_boundary_h_dot.

@@ -67,4 +67,10 @@ Proof using xi theta xi_unit.
   - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
 Qed.
 
+(** The derivation's claim: R̄_r R̄_r = 2 ξξᵀ - I *)
+Theorem claim : (mmul (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi)))) (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi))))) = (madd (mscale 2 (outer xi xi)) (mneg I3)).
+Proof using xi theta xi_unit condition1.
+  exact (eq_trans (eq_trans step1 step2) step3).
+Qed.
+
 End lemma1_boundary_square.

@@ -31,4 +31,10 @@ Proof using q_Rbar_r q_Rbar_r_nonzero condition1.
   apply (eq_by_sum _ _ (((4 * (qx q_Rbar_r) ^ 2 + 4 * (qy q_Rbar_r) ^ 2 + 4 * (qz q_Rbar_r) ^ 2) * ((qn q_Rbar_r)) / ((qn q_Rbar_r) ^ 2)) * ((tr Rbar_r) - (-1)))); [rewrite (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
 Qed.
 
+(** The derivation's claim: <grad h, grad h> = 0 *)
+Theorem claim : (vdot (vscale (-2) (vee Rbar_r)) (vscale (-2) (vee Rbar_r))) = 0.
+Proof using q_Rbar_r q_Rbar_r_nonzero condition1.
+  exact (eq_trans step1 step2).
+Qed.
+
 End lemma1_gradient_vanishes_at_pi.

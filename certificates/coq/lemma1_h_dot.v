@@ -65,4 +65,10 @@ Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_
   so3_unfold; field; so3_nonzero.
 Qed.
 
+(** The derivation's claim: ḣ = (1/2) k_s tr(R_rl - R_rlᵀ R̄_r R̄_r) *)
+Theorem claim : (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))) = (((1/2) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)) (mmul (mT R_r) Rbar)))))).
+Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+  exact (eq_trans (eq_trans (eq_trans step1 step2) step3) step4).
+Qed.
+
 End lemma1_h_dot.

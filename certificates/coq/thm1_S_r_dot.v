@@ -103,4 +103,10 @@ Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonze
   exact (le_by_slack _ _ _ E T4).
 Qed.
 
+(** The derivation's claim: Ṡ_r <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl) *)
+Theorem claim : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))))) <= ((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  exact (eq_le_trans _ _ _ (eq_trans (eq_trans (eq_trans (eq_trans (eq_trans step1 step2) step3) step4) step5) step6) step7).
+Qed.
+
 End thm1_S_r_dot.

@@ -81,4 +81,10 @@ Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q
   exact (le_by_slack _ _ _ E T4).
 Qed.
 
+(** The derivation's claim: Ṡ_rl <= (-1/2) k_s λmin((R_rl + R_rlᵀ)) φ(R_lᵀR̄) + k_s φ(R̄_r) - k_s φ(R_rl) + <vee(sk(R_rl)), ω_h^b> *)
+Theorem claim : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) Rbar)))) (mvmul (mT R_l) omega_h_s)))))))) <= (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT R_l) Rbar))) + (k_s * (phi (mmul (mT R_r) Rbar)))) + (- (k_s * (phi (mmul (mT R_r) R_l))))) + (vdot (vee (sk (mmul (mT R_r) R_l))) (mvmul (mT R_l) omega_h_s))).
+Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  exact (eq_le_trans _ _ _ (eq_trans (eq_trans step1 step2) step3) step4).
+Qed.
+
 End thm1_S_rl_dot.

@@ -96,4 +96,10 @@ Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 lam2 q_R_r_nonzero q_Rbar_nonz
   exact (le_by_slack _ _ _ E T9).
 Qed.
 
+(** The derivation's claim: V̇ <= 0 *)
+Theorem claim : ((((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))))) + ((1/2) * (tr (mneg (mmul (mT R_r) (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) Rbar)))) (mvmul (mT R_l) omega_h_s))))))))) + (- (vdot (vee (mmul (mT R_r) R_l)) (mvmul (mT R_l) omega_h_s)))) <= 0.
+Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 lam2 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec lam2_spec assumption1 assumption2.
+  exact (Rle_trans _ _ _ (eq_le_trans _ _ _ step1 step2) step3).
+Qed.
+
 End thm1_V_dot.

@@ -53,4 +53,10 @@ Proof using q_R_l k_s omega_h_s q_R_l_nonzero k_s_pos.
   - so3_unfold; field; so3_nonzero.
 Qed.
 
+(** The derivation's claim: d/dt(R_lᵀR̄) at R̄ = R_l = -hat(R_lᵀ ω_h^s) *)
+Theorem claim : (madd (mmul (mT (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) R_l)))) (mvmul (mT R_l) omega_h_s))))) R_l) (mmul (mT R_l) (mmul (mscale k_s R_l) (sk (mmul (mT R_l) R_l))))) = (mneg (hat (mvmul (mT R_l) omega_h_s))).
+Proof using q_R_l k_s omega_h_s q_R_l_nonzero k_s_pos.
+  exact (eq_trans step1 step2).
+Qed.
+
 End thm1_lasalle_derivative.
