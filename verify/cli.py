@@ -117,6 +117,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--quick", action="store_true", help="less falsification effort")
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
+    p_check.add_argument("--coq", type=Path, metavar="DIR",
+                         help="also write the derivations as a Coq development (one theorem "
+                         "per step; `coqc` on its files in _CoqProject order re-checks them)")
     p_check.add_argument("--certificates", type=Path, default=GATE_CERTIFICATES,
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
                          f"certificates (default {GATE_CERTIFICATES}, git-ignored)")
@@ -415,6 +418,8 @@ def _cmd_check(args: argparse.Namespace) -> int:
     outputs.file("--json", args.json)
     if args.emit:
         outputs.file("--emit", args.emit)
+    if args.coq:
+        outputs.folder("--coq", args.coq)
     outputs.folder("--certificates", args.certificates)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
     if args.file.suffix == ".json":
@@ -443,7 +448,24 @@ def _cmd_check(args: argparse.Namespace) -> int:
     if args.json:
         outputs.write(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
                                             indent=2, ensure_ascii=True) + "\n")
+    if args.coq:
+        _write_coq(args.coq, derivations)
     return 0 if all(r.verdict == "verified" for r in results) else 1
+
+
+def _write_coq(folder: Path, derivations) -> None:
+    """``verify check --coq DIR``: export every step Coq can state and prove."""
+    from verify.coq.development import write_development
+    from verify.coq.paper import derivation_exports
+
+    units, fates = derivation_exports(derivations)
+    write_development(folder, units)
+    done = [f for f in fates if f.theorem]
+    for f in fates:
+        if not f.theorem:
+            print(shown(f"  Coq: {f.derivation} step {f.step} not exported: {f.reason}"))
+    print(shown(f"Coq development: {folder} ({len(done)} of {len(fates)} steps as theorems; "
+                "check with coqc on the files of _CoqProject in order)"))
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:

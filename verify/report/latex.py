@@ -117,6 +117,8 @@ def _table(t: DerivationTable, common: str) -> list[str]:
             why += "; assumes " + row.assumptions_latex
         if row.evidence and row.evidence not in (common, own):
             why += "; exact check: " + latex_text(row.evidence)
+        if row.coq_theorem:
+            why += r"; Coq: \texttt{" + latex_text(row.coq_theorem) + "}"
         verdict = latex_text(row.verdict + (f", {row.proved_by}" if row.proved_by else ""))
         out.append(f"{row.step} & " + r"\multicolumn{2}{p{0.89\linewidth}@{}}{$"
                    + row.relation_latex + r"$}\\*")

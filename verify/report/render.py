@@ -186,6 +186,8 @@ def _steps_markdown(results, twins) -> list[str]:
                 why += "; assumes " + markdown_prose(row.assumptions_latex)
             if row.evidence and row.evidence not in (common, own):
                 why += "; exact check: " + _md_escape(row.evidence)
+            if row.coq_theorem:
+                why += f"; Coq: `{row.coq_theorem}`"
             out.append(f"| {row.step} | ${row.relation_latex}$ | |")
             out.append(f"| | {why} | **{_verdict_cell(row)}** |")
         if own:
@@ -277,6 +279,8 @@ def _steps_html(results, twins) -> str:
                 why += "; assumes " + prose_html(row.assumptions_latex)
             if row.evidence and row.evidence not in (common, own):
                 why += f"<br>exact check: {esc(row.evidence)}"
+            if row.coq_theorem:
+                why += f"<br>Coq: <code>{esc(row.coq_theorem)}</code>"
             rows.append(f"<tr class='rel'><td>{esc(row.step)}</td><td colspan='2'>"
                         f"{mathml(row.relation_latex)}</td></tr>")
             rows.append(f"<tr class='why'><td></td><td>{why}</td><td><span "

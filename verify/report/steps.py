@@ -36,6 +36,7 @@ class StepRow:
     verdict: str
     proved_by: str
     evidence: str
+    coq_theorem: str = ""  # the step's theorem in the exported Coq development
 
 
 @dataclass(frozen=True)
@@ -103,7 +104,18 @@ def _row(name: str, step: dict, twins: set[tuple[str, int]]) -> StepRow:
         verdict=step["verdict"],
         proved_by=_proved_by(name, step, twins),
         evidence=_evidence(step),
+        coq_theorem=_coq_theorem(name, step, twins),
     )
+
+
+def _coq_theorem(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
+    """``module.stepK`` of a verified step proved by algebra or hand terms ("" otherwise):
+    the exporter (:mod:`verify.coq.derivations`) writes exactly these theorems."""
+    from verify.coq.derivations import theorem_name
+
+    if step["verdict"] != "verified" or _proved_by(name, step, twins) in ("SOS", "citation"):
+        return ""
+    return theorem_name(name, step["index"])
 
 
 def derivation_tables(results, twins: set[tuple[str, int]]) -> list[DerivationTable]:

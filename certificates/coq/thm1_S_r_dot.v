@@ -1,0 +1,112 @@
+(** Exported from the derivation 'thm1.S_r-dot' (verify.proof).
+    Statement: Ṡ_r ≤ -(k_s/2) λmin(R̄_r + R̄_rᵀ) φ(R̄ᵀR_l) - k_s φ(R̄_r) + k_s φ(R_rl)
+    Paper: Theorem 1 proof, Ṡ_r chain *)
+
+From Coq Require Import Reals Lra.
+From VerifyCoq Require Import SO3.
+Open Scope R_scope.
+
+Section thm1_S_r_dot.
+
+(** R_r: a rotation, rot q with |q|^2 <> 0 *)
+Variable q_R_r : quat.
+Hypothesis q_R_r_nonzero : qn q_R_r <> 0.
+Local Notation R_r := (rot q_R_r).
+
+(** R̄: a rotation, rot q with |q|^2 <> 0 *)
+Variable q_Rbar : quat.
+Hypothesis q_Rbar_nonzero : qn q_Rbar <> 0.
+Local Notation Rbar := (rot q_Rbar).
+
+(** R_l: a rotation, rot q with |q|^2 <> 0 *)
+Variable q_R_l : quat.
+Hypothesis q_R_l_nonzero : qn q_R_l <> 0.
+Local Notation R_l := (rot q_R_l).
+
+(** k_s: a scalar *)
+Variable k_s : R.
+Hypothesis k_s_pos : 0 < k_s.
+
+(** lambda_min((R̄_r + R̄_rᵀ)) *)
+Variable lam1 : R.
+Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) lam1.
+
+
+(** Step 1: Ṡ_r = (-1/2) tr((d/dt R̄_r))
+    (algebra (φ(R) = tr(I - R)/2)) *)
+Theorem step1 : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))))) = ((-1/2) * (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l)))))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  generalize (rot q_R_r) as G_R_r; intro G_R_r.
+  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  so3_unfold; field; so3_nonzero.
+Qed.
+
+(** Step 2: (-1/2) tr((d/dt R̄_r)) = (-1/2) k_s tr(R̄_r sk(R̄_rᵀ R_rl))
+    (algebra (eq. (13))) *)
+Theorem step2 : ((-1/2) * (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l)))))) = (((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)))))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  so3_unfold; field; so3_nonzero.
+Qed.
+
+(** Step 3: (-1/2) k_s tr(R̄_r sk(R̄_rᵀ R_rl)) = (-1/4) k_s tr(R̄_r (R̄_rᵀ R_rl - R_rlᵀ R̄_r))
+    (algebra (sk definition)) *)
+Theorem step3 : (((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)))))) = (((-1/4) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (madd (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)) (mneg (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar))))))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  generalize (rot q_R_r) as G_R_r; intro G_R_r.
+  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  so3_unfold; field; so3_nonzero.
+Qed.
+
+(** Step 4: (-1/4) k_s tr(R̄_r (R̄_rᵀ R_rl - R_rlᵀ R̄_r)) = (-1/4) k_s tr(R_rl - R̄_r R_rlᵀ R̄_r)
+    (algebra (R̄_r R̄_rᵀ = I)) *)
+Theorem step4 : (((-1/4) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (madd (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)) (mneg (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar))))))) = (((-1/4) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) R_l))) (mmul (mT R_r) Rbar)))))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  so3_unfold; field; so3_nonzero.
+Qed.
+
+(** Step 5: (-1/4) k_s tr(R_rl - R̄_r R_rlᵀ R̄_r) = (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄_rᵀ R_rl)) + (1/2) k_s tr(R̄_r) - (1/2) k_s tr(R_rl)
+    (algebra (add and subtract)) *)
+Theorem step5 : (((-1/4) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) R_l))) (mmul (mT R_r) Rbar)))))) = (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l))))))) + (((1/2) * k_s) * (tr (mmul (mT R_r) Rbar)))) + (- (((1/2) * k_s) * (tr (mmul (mT R_r) R_l))))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  so3_unfold; field; so3_nonzero.
+Qed.
+
+(** Step 6: (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄_rᵀ R_rl)) + (1/2) k_s tr(R̄_r) - (1/2) k_s tr(R_rl) = (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl)
+    (algebra (R̄_rᵀR_rl = R̄ᵀR_l)) *)
+Theorem step6 : (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l))))))) + (((1/2) * k_s) * (tr (mmul (mT R_r) Rbar)))) + (- (((1/2) * k_s) * (tr (mmul (mT R_r) R_l))))) = (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  so3_unfold; field; so3_nonzero.
+Qed.
+
+(** Step 7: (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl) <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl)
+    (trace inequality, sym(I - R̄ᵀR_l) = ½(I - R̄ᵀR_l)ᵀ(I - R̄ᵀR_l) ⪰ 0: (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R̄_r + R̄_rᵀ), B = I - R̄ᵀ R_l)) *)
+Theorem step7 : (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))) <= ((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  assert (T1 : 0 <= k_s) by exact (Rlt_le _ _ k_s_pos).
+  assert (T2 : 0 <= ((1/4) * k_s)) by exact (Rmult_le_pos (1/4) k_s ltac:(lra) T1).
+  assert (P1 : (mT (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar)))) = (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar)))).
+  { generalize (rot q_R_r) as G_R_r; intro G_R_r. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. so3_split. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. }
+  assert (P2 : (sym (madd I3 (mneg (mmul (mT Rbar) R_l)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT Rbar) R_l)))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))).
+  { pose proof (rot_orthogonal q_Rbar q_Rbar_nonzero) as OL_Rbar. pose proof (rot_orthogonal_r q_Rbar q_Rbar_nonzero) as OR_Rbar. pose proof (rot_det q_Rbar q_Rbar_nonzero) as D_Rbar. revert OL_Rbar OR_Rbar D_Rbar; generalize (rot q_Rbar) as G_Rbar; intros G_Rbar OL_Rbar OR_Rbar D_Rbar. pose proof (rot_orthogonal q_R_l q_R_l_nonzero) as OL_R_l. pose proof (rot_orthogonal_r q_R_l q_R_l_nonzero) as OR_R_l. pose proof (rot_det q_R_l q_R_l_nonzero) as D_R_l. revert OL_R_l OR_R_l D_R_l; generalize (rot q_R_l) as G_R_l; intros G_R_l OL_R_l OR_R_l D_R_l. so3_split. - apply (eq_by_sum _ _ ((((-1/2) * (m11 G_R_l) ^ 2) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m11 G_R_l) ^ 2) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m11 G_R_l) ^ 2) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1) * (m11 G_R_l) * (m21 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1) * (m11 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m11 G_R_l) ^ 2 + (-1/2) * (m21 G_R_l) ^ 2) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1) * (m21 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m11 G_R_l) ^ 2 + (-1/2) * (m31 G_R_l) ^ 2) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m11 (mmul (mT G_R_l) G_R_l) - m11 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m11 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m11 G_R_l) * (m12 G_R_l)) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m11 G_R_l) * (m12 G_R_l)) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m11 G_R_l) * (m12 G_R_l)) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1/2) * (m11 G_R_l) * (m22 G_R_l) + (-1/2) * (m12 G_R_l) * (m21 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1/2) * (m11 G_R_l) * (m32 G_R_l) + (-1/2) * (m12 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m11 G_R_l) * (m12 G_R_l) + (-1/2) * (m21 G_R_l) * (m22 G_R_l)) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1/2) * (m21 G_R_l) * (m32 G_R_l) + (-1/2) * (m22 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m11 G_R_l) * (m12 G_R_l) + (-1/2) * (m31 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m12 (mmul (mT G_R_l) G_R_l) - m12 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m11 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m11 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m11 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1/2) * (m11 G_R_l) * (m23 G_R_l) + (-1/2) * (m13 G_R_l) * (m21 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1/2) * (m11 G_R_l) * (m33 G_R_l) + (-1/2) * (m13 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m11 G_R_l) * (m13 G_R_l) + (-1/2) * (m21 G_R_l) * (m23 G_R_l)) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1/2) * (m21 G_R_l) * (m33 G_R_l) + (-1/2) * (m23 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m11 G_R_l) * (m13 G_R_l) + (-1/2) * (m31 G_R_l) * (m33 G_R_l)) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m13 (mmul (mT G_R_l) G_R_l) - m13 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m11 G_R_l) * (m12 G_R_l)) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m11 G_R_l) * (m12 G_R_l)) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m11 G_R_l) * (m12 G_R_l)) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1/2) * (m11 G_R_l) * (m22 G_R_l) + (-1/2) * (m12 G_R_l) * (m21 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1/2) * (m11 G_R_l) * (m32 G_R_l) + (-1/2) * (m12 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m11 G_R_l) * (m12 G_R_l) + (-1/2) * (m21 G_R_l) * (m22 G_R_l)) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1/2) * (m21 G_R_l) * (m32 G_R_l) + (-1/2) * (m22 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m11 G_R_l) * (m12 G_R_l) + (-1/2) * (m31 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m12 (mmul (mT G_R_l) G_R_l) - m12 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m12 G_R_l) ^ 2) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m12 G_R_l) ^ 2) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m12 G_R_l) ^ 2) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1) * (m12 G_R_l) * (m22 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1) * (m12 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m12 G_R_l) ^ 2 + (-1/2) * (m22 G_R_l) ^ 2) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1) * (m22 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m12 G_R_l) ^ 2 + (-1/2) * (m32 G_R_l) ^ 2) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m22 (mmul (mT G_R_l) G_R_l) - m22 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m12 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m12 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m12 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1/2) * (m12 G_R_l) * (m23 G_R_l) + (-1/2) * (m13 G_R_l) * (m22 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1/2) * (m12 G_R_l) * (m33 G_R_l) + (-1/2) * (m13 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m12 G_R_l) * (m13 G_R_l) + (-1/2) * (m22 G_R_l) * (m23 G_R_l)) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1/2) * (m22 G_R_l) * (m33 G_R_l) + (-1/2) * (m23 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m12 G_R_l) * (m13 G_R_l) + (-1/2) * (m32 G_R_l) * (m33 G_R_l)) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m23 (mmul (mT G_R_l) G_R_l) - m23 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m11 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m11 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m11 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1/2) * (m11 G_R_l) * (m23 G_R_l) + (-1/2) * (m13 G_R_l) * (m21 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1/2) * (m11 G_R_l) * (m33 G_R_l) + (-1/2) * (m13 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m11 G_R_l) * (m13 G_R_l) + (-1/2) * (m21 G_R_l) * (m23 G_R_l)) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1/2) * (m21 G_R_l) * (m33 G_R_l) + (-1/2) * (m23 G_R_l) * (m31 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m11 G_R_l) * (m13 G_R_l) + (-1/2) * (m31 G_R_l) * (m33 G_R_l)) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m13 (mmul (mT G_R_l) G_R_l) - m13 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m12 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m12 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m12 G_R_l) * (m13 G_R_l)) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1/2) * (m12 G_R_l) * (m23 G_R_l) + (-1/2) * (m13 G_R_l) * (m22 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1/2) * (m12 G_R_l) * (m33 G_R_l) + (-1/2) * (m13 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m12 G_R_l) * (m13 G_R_l) + (-1/2) * (m22 G_R_l) * (m23 G_R_l)) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1/2) * (m22 G_R_l) * (m33 G_R_l) + (-1/2) * (m23 G_R_l) * (m32 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m12 G_R_l) * (m13 G_R_l) + (-1/2) * (m32 G_R_l) * (m33 G_R_l)) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m23 (mmul (mT G_R_l) G_R_l) - m23 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. - apply (eq_by_sum _ _ ((((-1/2) * (m13 G_R_l) ^ 2) * (1) / (1)) * (m11 (mmul (mT G_Rbar) G_Rbar) - m11 I3) + (((-1/2) * (m13 G_R_l) ^ 2) * (1) / (1)) * (m22 (mmul (mT G_Rbar) G_Rbar) - m22 I3) + (((-1/2) * (m13 G_R_l) ^ 2) * (1) / (1)) * (m33 (mmul (mT G_Rbar) G_Rbar) - m33 I3) + (((-1) * (m13 G_R_l) * (m23 G_R_l)) * (1) / (1)) * (m12 (mmul G_Rbar (mT G_Rbar)) - m12 I3) + (((-1) * (m13 G_R_l) * (m33 G_R_l)) * (1) / (1)) * (m13 (mmul G_Rbar (mT G_Rbar)) - m13 I3) + (((1/2) * (m13 G_R_l) ^ 2 + (-1/2) * (m23 G_R_l) ^ 2) * (1) / (1)) * (m22 (mmul G_Rbar (mT G_Rbar)) - m22 I3) + (((-1) * (m23 G_R_l) * (m33 G_R_l)) * (1) / (1)) * (m23 (mmul G_Rbar (mT G_Rbar)) - m23 I3) + (((1/2) * (m13 G_R_l) ^ 2 + (-1/2) * (m33 G_R_l) ^ 2) * (1) / (1)) * (m33 (mmul G_Rbar (mT G_Rbar)) - m33 I3) + (((-1/2)) * (1) / (1)) * (m33 (mmul (mT G_R_l) G_R_l) - m33 I3))); [rewrite (Rminus_diag_eq _ _ (f_equal m11 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_Rbar)), (Rminus_diag_eq _ _ (f_equal m12 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m13 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m22 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m23 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OR_Rbar)), (Rminus_diag_eq _ _ (f_equal m33 OL_R_l)); ring | so3_unfold; field; so3_nonzero]. }
+  assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT Rbar) R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))) (madd I3 (mneg (mmul (mT Rbar) R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
+  assert (T4 : 0 <= (((1/4) * k_s) * ((tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT Rbar) R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
+  assert (E : (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))) + (- (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))))) = (((1/4) * k_s) * ((tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT Rbar) R_l))))))))).
+  { generalize (rot q_R_r) as G_R_r; intro G_R_r. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. generalize (rot q_R_l) as G_R_l; intro G_R_l. so3_unfold; field; so3_nonzero. }
+  exact (le_by_slack _ _ _ E T4).
+Qed.
+
+(** The derivation's claim: Ṡ_r <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl) *)
+Theorem claim : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))))) <= ((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))).
+Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+  exact (eq_le_trans _ _ _ (eq_trans (eq_trans (eq_trans (eq_trans (eq_trans step1 step2) step3) step4) step5) step6) step7).
+Qed.
+
+End thm1_S_r_dot.

@@ -1,0 +1,552 @@
+"""Export of derivations (:mod:`verify.proof.derivation`) to Coq, one section per file.
+
+The exporter reads the same expression trees the Python checker decides: each step's
+left and right sides, its side conditions, and, for an inequality, the non-negative
+terms of its justification, re-issued from their recipes
+(:func:`verify.proof.justify.recipe`). Each step becomes a Coq theorem stated with the
+prelude's definitions (``SO3.v``):
+
+- variables become ``Variable``s of a ``Section``: a rotation is ``rot q`` for a
+  quaternion ``q`` with the hypothesis ``qn q <> 0``; a unit vector has the hypothesis
+  ``vdot u u = 1``; an angle is a real (``cos``, ``sin`` from the standard library); a
+  scalar declared positive has ``0 < k``; each lambda_min(A) is a real ``lam`` with the
+  hypothesis ``lam_min_spec A lam`` (sym A - lam I is PSD, as a quadratic form);
+- side conditions and the paper's assumptions are named ``Hypothesis``es (never proved
+  facts), and each theorem's ``Proof using`` lists exactly those it may use, so after
+  the section closes they are premises of the theorem;
+- an equality is proved entry by entry by ``field`` (denominators are quaternion
+  norms), with cofactors ``lhs - rhs = sum c_k g_k`` when it needs a unit vector, an
+  angle or a side condition (:mod:`verify.coq.polys` finds them, ``field`` re-checks);
+- an inequality ``lhs <= rhs`` (``>=``) by its slack: ``field`` proves that the slack
+  equals the sum of the justification's terms, and each term is non-negative by the
+  prelude's lemmas (squares, declared positive scalars, assumptions, the trace
+  inequality, the trace of a PSD product), whose premises are proved like equalities.
+
+Derivatives (``ctx.ddt``) arrive as the trees :mod:`verify.proof.calculus` formed by
+the product rule from the declared dynamics; Coq checks the algebra from there on (the
+README says so). A step justified by a citation is not exported; an SOS step is
+not exported: SOS certificates are not yet turned into Coq units.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
+from verify.coq.polys import poly_text as _poly_text
+from verify.coq.terms import CoqExportError, Naming, ascii_identifier, constant, coq_text
+from verify.coq.unit import CoqUnit
+from verify.proof.derivation import Derivation, Step
+from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, nodes, variables_of
+from verify.proof.hypotheses import Assumption, Condition
+from verify.proof.justify import ByAlgebra, ByBound, Nonneg, recipe
+
+HEADER = """From Coq Require Import Reals Lra.
+From VerifyCoq Require Import SO3.
+Open Scope R_scope.
+"""
+
+
+@dataclass(frozen=True)
+class StepExport:
+    """What became of one step: its Coq theorem (``Module.theorem``) or why there is none."""
+
+    derivation: str
+    step: int
+    theorem: str | None
+    reason: str = ""
+
+
+@dataclass
+class _Section:
+    """Names, hypotheses and atoms of one exported derivation."""
+
+    naming: Naming
+    atoms: Atoms
+    lines: list[str] = field(default_factory=list)
+    basic: list[str] = field(default_factory=list)  # hypotheses every step may use
+    conditions: dict[int, str] = field(default_factory=dict)  # id(Condition) -> name
+    condition_objs: dict[int, Condition] = field(default_factory=dict)
+    assumptions: dict[int, str] = field(default_factory=dict)
+    variables: list[str] = field(default_factory=list)
+    gatoms: Atoms | None = None  # the same atoms with rotations as free matrices
+    variables_list: list = field(default_factory=list)
+    lambda_nodes: list = field(default_factory=list)
+    mixed: dict = field(default_factory=dict)  # frozenset of free rotations -> Atoms
+    units: list[tuple[str, str]] = field(default_factory=list)  # (kind, Coq name)
+
+
+def module_name(derivation_name: str) -> str:
+    return ascii_identifier(derivation_name)
+
+
+def theorem_name(derivation_name: str, step: int) -> str:
+    """The qualified Coq name of step ``step`` (1-based) of a derivation."""
+    return f"{module_name(derivation_name)}.step{step}"
+
+
+def derivation_unit(d: Derivation, *, module: str | None = None,
+                    source: str = "") -> tuple[CoqUnit | None, list[StepExport]]:
+    """The Coq unit of ``d`` (None if no step could be exported) and each step's fate."""
+    name = module or module_name(d.name)
+    exprs, lambda_nodes = _expressions(d)
+    naming = Naming()
+    variables = [v for v in d.context.variables
+                 if v.uid in {w.uid for w in variables_of(*exprs)}]
+    atoms = atoms_for(variables, lambda_nodes, naming)
+    sec = _Section(naming, atoms, gatoms=atoms_for(variables, lambda_nodes, naming,
+                                                   generic=True),
+                   variables_list=variables, lambda_nodes=lambda_nodes)
+    _declare(sec, d, variables, lambda_nodes)
+    fates: list[StepExport] = []
+    theorems: list[str] = []
+    body: list[str] = []
+    for k, step in enumerate(d.steps, start=1):
+        thm = f"step{k}"
+        try:
+            text = _step_theorem(sec, d, step, thm, k)
+        except CoqExportError as exc:
+            fates.append(StepExport(d.name, k, None, str(exc)))
+            continue
+        if text is None:
+            fates.append(StepExport(d.name, k, None, _not_exported_reason(step)))
+            continue
+        body.append(text)
+        theorems.append(thm)
+        fates.append(StepExport(d.name, k, f"{name}.{thm}"))
+    if not theorems:
+        return None, fates
+    if len(theorems) == len(d.steps) > 1:
+        body.append(_claim_theorem(sec, d))
+        theorems.append("claim")
+    section = ascii_identifier(d.name)
+    head = [f"(** Exported from the derivation {d.name!r} (verify.proof).",
+            f"    Statement: {_comment(d.statement)}",
+            f"    Paper: {_comment(d.cite)} *)", "", HEADER,
+            f"Section {section}.", ""]
+    text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
+    return CoqUnit(name, text, tuple(theorems), source or d.name), fates
+
+
+def _claim_theorem(sec: _Section, d: Derivation) -> str:
+    """The derivation's conclusion, start REL end, chained from its step theorems."""
+    rels = {s.relation for s in d.steps} - {"="}
+    rel = rels.pop() if rels else "="
+    names = {("=", "="): "eq_trans", ("<=", "<="): "Rle_trans", (">=", ">="): "Rge_trans",
+             ("=", "<="): "eq_le_trans", ("<=", "="): "le_eq_trans",
+             ("=", ">="): "eq_ge_trans", (">=", "="): "ge_eq_trans"}
+    proof, acc = "step1", d.steps[0].relation
+    for k, s in enumerate(d.steps[1:], start=2):
+        lemma = names[(acc, s.relation)]
+        holes = "" if lemma == "eq_trans" else " _ _ _"
+        proof = f"({lemma}{holes} {proof} step{k})"
+        acc = acc if s.relation == "=" else s.relation
+    conds = list(d.where) + [c for s in d.steps for c in s.where]
+    hyps = list(sec.basic) + [sec.conditions[id(c)] for c in conds]
+    hyps += list(sec.assumptions.values())
+    using = " ".join(dict.fromkeys(sec.variables + hyps))
+    start, end = coq_text(d.start, sec.naming), coq_text(d.current, sec.naming)
+    coq_rel = {"=": "=", "<=": "<=", ">=": ">="}[rel]
+    return "\n".join([
+        f"(** The derivation's claim: {_comment(str(d.start))} {rel} {_comment(str(d.current))} *)",
+        f"Theorem claim : {start} {coq_rel} {end}.",
+        f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""])
+
+
+def _not_exported_reason(step: Step) -> str:
+    kind = step.because.kind
+    if kind == "citation":
+        return "cited, not proved: there is nothing for Coq to check"
+    if kind == "sos":
+        return "proved by an SOS certificate, which is not exported to Coq yet"
+    return f"justification {kind!r} is not exported"
+
+
+def _comment(text: str) -> str:
+    return text.replace("(*", "( *").replace("*)", "* )")
+
+
+# -- collecting ---------------------------------------------------------------------------
+def _terms_of(step: Step) -> list[Nonneg]:
+    if not isinstance(step.because, ByBound):
+        return []
+    out: list[Nonneg] = []
+    todo = list(step.because.terms)
+    while todo:
+        t = todo.pop()
+        out.append(t)
+        how = recipe(t)
+        if how is None:
+            raise CoqExportError("a non-negative term has no recipe")
+        todo += [x for x in how[1:] if isinstance(x, Nonneg)]
+    return out
+
+
+def _term_exprs(t: Nonneg) -> list[Expr]:
+    how = recipe(t) or ()
+    out = [t.value] + [x for x in how[1:] if isinstance(x, Expr)]
+    out += [a.expr for a in how[1:] if isinstance(a, Assumption)]
+    return out
+
+
+def _expressions(d: Derivation) -> tuple[list[Expr], list[Expr]]:
+    exprs: list[Expr] = [d.start]
+    for c in d.where:
+        exprs += [c.lhs, c.rhs]
+    for a in d.assumes:
+        exprs.append(a.expr)
+    for s in d.steps:
+        exprs += [s.lhs, s.rhs]
+        for c in s.where:
+            exprs += [c.lhs, c.rhs]
+        try:
+            for t in _terms_of(s):
+                exprs += _term_exprs(t)
+                exprs += [a.expr for a in t.assumptions]
+        except CoqExportError:
+            pass
+    lambdas = [n for n in nodes(*exprs) if n.op == "lambda_min"]
+    return exprs, lambdas
+
+
+# -- the section's declarations -----------------------------------------------------------
+def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
+    out, naming = sec.lines, sec.naming
+    for v in variables:
+        n = naming.variable(v)
+        label = _comment(v.name)
+        if v.kind == "rotation":
+            out += [f"(** {label}: a rotation, rot q with |q|^2 <> 0 *)",
+                    f"Variable q_{n} : quat.",
+                    f"Hypothesis q_{n}_nonzero : qn q_{n} <> 0.",
+                    f"Local Notation {n} := (rot q_{n}).", ""]
+            sec.variables.append(f"q_{n}")
+            sec.basic.append(f"q_{n}_nonzero")
+        elif v.kind == "unit_vector":
+            out += [f"(** {label}: a unit vector *)", f"Variable {n} : V3.",
+                    f"Hypothesis {n}_unit : vdot {n} {n} = 1.", ""]
+            sec.variables.append(n)
+            sec.basic.append(f"{n}_unit")
+            sec.units.append(("unit_vector", n))
+        elif v.kind == "angle":
+            out += [f"(** {label}: an angle *)", f"Variable {n} : R.", ""]
+            sec.variables.append(n)
+            sec.units.append(("angle", n))
+        elif v.kind == "symmetric":
+            parts = [f"{n}_{ij}" for ij in ("11", "22", "33", "12", "13", "23")]
+            out += [f"(** {label}: a symmetric matrix, by its six entries *)",
+                    f"Variables {' '.join(parts)} : R.",
+                    f"Local Notation {n} := (symm {' '.join(parts)}).", ""]
+            sec.variables += parts
+        else:
+            typ = {"vector": "V3", "matrix": "M3", "scalar": "R"}[v.kind]
+            out += [f"(** {label}: a {v.kind} *)", f"Variable {n} : {typ}."]
+            sec.variables.append(n)
+            if v.kind == "scalar" and v.positive:
+                out.append(f"Hypothesis {n}_pos : 0 < {n}.")
+                sec.basic.append(f"{n}_pos")
+            out.append("")
+    seen: set[str] = set()
+    for node in lambda_nodes:
+        lam = naming.lambda_atom(node)
+        if lam in seen:
+            continue
+        seen.add(lam)
+        arg = coq_text(node.args[0], naming)
+        out += [f"(** lambda_min({_comment(str(node.args[0]))}) *)", f"Variable {lam} : R.",
+                f"Hypothesis {lam}_spec : lam_min_spec {arg} {lam}.", ""]
+        sec.variables.append(lam)
+        sec.basic.append(f"{lam}_spec")
+    conditions = list(d.where) + [c for s in d.steps for c in s.where]
+    for c in conditions:
+        if id(c) in sec.conditions:
+            continue
+        name = f"condition{len(sec.conditions) + 1}"
+        sec.conditions[id(c)] = name
+        sec.condition_objs[id(c)] = c
+        out += [f"(** side condition: {_comment(c.label)} *)",
+                f"Hypothesis {name} : {coq_text(c.lhs, naming)} = {coq_text(c.rhs, naming)}.",
+                ""]
+    assumptions = list(d.assumes)
+    for s in d.steps:
+        try:
+            for t in _terms_of(s):
+                assumptions += list(t.assumptions)
+        except CoqExportError:
+            pass
+    for a in assumptions:
+        if id(a) in sec.assumptions:
+            continue
+        name = f"assumption{len(sec.assumptions) + 1}"
+        sec.assumptions[id(a)] = name
+        e = coq_text(a.expr, naming)
+        stmt = {"pos": f"0 < {e}", "nonneg": f"0 <= {e}", "pd": f"pd {e}",
+                "psd": f"psd {e}"}[a.kind]
+        cite = f" ({_comment(a.cite)})" if a.cite else ""
+        out += [f"(** assumption: {_comment(a.label)}{cite} *)",
+                f"Hypothesis {name} : {stmt}.", ""]
+
+
+# -- steps ----------------------------------------------------------------------------------
+def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) -> str | None:
+    naming = sec.naming
+    conds = list(d.where) + list(step.where)
+    gens = conds
+    hyps = list(sec.basic) + [sec.conditions[id(c)] for c in conds]
+    lhs, rhs = coq_text(step.lhs, naming), coq_text(step.rhs, naming)
+    note = step.because.describe()
+    head = [f"(** Step {k}: {_comment(str(step.lhs))} {step.relation} "
+            f"{_comment(str(step.rhs))}", f"    ({_comment(note)}) *)"]
+    if isinstance(step.because, ByAlgebra):
+        if step.relation != "=":
+            raise CoqExportError("an algebra step must be an equality")
+        body = _equality_script(sec, step.lhs, step.rhs, gens)
+        statement = f"{lhs} = {rhs}"
+    elif isinstance(step.because, ByBound):
+        terms = _terms_of(step)
+        for t in terms:
+            hyps += [sec.assumptions[id(a)] for a in t.assumptions
+                     if sec.assumptions[id(a)] not in hyps]
+        body = _inequality_script(sec, step, gens)
+        statement = f"{lhs} <= {rhs}" if step.relation == "<=" else f"{lhs} >= {rhs}"
+    else:
+        return None
+    using = " ".join(dict.fromkeys(sec.variables + hyps))
+    proof = f"Proof using {using}." if using else "Proof."
+    return "\n".join([*head, f"Theorem {thm} : {statement}.", proof,
+                      *("  " + line for line in body), "Qed.", ""])
+
+
+def _generators(sec: _Section, atoms: Atoms, conds: list[Condition]) -> list[tuple]:
+    """(value, Coq text, proof of text = 0) of every equation the step may use."""
+    out = []
+    for kind, n in sec.units:
+        if kind == "unit_vector":
+            x = [atoms.gens[f"v{i}_{n}"] for i in (1, 2, 3)]
+            out.append((atoms.poly(x[0] ** 2 + x[1] ** 2 + x[2] ** 2 - 1),
+                        f"(vdot {n} {n} - 1)", f"(Rminus_diag_eq _ _ {n}_unit)"))
+        else:
+            c, s = atoms.gens[f"cos_{n}"], atoms.gens[f"sin_{n}"]
+            out.append((atoms.poly(c * c + s * s - 1),
+                        f"(cos {n} * cos {n} + sin {n} * sin {n} - 1)", f"(circle {n})"))
+    for c in conds:
+        value = evaluate(c.lhs, atoms) - evaluate(c.rhs, atoms)
+        text = f"({coq_text(c.lhs, sec.naming)} - {coq_text(c.rhs, sec.naming)})"
+        out.append((value, text, f"(Rminus_diag_eq _ _ {sec.conditions[id(c)]})"))
+    return out
+
+
+def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]) -> list[str]:
+    """Tactics proving ``lhs = rhs`` (any shape) from the generators' vanishing.
+
+    First with rotations as free matrices (conditions on rotations left out): when the
+    identity holds there, ``generalize`` forgets that they are rotations and ``field``
+    works on small polynomials. Otherwise in the quaternion parameters.
+    """
+    if lhs.shape not in (SCALAR, VECTOR, MATRIX):
+        raise CoqExportError("only scalars, vectors and matrices are compared")
+    rotations = [sec.naming.variable(v) for v in variables_of(lhs, rhs)
+                 if v.kind == "rotation"]
+    attempts = []
+    if rotations and sec.gatoms is not None:
+        free = [c for c in conds
+                if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
+        prefix = [f"generalize (rot q_{n}) as G_{n}; intro G_{n}." for n in rotations]
+        attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
+        ortho_prefix, ortho = [], []
+        for n in rotations:
+            ortho_prefix += [
+                f"pose proof (rot_orthogonal q_{n} q_{n}_nonzero) as OL_{n}.",
+                f"pose proof (rot_orthogonal_r q_{n} q_{n}_nonzero) as OR_{n}.",
+                f"pose proof (rot_det q_{n} q_{n}_nonzero) as D_{n}.",
+                f"revert OL_{n} OR_{n} D_{n}; generalize (rot q_{n}) as G_{n}; "
+                f"intros G_{n} OL_{n} OR_{n} D_{n}."]
+            ortho += _orthogonality(sec.gatoms, n)
+        attempts += _mixed_attempts(sec, lhs, rhs, conds)
+        attempts.append((sec.gatoms, ortho + _generators(sec, sec.gatoms, free),
+                         ortho_prefix, False))
+    attempts.append((sec.atoms, _generators(sec, sec.atoms, conds), [], True))
+    failure = CoqExportError("no attempt")
+    for atoms, gens, prefix, complete in attempts:
+        left, right = entries(evaluate(lhs, atoms)), entries(evaluate(rhs, atoms))
+        try:
+            tactics = [_entry_tactic(atoms, a - b, gens, complete)
+                       for a, b in zip(left, right, strict=True)]
+        except CoqExportError as exc:
+            failure = exc
+            continue
+        if lhs.shape == SCALAR:
+            return [*prefix, tactics[0]]
+        return prefix + ["so3_split."] + [f"- {t}" for t in tactics]
+    raise failure
+
+
+def _mixed_attempts(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]) -> list:
+    """Attempts keeping one rotation (then two) as a quaternion, the others free."""
+    import itertools
+
+    rots = [v for v in variables_of(lhs, rhs) if v.kind == "rotation"]
+    out = []
+    for size in range(1, len(rots)):
+        for kept in itertools.combinations(rots, size):
+            free_rots = frozenset(v.uid for v in sec.variables_list
+                                  if v.kind == "rotation" and v not in kept)
+            if free_rots not in sec.mixed:
+                sec.mixed[free_rots] = atoms_for(sec.variables_list, sec.lambda_nodes,
+                                                 sec.naming, generic=free_rots)
+            atoms = sec.mixed[free_rots]
+            usable = [c for c in conds if all(v.kind != "rotation" or v.uid not in free_rots
+                                              for v in variables_of(c.lhs, c.rhs))]
+            prefix = [f"generalize (rot q_{sec.naming.variable(v)}) as G_{sec.naming.variable(v)}; "
+                      f"intro G_{sec.naming.variable(v)}." for v in rots if v not in kept]
+            out.append((atoms, _generators(sec, atoms, usable), prefix, True))
+    return out
+
+
+def _orthogonality(atoms: Atoms, n: str) -> list[tuple]:
+    """G^T G = I, G G^T = I (upper triangles) and det G = 1 of a generalised rotation."""
+    g = [[atoms.gens[f"r{i}{j}_{n}"] for j in "123"] for i in "123"]
+    out = []
+    for side, hyp in (("left", f"OL_{n}"), ("right", f"OR_{n}")):
+        for i in range(3):
+            for j in range(i, 3):
+                if side == "left":
+                    e = sum(g[k][i] * g[k][j] for k in range(3))
+                    term = f"(mmul (mT G_{n}) G_{n})"
+                else:
+                    e = sum(g[i][k] * g[j][k] for k in range(3))
+                    term = f"(mmul G_{n} (mT G_{n}))"
+                e = e - int(i == j)
+                entry = f"m{i + 1}{j + 1}"
+                out.append((atoms.poly(e), f"({entry} {term} - {entry} I3)",
+                            f"(Rminus_diag_eq _ _ (f_equal {entry} {hyp}))"))
+    det = (g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1])
+           - g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0])
+           + g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]))
+    out.append((atoms.poly(det - 1), f"(det G_{n} - 1)", f"(Rminus_diag_eq _ _ D_{n})"))
+    return out
+
+
+def _entry_tactic(atoms: Atoms, diff, gens: list[tuple], complete: bool = True) -> str:
+    num = diff.num
+    if num == 0:
+        return "so3_unfold; field; so3_nonzero."
+    values = [g[0] for g in gens]
+    cof = cofactors(num, [v.num for v in values], complete=complete)
+    if cof is None:
+        raise CoqExportError("not an identity of rational functions, even with the unit "
+                             "vectors', angles' and side conditions' equations (a lambda_min "
+                             "merge, or a step the checker did not verify)")
+    used = [(c, g) for c, g in zip(cof, gens, strict=True) if c != 0]
+    den = denominator_text(diff.den, atoms)
+    parts, proofs = [], []
+    for c, (value, text, proof) in used:
+        gden = denominator_text(value.den, atoms)
+        parts.append(f"({_poly_text(c, atoms)} * ({gden}) / ({den})) * {text}")
+        proofs.append(proof)
+    return (f"apply (eq_by_sum _ _ ({' + '.join(parts)})); "
+            f"[rewrite {', '.join(proofs)}; ring | so3_unfold; field; so3_nonzero].")
+
+
+def _inequality_script(sec: _Section, step: Step, gens: list[tuple]) -> list[str]:
+    lines: list[str] = []
+    names: dict[int, str] = {}
+    top = [_term(sec, t, lines, names, gens) for t in step.because.terms]
+    total = step.because.terms[0].value
+    proof = top[0]
+    for t, name in zip(step.because.terms[1:], top[1:], strict=True):
+        total = total + t.value
+        proof = f"(Rplus_le_le_0_compat _ _ {proof} {name})"
+    slack = step.rhs - step.lhs if step.relation == "<=" else step.lhs - step.rhs
+    lines.append(f"assert (E : {coq_text(slack, sec.naming)} = "
+                 f"{coq_text(total, sec.naming)}).")
+    lines.append("{ " + " ".join(_equality_script(sec, slack, total, gens)) + " }")
+    lemma = "le_by_slack" if step.relation == "<=" else "ge_by_slack"
+    lines.append(f"exact ({lemma} _ _ _ E {proof}).")
+    return lines
+
+
+def _term(sec: _Section, t: Nonneg, lines: list[str], names: dict[int, str],
+          gens: list[tuple]) -> str:
+    """Name of a hypothesis ``0 <= value of t`` asserted in ``lines``."""
+    if id(t) in names:
+        return names[id(t)]
+    how = recipe(t)
+    if how is None:
+        raise CoqExportError("a non-negative term has no recipe")
+    kind, args = how[0], how[1:]
+    naming = sec.naming
+    value = coq_text(t.value, naming)
+    if kind in ("add", "mul"):
+        a, b = (_term(sec, x, lines, names, gens) for x in args)
+        lemma = "Rplus_le_le_0_compat" if kind == "add" else "Rmult_le_pos"
+        proof = f"({lemma} _ _ {a} {b})"
+    elif kind == "scale":
+        c, x = args
+        inner = _term(sec, x, lines, names, gens)
+        proof = (f"(Rmult_le_pos {constant(Fraction(c))} {coq_text(x.value, naming)} "
+                 f"ltac:(lra) {inner})")
+    elif kind == "square":
+        (g,) = args
+        lemma = {MATRIX: "fro2_nonneg", VECTOR: "vdot_self_nonneg", SCALAR: "sq_nonneg"}
+        proof = f"({lemma[g.shape]} {coq_text(g, naming)})"
+    elif kind == "positive":
+        proof = f"(Rlt_le _ _ {naming.variable(args[0].data)}_pos)"
+    elif kind == "assumed":
+        (a,) = args
+        h = sec.assumptions[id(a)]
+        proof = f"(Rlt_le _ _ {h})" if a.kind == "pos" else h
+    elif kind == "trace_lower_bound":
+        a, b, gram, scale = args
+        psym = _premise(sec, lines, a.T, a, gens)
+        c_text, c_proof = _scale(sec, scale, lines, names, gens)
+        pgram = _premise(sec, lines, _sym(b), _gram(scale, gram), gens)
+        lam = naming.lambda_atom(Expr("lambda_min", (a,), SCALAR))
+        proof = (f"(trace_lower_bound {coq_text(a, naming)} {coq_text(b, naming)} "
+                 f"{coq_text(gram, naming)} {c_text} {lam} {psym} {pgram} {c_proof} "
+                 f"{lam}_spec)")
+    elif kind == "trace_psd_product":
+        a, b, a_psd, _a_gram, b_gram, b_scale = args
+        if a_psd is None:
+            raise CoqExportError("trace_psd_product with a_gram= is not exported")
+        psym = _premise(sec, lines, a.T, a, gens)
+        from verify.proof.expr import sym
+        pa = _premise(sec, lines, a, sym(a_psd.expr), gens)
+        c_text, c_proof = _scale(sec, b_scale, lines, names, gens)
+        pgram = _premise(sec, lines, _sym(b), _gram(b_scale, b_gram), gens)
+        lemma = "trace_pd_product" if a_psd.kind == "pd" else "trace_psd_assumed_product"
+        proof = (f"({lemma} {coq_text(a, naming)} {coq_text(a_psd.expr, naming)} "
+                 f"{coq_text(b, naming)} {coq_text(b_gram, naming)} {c_text} {psym} {pa} "
+                 f"{sec.assumptions[id(a_psd)]} {pgram} {c_proof})")
+    else:
+        raise CoqExportError(f"no Coq lemma for the term {kind!r}")
+    name = f"T{len(names) + 1}"
+    names[id(t)] = name
+    lines.append(f"assert ({name} : 0 <= {value}) by exact {proof}.")
+    return name
+
+
+def _sym(b: Expr) -> Expr:
+    from verify.proof.expr import sym
+    return sym(b)
+
+
+def _gram(scale, gram: Expr) -> Expr:
+    c = scale.value if isinstance(scale, Nonneg) else Fraction(scale)
+    return c * (gram.T * gram)
+
+
+def _scale(sec: _Section, scale, lines, names, gens) -> tuple[str, str]:
+    if isinstance(scale, Nonneg):
+        return coq_text(scale.value, sec.naming), _term(sec, scale, lines, names, gens)
+    return constant(Fraction(scale)), "ltac:(lra)"
+
+
+def _premise(sec: _Section, lines: list[str], lhs: Expr, rhs: Expr, gens) -> str:
+    name = f"P{sum(1 for x in lines if x.startswith('assert (P')) + 1}"
+    lines.append(f"assert ({name} : {coq_text(lhs, sec.naming)} = "
+                 f"{coq_text(rhs, sec.naming)}).")
+    script = _equality_script(sec, lhs, rhs, gens)
+    lines.append("{ " + " ".join(script) + " }")
+    return name

@@ -1,0 +1,156 @@
+"""Coq text of the proof language's expressions, written with the prelude ``SO3.v``.
+
+Each operation of :mod:`verify.proof.expr` has one counterpart in the prelude (paper,
+Section 3): ``tr``, ``sk``, ``sym``, ``hat``, ``vee``, ``vdot``, ``outer``, ``mmul``,
+``mT``, ``madd``, ``mscale``, ``I3``; ``phi`` (Theorem 1's energy function) is printed
+as ``phi`` when the tree has its shape, (1/2) tr(I - R). Variables are printed by the
+Coq names a :class:`Naming` gives them; lambda_min(A) is printed as the real variable
+that stands for it (its hypothesis ``lam_min_spec A lam`` is declared by the section).
+"""
+
+from __future__ import annotations
+
+import unicodedata
+from fractions import Fraction
+
+from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, Variable, structural_key
+
+
+class CoqExportError(ValueError):
+    """A step or certificate the exporter cannot state or prove in Coq (with the reason)."""
+
+
+# Names the prelude or Coq's standard library already use.
+RESERVED = frozenset("""
+R V3 M3 mkV mkM v1 v2 v3 m11 m12 m13 m21 m22 m23 m31 m32 m33 vadd vneg vscale vzero vdot
+madd mscale mneg msub mmul mvmul mT I3 Z3 tr outer symm sk sym hat vee phi fro2 det quat
+mkQ qw qx qy qz qvec qn rot row1 row2 row3 qform psd pd lam_min_spec cos sin sqrt exp
+PI Set Prop Type fun forall exists let in match end with as Theorem Lemma Proof Qed
+Section End Variable Variables Hypothesis Let Definition Notation Local step
+""".split())
+
+_LETTERS = {"ω": "omega", "ξ": "xi", "θ": "theta", "λ": "lambda", "φ": "phi", "ψ": "psi",
+            "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "eps", "η": "eta",
+            "μ": "mu", "ν": "nu", "π": "pi", "ρ": "rho", "σ": "sigma", "τ": "tau",
+            "Ω": "Omega", "Θ": "Theta", "Φ": "Phi", "Σ": "Sigma", "Δ": "Delta",
+            "\u0304": "bar", "\u0303": "tilde", "\u0307": "dot", "ᵀ": "T", "^": "_",
+            "'": "p", "-": "_"}
+
+
+def ascii_identifier(text: str) -> str:
+    """A Coq identifier spelling ``text`` in ASCII (Greek letters by name, R̄ as Rbar)."""
+    out = []
+    for ch in unicodedata.normalize("NFD", text):
+        if ch.isascii() and (ch.isalnum() or ch == "_"):
+            out.append(ch)
+        elif ch in _LETTERS:
+            out.append(_LETTERS[ch])
+        else:
+            out.append("_")
+    name = "".join(out).strip("_")
+    while "__" in name:
+        name = name.replace("__", "_")
+    if not name or not name[0].isalpha():
+        name = "x" + name
+    return name
+
+
+class Naming:
+    """Coq names of the variables and lambda_min atoms of one exported section."""
+
+    def __init__(self) -> None:
+        self.used: set[str] = set()
+        self.names: dict[int, str] = {}
+        self.lambdas: dict[tuple, tuple[str, Expr]] = {}
+
+    def fresh(self, base: str) -> str:
+        name = base if base not in RESERVED else base + "_v"
+        k = 2
+        candidate = name
+        while candidate in self.used or candidate in RESERVED:
+            candidate = f"{name}_{k}"
+            k += 1
+        self.used.add(candidate)
+        return candidate
+
+    def variable(self, v: Variable) -> str:
+        if v.uid not in self.names:
+            self.names[v.uid] = self.fresh(ascii_identifier(v.name))
+        return self.names[v.uid]
+
+    def lambda_atom(self, node: Expr) -> str:
+        key = structural_key(node.args[0])
+        if key not in self.lambdas:
+            self.lambdas[key] = (self.fresh(f"lam{len(self.lambdas) + 1}"), node.args[0])
+        return self.lambdas[key][0]
+
+
+def constant(c: Fraction) -> str:
+    if c.denominator == 1:
+        return str(c.numerator) if c >= 0 else f"({c.numerator})"
+    return f"({c.numerator}/{c.denominator})"
+
+
+def _is_phi(e: Expr) -> Expr | None:
+    """R when ``e`` is (1/2) * tr(I - R) as :func:`verify.proof.expr.phi` builds it."""
+    if (e.op == "scale" and e.args[0].op == "const" and e.args[0].data == Fraction(1, 2)
+            and e.args[1].op == "trace"):
+        inner = e.args[1].args[0]
+        if inner.op == "add" and inner.args[0].op == "identity" and inner.args[1].op == "neg":
+            return inner.args[1].args[0]
+    return None
+
+
+def coq_text(e: Expr, naming: Naming, *, use_phi: bool = True) -> str:
+    """The Coq term of ``e`` (shared subtrees printed once per occurrence)."""
+    memo: dict[int, str] = {}
+
+    def go(node: Expr) -> str:
+        key = id(node)
+        if key in memo:
+            return memo[key]
+        memo[key] = text = _node(node, go, naming, use_phi)
+        return text
+
+    return go(e)
+
+
+def _node(e: Expr, go, naming: Naming, use_phi: bool) -> str:
+    op, a, shape = e.op, e.args, e.shape
+    if op == "var":
+        return naming.variable(e.data)
+    if op == "const":
+        return constant(e.data)
+    if op == "identity":
+        return "I3"
+    if op == "zero":
+        return {SCALAR: "0", VECTOR: "vzero", MATRIX: "Z3"}[shape]
+    if op == "lambda_min":
+        return naming.lambda_atom(e)
+    if op in ("cos", "sin"):
+        return f"({op} {go(a[0])})"
+    if use_phi and (r := _is_phi(e)) is not None:
+        return f"(phi {go(r)})"
+    if op == "add":
+        if shape == SCALAR:
+            return f"({go(a[0])} + {go(a[1])})"
+        return f"({'vadd' if shape == VECTOR else 'madd'} {go(a[0])} {go(a[1])})"
+    if op == "neg":
+        if shape == SCALAR:
+            return f"(- {go(a[0])})"
+        return f"({'vneg' if shape == VECTOR else 'mneg'} {go(a[0])})"
+    if op == "scale":
+        if shape == SCALAR:
+            return f"({go(a[0])} * {go(a[1])})"
+        return f"({'vscale' if shape == VECTOR else 'mscale'} {go(a[0])} {go(a[1])})"
+    if op == "matmul":
+        return f"({'mvmul' if shape == VECTOR else 'mmul'} {go(a[0])} {go(a[1])})"
+    unary = {"transpose": "mT", "trace": "tr", "sk": "sk", "sym": "sym", "hat": "hat",
+             "vee": "vee"}
+    if op in unary:
+        return f"({unary[op]} {go(a[0])})"
+    if op == "dot":
+        return f"(vdot {go(a[0])} {go(a[1])})"
+    if op == "outer":
+        return f"(outer {go(a[0])} {go(a[1])})"
+    raise CoqExportError(f"no Coq counterpart for the operation {op!r}")
