@@ -187,6 +187,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_coq.add_argument("--out", type=Path, metavar="DIR",
                        help="where to write (default certificates/coq for the paper, "
                        "build/coq for given files)")
+    p_coq.add_argument("--jobs", type=int, default=min(4, os.cpu_count() or 1), metavar="N",
+                       help="with --check, compile N units at a time (default: the cores, "
+                       "up to 4)")
     p_coq.add_argument("--check", action="store_true",
                        help="compile with coqc (in a temporary copy) and audit: no "
                        "Admitted/admit/Axiom, Print Assumptions only Coq's real-number "
@@ -583,7 +586,9 @@ def _gate_stages(forced: bool, models, indices: bool):
 def _cmd_coq(args: argparse.Namespace) -> int:
     from verify.coq.command import run_coq
 
-    return run_coq(args.inputs, args.out, args.check)
+    if args.jobs < 1:
+        raise VerifyInputError(f"--jobs must be at least 1, got {args.jobs}")
+    return run_coq(args.inputs, args.out, args.check, jobs=args.jobs)
 
 
 def _cmd_certificates(args: argparse.Namespace) -> int:

@@ -45,9 +45,11 @@ def write_export(folder: Path, export: Export) -> None:
                       extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported)})
 
 
-def check_and_audit(files: dict[str, str]) -> tuple[CompileResult, list[str]]:
-    """Compile the files with coqc; the audit's problems (empty when all is well)."""
-    result = check_files(files)
+def check_and_audit(files: dict[str, str], jobs: int = 1
+                    ) -> tuple[CompileResult, list[str]]:
+    """Compile the files with coqc (``jobs`` units at a time); the audit's problems
+    (empty when all is well)."""
+    result = check_files(files, jobs=jobs)
     problems = [f"forbidden command {f}" for f in forbidden_commands(files)]
     if result.ok:
         audit = audit_assumptions(result.output)
@@ -93,7 +95,7 @@ def _input_problem(inputs: Sequence[Path], out: Path) -> str | None:
 
 
 def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
-            certificates_dir: Path = Path("certificates")) -> int:
+            certificates_dir: Path = Path("certificates"), *, jobs: int = 1) -> int:
     """The ``verify coq`` command; returns the exit code."""
     if check and not coqc_available():
         print(f"verify: coqc not found (on Debian/Ubuntu: {INSTALL_HINT})", file=sys.stderr)
@@ -126,7 +128,7 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
         print(f"not exported: {item.reason}")
     ok = not refused
     if check:
-        ok = _report_check(*check_and_audit(files)) and ok
+        ok = _report_check(*check_and_audit(files, jobs)) and ok
     return 0 if ok else 1
 
 

@@ -8,11 +8,13 @@ assumptions of every top theorem. ``coqc`` on the files in order is the whole ch
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 import tempfile
 import time
 from collections.abc import Mapping, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -112,35 +114,77 @@ def coqc_available(coqc: str = "coqc") -> bool:
     return shutil.which(coqc) is not None
 
 
+def _compile_one(folder: Path, rel: str, coqc: str,
+                 timeout_seconds: float) -> tuple[bool, str, float]:
+    start = time.perf_counter()
+    try:
+        done = subprocess.run(
+            [coqc, "-R", ".", LOGICAL_ROOT, rel], cwd=folder, capture_output=True,
+            text=True, timeout=timeout_seconds, check=False,
+        )
+    except subprocess.TimeoutExpired:
+        return False, f"coqc: {rel} not done within {timeout_seconds:g} s\n", \
+            time.perf_counter() - start
+    return done.returncode == 0, done.stdout + done.stderr, time.perf_counter() - start
+
+
+def _independent(folder: Path, units: list[str]) -> bool:
+    """True when no unit ``Require``s another unit (each needs only the prelude), so the
+    units may be compiled in any order once the prelude is."""
+    names = {rel[:-2] for rel in units}
+    for rel in units:
+        text = (folder / rel).read_text(encoding="utf-8")
+        if any(re.search(rf"\bRequire\b[^.]*\b{re.escape(name)}\b", text)
+               for name in names if name != rel[:-2]):
+            return False
+    return True
+
+
 def compile_development(folder: Path, *, coqc: str = "coqc",
-                        timeout_seconds: float = 600.0) -> CompileResult:
-    """Compile every file of the development in ``_CoqProject`` order with ``coqc``."""
+                        timeout_seconds: float = 600.0, jobs: int = 1) -> CompileResult:
+    """Compile every file of the development with ``coqc``: the prelude in
+    ``_CoqProject`` order, then the units (``jobs`` at a time when none requires
+    another), then ``All.v``. Stops at the first file ``coqc`` refuses."""
     folder = Path(folder)
-    project = (folder / "_CoqProject").read_text(encoding="utf-8").splitlines()
+    project = (folder / "_CoqProject").read_text(encoding="utf-8").splitlines()[1:]
+    prelude = [rel for rel in project if rel[:-2] in PRELUDE_ORDER]
+    last = [rel for rel in project if rel == "All.v"]
+    units = [rel for rel in project if rel not in prelude and rel not in last]
     outputs: list[str] = []
     timings: list[tuple[str, float]] = []
-    for rel in project[1:]:
-        start = time.perf_counter()
-        try:
-            done = subprocess.run(
-                [coqc, "-R", ".", LOGICAL_ROOT, rel], cwd=folder, capture_output=True,
-                text=True, timeout=timeout_seconds, check=False,
-            )
-        except subprocess.TimeoutExpired:
-            timings.append((rel, time.perf_counter() - start))
-            outputs.append(f"coqc: {rel} not done within {timeout_seconds:g} s\n")
-            return CompileResult(False, rel, "".join(outputs), tuple(timings))
-        timings.append((rel, time.perf_counter() - start))
-        outputs.append(done.stdout + done.stderr)
-        if done.returncode != 0:
-            return CompileResult(False, rel, "".join(outputs), tuple(timings))
-    return CompileResult(True, None, "".join(outputs), tuple(timings))
+
+    def run_in_order(files: list[str]) -> str | None:
+        for rel in files:
+            ok, text, seconds = _compile_one(folder, rel, coqc, timeout_seconds)
+            outputs.append(text)
+            timings.append((rel, seconds))
+            if not ok:
+                return rel
+        return None
+
+    failed = run_in_order(prelude)
+    if failed is None and units:
+        if jobs > 1 and _independent(folder, units):
+            with ThreadPoolExecutor(max_workers=jobs) as pool:
+                done = list(pool.map(
+                    lambda rel: _compile_one(folder, rel, coqc, timeout_seconds), units))
+            for rel, (ok, text, seconds) in zip(units, done, strict=True):
+                outputs.append(text)
+                timings.append((rel, seconds))
+                if not ok and failed is None:
+                    failed = rel
+        else:
+            failed = run_in_order(units)
+    if failed is None:
+        failed = run_in_order(last)
+    return CompileResult(failed is None, failed, "".join(outputs), tuple(timings))
 
 
 def check_files(files: Mapping[str, str], *, coqc: str = "coqc",
-                timeout_seconds: float = 600.0) -> CompileResult:
+                timeout_seconds: float = 600.0, jobs: int = 1) -> CompileResult:
     """Compile rendered files in a temporary folder (leaves no ``.vo`` beside the sources)."""
     with tempfile.TemporaryDirectory(prefix="verify-coq-") as tmp:
         for rel, text in files.items():
             (Path(tmp) / rel).write_text(text, encoding="utf-8")
-        return compile_development(Path(tmp), coqc=coqc, timeout_seconds=timeout_seconds)
+        return compile_development(Path(tmp), coqc=coqc, timeout_seconds=timeout_seconds,
+                                   jobs=jobs)
