@@ -58,6 +58,7 @@ from verify.cli import single_threaded_blas
 single_threaded_blas()  # before numpy is imported (verify.cli does not import it)
 
 import argparse  # noqa: E402
+import itertools  # noqa: E402
 import time  # noqa: E402
 import warnings  # noqa: E402
 
@@ -116,6 +117,11 @@ def main() -> None:
     parser.add_argument("--rate", default="auto",
                         help="rate after decimation: Hz, 'off' or 'auto' (the default, as "
                              "`verify identify` does)")
+    parser.add_argument("--log-rate", type=float, nargs="+", default=[120.0],
+                        help="loop and logging rates (Hz), one study for each (default 120)")
+    parser.add_argument("--pauses", type=float, nargs=2, metavar=("LO", "HI"),
+                        help="separate the trials by pauses of LO-HI s in which the loop is "
+                             "reset to rest")
     parser.add_argument("--jobs", type=int, default=2, help="processes (seeds run in parallel)")
     parser.add_argument("--compare", action="store_true",
                         help="also run the ARX-started output-error baseline")
@@ -124,16 +130,18 @@ def main() -> None:
         args.rate = float(args.rate)
     methods = ("riv+pem", "arx+oe") if args.compare else ("riv+pem",)
     warnings.simplefilter("ignore")
-    for trials in args.trials:
+    pauses = None if args.pauses is None else tuple(args.pauses)
+    for log_rate, trials in itertools.product(args.log_rate, args.trials):
         start = time.perf_counter()
         study = run_study(THETA_TRUE, range(args.first_seed, args.first_seed + args.seeds),
                           methods=methods, k_s=args.k_s, n=args.n, trials=trials,
-                          out_rate=args.rate, jobs=args.jobs,
+                          rate=log_rate, out_rate=args.rate, jobs=args.jobs, pauses=pauses,
                           progress=lambda rep: print(f"seed {rep.seed} done", flush=True))
+        paused = "" if pauses is None else f", reset pauses {pauses[0]:g}-{pauses[1]:g} s"
         print(f"\n{args.seeds} experiments: n = {args.n}, {trials} identification trials x "
-              f"15 s at 120 Hz, k_s = {args.k_s}, rate {args.rate}; "
-              f"{time.perf_counter() - start:.0f} s\n")
-        print(coverage_table(study, "riv+pem"))
+              f"15 s logged at {log_rate:g} Hz{paused}, k_s = {args.k_s}, rate {args.rate}; "
+              f"{time.perf_counter() - start:.0f} s\n", flush=True)
+        print(coverage_table(study, "riv+pem"), flush=True)
         if args.compare:
             from bench_identify_methods import bias_table
 

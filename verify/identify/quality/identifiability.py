@@ -8,9 +8,19 @@ certified:
 
 1. **Does the model explain the validation data?** The honest validation fit of each
    output (Section 4's fit ratio of the model simulated on the logged input,
-   :func:`verify.identify.quality.fits.honest_fits`) must beat both the zero model (which
-   predicts u = 0) and the mean of the output: fit > ``MIN_FIT`` = 0 %. A model that
-   does worse than a constant describes nothing of the operator.
+   :func:`verify.identify.quality.fits.honest_fits`) must reach ``MIN_FIT`` = 5 %:
+   the model's error on the validation data at most 95 % of the output's spread about
+   its mean. Merely beating the zero model and the mean (fit > 0 %, the earlier rule)
+   let a 2.8 % fit through, a short noisy session whose estimate had b1 = -410 against
+   a true 1.2: a model that explains almost nothing of the validation output is a fit to
+   the noise. The threshold is half the lowest fit that correct models reached on
+   simulated closed-loop experiments in the paper's protocol
+   (``benchmarks/bench_identify_coverage.py``, fit ratio on the noisy data, lowest per
+   output over 10 seeds at 250 Hz: 9.98 %, where the operator's noise on u is largest
+   against the response; at the same time the fit on clean data was above 96 %), so a
+   correct model is not refused, and a fit below it means the operator's response is
+   buried in noise and *cannot identify* is the honest answer. A threshold of 10 % would
+   have refused a correct model in one of those seeds.
 2. **Is the estimate an interior, stable point?** Every denominator coefficient must lie
    strictly inside the search box of :func:`verify.identify.estimate.pem.denominator_bounds`
    (the poles in the open left half-plane, no coefficient within ``BOUND_MARGIN`` of
@@ -69,7 +79,7 @@ __all__ = [
     "roughness",
 ]
 
-MIN_FIT = 0.0  # %, honest validation fit each output must exceed
+MIN_FIT = 5.0  # %, honest validation fit each output must reach (module docstring)
 BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
 LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its own scale is a_k = 0
 MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
@@ -182,10 +192,12 @@ def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[
     reasons = []
     fits = [float(x) for x in fit_validation]
     for i, fit in enumerate(fits):
-        if not fit > MIN_FIT:
+        if not fit >= MIN_FIT:
+            worse = " (no better than predicting the output's mean or zero)" if fit <= 0 else ""
             reasons.append(f"output {i + 1}: the model simulated on the validation input fits "
-                           f"{fit:.2f} %, no better than predicting the output's mean or "
-                           "zero")
+                           f"{fit:.2f} %{worse}, below the {MIN_FIT:g} % a model must explain "
+                           "of the operator's output; the response is buried in noise: log "
+                           "longer or less noisy trials")
     reasons += interior(estimate, h)
     cond = condition_number(estimate.covariance)
     if not cond <= MAX_CONDITION:
