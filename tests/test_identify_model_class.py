@@ -162,3 +162,18 @@ def test_all_frequencies_passive_needs_a_coupling_sum_of_exactly_zero():
     exact = replace(test, larger_covariance=np.zeros((14, 14)))
     assert mcc.larger_region_passive(exact, None)
 
+
+
+def test_no_passivity_verdict_within_a_class_the_data_reject(third_order_run):
+    """The likelihood-ratio test of passivity is asked only where the class holds: for
+    the passive third-order operator the answer is that it cannot be answered within the
+    class, never "the data reject passivity", and no best passive model is written."""
+    (_, summary), out = third_order_run
+    test = summary["passivity_test"]
+    assert test["ran"] is False
+    assert "not answered" in test["reason"] and "reject the fitted class" in test["reason"]
+    assert "--structure 3:2" in test["reason"]
+    assert "reject passivity" not in json.dumps(summary)
+    from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE
+
+    assert not (out / PASSIVE_MODEL_FILE).exists()

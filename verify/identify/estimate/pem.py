@@ -168,7 +168,9 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
         Ja[:, k] = used((design(hi, data, zeros) - design(lo, data, zeros)) @ beta, data, w
                         ) / (2 * step)
     Xw = used(X, data, w)
-    tail = Xw[:, zeros + 1:] if data.initial == "estimate" else Xw[:, zeros + 1:zeros + 2]
+    free = [col for k in range(len(data.y)) if data.estimated(k)
+            for col in range(zeros + 2 + k * n, zeros + 2 + (k + 1) * n)]
+    tail = Xw[:, [zeros + 1, *free]]
     columns = [Xw[:, : zeros + 1], Ja, tail]
     if len(d):
         raw = np.concatenate(data.y) - X @ beta
@@ -195,7 +197,7 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
     p = zeros + 1 + n + 1
     cov = full[:p, :p]
     noise = np.concatenate(([1.0], d))
-    initial = eta.reshape(-1, n) if data.initial == "estimate" else np.zeros((len(data.y), n))
+    initial = eta.reshape(-1, n)  # zero for the trials whose state is not fitted
     return OutputFit(b, a, c, initial, r, rss, cov, float(np.sqrt(sigma2)), noise)
 
 

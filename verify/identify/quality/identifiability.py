@@ -8,19 +8,21 @@ certified:
 
 1. **Does the model explain the validation data?** The honest validation fit of each
    output (Section 4's fit ratio of the model simulated on the logged input,
-   :func:`verify.identify.quality.fits.honest_fits`) must reach ``MIN_FIT`` = 5 %:
-   the model's error on the validation data at most 95 % of the output's spread about
+   :func:`verify.identify.quality.fits.honest_fits`) must reach ``MIN_FIT`` = 3 %:
+   the model's error on the validation data at most 97 % of the output's spread about
    its mean. Merely beating the zero model and the mean (fit > 0 %, the earlier rule)
    let a 2.8 % fit through, a short noisy session whose estimate had b1 = -410 against
-   a true 1.2: a model that explains almost nothing of the validation output is a fit to
-   the noise. The threshold is half the lowest fit that correct models reached on
-   simulated closed-loop experiments in the paper's protocol
-   (``benchmarks/bench_identify_coverage.py``, fit ratio on the noisy data, lowest per
-   output over 10 seeds at 250 Hz: 9.98 %, where the operator's noise on u is largest
-   against the response; at the same time the fit on clean data was above 96 %), so a
-   correct model is not refused, and a fit below it means the operator's response is
-   buried in noise and *cannot identify* is the honest answer. A threshold of 10 % would
-   have refused a correct model in one of those seeds.
+   a true 1.2. The threshold comes from the fits correct models reach on simulated
+   closed-loop experiments in the paper's protocol (``benchmarks/bench_identify_coverage.py``,
+   fit ratio on the noisy data; 10 seeds per setting): lowest per output 11.6 % at
+   20 Hz, 10.0 % at 250 Hz and 4.9 % at 120 Hz with reset pauses between trials (the
+   operator's noise on u is large against a small response there), while the fit of
+   those models on noise-free data was above 90 %. A fit ratio on noisy data measures
+   the noise as much as the model, so it cannot separate a wrong model from a right one
+   in a noisy session: 3 % sits below every correct model measured and above the wrong
+   one of the report, a narrow gap. The question is a floor against models that explain
+   almost nothing; the region's width and the robust verdict (inconclusive for such a
+   session) are what keep a noisy session from a wrong answer.
 2. **Is the estimate an interior, stable point?** Every denominator coefficient must lie
    strictly inside the search box of :func:`verify.identify.estimate.pem.denominator_bounds`
    (the poles in the open left half-plane, no coefficient within ``BOUND_MARGIN`` of
@@ -79,7 +81,7 @@ __all__ = [
     "roughness",
 ]
 
-MIN_FIT = 5.0  # %, honest validation fit each output must reach (module docstring)
+MIN_FIT = 3.0  # %, honest validation fit each output must reach (module docstring)
 BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
 LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its own scale is a_k = 0
 MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
