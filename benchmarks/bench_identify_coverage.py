@@ -1,7 +1,30 @@
 """Coverage of the identification's 95 % intervals on simulated closed-loop experiments.
 
 Run: ``python benchmarks/bench_identify_coverage.py [--seeds 50] [--trials 6 12] [--n 8]
-[--jobs 2] [--compare]``.
+[--log-rate 20 50 120 250] [--pauses 2 5] [--jobs 2] [--compare]``.
+
+``--log-rate`` simulates the loop and logs at other rates (one study per rate, each kept
+as logged by ``--rate auto``); ``--pauses LO HI`` separates the trials by pauses of LO-HI
+s in which the loop is reset to rest
+(:func:`verify.identify.data.simulated_experiment.simulate_paused_experiment`).
+
+Measured with the covariance's noise window set to 1 s (``COVARIANCE_SECONDS`` in
+:mod:`verify.identify.estimate.pem`; it was 20 samples), 6 identification trials,
+n = 8, 10 seeds per setting from 1000, one process on a 2-core machine loaded by other
+work (220-800 s per setting). Coverage per parameter / joint ellipsoid:
+
+* 20 Hz: 90-100 % (b0_2, a0_2, c21 90 %) / 90 %;
+* 50 Hz: 90-100 % (b0_1, c12 90 %) / 100 %;
+* 120 Hz: 90-100 % (b0_1, a0_1 90 %) / 90 %;
+* 250 Hz: 90-100 % (b0_1, a0_1 90 %) / 100 % (with 20 lags, 0.08 s at this rate, the
+  region had held the truth in 3 of 7 experiments);
+* 120 Hz with 2-5 s reset pauses, the state coasted over the pause (before pauses were
+  recognised): 100 % / 100 %; PAUSE_NEW_BENCH
+
+Ten seeds bound little: the exact binomial 95 % interval of 9/10 is 55.5-99.7 %, of
+10/10 69.2-100 %. The lowest fit ratio on the noisy data over outputs and seeds was
+9.3-11.6 % at the four rates and 4.9 % with pauses (fit on clean data above 95 %), the
+basis of the identifiability gate's minimum fit.
 
 Each of the seeded repetitions simulates the paper's experiment (Section 4: the SO(3)
 closed loop with n bodies, 120 Hz, reference changed every 15 s) with a known operator in

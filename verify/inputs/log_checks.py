@@ -118,6 +118,7 @@ class TrialChecker:
         #: per trial kept: whether its times were accepted only within their written
         #: precision (then :meth:`log` puts them on the reader's grid)
         self.rounded: list[bool] = []
+        self.decimal: list[bool] = []  # times written as decimals (CSV), not binary
 
     def _at(self, row: int) -> str:
         return f"{self.source}: {self.kind} {row}"
@@ -211,6 +212,7 @@ class TrialChecker:
         self.trials.append(Trial(tid, np.array(t, dtype=np.float64), e, u, reference, valid,
                                  start))
         self.rounded.append(rounded)
+        self.decimal.append(written > 0)
 
     def log(self, rate: float | None) -> ExperimentLog:
         """The log of the trials read, at ``rate`` (metadata) or the rate of the step."""
@@ -222,9 +224,12 @@ class TrialChecker:
             raise VerifyInputError(f"{self.source}: the rate metadata says {rate:g} Hz but the "
                                    f"time step is {step:.9g} s ({1 / step:.9g} Hz); fix the "
                                    "rate or the time column")
-        return ExperimentLog(tuple(on_grid(tr, float(rate)) if rounded else tr
-                                   for tr, rounded in zip(self.trials, self.rounded,
-                                                          strict=True)),
+        # once one trial is read as the grid, every trial written as decimals is (so all
+        # trials share the step 1 / rate exactly, not each its own mean step)
+        regrid = [r or (any(self.rounded) and d)
+                  for r, d in zip(self.rounded, self.decimal, strict=True)]
+        return ExperimentLog(tuple(on_grid(tr, float(rate)) if g else tr
+                                   for tr, g in zip(self.trials, regrid, strict=True)),
                              float(rate), self.source)
 
 
