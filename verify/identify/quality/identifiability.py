@@ -15,7 +15,7 @@ certified:
    a true 1.2. The threshold comes from the fits correct models reach on simulated
    closed-loop experiments in the paper's protocol (``benchmarks/bench_identify_coverage.py``,
    fit ratio on the noisy data; 10 seeds per setting): lowest over outputs and seeds
-   11.6 % at 20 Hz, 10.0 % at 50 Hz, 9.3 % at 120 Hz, 10.0 % at 250 Hz and 4.9 % at
+   11.6 % at 20 Hz, 10.0 % at 50 Hz, 9.3 % at 120 Hz, 9.5 % at 250 Hz and 4.9 % at
    120 Hz with reset pauses between trials (the operator's noise on u is large against
    a small response there), while the fit of those models on noise-free data was above
    90 %. A fit ratio on noisy data measures
