@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from verify.identify.data.example_logs import EXAMPLES, LOGS, main
+from verify.identify.data.example_logs import EXAMPLES, LOGS, WRITTEN_DECIMALS, main
 from verify.identify.data.simulated_experiment import (
     MEASUREMENT_NOISE,
     OPERATOR_NOISE,
@@ -53,9 +53,12 @@ def test_first_trial_is_what_the_generator_simulates():
     shipped = read_log(LOGS / f"{ex.name}.npz").trials[0]
     assert fresh.start == shipped.start
     np.testing.assert_array_equal(fresh.t, shipped.t)
-    # a tolerance, not bit equality: a faster simulator may round differently
-    np.testing.assert_allclose(fresh.e, shipped.e, rtol=0, atol=1e-9)
-    np.testing.assert_allclose(fresh.u, shipped.u, rtol=0, atol=1e-9)
+    # written to WRITTEN_DECIMALS decimals: within half a unit of the last one
+    half = 0.5 * 10.0**-WRITTEN_DECIMALS + 1e-12
+    np.testing.assert_allclose(fresh.e, shipped.e, rtol=0, atol=half)
+    np.testing.assert_allclose(fresh.u, shipped.u, rtol=0, atol=half)
+    np.testing.assert_array_equal(shipped.e, np.round(shipped.e, WRITTEN_DECIMALS))
+    np.testing.assert_array_equal(shipped.u, np.round(shipped.u, WRITTEN_DECIMALS))
 
 
 @pytest.mark.slow

@@ -11,6 +11,7 @@ where starting every trial from rest cannot.
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -68,13 +69,17 @@ def _trial(trial: int, start: float, count: int = 40, h: float = 0.05) -> Trial:
 
 
 def test_which_trials_follow_on():
-    trials = [_trial(0, 0.0), _trial(1, 2.5), _trial(1, 5.0), _trial(2, 0.0), _trial(3, 8.0)]
+    trials = [_trial(0, 0.0), _trial(1, 2.5), _trial(1, 5.0), _trial(2, 0.0), _trial(3, 4.0),
+              _trial(4, 10.0)]
     gaps = dead_time_gaps(trials)
     assert gaps[0] is None  # the first trial starts from rest
     assert gaps[1] == pytest.approx(2.5 - 1.95)
     assert gaps[2] is None  # a second segment of trial 1: unknown what happened between
     assert gaps[3] is None  # the clock restarts: not a continuation
-    assert gaps[4] == pytest.approx(8.0 - 1.95)
+    assert gaps[4] == pytest.approx(4.0 - 1.95)  # within MAX_CARRY_GAP: a dead time
+    assert gaps[5] is None  # 4.05 s: longer than any dead time, a pause
+    resumed = [*trials[:4], replace(trials[4], resumed=True), trials[5]]
+    assert dead_time_gaps(resumed)[4] is None  # the protocol saw a pause in the raw log
 
 
 @pytest.fixture(scope="module")

@@ -165,7 +165,7 @@ def test_estimated_initial_states_handle_an_operator_not_at_rest_in_open_loop():
     """Zero initial states misfit trials that start away from rest; estimated ones fit."""
     structure = Structure.paper()
     trials = open_loop(4, structure, THETA)
-    at_rest = estimate_model(trials, structure, burn_in=0.0)
+    at_rest = estimate_model(trials, structure, initial="zero", burn_in=0.0)
     assert np.max(np.abs(at_rest.theta - THETA) / np.abs(THETA)) > 1e-3
 
 

@@ -185,3 +185,20 @@ def test_a_refusal_replaces_a_previous_output_and_can_be_replaced(loop, tmp_path
     assert main(["identify", str(tmp_path / "n.npz"), "--split", "6:2", "--out",
                  str(out)]) == 1
     capsys.readouterr()
+
+
+def test_a_validation_fit_below_the_minimum_cannot_identify(loop):
+    """The gate's first question with the threshold: a 2.8 % fit (what a short noisy
+    session gave, with b1 = -410) is refused with the minimum named; a fit at the
+    minimum passes that question."""
+    trials = read_logs([loop]).trials
+    est = _estimate(THETA)
+    low = gate.check(est, [2.8, 55.0], trials, 1 / 120)
+    assert not low.identifiable
+    assert any("output 1" in r and "2.80 %" in r and f"{gate.MIN_FIT:g} %" in r
+               for r in low.reasons)
+    assert not any("output 2" in r for r in low.reasons)
+    ok = gate.check(est, [gate.MIN_FIT, 55.0], trials, 1 / 120)
+    assert not any("validation input fits" in r for r in ok.reasons)
+    negative = gate.check(est, [-3.0, 55.0], trials, 1 / 120)
+    assert any("no better than predicting" in r for r in negative.reasons)

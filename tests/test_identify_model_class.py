@@ -37,9 +37,13 @@ def _identify(log: Path, out: Path, *extra: str) -> tuple[int, dict]:
 
 @pytest.fixture(scope="module")
 def third_order_run(tmp_path_factory):
+    """12 trials, 8 to identify: with the covariance's noise window of 1 s the region of
+    4 trials was too wide for the exact refutation to be found (the answer was
+    inconclusive before the class test could withdraw anything); with 8 the class's region
+    is refuted at 3.4 rad/s, which is what this test needs to see withdrawn."""
     d = tmp_path_factory.mktemp("third")
-    log = third_order_log(d / "third.npz")
-    return _identify(log, d / "out"), d / "out"
+    log = third_order_log(d / "third.npz", trials=12)
+    return _identify(log, d / "out", "--split", "8:4"), d / "out"
 
 
 def test_passive_operator_outside_the_class_is_not_called_not_passive(third_order_run):
@@ -162,3 +166,59 @@ def test_all_frequencies_passive_needs_a_coupling_sum_of_exactly_zero():
     exact = replace(test, larger_covariance=np.zeros((14, 14)))
     assert mcc.larger_region_passive(exact, None)
 
+
+
+def test_no_passivity_verdict_within_a_class_the_data_reject(third_order_run):
+    """The likelihood-ratio test of passivity is asked only where the class holds: for
+    the passive third-order operator the answer is that it cannot be answered within the
+    class, never "the data reject passivity", and no best passive model is written."""
+    (_, summary), out = third_order_run
+    test = summary["passivity_test"]
+    assert test["ran"] is False
+    assert "not answered" in test["reason"] and "reject the fitted class" in test["reason"]
+    assert "--structure 3:2" in test["reason"]
+    assert "reject passivity" not in json.dumps(summary)
+    from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE
+
+    assert not (out / PASSIVE_MODEL_FILE).exists()
+
+
+# --- open-loop data -----------------------------------------------------------------------
+
+def test_open_loop_data_are_told_from_the_loop():
+    """e is the smoother signal only in the loop (the leader integrates the command)."""
+    from identify_loop import THETA
+    from identify_models import open_loop_log
+
+    from verify.identify.data.example_logs import EXAMPLES
+    from verify.identify.data.protocol import prepare
+    from verify.identify.data.simulated_experiment import simulate_experiment
+    from verify.identify.quality.coverage import true_model
+
+    for seed in (1, 2):
+        log = open_loop_log(EXAMPLES[0].model(), trials=4, seed=seed)
+        assert mc.looks_open_loop(prepare(log, rate="auto", split=(4, 0)).identification)
+        for noise in ({}, {"operator_noise": 0.0, "measurement_noise": 0.0}):
+            loop = simulate_experiment(true_model(THETA), trials=3, n=2, seed=seed, **noise)
+            assert not mc.looks_open_loop(prepare(loop, rate="auto",
+                                                  split=(3, 0)).identification)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", [1, 2, 3])
+@pytest.mark.parametrize("index", [0, 1], ids=["passive", "nonpassive"])
+def test_open_loop_multisine_logs_do_not_reject_an_in_class_operator(seed, index):
+    """Back-to-back open-loop trials that each start from rest (the carried state misfits
+    every join): the class test, refitted with estimated initial states, keeps the
+    class of an in-class operator."""
+    from identify_models import open_loop_log
+
+    from verify.identify.data.example_logs import EXAMPLES
+    from verify.identify.data.protocol import prepare
+    from verify.identify.estimate.estimation import estimate_model
+
+    log = open_loop_log(EXAMPLES[index].model(), trials=4, seed=seed)
+    data = prepare(log, rate="auto", split=(4, 0)).identification
+    test = mc.model_class_test(estimate_model(data, Structure.paper()), data)
+    assert test.open_loop and not test.rejected, test.sentence()
+    assert "open-loop data" in test.sentence()

@@ -208,23 +208,47 @@ class Identified:
 
 
 def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
-    """How consecutive trials were joined by the fit and the estimator (per-trial clocks
-    and dead-time gaps, :func:`verify.identify.estimate.trial_data.dead_time_gaps`), one line per
-    kind of join."""
-    from verify.identify.estimate.trial_data import dead_time_gaps
+    """How consecutive trials were joined by the fit and the estimator (per-trial clocks,
+    dead-time gaps and pauses, :func:`verify.identify.estimate.trial_data.dead_time_gaps`),
+    one line per kind of join, and a warning for each trial that begins mid-response
+    (:func:`verify.identify.estimate.trial_data.fresh_starts`)."""
+    from verify.identify.estimate.trial_data import (
+        MAX_CARRY_GAP,
+        dead_time_gaps,
+        fresh_starts,
+        mid_response,
+    )
 
     gaps = dead_time_gaps(trials)
+    fresh = fresh_starts(trials)
     carried = [g for g in gaps[1:] if g is not None]
-    rest = [tr.trial for tr, g in zip(trials[1:], gaps[1:], strict=True) if g is None]
+    paused, rest = [], []
+    for prev, tr, g in zip(trials, trials[1:], gaps[1:], strict=False):
+        if g is not None:
+            continue
+        pause = float(tr.t[0] - prev.t[-1])
+        after_pause = getattr(tr, "resumed", False) or pause > MAX_CARRY_GAP
+        (paused if tr.trial != prev.trial and after_pause else rest).append(tr.trial)
     out = [f"trial {trials[0].trial} starts from rest"]
     if carried:
         out.append(f"{len(carried)} trial(s) continue from the state the previous one left, "
                    f"coasted with zero input over a gap of {min(carried):.3g}-"
                    f"{max(carried):.3g} s")
+    if paused:
+        out.append(f"trial(s) {', '.join(str(t) for t in paused)} follow a pause in the "
+                   "log: what the operator did in it is not logged, so they start from "
+                   "rest, as after a reset, not from a state coasted over the pause")
     if rest:
         out.append(f"trial(s) {', '.join(str(t) for t in rest)} start independently from "
                    "rest (same trial id as the previous segment, or the clock does not "
                    "move forward)")
+    for tr, is_fresh in zip(trials, fresh, strict=True):
+        if is_fresh:
+            out.append(f"warning: trial {tr.trial} (from t = {float(tr.t[0]):.4g} s) begins "
+                       f"mid-response (u over its first 0.25 s at {100 * mid_response(tr):.0f} "
+                       "% of its largest value): logging started during a response, so its "
+                       "initial state is estimated, not taken as rest (in closed loop that "
+                       "estimate is biased; log from before the response where possible)")
     return tuple(out)
 
 
@@ -273,21 +297,30 @@ def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identifi
     gate = identifiability.check(estimate, quality.fit_validation, joined,
                                  1.0 / prepared.rate)
     if gate.identifiable:
-        stage("fitting the best passive model of the class (passivity test)")
-    passivity = (_passivity(estimate, prepared.identification) if gate.identifiable
-                 else None)
-    if gate.identifiable:
         stage("testing the model class against a larger one")
     model_class = (model_class_test(estimate, prepared.identification) if gate.identifiable
                    else None)
+    if gate.identifiable:
+        stage("fitting the best passive model of the class (passivity test)")
+    passivity = (_passivity(estimate, prepared.identification, model_class)
+                 if gate.identifiable else None)
     return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes, gate,
                       joins, passivity, model_class)
 
 
-def _passivity(estimate: Estimate, trials) -> Any:
-    """Can the data reject passivity (:mod:`verify.identify.robust.passive_fit`)."""
+def _passivity(estimate: Estimate, trials, model_class: Any) -> Any:
+    """Can the data reject passivity (:mod:`verify.identify.robust.passive_fit`), asked
+    only where the fitted class holds: when the data reject the class, the best passive
+    model *of the class* against the best model of the class says nothing about the
+    operator (a passive third-order operator gave p = 1.7e-11 there), so the answer is
+    the reason the question cannot be answered within the class."""
     from verify.identify.robust.passive_fit import test_or_reason
 
+    if model_class is not None and model_class.rejected:
+        return (f"not answered: the data reject the fitted class against "
+                f"{model_class.larger_text()}, so whether a passive model of the class "
+                "explains the data says nothing about the operator (fit the larger class, "
+                f"--structure {model_class.larger_text()}, to ask it there)")
     return test_or_reason(estimate, trials)
 
 
@@ -633,11 +666,7 @@ def _passivity_lines(o: Outcome) -> list[str]:
     from verify.identify.robust.passive_fit import PASSIVE_MODEL_FILE, summary_lines
 
     path = o.plan.out / PASSIVE_MODEL_FILE
-    out = summary_lines(o.identified.passivity, path if path in o.files else None)
-    test = o.identified.model_class
-    if out and test is not None and test.rejected:
-        out[0] += " (a test within the fitted class, which the data reject)"
-    return out
+    return summary_lines(o.identified.passivity, path if path in o.files else None)
 
 
 def _robust_lines(o: Outcome) -> list[str]:

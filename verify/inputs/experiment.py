@@ -24,7 +24,10 @@ class Trial:
     usable samples when logged; ``start`` the time of the operator's "start" event after
     the reference change, when logged; ``end`` the time until which the last sample's
     input acts (the next sample time of the log the trial was taken from; after
-    decimation later than t[-1] + step would say), None for one step after t[-1].
+    decimation later than t[-1] + step would say), None for one step after t[-1];
+    ``resumed`` True when the log was paused before this trial (its first raw sample
+    comes more than one step after the previous trial's last): the operator's state at
+    its start is not what the previous trial left.
     """
 
     trial: int
@@ -35,6 +38,7 @@ class Trial:
     valid: np.ndarray | None = None
     start: float | None = None
     end: float | None = None
+    resumed: bool = False
 
     @property
     def step(self) -> float:

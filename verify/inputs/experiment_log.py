@@ -25,8 +25,13 @@ must lie within its written precision of the equally spaced grid t_first + k h (
 precision is the last decimal place written in the trial's time column: times written
 with 6 decimals, 0.008333, 0.016667, ... at 120 Hz, are equally spaced within 1e-6 s, one
 unit of the last digit, the most two values rounded from one grid can differ from the
-straight line through the trial's ends). All trials must have the same step (relative
-1e-6, widened by what the written precision leaves unknown of each mean step). The rate
+straight line through the trial's ends). Such a trial is then *read as that grid*: its
+times become t_first + k / rate (the rate below) and its start event moves to its
+sample's grid time, so nothing downstream (the protocol's decimation, the estimator's
+check of uniform sampling) re-tests the rounded steps (a trial whose steps agree with
+the first trial's only within that precision is put on the grid too). All trials must
+have the same step (relative 1e-6, widened by what the written precision leaves unknown
+of each mean step). The rate
 is the ``rate`` metadata when given (it must agree with the step to the same tolerance),
 else the decimal with the fewest significant digits that the step allows (120 for the
 6-decimal example). A trial needs at least ``min_samples`` samples (the caller passes

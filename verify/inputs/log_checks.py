@@ -115,6 +115,10 @@ class TrialChecker:
         self.trials: list[Trial] = []
         self.step0: float | None = None
         self.spread0 = 0.0
+        #: per trial kept: whether its times were accepted only within their written
+        #: precision (then :meth:`log` puts them on the reader's grid)
+        self.rounded: list[bool] = []
+        self.decimal: list[bool] = []  # times written as decimals (CSV), not binary
 
     def _at(self, row: int) -> str:
         return f"{self.source}: {self.kind} {row}"
@@ -161,6 +165,7 @@ class TrialChecker:
         written = 0.0 if exponent is None else 10.0 ** exponent
         slack = 8 * np.finfo(float).eps * size
         off = np.abs(d - step) > STEP_TOLERANCE * step
+        rounded = bool(np.any(off))
         worst = 0
         if np.any(off) and written > 0:
             residual = np.abs(t - (t[0] + np.arange(n) * step))
@@ -183,7 +188,11 @@ class TrialChecker:
         spread = (written + slack) / (n - 1)  # how far the mean step may be from the grid's
         if self.step0 is None:
             self.step0, self.spread0 = step, spread
-        elif abs(step - self.step0) > max(STEP_TOLERANCE * self.step0, spread + self.spread0):
+        elif abs(step - self.step0) > STEP_TOLERANCE * self.step0:
+            rounded = True  # the steps agree only within the written precision (below)
+        if self.step0 is not None and (
+                abs(step - self.step0) > max(STEP_TOLERANCE * self.step0,
+                                             spread + self.spread0)):
             raise fail(where, f"trial {tid} has step {step:.9g} s, the first trial "
                        f"{self.step0:.9g} s (tolerance: relative {STEP_TOLERANCE:g}); "
                        "resample the trials to one rate")
@@ -202,6 +211,8 @@ class TrialChecker:
         u = np.stack([cols["u1"], cols["u2"]], axis=1)
         self.trials.append(Trial(tid, np.array(t, dtype=np.float64), e, u, reference, valid,
                                  start))
+        self.rounded.append(rounded)
+        self.decimal.append(written > 0)
 
     def log(self, rate: float | None) -> ExperimentLog:
         """The log of the trials read, at ``rate`` (metadata) or the rate of the step."""
@@ -213,7 +224,32 @@ class TrialChecker:
             raise VerifyInputError(f"{self.source}: the rate metadata says {rate:g} Hz but the "
                                    f"time step is {step:.9g} s ({1 / step:.9g} Hz); fix the "
                                    "rate or the time column")
-        return ExperimentLog(tuple(self.trials), float(rate), self.source)
+        # once one trial is read as the grid, every trial written as decimals is (so all
+        # trials share the step 1 / rate exactly, not each its own mean step)
+        regrid = [r or (any(self.rounded) and d)
+                  for r, d in zip(self.rounded, self.decimal, strict=True)]
+        return ExperimentLog(tuple(on_grid(tr, float(rate)) if g else tr
+                                   for tr, g in zip(self.trials, regrid, strict=True)),
+                             float(rate), self.source)
+
+
+def on_grid(trial: Trial, rate: float) -> Trial:
+    """``trial`` with its times on the reader's grid t_0 + k / rate (its start event
+    moved with its sample).
+
+    Used for the trials whose written times are equally spaced only within their written
+    precision (:mod:`verify.inputs.experiment_log`, "Sampling"): the reader has decided
+    that they are samples of that grid, so it hands on the grid, and every later check
+    (the estimator's uniform sampling, the protocol's decimation, the start event's
+    sample) sees exactly equal steps instead of re-testing the rounded ones.
+    """
+    n = trial.t.shape[0]
+    t = float(trial.t[0]) + np.arange(n) / rate
+    start = trial.start
+    if start is not None:
+        start = float(t[int(np.argmin(np.abs(trial.t - start)))])
+    return Trial(trial.trial, t, trial.e, trial.u, trial.reference, trial.valid, start,
+                 trial.end)
 
 
 def simplest_rate(step: float, spread: float) -> float:
@@ -238,4 +274,4 @@ def simplest_rate(step: float, spread: float) -> float:
 __all__ = ["COLUMNS", "FLAGS", "INTEGER_COLUMNS", "MAX_NPZ_BYTES", "MAX_TIME", "MAX_TRIAL_ID",
            "MAX_VALUE", "MIN_STEP", "REFERENCE", "REQUIRED", "RESOLUTION", "STEP_TOLERANCE",
            "TrialChecker", "check_header", "check_limits", "fail", "float_problem",
-           "int_problem", "limit_of", "short", "simplest_rate"]
+           "int_problem", "limit_of", "on_grid", "short", "simplest_rate"]

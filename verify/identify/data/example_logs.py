@@ -14,9 +14,18 @@ measurement noise of ``MEASUREMENT_NOISE`` on the logged e and u.
 * ``nonpassive_human``: diagonal (0.5 s + 1)/(s^2 + s + 2), c12 = 1/20, c21 = -1/20
   (Re h(jw) = (2 - w^2/2)/|2 - w^2 + jw|^2 < 0 above w = 2 rad/s), at k_s = 2.5.
 
-Regenerate (byte for byte, given the same simulator) with
-``python -m verify.identify.data.example_logs [--out DIR]``; ``--check`` compares instead of
-writing and exits 1 on a difference.
+The logged e, u and d_r are written rounded to ``WRITTEN_DECIMALS`` = 6 decimals
+(1e-6 rad and rad/s, as a lab's logger would write them; the measurement noise is
+2e-3, so the rounding adds a quantisation noise of 3e-7 standard deviation, far below
+it). That is what makes the files the same on every machine: the simulation's last bits
+depend on the BLAS and the CPU's vector width (the values differed by up to 1.3e-15
+between two machines), and a difference that small changes a value rounded to 1e-6 only
+when the value lies within 1.3e-15 of a rounding boundary, which for the 3e5 written
+values has a probability of about 1e-3 per regeneration. The times are k / 120 s,
+computed exactly the same everywhere, and are written as computed.
+
+Regenerate (byte for byte) with ``python -m verify.identify.data.example_logs [--out DIR]``;
+``--check`` compares instead of writing and exits 1 on a difference.
 """
 
 from __future__ import annotations
@@ -27,15 +36,31 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from verify.identify.data.simulated_experiment import (
     MEASUREMENT_NOISE,
     OPERATOR_NOISE,
     simulate_experiment,
 )
+from verify.inputs.experiment import ExperimentLog, Trial
 from verify.inputs.experiment_log import write_log
 from verify.passivity.model import LTIModel, from_transfer_function
 
 LOGS = Path(__file__).resolve().parents[2] / "data" / "logs"
+#: Decimals of the written e, u and d_r (module docstring).
+WRITTEN_DECIMALS = 6
+
+
+def as_written(log: ExperimentLog, decimals: int = WRITTEN_DECIMALS) -> ExperimentLog:
+    """``log`` with e, u and the reference rounded to ``decimals`` decimals (times kept)."""
+
+    def rounded(x: np.ndarray | None) -> np.ndarray | None:
+        return None if x is None else np.round(x, decimals) + 0.0  # + 0.0: no -0.0
+
+    trials = tuple(Trial(tr.trial, tr.t, rounded(tr.e), rounded(tr.u), rounded(tr.reference),
+                         tr.valid, tr.start, tr.end) for tr in log.trials)
+    return ExperimentLog(trials, log.rate, log.source)
 
 
 @dataclass(frozen=True)
@@ -99,7 +124,7 @@ def generate(out: Path = LOGS, examples=EXAMPLES) -> list[Path]:
         log = simulate_experiment(ex.model(), k_s=ex.k_s, n=8, trials=12, trial_seconds=15.0,
                                   rate=120.0, operator_noise=OPERATOR_NOISE,
                                   measurement_noise=MEASUREMENT_NOISE, seed=ex.seed)
-        paths.append(write_log(log, out / f"{ex.name}.npz"))
+        paths.append(write_log(as_written(log), out / f"{ex.name}.npz"))
         toml = out / f"{ex.name}.toml"
         write_atomic(toml, ex.toml())
         paths.append(toml)

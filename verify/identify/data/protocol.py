@@ -50,13 +50,18 @@ identification and the last 6 for validation. :func:`prepare` does the same:
    after it, as in the protocol, where each trial begins at the reference change that
    ends the previous one. The estimator and the fits then carry the operator's state
    across the removed dead time (:func:`verify.identify.estimate.trial_data.dead_time_gaps`)
-   instead of starting such trials from rest; a note says so.
+   instead of starting such trials from rest; a note says so. A trial whose first sample
+   comes more than 1.5 steps after the previous trial's last one follows a *pause* in
+   the log (:func:`paused_trials`: a lab that stops between trials, often resetting the
+   loop); it is marked :attr:`Trial.resumed`, and its state is not carried over the
+   pause (a note names those trials).
 5. **Split.** The first ``split[0]`` trials (in log order) identify, the next ``split[1]``
    validate (Section 4: 6 and 6).
 """
 
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -117,6 +122,19 @@ def one_clock(trials: tuple[Trial, ...]) -> tuple[tuple[Trial, ...], int]:
             shifted += 1
         out.append(tr)
     return tuple(out), shifted
+
+
+def paused_trials(trials: tuple[Trial, ...]) -> tuple[bool, ...]:
+    """Per trial (on one clock), True if the log pauses before it: its first sample comes
+    more than 1.5 steps after the previous trial's last one (module docstring, step 4).
+    A log of the protocol has its trials back to back (the next trial begins at the
+    reference change one step after the last sample); a gap is a pause in logging (a
+    reset, a break), over which nothing about the operator's state is known."""
+    out = [False]
+    for prev, tr in itertools.pairwise(trials):
+        gap = float(tr.t[0] - prev.t[-1])
+        out.append(tr.trial != prev.trial and gap > 1.5 * prev.step)
+    return tuple(out[: len(trials)])
 
 
 def chosen_rate(log: ExperimentLog, target: float = AUTO_MAX_RATE) -> tuple[float, str]:
@@ -188,7 +206,7 @@ def _segments(trial: Trial, first: int) -> list[tuple[int, int]]:
                     strict=True))
 
 
-def _decimate(trial: Trial, a: int, b: int, q: int) -> Trial:
+def _decimate(trial: Trial, a: int, b: int, q: int, resumed: bool = False) -> Trial:
     t = trial.t[a:b]
     e, u = trial.e[a:b], trial.u[a:b]
     ref = None if trial.reference is None else trial.reference[a:b]
@@ -201,7 +219,7 @@ def _decimate(trial: Trial, a: int, b: int, q: int) -> Trial:
         ref = None if ref is None else ref[::q]
     return Trial(trial.trial, t.copy(), np.ascontiguousarray(e), np.ascontiguousarray(u),
                  reference=None if ref is None else ref.copy(),
-                 end=float(trial.t[b - 1] + trial.step))
+                 end=float(trial.t[b - 1] + trial.step), resumed=resumed)
 
 
 def anti_aliasing_filter(q: int) -> np.ndarray:
@@ -293,6 +311,12 @@ def prepare(
                      f"(split {a}:{b} of {len(trials)})")
     dead: list[float] = []
     parts: list[list[Trial]] = [[], []]
+    paused = paused_trials(trials)
+    if any(paused):
+        after = ", ".join(str(tr.trial) for tr, p in zip(trials, paused, strict=True) if p)
+        notes.append(f"the log pauses before trial(s) {after} (more than one step after "
+                     "the previous trial's last sample): the operator's state is not "
+                     "carried over a pause")
     for index, tr in enumerate(trials[: a + b]):
         if rule == "event":
             first = int(np.searchsorted(tr.t, tr.start - 1e-9 * tr.step))
@@ -308,7 +332,7 @@ def prepare(
                              f"{tr.t[s]:.4g} s dropped (shorter than the filter or the model "
                              "needs)")
                 continue
-            parts[0 if index < a else 1].append(_decimate(tr, s, e, q))
+            parts[0 if index < a else 1].append(_decimate(tr, s, e, q, paused[index]))
     if not parts[0]:
         raise VerifyInputError("no identification data left after the dead time, invalid "
                                "samples and short segments were removed; check the log's valid "

@@ -152,3 +152,39 @@ def simulate_experiment(
               f"trials x {trial_seconds:g} s at {rate:g} Hz, operator noise {operator_noise:g}, "
               f"measurement noise {measurement_noise:g}, reaction {lo:g}-{hi:g} s, seed {seed}")
     return ExperimentLog(out, rate, source)
+
+
+def simulate_paused_experiment(true_model, *, pauses: tuple[float, float] = (2.0, 5.0),
+                               trials: int = 12, trial_seconds: float = 15.0,
+                               rate: float = 120.0, seed: int = 0, **options) -> ExperimentLog:
+    """An experiment whose trials are separated by pauses in which the loop is reset.
+
+    A lab that stops between trials resets the simulator (bodies, leader and operator at
+    rest) and starts logging again after a pause. Each trial here is one run of
+    :func:`simulate_experiment` (one trial, from rest, seeded by ``seed`` and the trial's
+    index) placed on one clock with a pause uniform in ``pauses`` (s, whole sampling
+    steps) before it; the other ``options`` are those of :func:`simulate_experiment`.
+    The operator's state at a trial's first sample is then that of a fresh start, not
+    what the previous trial left.
+    """
+    rate = positive_real(rate, "rate")
+    lo, hi = (real(v, "pauses") for v in pauses)
+    if not 0 <= lo <= hi:
+        raise VerifyInputError(f"pauses must be (lo, hi) with 0 <= lo <= hi, got {pauses!r}")
+    if not (isinstance(trials, int) and trials >= 1):
+        raise VerifyInputError(f"trials must be a positive integer, got {trials!r}")
+    gaps = np.random.default_rng(np.random.SeedSequence([seed, 1])).uniform(lo, hi, trials)
+    out: list[Trial] = []
+    clock = 0
+    for k in range(trials):
+        trial_seed = int(np.random.SeedSequence([seed, 2, k]).generate_state(1)[0])
+        one = simulate_experiment(true_model, trials=1, trial_seconds=trial_seconds, rate=rate,
+                                  seed=trial_seed, **options).trials[0]
+        if k:
+            clock += round(gaps[k] * rate)
+        offset = clock / rate
+        out.append(Trial(k, one.t + offset, one.e, one.u, reference=one.reference,
+                         start=None if one.start is None else one.start + offset))
+        clock += one.t.shape[0]
+    return ExperimentLog(tuple(out), rate, f"simulated experiment with reset pauses "
+                         f"{lo:g}-{hi:g} s between {trials} trials, seed {seed}")

@@ -17,7 +17,11 @@ the trial's end (:attr:`verify.inputs.experiment.Trial.end`) and then coasted wi
 zero input over the rest of the dead time the protocol removed
 (:func:`verify.identify.estimate.trial_data.dead_time_gaps`), which is what the estimator and
 Section 4's fits use by default (:mod:`verify.identify.estimate.estimation`,
-:func:`verify.identify.quality.fits.honest_fits`); "zero" starts every trial at rest.
+:func:`verify.identify.quality.fits.honest_fits`); with "carry", a trial that is not
+carried (the first, or one after a pause) and begins mid-response has its initial state
+fitted as with "estimate" (``OutputData.free``,
+:func:`verify.identify.estimate.trial_data.fresh_starts`); "zero" starts every trial at
+rest.
 """
 
 from __future__ import annotations
@@ -145,7 +149,7 @@ def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None
         rows = slice(row, row + count)
         bases.append(rows)
         row += count
-        if data.initial != "estimate":
+        if not data.estimated(k):
             continue
         Q = np.linalg.qr(Xw[rows, p + k * n:p + (k + 1) * n])[0]
         Xp[rows] -= Q @ (Q.T @ Xp[rows])
@@ -155,9 +159,11 @@ def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None
     shared = np.linalg.lstsq(Xp / scale, yp, rcond=None)[0] / scale
     beta = np.zeros(X.shape[1])
     beta[:p] = shared
-    if data.initial != "estimate":
+    if not any(data.estimated(k) for k in range(len(bases))):
         return beta, yp - Xp @ shared, X
     for k, rows in enumerate(bases):
+        if not data.estimated(k):
+            continue
         F = Xw[rows, p + k * n:p + (k + 1) * n]
         beta[p + k * n:p + (k + 1) * n] = np.linalg.lstsq(F, yw[rows] - Xw[rows, :p] @ shared,
                                                           rcond=None)[0]
@@ -183,11 +189,15 @@ def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
     if initial not in INITIAL_STATES:
         raise ValueError(f"initial must be one of {', '.join(INITIAL_STATES)}, got {initial!r}")
     zeros = len(b) - 1
-    X = design(a, replace(data, initial=initial), zeros)
+    data = replace(data, initial=initial)
+    X = design(a, data, zeros)
     forced = X[:, : zeros + 1] @ np.asarray(b, float) + c * X[:, zeros + 1]
-    if initial != "estimate":
+    n = len(a)
+    columns = [col for k in range(len(data.y)) if data.estimated(k)
+               for col in range(zeros + 2 + k * n, zeros + 2 + (k + 1) * n)]
+    if not columns:
         return forced
-    F = X[:, zeros + 2:]
+    F = X[:, columns]
     y = np.concatenate(data.y)
     eta = np.linalg.lstsq(F, y - forced, rcond=None)[0]
     return forced + F @ eta

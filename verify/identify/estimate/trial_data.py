@@ -17,7 +17,8 @@ from verify.errors import VerifyInputError
 from verify.identify.estimate.structure import Structure
 from verify.inputs.experiment import Trial
 
-__all__ = ["OutputData", "check_trials", "dead_time_gaps", "output_data"]
+__all__ = ["MAX_CARRY_GAP", "MID_RESPONSE", "START_WINDOW", "OutputData", "check_trials",
+           "dead_time_gaps", "fresh_starts", "mid_response", "output_data"]
 
 
 @dataclass(frozen=True)
@@ -33,6 +34,8 @@ class OutputData:
     to the first of trial k, or None when trial k starts from rest
     (:func:`dead_time_gaps`). ``ahead[k]`` is how long after its last sample trial k's
     input still acts (one step unless the trial says otherwise, :attr:`Trial.end`).
+    ``free[k]`` (with "carry") says that trial k's initial state is estimated instead:
+    it starts neither from a carried state nor visibly at rest (:func:`mid_response`).
     """
 
     output: int
@@ -44,10 +47,16 @@ class OutputData:
     skip: int = 0
     gaps: tuple[float | None, ...] = ()
     ahead: tuple[float, ...] = ()
+    free: tuple[bool, ...] = ()
 
     @property
     def samples(self) -> int:
         return sum(len(y) for y in self.y)
+
+    def estimated(self, k: int) -> bool:
+        """True if trial k's initial state is a fitted parameter."""
+        return self.initial == "estimate" or (
+            self.initial == "carry" and k < len(self.free) and self.free[k])
 
 
 def check_trials(trials: Sequence[Trial], structure: Structure, *, what: str = "estimation"
@@ -109,6 +118,50 @@ def check_trials(trials: Sequence[Trial], structure: Structure, *, what: str = "
     return float(h)
 
 
+#: Longest gap (s) between trials over which the operator's state is carried: the
+#: longest dead time the protocol removes after a reference change (the threshold rule
+#: stops at 2 s; logged start events came 0.2-0.5 s after it in the simulated
+#: experiments), with a margin of 0.5 s. A longer gap is a pause: what the operator did
+#: in it is not in the log.
+MAX_CARRY_GAP = 2.5
+#: Mid-response start: the mean of u over the first ``START_WINDOW`` seconds of a trial
+#: reaches ``MID_RESPONSE`` of the largest such mean over the trial (:func:`mid_response`).
+START_WINDOW = 0.25
+MID_RESPONSE = 0.5
+
+
+def mid_response(trial: Trial) -> float:
+    """How far into a response trial ``trial`` begins: the size of u averaged over its
+    first ``START_WINDOW`` seconds relative to the largest such average over the trial
+    (0: at rest, 1: at the peak).
+
+    A trial of the protocol begins at the operator's start event, before the response
+    (or continues a previous trial whose state is carried); one that begins with u
+    already at ``MID_RESPONSE`` (30 %) of its largest moving average was logged from the
+    middle of a response, and starting its model from rest (or from a state coasted
+    over a pause) would explain that response with the wrong parameters.
+    """
+    u = np.asarray(trial.u, float)
+    t = np.asarray(trial.t, float)
+    if u.shape[0] < 2:
+        return 0.0
+    h = float(t[1] - t[0])
+    width = min(max(1, round(START_WINDOW / h)), u.shape[0])
+    csum = np.cumsum(np.vstack([np.zeros((1, u.shape[1])), u]), axis=0)
+    means = np.linalg.norm((csum[width:] - csum[:-width]) / width, axis=1)
+    peak = float(np.max(means))
+    return float(means[0] / peak) if peak > 0 else 0.0
+
+
+def fresh_starts(trials: Sequence[Trial]) -> tuple[bool, ...]:
+    """Per trial, True if its initial state must be estimated: it is not carried
+    (:func:`dead_time_gaps` gives None: the first trial, a segment after invalid samples,
+    a trial after a pause) and it begins mid-response (:func:`mid_response`)."""
+    gaps = dead_time_gaps(trials)
+    return tuple(g is None and mid_response(tr) >= MID_RESPONSE
+                 for tr, g in zip(trials, gaps, strict=True))
+
+
 def dead_time_gaps(trials: Sequence[Trial]) -> tuple[float | None, ...]:
     """Per trial, the dead time (s) since the previous trial's last sample, or None.
 
@@ -118,14 +171,20 @@ def dead_time_gaps(trials: Sequence[Trial]) -> tuple[float | None, ...]:
     continues the previous one when its trial id differs from the previous one's (the
     segments of one trial split at invalid samples do not: what the operator did
     during those samples is unknown) and its first sample comes later than the
-    previous trial's last one (logs whose trials restart the clock do not). Otherwise,
-    and for the first trial, None: the trial starts from rest.
+    previous trial's last one (logs whose trials restart the clock do not), the log did
+    not pause before it (:attr:`Trial.resumed`, set by the protocol's preparation when
+    the raw trials are not back to back: a lab that pauses usually resets the loop to
+    rest), and by at most ``MAX_CARRY_GAP`` (for trials that did not come through the
+    protocol: a longer gap than any dead time is a pause). Otherwise, and for the first trial,
+    None: the trial starts from rest, or from an estimated state when it begins
+    mid-response (:func:`fresh_starts`).
     """
     out: list[float | None] = [None] * len(trials)
     for k in range(1, len(trials)):
         prev, cur = trials[k - 1], trials[k]
         gap = float(np.asarray(cur.t, float)[0] - np.asarray(prev.t, float)[-1])
-        if cur.trial != prev.trial and np.isfinite(gap) and gap > 0:
+        if (cur.trial != prev.trial and not getattr(cur, "resumed", False)
+                and np.isfinite(gap) and 0 < gap <= MAX_CARRY_GAP):
             out[k] = gap
     return tuple(out)
 
@@ -145,4 +204,5 @@ def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "es
         dead_time_gaps(trials),
         tuple(h if tr.end is None else max(float(tr.end - np.asarray(tr.t, float)[-1]), 0.0)
               for tr in trials),
+        fresh_starts(trials),
     )

@@ -25,7 +25,10 @@ from scipy.stats import chi2
 
 from verify.errors import VerifyInputError
 from verify.identify.data.protocol import prepare
-from verify.identify.data.simulated_experiment import simulate_experiment
+from verify.identify.data.simulated_experiment import (
+    simulate_experiment,
+    simulate_paused_experiment,
+)
 from verify.identify.estimate.estimation import estimate_model
 from verify.identify.estimate.prediction import predict
 from verify.identify.estimate.structure import Structure
@@ -80,8 +83,14 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
               methods: Sequence[str] = ("riv+pem",), k_s: float = 3.0, n: int = 8,
               trials: int = 6, trial_seconds: float = 15.0, rate: float = 120.0,
               out_rate: float | str | None = None, operator_noise: float | None = None,
-              measurement_noise: float | None = None, progress=None, jobs: int = 1) -> Study:
+              measurement_noise: float | None = None, pauses: tuple[float, float] | None = None,
+              progress=None, jobs: int = 1) -> Study:
     """Simulate, prepare and estimate once per seed (module docstring).
+
+    ``rate`` is the loop and logging rate (Hz), ``out_rate`` the protocol's rate after
+    decimation; ``pauses`` (lo, hi) seconds separates the trials by pauses in which the
+    loop is reset to rest
+    (:func:`verify.identify.data.simulated_experiment.simulate_paused_experiment`).
 
     ``jobs`` > 1 runs the seeds in that many processes; each repetition depends on its
     seed alone, so the study is the same as with one job.
@@ -93,7 +102,8 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
     if measurement_noise is not None:
         extra["measurement_noise"] = measurement_noise
     settings = dict(methods=tuple(methods), k_s=k_s, n=n, trials=trials,
-                    trial_seconds=trial_seconds, rate=rate, out_rate=out_rate, extra=extra)
+                    trial_seconds=trial_seconds, rate=rate, out_rate=out_rate, extra=extra,
+                    pauses=pauses)
     reps: dict[int, Repetition] = {}
     if jobs > 1:
         from concurrent.futures import ProcessPoolExecutor
@@ -115,11 +125,17 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
 
 def repetition(theta_true: np.ndarray, seed: int, *, methods: tuple[str, ...], k_s: float,
                n: int, trials: int, trial_seconds: float, rate: float,
-               out_rate: float | str | None, extra: dict) -> Repetition:
+               out_rate: float | str | None, extra: dict,
+               pauses: tuple[float, float] | None = None) -> Repetition:
     """One seeded experiment of :func:`run_study`."""
     structure = Structure.paper()
-    log = simulate_experiment(true_model(theta_true), k_s=k_s, n=n, trials=trials,
-                              trial_seconds=trial_seconds, rate=rate, seed=seed, **extra)
+    if pauses is None:
+        log = simulate_experiment(true_model(theta_true), k_s=k_s, n=n, trials=trials,
+                                  trial_seconds=trial_seconds, rate=rate, seed=seed, **extra)
+    else:
+        log = simulate_paused_experiment(true_model(theta_true), pauses=pauses, k_s=k_s, n=n,
+                                         trials=trials, trial_seconds=trial_seconds,
+                                         rate=rate, seed=seed, **extra)
     data = prepare(log, rate=out_rate, split=(trials, 0)).identification
     clean = predict(structure, theta_true, data)
     rep = Repetition(seed)

@@ -8,7 +8,11 @@
   trials in log order, the first trial from rest and each later one from the state the
   model left the previous one in (coasted over the dead time between them, or from rest
   when the trials do not follow on, :func:`verify.identify.estimate.trial_data.dead_time_gaps`).
-  That is the only fit the command reports and decides with.
+  The one exception is a trial that begins mid-response after a pause or at the log's
+  start (:func:`verify.identify.estimate.trial_data.fresh_starts`): its initial state is
+  fitted, since neither rest nor a carried state is what the operator was in; the
+  command's warning names such trials. That is the only fit the command reports and
+  decides with.
 * Residual tests are diagnostics: they are reported, never a reason to stop. A test that
   cannot be computed (e.g. a noise-free input that does not vary enough at the tested
   lags, or an identically zero residual) is reported as not computed, with the reason.

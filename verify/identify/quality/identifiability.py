@@ -8,9 +8,22 @@ certified:
 
 1. **Does the model explain the validation data?** The honest validation fit of each
    output (Section 4's fit ratio of the model simulated on the logged input,
-   :func:`verify.identify.quality.fits.honest_fits`) must beat both the zero model (which
-   predicts u = 0) and the mean of the output: fit > ``MIN_FIT`` = 0 %. A model that
-   does worse than a constant describes nothing of the operator.
+   :func:`verify.identify.quality.fits.honest_fits`) must reach ``MIN_FIT`` = 3 %:
+   the model's error on the validation data at most 97 % of the output's spread about
+   its mean. Merely beating the zero model and the mean (fit > 0 %, the earlier rule)
+   let a 2.8 % fit through, a short noisy session whose estimate had b1 = -410 against
+   a true 1.2. The threshold comes from the fits correct models reach on simulated
+   closed-loop experiments in the paper's protocol (``benchmarks/bench_identify_coverage.py``,
+   fit ratio on the noisy data; 10 seeds per setting): lowest over outputs and seeds
+   11.6 % at 20 Hz, 10.0 % at 50 Hz, 9.3 % at 120 Hz, 9.5 % at 250 Hz and 4.9 % at
+   120 Hz with reset pauses between trials (the operator's noise on u is large against
+   a small response there), while the fit of those models on noise-free data was above
+   90 %. A fit ratio on noisy data measures
+   the noise as much as the model, so it cannot separate a wrong model from a right one
+   in a noisy session: 3 % sits below every correct model measured and above the wrong
+   one of the report, a narrow gap. The question is a floor against models that explain
+   almost nothing; the region's width and the robust verdict (inconclusive for such a
+   session) are what keep a noisy session from a wrong answer.
 2. **Is the estimate an interior, stable point?** Every denominator coefficient must lie
    strictly inside the search box of :func:`verify.identify.estimate.pem.denominator_bounds`
    (the poles in the open left half-plane, no coefficient within ``BOUND_MARGIN`` of
@@ -69,7 +82,7 @@ __all__ = [
     "roughness",
 ]
 
-MIN_FIT = 0.0  # %, honest validation fit each output must exceed
+MIN_FIT = 3.0  # %, honest validation fit each output must reach (module docstring)
 BOUND_MARGIN = 1e-3  # relative distance to the search box's upper bound
 LOWER_MARGIN = 1e-6  # a coefficient below this fraction of its own scale is a_k = 0
 MAX_CONDITION = 1e6  # of the parameters' correlation matrix (measured: 1e2-4e2)
@@ -182,10 +195,12 @@ def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[
     reasons = []
     fits = [float(x) for x in fit_validation]
     for i, fit in enumerate(fits):
-        if not fit > MIN_FIT:
+        if not fit >= MIN_FIT:
+            worse = " (no better than predicting the output's mean or zero)" if fit <= 0 else ""
             reasons.append(f"output {i + 1}: the model simulated on the validation input fits "
-                           f"{fit:.2f} %, no better than predicting the output's mean or "
-                           "zero")
+                           f"{fit:.2f} %{worse}, below the {MIN_FIT:g} % a model must explain "
+                           "of the operator's output; the response is buried in noise: log "
+                           "longer or less noisy trials")
     reasons += interior(estimate, h)
     cond = condition_number(estimate.covariance)
     if not cond <= MAX_CONDITION:
