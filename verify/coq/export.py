@@ -26,8 +26,9 @@ BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
 #: Certificate kinds not exported, with the reason (shown in the README and the list).
 NOT_EXPORTED_REASONS: dict[str, str] = {
     "verify-sos-certificate/1":
-        "SOS certificate of a derivation step: exported with the step it proves (the "
-        "paper's derivation units), not as a certificate unit",
+        "SOS certificate of a derivation step: not exported yet (checked by the Python "
+        "exact checker only); the same inequality is kernel-checked through its "
+        "hand-written terms in the paper's derivation units",
     "verify-band-fd-certificate/1":
         "exact-band certificate (polynomial non-negativity on an interval from Descartes "
         "and breakpoint data): not exported yet; checked by the Python exact checker only",
