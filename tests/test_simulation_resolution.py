@@ -139,7 +139,7 @@ def test_large_ks_sweep_rows_hold_nothing_unresolved(tmp_path):
         assert by_ks[k]["engine"].startswith("adaptive")
         assert UNRESOLVED not in {by_ks[k][column(p)] for p in PROPERTIES}
     text = render_markdown(build_blocks(Campaign(spec, runs, rows))[0])
-    assert text.count("0/1 held; 1 UNRESOLVED (integration)") == len(PROPERTIES)
+    assert text.count("held in 0 of 1; 1 unresolved (integration)") == len(PROPERTIES)
     assert "## Runs the integration did not resolve (1)" in text
     assert "adaptive rtol=1e-07 2" in text and "none 1" in text
 
@@ -188,8 +188,9 @@ def test_report_shows_conclusions_held_without_the_assumption(tmp_path):
     assert anyway >= 1  # the reconstructed model converges in these runs
     text = render_markdown(build_blocks(Campaign(spec, runs, rows))[0])
     assert "## What held outside the assumptions" in text
-    assert f"conclusion held without the assumption in {anyway} of 2" in text
-    assert f"| lasalle | reconstructed k_s = 2.5 [not passive] | 2 | {anyway} (k_s 3)" in text
+    assert f"outside the assumptions in all 2: conclusion held in {anyway}" in text
+    assert f"| lasalle | reconstructed k_s = 2.5 [not passive] | 2 | {anyway}, at k_s = 3 |" \
+        in text
 
 
 # ---------------------------------------------------------------- attacks on "resolved"

@@ -459,8 +459,8 @@ def ofp_index(model: LTIModel) -> IndexBounds:
                          "larger, up to +∞")
             estimate = None
     else:
-        notes.append("the SDP found no feasible ρ in its range [-10⁶, 10⁶] (with a storage "
-                     "P > 0, OFP(ρ) needs the loop u = ρ y to be stable)")
+        notes.append("the SDP found no feasible ρ in its range [-1000000, 1000000] (with a "
+                     "storage P > 0, OFP(ρ) needs the loop u = ρ y to be stable)")
     omega = propose(_ofp_witness_frequency, model, default=math.inf)
     upper, best = None, None
     for w in [None, *_frequencies(omega)]:
