@@ -17,6 +17,7 @@ from __future__ import annotations
 import ctypes
 import os
 import resource
+import sys
 
 _MS_RDONLY = 1
 _MS_NOSUID = 2
@@ -151,11 +152,38 @@ def _drop_capabilities(libc: ctypes.CDLL) -> None:
         raise ConfineError("capabilities are left after dropping them")
 
 
+def _needed_under_private() -> list[str]:
+    """The folders the file's Python needs that lie below a private folder (a checkout
+    or a virtual environment under /tmp, say): the interpreter's prefixes, the import
+    path and the project holding this package. They are shown again, read-only, inside
+    the private folder; nothing else of the shared folder is."""
+    project = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
+    candidates = {sys.prefix, sys.base_prefix, sys.exec_prefix, project,
+                  os.path.dirname(os.path.dirname(os.path.realpath(sys.executable))),
+                  os.path.dirname(sys.executable), *sys.path}
+    below = sorted({os.path.realpath(c) for c in candidates if c and os.path.isdir(c)
+                    and any(os.path.realpath(c).startswith(p + "/") for p in PRIVATE)})
+    return [c for c in below if not any(c.startswith(k + "/") for k in below if k != c)]
+
+
+def _show_again(libc: ctypes.CDLL, kept: list[tuple[str, int]]) -> None:
+    """Bind each kept folder (opened before the private folders hid it) back to its own
+    path, read-only."""
+    for path, fd in kept:
+        os.makedirs(path, exist_ok=True)
+        _mount(libc, f"/proc/self/fd/{fd}", path, None, _MS_BIND, None,
+               f"show {path} again")
+        os.close(fd)
+        _remount_read_only(libc, path)
+
+
 def confine(max_processes: int) -> None:
     """Make this namespace's view of the file systems read-only, lay private empty
     folders over the shared ones, limit the namespace's processes and drop every
     capability. Raises ConfineError if any part fails (the file must then not run)."""
     libc = _libc()
+    kept = [(path, os.open(path, os.O_PATH | os.O_DIRECTORY))
+            for path in _needed_under_private()]
     for point in mount_points():
         if point in PRIVATE:
             continue
@@ -166,6 +194,7 @@ def confine(max_processes: int) -> None:
     for point in PRIVATE:
         if point != "/tmp":
             _private(libc, point)
+    _show_again(libc, kept)
     for point in mount_points():  # nothing writable is left but the private folders
         if point in PRIVATE or point.startswith("/proc"):
             continue
