@@ -19,6 +19,7 @@ from verify.coq.kyp import (
     matrix_literal,
     module_name,
     q_literal,
+    read_bound_certificate,
     terms_literal,
 )
 from verify.coq.unit import CoqUnit
@@ -33,19 +34,8 @@ THEOREM = "passive_on_band"
 
 def gkyp_unit_from_file(path: Path) -> CoqUnit:
     """The unit of a stored band (GKYP) certificate, after its binding is checked."""
-    from verify.passivity.io.strict_json import CertificateFormatError, read_strict
-
     path = Path(path)
-    try:
-        data = read_strict(path)
-        if data.get("schema") not in (cf.BAND_V1, cf.BAND_V2):
-            raise CoqExportError(f"{path.name}: not a band certificate")
-        cert = cf.parse_band(data)
-    except CertificateFormatError as exc:
-        raise CoqExportError(f"{path.name}: {exc}") from None
-    error, _note = cf.check_binding(cert, path)
-    if error is not None:
-        raise CoqExportError(f"{path.name}: not exported: {error}")
+    cert = read_bound_certificate(path, (cf.BAND_V1, cf.BAND_V2), cf.parse_band, "band")
     assert cert.claim.band is not None and cert.Q is not None
     model, (w1, w2), margin = cert.model, cert.claim.band, cert.claim.margin
     n, m = model.n, model.m

@@ -24,10 +24,12 @@ or for which no witness is found; it never writes a unit that states something e
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from fractions import Fraction
 from functools import reduce
 from math import lcm
 from pathlib import Path
+from typing import Any
 
 from gmpy2 import mpq
 
@@ -167,22 +169,31 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
     return CoqUnit(name, "\n".join(lines), (THEOREM,), origin)
 
 
-def kyp_unit_from_file(path: Path) -> CoqUnit:
-    """The unit of a stored KYP certificate file, after its binding is checked."""
+def read_bound_certificate(path: Path, schemas: tuple[str, ...],
+                           parse: Callable[[dict], Any], kind: str) -> Any:
+    """A stored certificate of one of ``schemas``, parsed strictly and bound to its model
+    file (fingerprint, file name, statement re-derived); one-line CoqExportError if not."""
     from verify.passivity.io.strict_json import CertificateFormatError, read_strict
 
     path = Path(path)
     try:
         data = read_strict(path)
-        if data.get("schema") not in (cf.KYP_V1, cf.KYP_V2):
-            raise CoqExportError(f"{path.name}: not a KYP certificate "
+        if data.get("schema") not in schemas:
+            raise CoqExportError(f"{path.name}: not a {kind} certificate "
                                  f"(schema {data.get('schema')!r})")
-        cert = cf.parse_kyp(data)
+        cert = parse(data)
     except CertificateFormatError as exc:
         raise CoqExportError(f"{path.name}: {exc}") from None
     error, _note = cf.check_binding(cert, path)
     if error is not None:
         raise CoqExportError(f"{path.name}: not exported: {error}")
+    return cert
+
+
+def kyp_unit_from_file(path: Path) -> CoqUnit:
+    """The unit of a stored KYP certificate file, after its binding is checked."""
+    path = Path(path)
+    cert = read_bound_certificate(path, (cf.KYP_V1, cf.KYP_V2), cf.parse_kyp, "KYP")
     try:
         return kyp_unit(module_name(path.name), model=cert.model, P=cert.P,  # type: ignore[arg-type]
                         margin=cert.claim.margin, label=cert.name, source=cert.source,
