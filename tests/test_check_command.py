@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -100,3 +101,16 @@ def test_user_certificates_default_to_the_git_ignored_build_folder():
     assert args.certificates == GATE_CERTIFICATES and GATE_CERTIFICATES.parts[0] == "build"
     ignored = (Path(__file__).resolve().parents[1] / ".gitignore").read_text().split()
     assert "build/" in ignored
+
+
+def test_a_fifo_or_folder_named_like_a_derivation_file_is_refused_for_what_it_is(
+        tmp_path, capsys):
+    """Opening a FIFO for the front end must not block, and it is not "missing"."""
+    fifo = tmp_path / "pipe.py"
+    os.mkfifo(fifo)
+    folder = tmp_path / "folder.py"
+    folder.mkdir()
+    for path, kind in ((fifo, "is a FIFO"), (folder, "is a directory")):
+        assert main(["check", str(path), "--unsandboxed"]) == 2
+        err = capsys.readouterr().err
+        assert kind in err and len(err.strip().splitlines()) == 1, err

@@ -23,7 +23,6 @@ import json
 import os
 import select
 import signal
-import stat
 import subprocess
 import sys
 import time
@@ -31,6 +30,7 @@ from pathlib import Path
 
 import verify
 from verify.errors import VerifyInputError
+from verify.inputs.files import open_regular
 from verify.proof import sandbox
 from verify.proof.budget import DEFAULT_BUDGET, Budget
 from verify.proof.derivation import Derivation
@@ -65,14 +65,18 @@ def dumpable_off() -> None:
     ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0)  # PR_SET_DUMPABLE, libc's
 
 
+def _read_bounded(path: Path, limit: int) -> bytes:
+    """At most ``limit + 1`` bytes of a regular file (opened without blocking, so a FIFO
+    or a device is refused at once: :func:`verify.inputs.files.open_regular`)."""
+    with open_regular(path) as f:
+        try:
+            return f.read(limit + 1)
+        except OSError as exc:
+            raise VerifyInputError(f"{path}: cannot be read ({exc.strerror})") from None
+
+
 def _read_source(path: Path) -> bytes:
-    try:
-        with open(path, "rb") as f:
-            if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
-                raise VerifyInputError(f"{path}: not a regular file")
-            source = f.read(MAX_SOURCE_BYTES + 1)
-    except OSError as exc:
-        raise VerifyInputError(f"{path}: cannot be read ({exc.strerror})") from None
+    source = _read_bounded(path, MAX_SOURCE_BYTES)
     if len(source) > MAX_SOURCE_BYTES:
         raise VerifyInputError(f"{path}: a derivation file has at most {MAX_SOURCE_BYTES} "
                                "bytes")
@@ -96,7 +100,7 @@ def run_front_end(path: Path, *, budget: Budget = DEFAULT_BUDGET,
     if path.suffix != ".py":
         raise VerifyInputError(f"{path}: a derivation file is a Python file (.py) or its "
                                "data (.json)")
-    if not path.is_file():
+    if not path.exists():  # what else it is (a FIFO, a device) the bounded read says
         raise VerifyInputError(f"{path}: no such file")
     if sandboxed:
         why = sandbox.unavailable()
@@ -152,14 +156,7 @@ def read_data_file(path: Path) -> list[Derivation]:
     """Derivations from a data file (``verify-derivations/1``, as ``--emit`` writes it):
     read with a size bound, never executed. A FIFO, a device or a file past the bound
     is refused without blocking."""
-    try:
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0))
-    except OSError as exc:
-        raise VerifyInputError(f"{path}: cannot be read ({exc.strerror})") from None
-    with os.fdopen(fd, "rb") as f:
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            raise VerifyInputError(f"{path}: not a regular file")
-        raw = f.read(LIMITS["bytes"] + 1)
+    raw = _read_bounded(path, LIMITS["bytes"])
     if len(raw) > LIMITS["bytes"]:
         raise VerifyInputError(f"{path}: derivations data larger than {LIMITS['bytes']} "
                                "bytes")
