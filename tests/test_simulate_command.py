@@ -134,7 +134,7 @@ def test_progress_rule_is_shared_with_campaigns():
     import io
 
     from verify.campaign.progress import CampaignProgress
-    from verify.sim.terminal import progress_wanted
+    from verify.progress import progress_wanted
 
     class Tty(io.StringIO):
         def isatty(self) -> bool:

@@ -2,7 +2,7 @@
 
 Written on stderr and redrawn in place on a terminal (at most a few times a second);
 elsewhere only when asked (``--progress``), as a new line every tenth of the runs, and
-never when asked to be quiet (:func:`verify.sim.terminal.progress_wanted`, the rule of
+never when asked to be quiet (:func:`verify.progress.progress_wanted`, the rule of
 ``verify simulate`` too). The time left is
 the mean wall time per run finished in this session times the runs still to do (runs
 found in the store from an earlier session are counted as done but not timed).
@@ -14,7 +14,7 @@ import sys
 import time
 from typing import TextIO
 
-from verify.sim.terminal import is_terminal, progress_wanted
+from verify.progress import is_terminal, progress_wanted
 
 
 def clock(seconds: float) -> str:

@@ -17,6 +17,7 @@ import numpy as np
 from verify.errors import VerifyInputError
 from verify.inputs.numbers import positive_real, real
 from verify.inputs.time_grid import step_count
+from verify.progress import is_terminal, progress_wanted
 from verify.sim.energy import energy
 from verify.sim.humans import Human, LTIHuman, StaticGainHuman, VROperator
 from verify.sim.inputs import Reference, autonomous_input
@@ -25,7 +26,6 @@ from verify.sim.properties import largest_rise
 from verify.sim.resolution import stable_step, step_is_stable
 from verify.sim.run import simulate
 from verify.sim.scenario import Scenario
-from verify.sim.terminal import is_terminal, progress_wanted
 from verify.so3 import exp, orthogonality_error
 
 SWITCH_PERIOD = 15.0  # s, the reference changes in the paper's experiment (Section 4)
@@ -118,7 +118,7 @@ def _ball(rng: np.random.Generator, count: int, radius: float) -> np.ndarray:
 
 class ProgressBar:
     """A one-line progress bar on stderr (redrawn on a terminal, every 10% otherwise;
-    shown only where :func:`verify.sim.terminal.progress_wanted` says so)."""
+    shown only where :func:`verify.progress.progress_wanted` says so)."""
 
     def __init__(self, seconds: float, stream=None) -> None:
         self.seconds = seconds
