@@ -14,6 +14,8 @@ as soon as the step is done.
 
 from __future__ import annotations
 
+import contextlib
+import os
 import signal
 import threading
 from collections.abc import Iterator
@@ -89,4 +91,40 @@ def deferred_stop() -> Iterator[None]:
                 raise KeyboardInterrupt  # the signal outranks an error of the block
 
 
-__all__ = ["STOP_SIGNALS", "StopSignals", "deferred_stop"]
+
+
+def child_processes(pid: int | None) -> list[int]:
+    """The processes whose parent is ``pid``: the kernel's children list of each of its
+    threads (``/proc/PID/task/TID/children``), or, on a kernel without those lists, a
+    scan of ``/proc/*/stat`` for live processes with that parent; empty without /proc."""
+    if pid is None:
+        return []
+    try:
+        tasks = os.listdir(f"/proc/{pid}/task")
+    except OSError:
+        return []
+    found: list[int] = []
+    for tid in tasks:
+        try:
+            with open(f"/proc/{pid}/task/{tid}/children", encoding="ascii") as f:
+                found.extend(int(p) for p in f.read().split())
+        except FileNotFoundError:
+            return _children_by_scan(pid)  # the kernel keeps no children lists
+        except (OSError, ValueError):
+            continue  # the thread ended meanwhile
+    return found
+
+
+def _children_by_scan(pid: int) -> list[int]:
+    found = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            with contextlib.suppress(OSError, IndexError, ValueError):
+                with open(f"/proc/{entry}/stat") as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+                if int(fields[1]) == pid and fields[0] != "Z":
+                    found.append(int(entry))
+    return found
+
+
+__all__ = ["STOP_SIGNALS", "StopSignals", "child_processes", "deferred_stop"]

@@ -27,6 +27,7 @@ from verify.claims.model import (
     Verdict,
 )
 from verify.claims.registry import REGISTRY
+from verify.stopping import child_processes
 
 
 @dataclass(frozen=True)
@@ -151,7 +152,7 @@ def stop_pool(pool, grace: float = 2.0) -> None:
             if w.is_alive():
                 w.kill()
                 w.join(1.0)
-    for child in _children(getattr(forkserver._forkserver, "_forkserver_pid", None)):
+    for child in child_processes(getattr(forkserver._forkserver, "_forkserver_pid", None)):
         with contextlib.suppress(OSError):  # a worker still being started
             os.kill(child, signal.SIGKILL)
     _stop_helper(forkserver._forkserver, "_forkserver_pid", "_forkserver_alive_fd", grace)
@@ -159,21 +160,6 @@ def stop_pool(pool, grace: float = 2.0) -> None:
     # of its pipe, so it ends as this process exits, after the pool's semaphores are
     # released here (stopped earlier, it would release them first, and each release at
     # exit would print a traceback).
-
-
-def _children(pid: int | None) -> list[int]:
-    """The live child processes of ``pid`` (Linux /proc; empty elsewhere)."""
-    if pid is None or not os.path.isdir("/proc"):
-        return []
-    found = []
-    for entry in os.listdir("/proc"):
-        if entry.isdigit():
-            with contextlib.suppress(OSError, IndexError, ValueError):
-                with open(f"/proc/{entry}/stat") as f:
-                    fields = f.read().rsplit(")", 1)[1].split()
-                if int(fields[1]) == pid and fields[0] != "Z":
-                    found.append(int(entry))
-    return found
 
 
 def _stop_helper(owner, pid_name: str, fd_name: str, grace: float) -> None:

@@ -37,6 +37,7 @@ from verify.proof.derivation import Derivation
 from verify.proof.expr import ProofSyntaxError
 from verify.proof.rebuild import loads
 from verify.proof.wire import LIMITS
+from verify.stopping import child_processes
 
 
 def _limits(budget: Budget):
@@ -276,7 +277,7 @@ def _kill(proc: subprocess.Popen, sandboxed: bool) -> None:
         # was reaped, which the kernel does only once every process of the namespace died
         give_up = time.monotonic() + 10
         while proc.poll() is None and time.monotonic() < give_up:
-            for pid in sandbox.children(proc.pid):
+            for pid in child_processes(proc.pid):
                 try:
                     os.kill(pid, signal.SIGKILL)
                 except (ProcessLookupError, PermissionError):

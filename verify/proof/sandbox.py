@@ -29,6 +29,7 @@ import sys
 from pathlib import Path
 
 import verify
+from verify.stopping import child_processes
 
 #: The file's processes at most (its first process included).
 MAX_PROCESSES = 16
@@ -97,22 +98,6 @@ def _mode() -> tuple[str, str]:
     return "", why
 
 
-def children(pid: int) -> list[int]:
-    """The processes whose parent is ``pid`` (every thread's list)."""
-    out: list[int] = []
-    try:
-        tasks = os.listdir(f"/proc/{pid}/task")
-    except OSError:
-        return out
-    for tid in tasks:
-        try:
-            with open(f"/proc/{pid}/task/{tid}/children", encoding="ascii") as f:
-                out.extend(int(p) for p in f.read().split())
-        except (OSError, ValueError):
-            continue
-    return out
-
-
 def tree(root: int) -> list[int]:
     """``root`` and every process below it (a process that moved out of the tree, by
     dying or being re-parented, is not counted; in a PID namespace orphans are
@@ -123,7 +108,7 @@ def tree(root: int) -> list[int]:
         if pid in seen:
             continue
         seen.append(pid)
-        todo.extend(children(pid))
+        todo.extend(child_processes(pid))
     return seen
 
 
@@ -140,5 +125,5 @@ def resident_bytes(pids: list[int]) -> int:
     return total
 
 
-__all__ = ["MAX_PROCESSES", "as_nobody", "children", "prefix", "resident_bytes", "tree",
+__all__ = ["MAX_PROCESSES", "as_nobody", "prefix", "resident_bytes", "tree",
            "unavailable"]
