@@ -15,6 +15,7 @@ import stat
 from pathlib import Path
 from typing import BinaryIO
 
+from verify.artefacts.atomic import kind_of
 from verify.errors import VerifyInputError
 
 #: Default bound on a file read whole (model files, specs, certificates): 16 MiB, far
@@ -43,12 +44,8 @@ def open_regular(path: str | Path, *, where: str | None = None,
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
-            kind = ("a directory" if stat.S_ISDIR(info.st_mode) else
-                    "a FIFO (named pipe)" if stat.S_ISFIFO(info.st_mode) else
-                    "a device" if stat.S_ISCHR(info.st_mode) or stat.S_ISBLK(info.st_mode)
-                    else "a socket" if stat.S_ISSOCK(info.st_mode) else "not a regular file")
-            raise VerifyInputError(f"{where}: is {kind}, not a regular file; give the path "
-                                   "of a file on disk")
+            raise VerifyInputError(f"{where}: is {kind_of(info.st_mode)}, not a regular "
+                                   "file; give the path of a file on disk")
         if max_bytes is not None and info.st_size > max_bytes:
             raise VerifyInputError(f"{where}: the file has {_size_text(info.st_size)}, above "
                                    f"the limit of {_size_text(max_bytes)} for this kind of "
