@@ -147,3 +147,12 @@ def test_a_witness_value_is_written_exactly_or_said_to_be_rounded():
     assert long.data["value"] == "-93841234567/1000000000000"
     bound = Fraction(-9386, 100000)  # rounded to nearest: -0.0939, below the bound
     assert _rounded_up(bound) == "-0.0938" and Fraction("-0.0938") >= bound
+
+
+def test_a_written_double_hyphen_is_not_set_as_an_en_dash_in_latex():
+    """A flag such as --check keeps both hyphens in LaTeX; en and em dashes stay dashes."""
+    from verify.report.mathtex import latex_text
+
+    assert latex_text("verify coq --check") == "verify coq -{}-check"
+    assert latex_text("Sections 2–4 — done") == "Sections 2--4 --- done"
+    assert latex_text("---") == "-{}-{}-"

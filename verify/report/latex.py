@@ -322,7 +322,7 @@ def render_latex(run: RunResult) -> str:
              "the certificates are re-checked with no solver by "
              r"\texttt{verify certificates check}, and every verified step of Lemma~1 and "
              r"Theorem~1 and the KYP certificate are re-checked by Coq's kernel "
-             r"(\texttt{verify coq --check})."]
+             r"(\texttt{verify coq -{}-check})."]
     for section, results in sections(run.results):
         lines.append(r"\subsection*{Section " + latex_text(section) + "}")
         lines += _summary_table(results)

@@ -110,11 +110,16 @@ def _is_letter(ch: str) -> bool:
     return bool(_LETTER.fullmatch(ch))
 
 
+_EN, _EM = "\x1c", "\x1d"  # an en and an em dash inside latex_text
+
+
 def latex_text(text: str) -> str:
     """``text`` as LaTeX text mode (special characters escaped, ASCII only); a word with
     characters beyond ASCII (a stray ``ξ``, ``Ṡ_rl``) is set as a formula."""
     words = []
-    text = text.replace("—", "---").replace("–", "--").replace("’", "'").replace("‘", "'")
+    # the dashes become markers that stay ASCII words, set as -- and --- below, so that
+    # a written double hyphen (a flag such as --check) is kept apart from them
+    text = text.replace("—", _EM).replace("–", _EN).replace("’", "'").replace("‘", "'")
     text = text.replace("\u00a0", " ").replace("≈", "~")
     for word in text.split(" "):
         core = word.rstrip(_TRAIL + ")")
@@ -140,10 +145,12 @@ def _escape_ascii(text: str) -> str:
             out.append(r"\textasciitilde{}")
         elif ch in "<>|":
             out.append({"<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}"}[ch])
-        elif ch == "—":
+        elif ch in ("—", _EM):
             out.append("---")
-        elif ch == "–":
+        elif ch in ("–", _EN):
             out.append("--")
+        elif ch == "-" and out and out[-1].endswith("-"):  # no ligature from "--"
+            out.append("{}-")
         elif ch in "’‘":
             out.append("'")
         elif ord(ch) < 128:
