@@ -161,3 +161,29 @@ def test_names_with_dollars_and_margins_beyond_floats_draw():
     far = decide(([1], [1, 1]), margin="-1e400")
     assert far.verdict == "passive"
     assert passivity_figure_bytes(far, "pdf").startswith(b"%PDF")
+
+
+@pytest.mark.parametrize("model,band,margin", [
+    (KS25, None, Fraction(0)),
+    (KS25, (Fraction(1), Fraction(10)), Fraction(0)),
+    (KS30, None, Fraction(0)),
+    (KS30, None, Fraction(1, 100)),
+])
+def test_the_report_draws_the_gate_figure_in_the_papers_font_without_missing_glyphs(
+        tmp_path, model, band, margin):
+    """The report embeds the gate's figure set in Computer Modern (cmr10), which has no
+    Greek or approximate-sign glyphs: every such sign must be mathtext, or matplotlib
+    drops it with a 'Glyph ... missing' warning and the figure shows a box."""
+    import warnings
+
+    from verify.claims.figures import gate_figure
+
+    m = load_model(model)
+    d = decide(m, margin) if band is None else decide_band(m, band)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        svg = gate_figure(d, tmp_path / "gate.svg")
+    missing = [str(w.message) for w in caught if "missing from font" in str(w.message)]
+    assert missing == []
+    assert svg.read_bytes().startswith(b"<?xml")
+    assert svg.with_suffix(".pdf").read_bytes().startswith(b"%PDF")

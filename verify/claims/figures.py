@@ -25,6 +25,7 @@ import numpy as np
 
 from verify.artefacts.atomic import write_atomic
 from verify.artefacts.figure_bytes import figure_bytes, paper_style, vector_figures
+from verify.passivity.figure import passivity_figure
 from verify.passivity.search.hamiltonian import NuMinimum, nu_values
 
 if TYPE_CHECKING:
@@ -97,6 +98,15 @@ def _nu_figure(curves: Sequence[tuple[LTIModel, NuMinimum]], path: Path) -> Path
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     return _save(fig, path)
+
+
+def gate_figure(decision, path: Path) -> Path:
+    """The passivity gate's own figure of one decision (paper, Section 4): nu(w) with the
+    exact witness frequency or the certified verdict named, and the relative index R(w),
+    as ``verify gate --plot`` draws it (:func:`verify.passivity.figure.passivity_figure`),
+    set in the paper's font and written as SVG and PDF like the other figures."""
+    with paper_style():
+        return _save(passivity_figure(decision), path)
 
 
 def bode_figure(models: Sequence[LTIModel], path: Path) -> Path:

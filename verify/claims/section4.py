@@ -16,7 +16,7 @@ import numpy as np
 import sympy as sp
 
 from verify.claims.evidence import certificate, counterexample, exact, figure, instances, numeric
-from verify.claims.figures import bode_figure, nu_figure
+from verify.claims.figures import bode_figure, gate_figure, nu_figure
 from verify.claims.model import CheckContext, Evidence, Outcome, Verdict
 from verify.claims.registry import REGISTRY
 from verify.passivity.band import decide_band
@@ -196,11 +196,18 @@ def reconstructed_models(context: CheckContext) -> Outcome:
                  and Fraction(d25.witness.data["omega"]) > 2)
     ok = d25.verdict == NOT_PASSIVE and above_two and d30.verdict == PASSIVE
     path = results[1].certificate_path if results else None
+    figures = context.out_dir / "figures"
+    drawn = ((d25, "gate_reconstructed_ks2p5.svg"), (d30, "gate_reconstructed_ks3p0.svg"))
     evidence = (
         counterexample(f"{m25.name}: {d25.reason}", above_two),
         certificate(f"{m30.name}: {d30.reason}", d30.verdict == PASSIVE,
                     path=str(path) if path else None),
     )
+    for d, name in drawn:
+        drawing = gate_figure(d, figures / name)
+        what = "witness marked" if d.witness is not None else f"verdict {d.verdict}"
+        evidence += (figure(f"{d.model.name}: gate figure, ν(ω) and R(ω), {what}",
+                            data={"href": f"figures/{drawing.name}"}, path=str(drawing)),)
     return Outcome(
         Verdict.VERIFIED if ok else Verdict.INCONCLUSIVE,
         "The reconstructions reproduce the reported features: k_s = 2.5 fails passivity "

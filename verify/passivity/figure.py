@@ -43,11 +43,11 @@ from verify.inputs.numbers import to_float
 FORMATS = {".png": "png", ".pdf": "pdf"}
 #: How a verdict line names a witness that is not a frequency.
 WITNESS_WORDS = {
-    "infinity": "D + Dᵀ is not PSD, so ν(ω) < 0 as ω → ∞",
-    "rhp-point": "a point s* > 0 where H(s*) + H(s*)ᵀ is not PSD",
+    "infinity": r"$D + D^{\mathsf{T}}$ is not PSD, so $\nu(\omega) < 0$ as $\omega \to \infty$",
+    "rhp-point": r"a point $s^* > 0$ where $H(s^*) + H(s^*)^{\mathsf{T}}$ is not PSD",
     "unstable-pole": "a pole in Re s > 0",
     "pole-at-zero": "a pole at s = 0 that is not simple or not PSD",
-    "negative-minor-sum": "a principal-minor sum of H + Hᴴ is negative in the band",
+    "negative-minor-sum": r"a principal-minor sum of $H + H^{\mathsf{H}}$ is negative in the band",
 }
 #: A negative dip smaller than this fraction of the curve's range gets a symlog axis.
 SMALL_DIP = 0.02
@@ -104,9 +104,10 @@ def _curves(model: Any, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _equals(w: Fraction) -> str:
-    """``= 5/2`` for a short exact rational, ``≈ 3.13945e+17`` for a long one."""
+    """``= 5/2`` for a short exact rational, ``≈ 3.13945e+17`` for a long one (the sign as
+    mathtext, which every font draws)."""
     text = short_text(w)
-    return text.replace("≈ ", "≈ ") if text.startswith("≈") else f"= {text}"
+    return r"$\approx$" + text[1:] if text.startswith("≈") else f"= {text}"
 
 
 def _witness_frequency(decision: Any) -> Fraction | None:
@@ -141,9 +142,9 @@ def _verdict_line(decision: Any, witness: Fraction | None) -> str:
     where = "" if band is None else \
         f" on [{short_text(band[0])}, {short_text(band[1])}] rad/s"
     margin = getattr(decision, "margin", Fraction(0))
-    need = "" if not margin else f" with margin ν₀ = {short_text(margin)}"
+    need = "" if not margin else rf" with margin $\nu_0$ = {short_text(margin)}"
     if witness is not None:
-        how = f"exact witness at ω* {_equals(witness)} rad/s"
+        how = rf"exact witness at $\omega^*$ {_equals(witness)} rad/s"
     elif decision.witness is not None:
         kind = decision.witness.kind
         how = "exact witness: " + WITNESS_WORDS.get(kind, kind.replace("-", " "))
