@@ -33,6 +33,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from verify.coq.normal import normal_form
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
 from verify.coq.terms import CoqExportError, Naming, ascii_identifier, constant, coq_text
@@ -353,6 +354,13 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
         free = [c for c in conds
                 if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
         prefix = [f"generalize (rot q_{n}) as G_{n}; intro G_{n}." for n in rotations]
+        try:
+            normal = (normal_form(lhs), normal_form(rhs))
+        except CoqExportError:
+            normal = None
+        if normal is not None:
+            attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free),
+                             ["so3_norm.", *prefix], True, normal))
         attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
         ortho_prefix, ortho = [], []
         for n in rotations:
@@ -368,8 +376,9 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
                          ortho_prefix, False))
     attempts.append((sec.atoms, _generators(sec, sec.atoms, conds), [], True))
     failure = CoqExportError("no attempt")
-    for atoms, gens, prefix, complete in attempts:
-        left, right = entries(evaluate(lhs, atoms)), entries(evaluate(rhs, atoms))
+    for atoms, gens, prefix, complete, *sides in attempts:
+        a, b = sides[0] if sides else (lhs, rhs)
+        left, right = entries(evaluate(a, atoms)), entries(evaluate(b, atoms))
         try:
             tactics = [_entry_tactic(atoms, a - b, gens, complete)
                        for a, b in zip(left, right, strict=True)]

@@ -1,0 +1,191 @@
+"""The matrix-level normal form of an expression, as the prelude's ``so3_norm`` leaves it.
+
+An identity between expressions in rotations (Section 3's R, R_l, R̄, ...) often holds
+only because some rotation meets its transpose: eq. (13) and Theorem 1's S_r, S_rl and
+V derivatives rewrite R̄_rᵀR_rl as R̄ᵀR_l, that is R_r R_rᵀ = I inside a product. In
+quaternion coordinates Coq's ``field`` must expand rational functions of high degree to
+see it. The prelude's tactic ``so3_norm`` (``SO3.v``) instead rewrites the goal at matrix
+level with lemmas proved once: ``sk``, ``sym``, ``msub``, ``mneg`` unfolded, transposes
+pushed down to the leaves, products distributed over sums, scalars pulled out, products
+associated to the right, rotations taken out of ``hat`` (``hat(R u) = R hat(u) Rᵀ``,
+``hat`` being linear), and in each product every adjacent ``Rᵀ R`` or ``R Rᵀ`` of a
+rotation cancelled. What is left often
+holds with each rotation replaced by a free matrix, where ``field`` works on small
+polynomials.
+
+:func:`normal_form` computes the same normal form on the checker's expression trees,
+so the exporter can tell, before writing the proof, whether the identity holds for
+free matrices after ``so3_norm``. Nothing here is trusted: Coq re-does the rewriting
+with its own lemmas, and ``field`` decides what is left.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from verify.coq.terms import CoqExportError
+from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr
+
+# A matrix in normal form: a list of terms (scalar coefficients, word of matrix atoms);
+# a vector: a list of terms (coefficients, word, vector leaf).
+_MINUS_ONE = Expr("const", (), SCALAR, Fraction(-1))
+_HALF = Expr("const", (), SCALAR, Fraction(1, 2))
+
+
+def normal_form(e: Expr) -> Expr:
+    """``e`` rewritten as ``so3_norm`` rewrites its Coq text (same value)."""
+    if e.shape == MATRIX:
+        return _matrix_expr(_mat(e))
+    if e.shape == VECTOR:
+        return _vector_expr(_vec(e))
+    if e.shape == SCALAR:
+        return _sca(e)
+    raise CoqExportError("only scalars, vectors and matrices are normalised")
+
+
+# -- scalars: rebuilt with their matrix and vector parts normalised ---------------------
+def _sca(e: Expr) -> Expr:
+    op = e.op
+    if op in ("var", "const", "lambda_min", "cos", "sin"):
+        return e  # a lambda_min is an atom in Coq (a section variable)
+    if op == "trace":
+        return Expr("trace", (_matrix_expr(_mat(e.args[0])),), SCALAR)
+    if op == "dot":
+        return Expr("dot", tuple(_vector_expr(_vec(a)) for a in e.args), SCALAR)
+    if op in ("add", "neg", "scale"):
+        return Expr(op, tuple(_sca(a) for a in e.args), SCALAR)
+    raise CoqExportError(f"no normal form for the scalar operation {op!r}")
+
+
+# -- matrices -------------------------------------------------------------------------------
+def _mat(e: Expr) -> list[tuple[tuple, tuple]]:
+    op, a = e.op, e.args
+    if op == "identity":
+        return [((), ())]
+    if op in ("var", "zero"):
+        return [((), (e,))]
+    if op == "add":
+        return _mat(a[0]) + _mat(a[1])
+    if op == "neg":
+        return [((_MINUS_ONE, *c), w) for c, w in _mat(a[0])]
+    if op == "scale":
+        s = _sca(a[0])
+        return [((s, *c), w) for c, w in _mat(a[1])]
+    if op == "matmul":
+        left, right = _mat(a[0]), _mat(a[1])
+        return [(c1 + c2, _reduce(w1 + w2)) for c1, w1 in left for c2, w2 in right]
+    if op == "transpose":
+        return [_transpose_term(c, w) for c, w in _mat(a[0])]
+    if op == "sk":
+        m = a[0]
+        return [((_HALF, *c), w) for c, w in _mat(m)] + [
+            ((_HALF, _MINUS_ONE, *c), w) for c, w in _mat(Expr("transpose", (m,), MATRIX))]
+    if op == "sym":
+        m = a[0]
+        return [((_HALF, *c), w) for c, w in _mat(m)] + [
+            ((_HALF, *c), w) for c, w in _mat(Expr("transpose", (m,), MATRIX))]
+    if op == "hat":
+        return [t for c, w, x in _vec(a[0]) for t in _hat_term(c, w, x)]
+    if op == "outer":
+        return [((), (Expr("outer", tuple(_vector_expr(_vec(x)) for x in a), MATRIX),))]
+    raise CoqExportError(f"no normal form for the matrix operation {op!r}")
+
+
+def _transpose_term(coefs: tuple, word: tuple) -> tuple[tuple, tuple]:
+    out, sign = [], ()
+    for atom in reversed(word):
+        if atom.op == "hat":  # hat(v)ᵀ = -hat(v)
+            out.append(atom)
+            sign += (_MINUS_ONE,)
+        elif atom.op == "transpose":
+            out.append(atom.args[0])
+        else:
+            out.append(Expr("transpose", (atom,), MATRIX))
+    return coefs + sign, tuple(out)
+
+
+def _rotation(atom: Expr) -> tuple[int, bool] | None:
+    """(uid, transposed) of a rotation atom R or Rᵀ."""
+    t = atom.op == "transpose"
+    base = atom.args[0] if t else atom
+    if base.op == "var" and base.data.kind == "rotation":
+        return base.data.uid, t
+    return None
+
+
+def _reduce(word: tuple) -> tuple:
+    """The word with every adjacent R Rᵀ or Rᵀ R of a rotation cancelled."""
+    word = list(word)
+    i = 0
+    while i < len(word) - 1:
+        x, y = _rotation(word[i]), _rotation(word[i + 1])
+        if x and y and x[0] == y[0] and x[1] != y[1]:
+            del word[i:i + 2]
+            i = max(i - 1, 0)
+        else:
+            i += 1
+    return tuple(word)
+
+
+def _hat_term(coefs: tuple, word: tuple, leaf: Expr) -> list[tuple[tuple, tuple]]:
+    """hat(c W x) as matrix terms: the rotations leading W come out of the hat
+    (hat(R u) = R hat(u) Rᵀ); what follows them stays inside."""
+    k = 0
+    while k < len(word) and _rotation(word[k]):
+        k += 1
+    inner = _vector_expr([((), word[k:], leaf)])
+    outer = word[:k]
+    _, back = _transpose_term((), outer)
+    return [(coefs, _reduce((*outer, Expr("hat", (inner,), MATRIX), *back)))]
+
+
+def _product_expr(coefs: tuple, core: Expr) -> Expr:
+    for c in reversed(coefs):
+        core = Expr("scale", (c, core), core.shape)
+    return core
+
+
+def _matrix_expr(terms: list) -> Expr:
+    if not terms:
+        return Expr("zero", (), MATRIX)
+    out = None
+    for coefs, word in terms:
+        core = word[-1] if word else Expr("identity", (), MATRIX)
+        for atom in reversed(word[:-1]):
+            core = Expr("matmul", (atom, core), MATRIX)
+        t = _product_expr(coefs, core)
+        out = t if out is None else Expr("add", (out, t), MATRIX)
+    return out
+
+
+# -- vectors --------------------------------------------------------------------------------
+def _vec(e: Expr) -> list[tuple[tuple, tuple, Expr]]:
+    op, a = e.op, e.args
+    if op in ("var", "zero"):
+        return [((), (), e)]
+    if op == "add":
+        return _vec(a[0]) + _vec(a[1])
+    if op == "neg":
+        return [((_MINUS_ONE, *c), w, x) for c, w, x in _vec(a[0])]
+    if op == "scale":
+        s = _sca(a[0])
+        return [((s, *c), w, x) for c, w, x in _vec(a[1])]
+    if op == "matmul":
+        return [(c1 + c2, _reduce(w1 + w2), x)
+                for c1, w1 in _mat(a[0]) for c2, w2, x in _vec(a[1])]
+    if op == "vee":
+        return [((), (), Expr("vee", (_matrix_expr(_mat(a[0])),), VECTOR))]
+    raise CoqExportError(f"no normal form for the vector operation {op!r}")
+
+
+def _vector_expr(terms: list) -> Expr:
+    if not terms:
+        return Expr("zero", (), VECTOR)
+    out = None
+    for coefs, word, leaf in terms:
+        core = leaf
+        for atom in reversed(word):
+            core = Expr("matmul", (atom, core), VECTOR)
+        t = _product_expr(coefs, core)
+        out = t if out is None else Expr("add", (out, t), VECTOR)
+    return out
