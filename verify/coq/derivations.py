@@ -341,15 +341,20 @@ def _generators(sec: _Section, atoms: Atoms, conds: list[Condition]) -> list[tup
 def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]) -> list[str]:
     """Tactics proving ``lhs = rhs`` (any shape) from the generators' vanishing.
 
-    First with rotations as free matrices (conditions on rotations left out): when the
+    First with rotations as free matrices (conditions on rotations left out), as they
+    stand and after the prelude's matrix-level normal form ``so3_norm``
+    (:mod:`verify.coq.normal`: rotations meeting their transposes cancel); when the
     identity holds there, ``generalize`` forgets that they are rotations and ``field``
-    works on small polynomials. Otherwise in the quaternion parameters.
+    works on small polynomials (of the two, the one with fewer terms is written).
+    Otherwise with some rotations in quaternion parameters, or with their
+    orthogonality as cofactors, or all in quaternion parameters.
     """
     if lhs.shape not in (SCALAR, VECTOR, MATRIX):
         raise CoqExportError("only scalars, vectors and matrices are compared")
     rotations = [sec.naming.variable(v) for v in variables_of(lhs, rhs)
                  if v.kind == "rotation"]
     attempts = []
+    free_attempts = 0  # the first ones: with free matrices, the smaller polynomials win
     if rotations and sec.gatoms is not None:
         free = [c for c in conds
                 if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
@@ -358,10 +363,11 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
             normal = (normal_form(lhs), normal_form(rhs))
         except CoqExportError:
             normal = None
+        attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
         if normal is not None:
             attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free),
                              ["so3_norm.", *prefix], True, normal))
-        attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
+        free_attempts = len(attempts)
         ortho_prefix, ortho = [], []
         for n in rotations:
             ortho_prefix += [
@@ -376,18 +382,28 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
                          ortho_prefix, False))
     attempts.append((sec.atoms, _generators(sec, sec.atoms, conds), [], True))
     failure = CoqExportError("no attempt")
-    for atoms, gens, prefix, complete, *sides in attempts:
+    best: tuple[int, list[str]] | None = None
+    for k, (atoms, gens, prefix, complete, *sides) in enumerate(attempts):
         a, b = sides[0] if sides else (lhs, rhs)
         left, right = entries(evaluate(a, atoms)), entries(evaluate(b, atoms))
         try:
-            tactics = [_entry_tactic(atoms, a - b, gens, complete)
-                       for a, b in zip(left, right, strict=True)]
+            tactics = [_entry_tactic(atoms, x - y, gens, complete)
+                       for x, y in zip(left, right, strict=True)]
         except CoqExportError as exc:
             failure = exc
             continue
         if lhs.shape == SCALAR:
-            return [*prefix, tactics[0]]
-        return prefix + ["so3_split."] + [f"- {t}" for t in tactics]
+            script = [*prefix, tactics[0]]
+        else:
+            script = prefix + ["so3_split."] + [f"- {t}" for t in tactics]
+        size = sum(len(x.num.terms()) + len(y.num.terms())
+                   for x, y in zip(left, right, strict=True))
+        if best is None or size < best[0]:
+            best = (size, script)
+        if k >= free_attempts - 1:
+            return best[1]
+    if best is not None:
+        return best[1]
     raise failure
 
 

@@ -8,9 +8,9 @@ see it. The prelude's tactic ``so3_norm`` (``SO3.v``) instead rewrites the goal 
 level with lemmas proved once: ``sk``, ``sym``, ``msub``, ``mneg`` unfolded, transposes
 pushed down to the leaves, products distributed over sums, scalars pulled out, products
 associated to the right, rotations taken out of ``hat`` (``hat(R u) = R hat(u) Rᵀ``,
-``hat`` being linear), and in each product every adjacent ``Rᵀ R`` or ``R Rᵀ`` of a
-rotation cancelled. What is left often
-holds with each rotation replaced by a free matrix, where ``field`` works on small
+``hat`` being linear, ``hat(vee(M)) = sk(M)``, ``vee(M)·w = -tr(M hat(w))/2``), and in
+each product every adjacent ``Rᵀ R`` or ``R Rᵀ`` of a rotation cancelled. What is left
+often holds with each rotation replaced by a free matrix, where ``field`` works on small
 polynomials.
 
 :func:`normal_form` computes the same normal form on the checker's expression trees,
@@ -51,7 +51,16 @@ def _sca(e: Expr) -> Expr:
     if op == "trace":
         return Expr("trace", (_matrix_expr(_mat(e.args[0])),), SCALAR)
     if op == "dot":
-        return Expr("dot", tuple(_vector_expr(_vec(a)) for a in e.args), SCALAR)
+        u, v = (_vec(a) for a in e.args)
+        for vee_side, other in ((u, v), (v, u)):  # vee(A) . w = -tr(A hat(w))/2
+            if len(vee_side) == 1 and vee_side[0][:2] == ((), ()) and \
+                    vee_side[0][2].op == "vee":
+                a = vee_side[0][2].args[0]
+                h = Expr("hat", (_vector_expr(other),), MATRIX)
+                t = Expr("trace", (Expr("matmul", (a, h), MATRIX),), SCALAR)
+                return _sca(Expr("scale", (Expr("const", (), SCALAR, Fraction(-1, 2)), t),
+                                 SCALAR))
+        return Expr("dot", (_vector_expr(u), _vector_expr(v)), SCALAR)
     if op in ("add", "neg", "scale"):
         return Expr(op, tuple(_sca(a) for a in e.args), SCALAR)
     raise CoqExportError(f"no normal form for the scalar operation {op!r}")
@@ -133,10 +142,13 @@ def _hat_term(coefs: tuple, word: tuple, leaf: Expr) -> list[tuple[tuple, tuple]
     k = 0
     while k < len(word) and _rotation(word[k]):
         k += 1
-    inner = _vector_expr([((), word[k:], leaf)])
     outer = word[:k]
     _, back = _transpose_term((), outer)
-    return [(coefs, _reduce((*outer, Expr("hat", (inner,), MATRIX), *back)))]
+    if k == len(word) and leaf.op == "vee":  # hat(vee(M)) = sk(M)
+        middle = _mat(Expr("sk", leaf.args, MATRIX))
+    else:
+        middle = [((), (Expr("hat", (_vector_expr([((), word[k:], leaf)]),), MATRIX),))]
+    return [(coefs + c, _reduce((*outer, *w, *back))) for c, w in middle]
 
 
 def _product_expr(coefs: tuple, core: Expr) -> Expr:

@@ -301,14 +301,25 @@ Proof. intros H u. rewrite <- mvmul_mmul, (rot_orthogonal q H). apply mvmul_I3. 
 Lemma rot_vcancel_r (q : quat) : qn q <> 0 -> forall u : V3, mvmul (rot q) (mvmul (mT (rot q)) u) = u.
 Proof. intros H u. rewrite <- mvmul_mmul, (rot_orthogonal_r q H). apply mvmul_I3. Qed.
 
-(** [hat] is linear, and [hat (R u) = R hat(u) R^T] for a rotation [R] (this needs
-    [det R = 1]): the normal form takes rotations out of [hat], so that they can meet
-    their transposes. *)
+(** [hat] is linear, [hat (vee A) = sk A], and [hat (R u) = R hat(u) R^T] for a
+    rotation [R] (this needs [det R = 1]): the normal form takes rotations out of
+    [hat], so that they can meet their transposes. *)
 Lemma hat_vadd (u v : V3) : hat (vadd u v) = madd (hat u) (hat v).
 Proof. destruct u, v. so3_split; so3_unfold; ring. Qed.
 
 Lemma hat_vscale (c : R) (u : V3) : hat (vscale c u) = mscale c (hat u).
 Proof. destruct u. so3_split; so3_unfold; ring. Qed.
+
+Lemma hat_vee (A : M3) : hat (vee A) = mscale (1/2) (madd A (mscale (-1) (mT A))).
+Proof. destruct A. so3_split; so3_unfold; field. Qed.
+
+(** [vee(A) . v = -tr(A hat(v))/2]: a dot product with a [vee] becomes a trace, where
+    the rotations of [v] come out of the [hat]. *)
+Lemma vdot_vee_l (A : M3) (v : V3) : vdot (vee A) v = (-1/2) * tr (mmul A (hat v)).
+Proof. destruct A, v. so3_unfold. field. Qed.
+
+Lemma vdot_vee_r (A : M3) (u : V3) : vdot u (vee A) = (-1/2) * tr (mmul A (hat u)).
+Proof. destruct A, u. so3_unfold. field. Qed.
 
 Lemma rot_hat (q : quat) : qn q <> 0 -> forall u : V3,
   hat (mvmul (rot q) u) = mmul (rot q) (mmul (hat u) (mT (rot q))).
@@ -327,7 +338,8 @@ Qed.
 #[export] Hint Rewrite vneg_unfold
   mT_madd mT_mscale mT_mmul mT_mT mT_I3 mT_hat mscale_mscale vscale_vscale
   mmul_madd_l mmul_madd_r mmul_mscale_l mmul_mscale_r mmul_assoc mmul_I3_l mmul_I3_r
-  mvmul_mmul mvmul_madd mvmul_vadd mvmul_mscale mvmul_vscale mvmul_I3 hat_vadd hat_vscale
+  mvmul_mmul mvmul_madd mvmul_vadd mvmul_mscale mvmul_vscale mvmul_I3 hat_vadd hat_vscale hat_vee
+  vdot_vee_l vdot_vee_r
   : so3_norm.
 #[export] Hint Rewrite rot_cancel_l rot_cancel_r rot_vcancel_l rot_vcancel_r
   rot_orthogonal rot_orthogonal_r rot_hat rot_hat_T using assumption : so3_norm.
