@@ -359,14 +359,16 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
         free = [c for c in conds
                 if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
         prefix = [f"generalize (rot q_{n}) as G_{n}; intro G_{n}." for n in rotations]
-        try:
-            normal = (normal_form(lhs), normal_form(rhs))
-        except CoqExportError:
-            normal = None
+        normals = []
+        for hat, tactic in ((False, "so3_norm."), (True, "so3_norm_hat.")):
+            try:
+                normals.append((tactic, (normal_form(lhs, hat=hat), normal_form(rhs, hat=hat))))
+            except CoqExportError:
+                pass
         attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
-        if normal is not None:
+        for tactic, sides in normals:
             attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free),
-                             ["so3_norm.", *prefix], True, normal))
+                             [tactic, *prefix], True, sides))
         free_attempts = len(attempts)
         ortho_prefix, ortho = [], []
         for n in rotations:

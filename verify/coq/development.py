@@ -3,7 +3,8 @@
 A development is the prelude (``verify/coq/prelude/*.v``, copied as is), one file per
 :class:`~verify.coq.unit.CoqUnit`, a ``_CoqProject`` mapping the folder to the logical
 root :data:`LOGICAL_ROOT`, and ``All.v`` that ``Require``s every unit, names every top
-theorem in one tuple and prints its assumptions (those of all the theorems). ``coqc`` on the files in order is the whole check.
+theorem in one tuple and prints its assumptions (those of all the theorems). ``coqc``
+on the files in order is the whole check.
 """
 
 from __future__ import annotations

@@ -7,16 +7,16 @@ quaternion coordinates Coq's ``field`` must expand rational functions of high de
 see it. The prelude's tactic ``so3_norm`` (``SO3.v``) instead rewrites the goal at matrix
 level with lemmas proved once: ``sk``, ``sym``, ``msub``, ``mneg`` unfolded, transposes
 pushed down to the leaves, products distributed over sums, scalars pulled out, products
-associated to the right, rotations taken out of ``hat`` (``hat(R u) = R hat(u) Rᵀ``,
-``hat`` being linear, ``hat(vee(M)) = sk(M)``, ``vee(M)·w = -tr(M hat(w))/2``), and in
-each product every adjacent ``Rᵀ R`` or ``R Rᵀ`` of a rotation cancelled. What is left
-often holds with each rotation replaced by a free matrix, where ``field`` works on small
-polynomials.
+associated to the right, ``hat`` split over sums, ``hat(vee(M)) = sk(M)``,
+``vee(M)·w = -tr(M hat(w))/2``, and in each product every adjacent ``Rᵀ R`` or ``R Rᵀ``
+of a rotation cancelled; ``so3_norm_hat`` also takes rotations out of ``hat``
+(``hat(R u) = R hat(u) Rᵀ``). What is left often holds with each rotation replaced by a
+free matrix, where ``field`` works on small polynomials.
 
 :func:`normal_form` computes the same normal form on the checker's expression trees,
 so the exporter can tell, before writing the proof, whether the identity holds for
-free matrices after ``so3_norm``. Nothing here is trusted: Coq re-does the rewriting
-with its own lemmas, and ``field`` decides what is left.
+free matrices after ``so3_norm`` (or ``so3_norm_hat``). Nothing here is trusted: Coq
+re-does the rewriting with its own lemmas, and ``field`` decides what is left.
 """
 
 from __future__ import annotations
@@ -26,78 +26,112 @@ from fractions import Fraction
 from verify.coq.terms import CoqExportError
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr
 
-# A matrix in normal form: a list of terms (scalar coefficients, word of matrix atoms);
-# a vector: a list of terms (coefficients, word, vector leaf).
 _MINUS_ONE = Expr("const", (), SCALAR, Fraction(-1))
 _HALF = Expr("const", (), SCALAR, Fraction(1, 2))
 
 
-def normal_form(e: Expr) -> Expr:
-    """``e`` rewritten as ``so3_norm`` rewrites its Coq text (same value)."""
+def normal_form(e: Expr, *, hat: bool = False) -> Expr:
+    """``e`` rewritten as ``so3_norm`` (with ``hat``: ``so3_norm_hat``) rewrites its Coq
+    text; the value is the same."""
+    n = _Normaliser(hat)
     if e.shape == MATRIX:
-        return _matrix_expr(_mat(e))
+        return _matrix_expr(n.mat(e))
     if e.shape == VECTOR:
-        return _vector_expr(_vec(e))
+        return _vector_expr(n.vec(e))
     if e.shape == SCALAR:
-        return _sca(e)
+        return n.sca(e)
     raise CoqExportError("only scalars, vectors and matrices are normalised")
 
 
-# -- scalars: rebuilt with their matrix and vector parts normalised ---------------------
-def _sca(e: Expr) -> Expr:
-    op = e.op
-    if op in ("var", "const", "lambda_min", "cos", "sin"):
-        return e  # a lambda_min is an atom in Coq (a section variable)
-    if op == "trace":
-        return Expr("trace", (_matrix_expr(_mat(e.args[0])),), SCALAR)
-    if op == "dot":
-        u, v = (_vec(a) for a in e.args)
-        for vee_side, other in ((u, v), (v, u)):  # vee(A) . w = -tr(A hat(w))/2
-            if len(vee_side) == 1 and vee_side[0][:2] == ((), ()) and \
-                    vee_side[0][2].op == "vee":
-                a = vee_side[0][2].args[0]
-                h = Expr("hat", (_vector_expr(other),), MATRIX)
-                t = Expr("trace", (Expr("matmul", (a, h), MATRIX),), SCALAR)
-                return _sca(Expr("scale", (Expr("const", (), SCALAR, Fraction(-1, 2)), t),
-                                 SCALAR))
-        return Expr("dot", (_vector_expr(u), _vector_expr(v)), SCALAR)
-    if op in ("add", "neg", "scale"):
-        return Expr(op, tuple(_sca(a) for a in e.args), SCALAR)
-    raise CoqExportError(f"no normal form for the scalar operation {op!r}")
+class _Normaliser:
+    """A matrix in normal form is a list of terms (scalar coefficients, word of matrix
+    atoms); a vector, a list of terms (coefficients, word, vector leaf)."""
 
+    def __init__(self, hat: bool) -> None:
+        self.hat_out = hat
 
-# -- matrices -------------------------------------------------------------------------------
-def _mat(e: Expr) -> list[tuple[tuple, tuple]]:
-    op, a = e.op, e.args
-    if op == "identity":
-        return [((), ())]
-    if op in ("var", "zero"):
-        return [((), (e,))]
-    if op == "add":
-        return _mat(a[0]) + _mat(a[1])
-    if op == "neg":
-        return [((_MINUS_ONE, *c), w) for c, w in _mat(a[0])]
-    if op == "scale":
-        s = _sca(a[0])
-        return [((s, *c), w) for c, w in _mat(a[1])]
-    if op == "matmul":
-        left, right = _mat(a[0]), _mat(a[1])
-        return [(c1 + c2, _reduce(w1 + w2)) for c1, w1 in left for c2, w2 in right]
-    if op == "transpose":
-        return [_transpose_term(c, w) for c, w in _mat(a[0])]
-    if op == "sk":
-        m = a[0]
-        return [((_HALF, *c), w) for c, w in _mat(m)] + [
-            ((_HALF, _MINUS_ONE, *c), w) for c, w in _mat(Expr("transpose", (m,), MATRIX))]
-    if op == "sym":
-        m = a[0]
-        return [((_HALF, *c), w) for c, w in _mat(m)] + [
-            ((_HALF, *c), w) for c, w in _mat(Expr("transpose", (m,), MATRIX))]
-    if op == "hat":
-        return [t for c, w, x in _vec(a[0]) for t in _hat_term(c, w, x)]
-    if op == "outer":
-        return [((), (Expr("outer", tuple(_vector_expr(_vec(x)) for x in a), MATRIX),))]
-    raise CoqExportError(f"no normal form for the matrix operation {op!r}")
+    # scalars: rebuilt with their matrix and vector parts normalised
+    def sca(self, e: Expr) -> Expr:
+        op = e.op
+        if op in ("var", "const", "lambda_min", "cos", "sin"):
+            return e  # a lambda_min is an atom in Coq (a section variable)
+        if op == "trace":
+            return Expr("trace", (_matrix_expr(self.mat(e.args[0])),), SCALAR)
+        if op == "dot":
+            u, v = (self.vec(a) for a in e.args)
+            for vee_side, other in ((u, v), (v, u)):  # vee(A) . w = -tr(A hat(w))/2
+                if len(vee_side) == 1 and vee_side[0][:2] == ((), ()) and \
+                        vee_side[0][2].op == "vee":
+                    a = vee_side[0][2].args[0]
+                    h = Expr("hat", (_vector_expr(other),), MATRIX)
+                    t = Expr("trace", (Expr("matmul", (a, h), MATRIX),), SCALAR)
+                    c = Expr("const", (), SCALAR, Fraction(-1, 2))
+                    return self.sca(Expr("scale", (c, t), SCALAR))
+            return Expr("dot", (_vector_expr(u), _vector_expr(v)), SCALAR)
+        if op in ("add", "neg", "scale"):
+            return Expr(op, tuple(self.sca(a) for a in e.args), SCALAR)
+        raise CoqExportError(f"no normal form for the scalar operation {op!r}")
+
+    def mat(self, e: Expr) -> list[tuple[tuple, tuple]]:
+        op, a = e.op, e.args
+        if op == "identity":
+            return [((), ())]
+        if op in ("var", "zero"):
+            return [((), (e,))]
+        if op == "add":
+            return self.mat(a[0]) + self.mat(a[1])
+        if op == "neg":
+            return [((_MINUS_ONE, *c), w) for c, w in self.mat(a[0])]
+        if op == "scale":
+            s = self.sca(a[0])
+            return [((s, *c), w) for c, w in self.mat(a[1])]
+        if op == "matmul":
+            left, right = self.mat(a[0]), self.mat(a[1])
+            return [(c1 + c2, _reduce(w1 + w2)) for c1, w1 in left for c2, w2 in right]
+        if op == "transpose":
+            return [_transpose_term(c, w) for c, w in self.mat(a[0])]
+        if op in ("sk", "sym"):
+            m, sign = a[0], ((_MINUS_ONE,) if op == "sk" else ())
+            return [((_HALF, *c), w) for c, w in self.mat(m)] + [
+                ((_HALF, *sign, *c), w) for c, w in self.mat(Expr("transpose", (m,), MATRIX))]
+        if op == "hat":
+            return [t for c, w, x in self.vec(a[0]) for t in self.hat_term(c, w, x)]
+        if op == "outer":
+            vs = tuple(_vector_expr(self.vec(x)) for x in a)
+            return [((), (Expr("outer", vs, MATRIX),))]
+        raise CoqExportError(f"no normal form for the matrix operation {op!r}")
+
+    def hat_term(self, coefs: tuple, word: tuple, leaf: Expr) -> list[tuple[tuple, tuple]]:
+        """hat(c W x) as matrix terms; with ``hat_out`` the rotations leading W come out
+        of the hat (hat(R u) = R hat(u) Rᵀ)."""
+        k = 0
+        while self.hat_out and k < len(word) and _rotation(word[k]):
+            k += 1
+        outer = word[:k]
+        _, back = _transpose_term((), outer)
+        if k == len(word) and leaf.op == "vee":  # hat(vee(M)) = sk(M)
+            middle = self.mat(Expr("sk", leaf.args, MATRIX))
+        else:
+            middle = [((), (Expr("hat", (_vector_expr([((), word[k:], leaf)]),), MATRIX),))]
+        return [(coefs + c, _reduce((*outer, *w, *back))) for c, w in middle]
+
+    def vec(self, e: Expr) -> list[tuple[tuple, tuple, Expr]]:
+        op, a = e.op, e.args
+        if op in ("var", "zero"):
+            return [((), (), e)]
+        if op == "add":
+            return self.vec(a[0]) + self.vec(a[1])
+        if op == "neg":
+            return [((_MINUS_ONE, *c), w, x) for c, w, x in self.vec(a[0])]
+        if op == "scale":
+            s = self.sca(a[0])
+            return [((s, *c), w, x) for c, w, x in self.vec(a[1])]
+        if op == "matmul":
+            return [(c1 + c2, _reduce(w1 + w2), x)
+                    for c1, w1 in self.mat(a[0]) for c2, w2, x in self.vec(a[1])]
+        if op == "vee":
+            return [((), (), Expr("vee", (_matrix_expr(self.mat(a[0])),), VECTOR))]
+        raise CoqExportError(f"no normal form for the vector operation {op!r}")
 
 
 def _transpose_term(coefs: tuple, word: tuple) -> tuple[tuple, tuple]:
@@ -136,21 +170,6 @@ def _reduce(word: tuple) -> tuple:
     return tuple(word)
 
 
-def _hat_term(coefs: tuple, word: tuple, leaf: Expr) -> list[tuple[tuple, tuple]]:
-    """hat(c W x) as matrix terms: the rotations leading W come out of the hat
-    (hat(R u) = R hat(u) Rᵀ); what follows them stays inside."""
-    k = 0
-    while k < len(word) and _rotation(word[k]):
-        k += 1
-    outer = word[:k]
-    _, back = _transpose_term((), outer)
-    if k == len(word) and leaf.op == "vee":  # hat(vee(M)) = sk(M)
-        middle = _mat(Expr("sk", leaf.args, MATRIX))
-    else:
-        middle = [((), (Expr("hat", (_vector_expr([((), word[k:], leaf)]),), MATRIX),))]
-    return [(coefs + c, _reduce((*outer, *w, *back))) for c, w in middle]
-
-
 def _product_expr(coefs: tuple, core: Expr) -> Expr:
     for c in reversed(coefs):
         core = Expr("scale", (c, core), core.shape)
@@ -168,26 +187,6 @@ def _matrix_expr(terms: list) -> Expr:
         t = _product_expr(coefs, core)
         out = t if out is None else Expr("add", (out, t), MATRIX)
     return out
-
-
-# -- vectors --------------------------------------------------------------------------------
-def _vec(e: Expr) -> list[tuple[tuple, tuple, Expr]]:
-    op, a = e.op, e.args
-    if op in ("var", "zero"):
-        return [((), (), e)]
-    if op == "add":
-        return _vec(a[0]) + _vec(a[1])
-    if op == "neg":
-        return [((_MINUS_ONE, *c), w, x) for c, w, x in _vec(a[0])]
-    if op == "scale":
-        s = _sca(a[0])
-        return [((s, *c), w, x) for c, w, x in _vec(a[1])]
-    if op == "matmul":
-        return [(c1 + c2, _reduce(w1 + w2), x)
-                for c1, w1 in _mat(a[0]) for c2, w2, x in _vec(a[1])]
-    if op == "vee":
-        return [((), (), Expr("vee", (_matrix_expr(_mat(a[0])),), VECTOR))]
-    raise CoqExportError(f"no normal form for the vector operation {op!r}")
 
 
 def _vector_expr(terms: list) -> Expr:

@@ -342,10 +342,14 @@ Qed.
   vdot_vee_l vdot_vee_r
   : so3_norm.
 #[export] Hint Rewrite rot_cancel_l rot_cancel_r rot_vcancel_l rot_vcancel_r
-  rot_orthogonal rot_orthogonal_r rot_hat rot_hat_T using assumption : so3_norm.
+  rot_orthogonal rot_orthogonal_r using assumption : so3_norm.
+#[export] Hint Rewrite rot_hat rot_hat_T using assumption : so3_hat.
 
-(** The normal form of the goal. *)
+(** The normal form of the goal; [so3_norm_hat] also takes rotations out of [hat]
+    (which helps when a rotation inside a [hat] meets its transpose outside, and
+    hinders when a trace would have to be turned cyclically to see a cancellation). *)
 Ltac so3_norm := unfold sk, sym, msub, mneg; autorewrite with so3_norm.
+Ltac so3_norm_hat := unfold sk, sym, msub, mneg; autorewrite with so3_norm so3_hat.
 
 (** ** Non-negative quantities (the kernel facts of [verify.proof.justify]) *)
 
