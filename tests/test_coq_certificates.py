@@ -226,7 +226,7 @@ def test_the_committed_development_is_current():
     assert committed == fresh, "certificates/coq/ differs from a fresh export"
 
 
-@pytest.mark.slow  # about 5 CPU minutes; .ci/run compiles the committed development itself
+@pytest.mark.slow  # about 40 CPU seconds; .ci/run compiles the committed development itself
 @needs_coqc
 def test_the_committed_development_is_accepted(tmp_path):
     assert main(["coq", "--check", "--out", str(tmp_path / "dev")]) == 0
