@@ -241,7 +241,7 @@ Lemma mT_mscale (c : R) (A : M3) : mT (mscale c A) = mscale c (mT A).
 Proof. reflexivity. Qed.
 
 Lemma mT_mmul (A B : M3) : mT (mmul A B) = mmul (mT B) (mT A).
-Proof. destruct A, B. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B. so3_split; so3_unfold; lra. Qed.
 
 Lemma mT_mT (A : M3) : mT (mT A) = A.
 Proof. destruct A. reflexivity. Qed.
@@ -250,52 +250,52 @@ Lemma mT_I3 : mT I3 = I3.
 Proof. reflexivity. Qed.
 
 Lemma mT_hat (v : V3) : mT (hat v) = mscale (-1) (hat v).
-Proof. destruct v. so3_split; so3_unfold; ring. Qed.
+Proof. destruct v. so3_split; so3_unfold; lra. Qed.
 
 Lemma mscale_mscale (a b : R) (A : M3) : mscale a (mscale b A) = mscale (a * b) A.
-Proof. destruct A. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A. so3_split; so3_unfold; lra. Qed.
 
 Lemma vscale_vscale (a b : R) (u : V3) : vscale a (vscale b u) = vscale (a * b) u.
-Proof. destruct u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct u. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_madd_l (A B C : M3) : mmul (madd A B) C = madd (mmul A C) (mmul B C).
-Proof. destruct A, B, C. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B, C. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_madd_r (A B C : M3) : mmul A (madd B C) = madd (mmul A B) (mmul A C).
-Proof. destruct A, B, C. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B, C. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_mscale_l (c : R) (A B : M3) : mmul (mscale c A) B = mscale c (mmul A B).
-Proof. destruct A, B. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_mscale_r (c : R) (A B : M3) : mmul A (mscale c B) = mscale c (mmul A B).
-Proof. destruct A, B. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_assoc (A B C : M3) : mmul (mmul A B) C = mmul A (mmul B C).
-Proof. destruct A, B, C. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B, C. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_I3_l (A : M3) : mmul I3 A = A.
-Proof. destruct A. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A. so3_split; so3_unfold; lra. Qed.
 
 Lemma mmul_I3_r (A : M3) : mmul A I3 = A.
-Proof. destruct A. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A. so3_split; so3_unfold; lra. Qed.
 
 Lemma mvmul_mmul (A B : M3) (u : V3) : mvmul (mmul A B) u = mvmul A (mvmul B u).
-Proof. destruct A, B, u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B, u. so3_split; so3_unfold; lra. Qed.
 
 Lemma mvmul_madd (A B : M3) (u : V3) : mvmul (madd A B) u = vadd (mvmul A u) (mvmul B u).
-Proof. destruct A, B, u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, B, u. so3_split; so3_unfold; lra. Qed.
 
 Lemma mvmul_vadd (A : M3) (u v : V3) : mvmul A (vadd u v) = vadd (mvmul A u) (mvmul A v).
-Proof. destruct A, u, v. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, u, v. so3_split; so3_unfold; lra. Qed.
 
 Lemma mvmul_mscale (c : R) (A : M3) (u : V3) : mvmul (mscale c A) u = vscale c (mvmul A u).
-Proof. destruct A, u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, u. so3_split; so3_unfold; lra. Qed.
 
 Lemma mvmul_vscale (c : R) (A : M3) (u : V3) : mvmul A (vscale c u) = vscale c (mvmul A u).
-Proof. destruct A, u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct A, u. so3_split; so3_unfold; lra. Qed.
 
 Lemma mvmul_I3 (u : V3) : mvmul I3 u = u.
-Proof. destruct u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct u. so3_split; so3_unfold; lra. Qed.
 
 (** The rotation facts of the normal form: [R^T R = R R^T = I] (in a product). *)
 Lemma rot_cancel_l (q : quat) : qn q <> 0 -> forall A : M3, mmul (mT (rot q)) (mmul (rot q) A) = A.
@@ -314,10 +314,10 @@ Proof. intros H u. rewrite <- mvmul_mmul, (rot_orthogonal_r q H). apply mvmul_I3
     rotation [R] (this needs [det R = 1]): the normal form takes rotations out of
     [hat], so that they can meet their transposes. *)
 Lemma hat_vadd (u v : V3) : hat (vadd u v) = madd (hat u) (hat v).
-Proof. destruct u, v. so3_split; so3_unfold; ring. Qed.
+Proof. destruct u, v. so3_split; so3_unfold; lra. Qed.
 
 Lemma hat_vscale (c : R) (u : V3) : hat (vscale c u) = mscale c (hat u).
-Proof. destruct u. so3_split; so3_unfold; ring. Qed.
+Proof. destruct u. so3_split; so3_unfold; lra. Qed.
 
 Lemma hat_vee (A : M3) : hat (vee A) = mscale (1/2) (madd A (mscale (-1) (mT A))).
 Proof. destruct A. so3_split; so3_unfold; field. Qed.
@@ -330,11 +330,19 @@ Proof. destruct A, v. so3_unfold. field. Qed.
 Lemma vdot_vee_r (A : M3) (u : V3) : vdot u (vee A) = (-1/2) * tr (mmul A (hat u)).
 Proof. destruct A, u. so3_unfold. field. Qed.
 
+(** For any matrix [M]: [M^T hat(M u) M = det(M) hat(u)] (a polynomial identity). *)
+Lemma hat_adj (M : M3) (u : V3) :
+  mmul (mT M) (mmul (hat (mvmul M u)) M) = mscale (det M) (hat u).
+Proof. destruct M, u. so3_split; so3_unfold; lra. Qed.
+
 Lemma rot_hat (q : quat) : qn q <> 0 -> forall u : V3,
   hat (mvmul (rot q) u) = mmul (rot q) (mmul (hat u) (mT (rot q))).
 Proof.
-  intros H u. destruct q as [a b c d], u as [x y z].
-  so3_split; so3_unfold; field; exact H.
+  intros H u.
+  assert (E : mmul (mT (rot q)) (mmul (hat (mvmul (rot q) u)) (rot q)) = hat u).
+  { rewrite hat_adj, (rot_det q H). destruct u. so3_split; so3_unfold; lra. }
+  rewrite <- E, !mmul_assoc, (rot_orthogonal_r q H), mmul_I3_r, (rot_cancel_r q H).
+  reflexivity.
 Qed.
 
 Lemma rot_hat_T (q : quat) : qn q <> 0 -> forall u : V3,
