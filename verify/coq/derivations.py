@@ -14,13 +14,18 @@ prelude's definitions (``SO3.v``):
 - side conditions and the paper's assumptions are named ``Hypothesis``es (never proved
   facts), and each theorem's ``Proof using`` lists exactly those it may use, so after
   the section closes they are premises of the theorem;
-- an equality is proved entry by entry by ``field`` (denominators are quaternion
-  norms), with cofactors ``lhs - rhs = sum c_k g_k`` when it needs a unit vector, an
-  angle or a side condition (:mod:`verify.coq.polys` finds them, ``field`` re-checks);
-- an inequality ``lhs <= rhs`` (``>=``) by its slack: ``field`` proves that the slack
-  equals the sum of the justification's terms, and each term is non-negative by the
-  prelude's lemmas (squares, declared positive scalars, assumptions, the trace
-  inequality, the trace of a PSD product), whose premises are proved like equalities.
+- an equality is proved entry by entry, with rotations generalised to free matrices
+  when possible (after the prelude's matrix-level normal form ``so3_norm`` when
+  rotations must meet their transposes, :mod:`verify.coq.normal`); an entry that is a
+  polynomial identity is decided by ``lra`` (``so3_poly``), one with quaternion norms in
+  its denominators by ``field``; cofactors ``lhs - rhs = sum c_k g_k`` enter when it
+  needs a unit vector, an angle or a side condition (:mod:`verify.coq.polys` finds
+  them, Coq re-checks);
+- an inequality ``lhs <= rhs`` (``>=``) by its slack: Coq proves that the slack
+  equals the sum of the justification's terms (as an equality above), and each term
+  is non-negative by the prelude's lemmas (squares, declared positive scalars,
+  assumptions, the trace inequality, the trace of a PSD product), whose premises are
+  proved like equalities.
 
 Derivatives (``ctx.ddt``) arrive as the trees :mod:`verify.proof.calculus` formed by
 the product rule from the declared dynamics; Coq checks the algebra from there on (the
