@@ -22,59 +22,63 @@ From VerifyCoq Require thm1_V_dot_zero_on_sync.
 From VerifyCoq Require thm1_lasalle_derivative.
 From VerifyCoq Require thm1_lasalle_derivative_from_sk_only.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
-Print Assumptions lemma1_spectrum.step1.
-Print Assumptions lemma1_spectrum_projector.step1.
-Print Assumptions lemma1_spectrum_rank.step1.
-Print Assumptions lemma1_trace_form.step1.
-Print Assumptions sec3_rbar_dot_form.step1.
-Print Assumptions lemma1_h_dot.step1.
-Print Assumptions lemma1_h_dot.step2.
-Print Assumptions lemma1_h_dot.step3.
-Print Assumptions lemma1_h_dot.step4.
-Print Assumptions lemma1_h_dot.claim.
-Print Assumptions lemma1_boundary_square.step1.
-Print Assumptions lemma1_boundary_square.step2.
-Print Assumptions lemma1_boundary_square.step3.
-Print Assumptions lemma1_boundary_square.claim.
-Print Assumptions lemma1_boundary_h_dot.step1.
-Print Assumptions lemma1_boundary_h_dot.step2.
-Print Assumptions lemma1_boundary_h_dot.step3.
-Print Assumptions lemma1_boundary_h_dot.step4.
-Print Assumptions lemma1_boundary_h_dot.step5.
-Print Assumptions lemma1_boundary_h_dot.claim.
-Print Assumptions lemma1_boundary_sign_direct.step1.
-Print Assumptions lemma1_gradient_form.step1.
-Print Assumptions lemma1_gradient_nonzero.step1.
-Print Assumptions lemma1_gradient_nonzero.step2.
-Print Assumptions lemma1_gradient_nonzero.claim.
-Print Assumptions lemma1_gradient_vanishes_at_pi.step1.
-Print Assumptions lemma1_gradient_vanishes_at_pi.step2.
-Print Assumptions lemma1_gradient_vanishes_at_pi.claim.
-Print Assumptions lemma1_trace_inequality_psd.step1.
-Print Assumptions lemma1_trace_inequality_sym_psd.step1.
-Print Assumptions thm1_phi.step1.
-Print Assumptions thm1_S_r_dot.step1.
-Print Assumptions thm1_S_r_dot.step2.
-Print Assumptions thm1_S_r_dot.step3.
-Print Assumptions thm1_S_r_dot.step4.
-Print Assumptions thm1_S_r_dot.step5.
-Print Assumptions thm1_S_r_dot.step6.
-Print Assumptions thm1_S_r_dot.step7.
-Print Assumptions thm1_S_r_dot.claim.
-Print Assumptions thm1_S_rl_dot.step1.
-Print Assumptions thm1_S_rl_dot.step2.
-Print Assumptions thm1_S_rl_dot.step3.
-Print Assumptions thm1_S_rl_dot.step4.
-Print Assumptions thm1_S_rl_dot.claim.
-Print Assumptions thm1_S_h_sign.step1.
-Print Assumptions thm1_V_dot.step1.
-Print Assumptions thm1_V_dot.step2.
-Print Assumptions thm1_V_dot.step3.
-Print Assumptions thm1_V_dot.claim.
-Print Assumptions thm1_V_dot_zero_implies_sync.step1.
-Print Assumptions thm1_V_dot_zero_on_sync.step1.
-Print Assumptions thm1_lasalle_derivative.step1.
-Print Assumptions thm1_lasalle_derivative.step2.
-Print Assumptions thm1_lasalle_derivative.claim.
-Print Assumptions thm1_lasalle_derivative_from_sk_only.step1.
-Print Assumptions Cert_reconstructed_k_s_3_0_99babda880e6.passive.
+
+(** Every top theorem of the development. *)
+Definition top_theorems :=
+  (lemma1_spectrum.step1,
+   lemma1_spectrum_projector.step1,
+   lemma1_spectrum_rank.step1,
+   lemma1_trace_form.step1,
+   sec3_rbar_dot_form.step1,
+   lemma1_h_dot.step1,
+   lemma1_h_dot.step2,
+   lemma1_h_dot.step3,
+   lemma1_h_dot.step4,
+   lemma1_h_dot.claim,
+   lemma1_boundary_square.step1,
+   lemma1_boundary_square.step2,
+   lemma1_boundary_square.step3,
+   lemma1_boundary_square.claim,
+   lemma1_boundary_h_dot.step1,
+   lemma1_boundary_h_dot.step2,
+   lemma1_boundary_h_dot.step3,
+   lemma1_boundary_h_dot.step4,
+   lemma1_boundary_h_dot.step5,
+   lemma1_boundary_h_dot.claim,
+   lemma1_boundary_sign_direct.step1,
+   lemma1_gradient_form.step1,
+   lemma1_gradient_nonzero.step1,
+   lemma1_gradient_nonzero.step2,
+   lemma1_gradient_nonzero.claim,
+   lemma1_gradient_vanishes_at_pi.step1,
+   lemma1_gradient_vanishes_at_pi.step2,
+   lemma1_gradient_vanishes_at_pi.claim,
+   lemma1_trace_inequality_psd.step1,
+   lemma1_trace_inequality_sym_psd.step1,
+   thm1_phi.step1,
+   thm1_S_r_dot.step1,
+   thm1_S_r_dot.step2,
+   thm1_S_r_dot.step3,
+   thm1_S_r_dot.step4,
+   thm1_S_r_dot.step5,
+   thm1_S_r_dot.step6,
+   thm1_S_r_dot.step7,
+   thm1_S_r_dot.claim,
+   thm1_S_rl_dot.step1,
+   thm1_S_rl_dot.step2,
+   thm1_S_rl_dot.step3,
+   thm1_S_rl_dot.step4,
+   thm1_S_rl_dot.claim,
+   thm1_S_h_sign.step1,
+   thm1_V_dot.step1,
+   thm1_V_dot.step2,
+   thm1_V_dot.step3,
+   thm1_V_dot.claim,
+   thm1_V_dot_zero_implies_sync.step1,
+   thm1_V_dot_zero_on_sync.step1,
+   thm1_lasalle_derivative.step1,
+   thm1_lasalle_derivative.step2,
+   thm1_lasalle_derivative.claim,
+   thm1_lasalle_derivative_from_sk_only.step1,
+   Cert_reconstructed_k_s_3_0_99babda880e6.passive).
+Print Assumptions top_theorems.

@@ -156,6 +156,15 @@ Ltac so3_unfold :=
          mT mvmul mmul msub mneg mscale madd vdot vzero vscale vneg vadd row1 row2 row3 qform
          v1 v2 v3 m11 m12 m13 m21 m22 m23 m31 m32 m33 qw qx qy qz] in *.
 
+(** An identity of polynomials with rational coefficients (no quaternion norm in a
+    denominator): unfolded in the goal only, decided by [lra], for which every
+    nonlinear monomial is an atom.  It is many times faster than [field] here. *)
+Ltac so3_poly :=
+  cbv beta iota zeta delta [rot qvec qn phi fro2 det sk sym hat vee symm outer tr I3 Z3
+         mT mvmul mmul msub mneg mscale madd vdot vzero vscale vneg vadd row1 row2 row3 qform
+         v1 v2 v3 m11 m12 m13 m21 m22 m23 m31 m32 m33 qw qx qy qz];
+  lra.
+
 (** Split a vector or matrix equation into its entries. *)
 Ltac so3_split :=
   first [ apply m3_ext | apply v3_ext | idtac ].
@@ -206,6 +215,161 @@ Proof. intro H. destruct q as [w x y z]. so3_split; so3_unfold; field; exact H. 
 
 Lemma rot_det (q : quat) : qn q <> 0 -> det (rot q) = 1.
 Proof. intro H. destruct q as [w x y z]. so3_unfold. field. exact H. Qed.
+
+(** ** Matrix-level normal form (rewriting before going to entries)
+
+    An identity between expressions in rotations often holds only because some
+    rotation meets its transpose ([R^T R = I]).  Proving it entry by entry in quaternion
+    coordinates makes [field] expand rational functions of high degree.  Instead the
+    goal is first rewritten at matrix level: [sk], [sym], [msub], [mneg] unfolded into
+    [madd] and [mscale] (by [unfold]: as rewriting rules their left sides would match
+    their own results up to unfolding), transposes pushed down to the leaves, products distributed
+    over sums, scalars pulled out, products associated to the right, and every
+    adjacent [R^T R] or [R R^T] of a rotation cancelled; rotations are taken out of
+    [hat] ([hat (R u) = R hat(u) R^T]).  What is left usually holds for any matrix in place of each
+    rotation, and [field] decides it on small polynomials.  The lemmas below are
+    general facts on free 3x3 matrices, proved once; only the [rot_*] ones use that
+    [rot q] is a rotation, with the hypothesis [qn q <> 0]. *)
+
+Lemma vneg_unfold (u : V3) : vneg u = vscale (-1) u.
+Proof. destruct u. apply v3_ext; simpl; ring. Qed.
+
+Lemma mT_madd (A B : M3) : mT (madd A B) = madd (mT A) (mT B).
+Proof. reflexivity. Qed.
+
+Lemma mT_mscale (c : R) (A : M3) : mT (mscale c A) = mscale c (mT A).
+Proof. reflexivity. Qed.
+
+Lemma mT_mmul (A B : M3) : mT (mmul A B) = mmul (mT B) (mT A).
+Proof. destruct A, B. so3_split; so3_unfold; lra. Qed.
+
+Lemma mT_mT (A : M3) : mT (mT A) = A.
+Proof. destruct A. reflexivity. Qed.
+
+Lemma mT_I3 : mT I3 = I3.
+Proof. reflexivity. Qed.
+
+Lemma mT_hat (v : V3) : mT (hat v) = mscale (-1) (hat v).
+Proof. destruct v. so3_split; so3_unfold; lra. Qed.
+
+Lemma mscale_mscale (a b : R) (A : M3) : mscale a (mscale b A) = mscale (a * b) A.
+Proof. destruct A. so3_split; so3_unfold; lra. Qed.
+
+Lemma vscale_vscale (a b : R) (u : V3) : vscale a (vscale b u) = vscale (a * b) u.
+Proof. destruct u. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_madd_l (A B C : M3) : mmul (madd A B) C = madd (mmul A C) (mmul B C).
+Proof. destruct A, B, C. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_madd_r (A B C : M3) : mmul A (madd B C) = madd (mmul A B) (mmul A C).
+Proof. destruct A, B, C. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_mscale_l (c : R) (A B : M3) : mmul (mscale c A) B = mscale c (mmul A B).
+Proof. destruct A, B. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_mscale_r (c : R) (A B : M3) : mmul A (mscale c B) = mscale c (mmul A B).
+Proof. destruct A, B. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_assoc (A B C : M3) : mmul (mmul A B) C = mmul A (mmul B C).
+Proof. destruct A, B, C. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_I3_l (A : M3) : mmul I3 A = A.
+Proof. destruct A. so3_split; so3_unfold; lra. Qed.
+
+Lemma mmul_I3_r (A : M3) : mmul A I3 = A.
+Proof. destruct A. so3_split; so3_unfold; lra. Qed.
+
+Lemma mvmul_mmul (A B : M3) (u : V3) : mvmul (mmul A B) u = mvmul A (mvmul B u).
+Proof. destruct A, B, u. so3_split; so3_unfold; lra. Qed.
+
+Lemma mvmul_madd (A B : M3) (u : V3) : mvmul (madd A B) u = vadd (mvmul A u) (mvmul B u).
+Proof. destruct A, B, u. so3_split; so3_unfold; lra. Qed.
+
+Lemma mvmul_vadd (A : M3) (u v : V3) : mvmul A (vadd u v) = vadd (mvmul A u) (mvmul A v).
+Proof. destruct A, u, v. so3_split; so3_unfold; lra. Qed.
+
+Lemma mvmul_mscale (c : R) (A : M3) (u : V3) : mvmul (mscale c A) u = vscale c (mvmul A u).
+Proof. destruct A, u. so3_split; so3_unfold; lra. Qed.
+
+Lemma mvmul_vscale (c : R) (A : M3) (u : V3) : mvmul A (vscale c u) = vscale c (mvmul A u).
+Proof. destruct A, u. so3_split; so3_unfold; lra. Qed.
+
+Lemma mvmul_I3 (u : V3) : mvmul I3 u = u.
+Proof. destruct u. so3_split; so3_unfold; lra. Qed.
+
+(** The rotation facts of the normal form: [R^T R = R R^T = I] (in a product). *)
+Lemma rot_cancel_l (q : quat) : qn q <> 0 -> forall A : M3, mmul (mT (rot q)) (mmul (rot q) A) = A.
+Proof. intros H A. rewrite <- mmul_assoc, (rot_orthogonal q H). apply mmul_I3_l. Qed.
+
+Lemma rot_cancel_r (q : quat) : qn q <> 0 -> forall A : M3, mmul (rot q) (mmul (mT (rot q)) A) = A.
+Proof. intros H A. rewrite <- mmul_assoc, (rot_orthogonal_r q H). apply mmul_I3_l. Qed.
+
+Lemma rot_vcancel_l (q : quat) : qn q <> 0 -> forall u : V3, mvmul (mT (rot q)) (mvmul (rot q) u) = u.
+Proof. intros H u. rewrite <- mvmul_mmul, (rot_orthogonal q H). apply mvmul_I3. Qed.
+
+Lemma rot_vcancel_r (q : quat) : qn q <> 0 -> forall u : V3, mvmul (rot q) (mvmul (mT (rot q)) u) = u.
+Proof. intros H u. rewrite <- mvmul_mmul, (rot_orthogonal_r q H). apply mvmul_I3. Qed.
+
+(** [hat] is linear, [hat (vee A) = sk A], and [hat (R u) = R hat(u) R^T] for a
+    rotation [R] (this needs [det R = 1]): the normal form takes rotations out of
+    [hat], so that they can meet their transposes. *)
+Lemma hat_vadd (u v : V3) : hat (vadd u v) = madd (hat u) (hat v).
+Proof. destruct u, v. so3_split; so3_unfold; lra. Qed.
+
+Lemma hat_vscale (c : R) (u : V3) : hat (vscale c u) = mscale c (hat u).
+Proof. destruct u. so3_split; so3_unfold; lra. Qed.
+
+Lemma hat_vee (A : M3) : hat (vee A) = mscale (1/2) (madd A (mscale (-1) (mT A))).
+Proof. destruct A. so3_split; so3_unfold; field. Qed.
+
+(** [vee(A) . v = -tr(A hat(v))/2]: a dot product with a [vee] becomes a trace, where
+    the rotations of [v] come out of the [hat]. *)
+Lemma vdot_vee_l (A : M3) (v : V3) : vdot (vee A) v = (-1/2) * tr (mmul A (hat v)).
+Proof. destruct A, v. so3_unfold. field. Qed.
+
+Lemma vdot_vee_r (A : M3) (u : V3) : vdot u (vee A) = (-1/2) * tr (mmul A (hat u)).
+Proof. destruct A, u. so3_unfold. field. Qed.
+
+(** For any matrix [M]: [M^T hat(M u) M = det(M) hat(u)] (a polynomial identity). *)
+Lemma hat_adj (M : M3) (u : V3) :
+  mmul (mT M) (mmul (hat (mvmul M u)) M) = mscale (det M) (hat u).
+Proof. destruct M, u. so3_split; so3_unfold; lra. Qed.
+
+Lemma rot_hat (q : quat) : qn q <> 0 -> forall u : V3,
+  hat (mvmul (rot q) u) = mmul (rot q) (mmul (hat u) (mT (rot q))).
+Proof.
+  intros H u.
+  assert (E : mmul (mT (rot q)) (mmul (hat (mvmul (rot q) u)) (rot q)) = hat u).
+  { rewrite hat_adj, (rot_det q H). destruct u. so3_split; so3_unfold; lra. }
+  rewrite <- E, !mmul_assoc, (rot_orthogonal_r q H), mmul_I3_r, (rot_cancel_r q H).
+  reflexivity.
+Qed.
+
+Lemma rot_hat_T (q : quat) : qn q <> 0 -> forall u : V3,
+  hat (mvmul (mT (rot q)) u) = mmul (mT (rot q)) (mmul (hat u) (rot q)).
+Proof.
+  intros H u. set (v := mvmul (mT (rot q)) u).
+  assert (E : hat u = mmul (rot q) (mmul (hat v) (mT (rot q)))).
+  { rewrite <- (rot_hat q H v). unfold v. rewrite (rot_vcancel_r q H u). reflexivity. }
+  rewrite E, !mmul_assoc, (rot_cancel_l q H), (rot_orthogonal q H), mmul_I3_r.
+  reflexivity.
+Qed.
+
+#[export] Hint Rewrite vneg_unfold
+  mT_madd mT_mscale mT_mmul mT_mT mT_I3 mT_hat mscale_mscale vscale_vscale
+  mmul_madd_l mmul_madd_r mmul_mscale_l mmul_mscale_r mmul_assoc mmul_I3_l mmul_I3_r
+  mvmul_mmul mvmul_madd mvmul_vadd mvmul_mscale mvmul_vscale mvmul_I3 hat_vadd hat_vscale hat_vee
+  vdot_vee_l vdot_vee_r
+  : so3_norm.
+#[export] Hint Rewrite rot_cancel_l rot_cancel_r rot_vcancel_l rot_vcancel_r
+  rot_orthogonal rot_orthogonal_r using assumption : so3_norm.
+#[export] Hint Rewrite rot_hat rot_hat_T using assumption : so3_hat.
+
+(** The normal form of the goal; [so3_norm_hat] also takes rotations out of [hat]
+    (which helps when a rotation inside a [hat] meets its transpose outside, and
+    hinders when a trace would have to be turned cyclically to see a cancellation). *)
+Ltac so3_norm := unfold sk, sym, msub, mneg; autorewrite with so3_norm.
+Ltac so3_norm_hat := unfold sk, sym, msub, mneg; autorewrite with so3_norm so3_hat.
 
 (** ** Non-negative quantities (the kernel facts of [verify.proof.justify]) *)
 

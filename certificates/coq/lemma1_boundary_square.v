@@ -24,15 +24,15 @@ Hypothesis condition1 : (cos theta) = 0.
 Theorem step1 : (mmul (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi)))) (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi))))) = (madd (madd I3 (mscale ((2 * (sin theta)) * (cos theta)) (hat xi))) (mscale (1 + (- (((cos theta) * (cos theta)) + (- ((sin theta) * (sin theta)))))) (mmul (hat xi) (hat xi)))).
 Proof using xi theta xi_unit.
   so3_split.
-  - apply (eq_by_sum _ _ ((((v2 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v2 xi) ^ 2 * (cos theta) + (v2 xi) ^ 2 + (v3 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v3 xi) ^ 2 * (cos theta) + (v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v2 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v2 xi) * (cos theta) + (-1) * (v1 xi) * (v2 xi) + (-2) * (v3 xi) * (cos theta) * (sin theta) + 2 * (v3 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v3 xi) * (cos theta) + (-1) * (v1 xi) * (v3 xi) + 2 * (v2 xi) * (cos theta) * (sin theta) + (-2) * (v2 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v2 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v2 xi) * (cos theta) + (-1) * (v1 xi) * (v2 xi) + 2 * (v3 xi) * (cos theta) * (sin theta) + (-2) * (v3 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v1 xi) ^ 2 * (cos theta) + (v1 xi) ^ 2 + (v3 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v3 xi) ^ 2 * (cos theta) + (v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((-2) * (v1 xi) * (cos theta) * (sin theta) + 2 * (v1 xi) * (sin theta) + (-1) * (v2 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v2 xi) * (v3 xi) * (cos theta) + (-1) * (v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v3 xi) * (cos theta) + (-1) * (v1 xi) * (v3 xi) + (-2) * (v2 xi) * (cos theta) * (sin theta) + 2 * (v2 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ (((2 * (v1 xi) * (cos theta) * (sin theta) + (-2) * (v1 xi) * (sin theta) + (-1) * (v2 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v2 xi) * (v3 xi) * (cos theta) + (-1) * (v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v1 xi) ^ 2 * (cos theta) + (v1 xi) ^ 2 + (v2 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v2 xi) ^ 2 * (cos theta) + (v2 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
+  - apply (eq_by_sum _ _ ((((v2 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v2 xi) ^ 2 * (cos theta) + (v2 xi) ^ 2 + (v3 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v3 xi) ^ 2 * (cos theta) + (v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v2 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v2 xi) * (cos theta) + (-1) * (v1 xi) * (v2 xi) + (-2) * (v3 xi) * (cos theta) * (sin theta) + 2 * (v3 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v3 xi) * (cos theta) + (-1) * (v1 xi) * (v3 xi) + 2 * (v2 xi) * (cos theta) * (sin theta) + (-2) * (v2 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v2 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v2 xi) * (cos theta) + (-1) * (v1 xi) * (v2 xi) + 2 * (v3 xi) * (cos theta) * (sin theta) + (-2) * (v3 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v1 xi) ^ 2 * (cos theta) + (v1 xi) ^ 2 + (v3 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v3 xi) ^ 2 * (cos theta) + (v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((-2) * (v1 xi) * (cos theta) * (sin theta) + 2 * (v1 xi) * (sin theta) + (-1) * (v2 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v2 xi) * (v3 xi) * (cos theta) + (-1) * (v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((-1) * (v1 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v1 xi) * (v3 xi) * (cos theta) + (-1) * (v1 xi) * (v3 xi) + (-2) * (v2 xi) * (cos theta) * (sin theta) + 2 * (v2 xi) * (sin theta)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ (((2 * (v1 xi) * (cos theta) * (sin theta) + (-2) * (v1 xi) * (sin theta) + (-1) * (v2 xi) * (v3 xi) * (cos theta) ^ 2 + 2 * (v2 xi) * (v3 xi) * (cos theta) + (-1) * (v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v1 xi) ^ 2 * (cos theta) + (v1 xi) ^ 2 + (v2 xi) ^ 2 * (cos theta) ^ 2 + (-2) * (v2 xi) ^ 2 * (cos theta) + (v2 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
 Qed.
 
 (** Step 2: I + 2 sin(θ) cos(θ) hat(ξ) + (1 - (cos(θ) cos(θ) - sin(θ) sin(θ))) hat(ξ) hat(ξ) = I + 2 hat(ξ) hat(ξ)
@@ -40,15 +40,15 @@ Qed.
 Theorem step2 : (madd (madd I3 (mscale ((2 * (sin theta)) * (cos theta)) (hat xi))) (mscale (1 + (- (((cos theta) * (cos theta)) + (- ((sin theta) * (sin theta)))))) (mmul (hat xi) (hat xi)))) = (madd I3 (mscale 2 (mmul (hat xi) (hat xi)))).
 Proof using xi theta xi_unit condition1.
   so3_split.
-  - apply (eq_by_sum _ _ ((((-1) * (v2 xi) ^ 2 + (-1) * (v3 xi) ^ 2) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + ((2 * (v2 xi) ^ 2 * (cos theta) + 2 * (v3 xi) ^ 2 * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v2 xi) * (cos theta) + (-2) * (v3 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v3 xi) * (cos theta) + 2 * (v2 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v2 xi) * (cos theta) + 2 * (v3 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((cos theta) ^ 2 + (-1) * (sin theta) ^ 2 + 1) * (1) / (1)) * (vdot xi xi - 1) + (((v2 xi) ^ 2 + (-1)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v2 xi) ^ 2 * (cos theta) + 2 * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (Rminus_diag_eq _ _ xi_unit), (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (sin theta) + (-2) * (v2 xi) * (v3 xi) * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v3 xi) * (cos theta) + (-2) * (v2 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + ((2 * (v1 xi) * (sin theta) + (-2) * (v2 xi) * (v3 xi) * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((cos theta) ^ 2 + (-1) * (sin theta) ^ 2 + 1) * (1) / (1)) * (vdot xi xi - 1) + (((v3 xi) ^ 2 + (-1)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v3 xi) ^ 2 * (cos theta) + 2 * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (Rminus_diag_eq _ _ xi_unit), (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
+  - apply (eq_by_sum _ _ ((((-1) * (v2 xi) ^ 2 + (-1) * (v3 xi) ^ 2) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + ((2 * (v2 xi) ^ 2 * (cos theta) + 2 * (v3 xi) ^ 2 * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v2 xi) * (cos theta) + (-2) * (v3 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v3 xi) * (cos theta) + 2 * (v2 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v2 xi) * (cos theta) + 2 * (v3 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((cos theta) ^ 2 + (-1) * (sin theta) ^ 2 + 1) * (1) / (1)) * (vdot xi xi - 1) + (((v2 xi) ^ 2 + (-1)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v2 xi) ^ 2 * (cos theta) + 2 * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (Rminus_diag_eq _ _ xi_unit), (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (sin theta) + (-2) * (v2 xi) * (v3 xi) * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v1 xi) * (v3 xi) * (cos theta) + (-2) * (v2 xi) * (sin theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + ((2 * (v1 xi) * (sin theta) + (-2) * (v2 xi) * (v3 xi) * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((cos theta) ^ 2 + (-1) * (sin theta) ^ 2 + 1) * (1) / (1)) * (vdot xi xi - 1) + (((v3 xi) ^ 2 + (-1)) * (1) / (1)) * (cos theta * cos theta + sin theta * sin theta - 1) + (((-2) * (v3 xi) ^ 2 * (cos theta) + 2 * (cos theta)) * (1) / (1)) * ((cos theta) - 0))); [rewrite (Rminus_diag_eq _ _ xi_unit), (circle theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
 Qed.
 
 (** Step 3: I + 2 hat(ξ) hat(ξ) = 2 ξξᵀ - I
@@ -56,15 +56,15 @@ Qed.
 Theorem step3 : (madd I3 (mscale 2 (mmul (hat xi) (hat xi)))) = (madd (mscale 2 (outer xi xi)) (mneg I3)).
 Proof using xi theta xi_unit.
   so3_split.
-  - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
+  - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
 Qed.
 
 (** The derivation's claim: R̄_r R̄_r = 2 ξξᵀ - I *)

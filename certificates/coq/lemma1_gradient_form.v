@@ -22,7 +22,7 @@ Variable omega : V3.
 Theorem step1 : (tr (mmul Rbar_r (hat omega))) = (vdot (vscale (-2) (vee Rbar_r)) omega).
 Proof using q_Rbar_r omega q_Rbar_r_nonzero.
   generalize (rot q_Rbar_r) as G_Rbar_r; intro G_Rbar_r.
-  so3_unfold; field; so3_nonzero.
+  so3_poly.
 Qed.
 
 End lemma1_gradient_form.

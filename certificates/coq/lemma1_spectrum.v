@@ -21,15 +21,15 @@ Variable theta : R.
 Theorem step1 : (madd (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi)))) (mT (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi)))))) = (madd (mscale 2 (outer xi xi)) (mscale (2 * (cos theta)) (madd I3 (mneg (outer xi xi))))).
 Proof using xi theta xi_unit.
   so3_split.
-  - apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
+  - apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
 Qed.
 
 End lemma1_spectrum.

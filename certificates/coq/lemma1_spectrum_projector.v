@@ -18,15 +18,15 @@ Hypothesis xi_unit : vdot xi xi = 1.
 Theorem step1 : (mmul (outer xi xi) (outer xi xi)) = (outer xi xi).
 Proof using xi xi_unit.
   so3_split.
-  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v2 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
-  - apply (eq_by_sum _ _ ((((v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
+  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
 Qed.
 
 End lemma1_spectrum_projector.

@@ -17,7 +17,7 @@ Hypothesis xi_unit : vdot xi xi = 1.
     (algebra (|ξ| = 1)) *)
 Theorem step1 : (tr (outer xi xi)) = 1.
 Proof using xi xi_unit.
-  apply (eq_by_sum _ _ (((1) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
+  apply (eq_by_sum _ _ (((1) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
 Qed.
 
 End lemma1_spectrum_rank.

@@ -20,7 +20,7 @@ Variable theta : R.
     (algebra (Rodrigues)) *)
 Theorem step1 : (tr (madd (madd I3 (mscale (sin theta) (hat xi))) (mscale (1 + (- (cos theta))) (mmul (hat xi) (hat xi))))) = (1 + (2 * (cos theta))).
 Proof using xi theta xi_unit.
-  apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_unfold; field; so3_nonzero].
+  apply (eq_by_sum _ _ (((2 * (cos theta) + (-2)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
 Qed.
 
 End lemma1_trace_form.

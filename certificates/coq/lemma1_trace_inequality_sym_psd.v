@@ -28,12 +28,12 @@ Hypothesis lam1_spec : lam_min_spec A lam1.
 Theorem step1 : (tr (mmul A (madd (mmul (mT G) G) (hat v)))) >= (lam1 * (tr (madd (mmul (mT G) G) (hat v)))).
 Proof using A_11 A_22 A_33 A_12 A_13 A_23 G v lam1 lam1_spec.
   assert (P1 : (mT A) = A).
-  { so3_split. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. }
+  { so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P2 : (sym (madd (mmul (mT G) G) (hat v))) = (mscale 1 (mmul (mT G) G))).
-  { so3_split. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. - so3_unfold; field; so3_nonzero. }
+  { so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (T1 : 0 <= ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + (- (lam1 * (tr (madd (mmul (mT G) G) (hat v))))))) by exact (trace_lower_bound A (madd (mmul (mT G) G) (hat v)) G 1 lam1 P1 P2 ltac:(lra) lam1_spec).
   assert (E : ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + (- (lam1 * (tr (madd (mmul (mT G) G) (hat v)))))) = ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + (- (lam1 * (tr (madd (mmul (mT G) G) (hat v))))))).
-  { so3_unfold; field; so3_nonzero. }
+  { so3_poly. }
   exact (ge_by_slack _ _ _ E T1).
 Qed.
 

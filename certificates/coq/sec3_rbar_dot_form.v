@@ -27,17 +27,19 @@ Hypothesis k_s_pos : 0 < k_s.
     (algebra (hat(R v) = R hat(v) Rᵀ)) *)
 Theorem step1 : (mmul (hat (mvmul (mscale k_s Rbar) (vee (sk (mmul (mT Rbar) R_l))))) Rbar) = (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))).
 Proof using q_Rbar q_R_l k_s q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+  so3_norm_hat.
+  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
   generalize (rot q_R_l) as G_R_l; intro G_R_l.
   so3_split.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
 Qed.
 
 End sec3_rbar_dot_form.

@@ -26,9 +26,9 @@ Proof using q_R_r q_R_l q_R_r_nonzero q_R_l_nonzero.
   generalize (rot q_R_l) as G_R_l; intro G_R_l.
   generalize (rot q_R_r) as G_R_r; intro G_R_r.
   so3_split.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
 Qed.
 
 End thm1_S_h_sign.

@@ -32,7 +32,7 @@ Theorem step1 : ((((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk 
 Proof using q_R_r q_Rbar k_s omega_h_s q_R_r_nonzero q_Rbar_nonzero k_s_pos.
   generalize (rot q_R_r) as G_R_r; intro G_R_r.
   generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  so3_unfold; field; so3_nonzero.
+  so3_poly.
 Qed.
 
 End thm1_V_dot_zero_on_sync.

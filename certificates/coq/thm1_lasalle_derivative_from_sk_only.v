@@ -29,16 +29,18 @@ Hypothesis xi_unit : vdot xi xi = 1.
     (algebra (sk(2ξξᵀ - I) = 0)) *)
 Theorem step1 : (madd (mmul (mT (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) (mmul R_l (madd (mscale 2 (outer xi xi)) (mneg I3))))))) (mvmul (mT R_l) omega_h_s))))) (mmul R_l (madd (mscale 2 (outer xi xi)) (mneg I3)))) (mmul (mT R_l) (mmul (mscale k_s (mmul R_l (madd (mscale 2 (outer xi xi)) (mneg I3)))) (sk (mmul (mT (mmul R_l (madd (mscale 2 (outer xi xi)) (mneg I3)))) R_l))))) = (mneg (mmul (mmul (mmul (mT R_l) (hat omega_h_s)) R_l) (madd (mscale 2 (outer xi xi)) (mneg I3)))).
 Proof using q_R_l k_s omega_h_s xi q_R_l_nonzero k_s_pos xi_unit.
+  so3_norm_hat.
+  generalize (rot q_R_l) as G_R_l; intro G_R_l.
   so3_split.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
-  - so3_unfold; field; so3_nonzero.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
+  - so3_poly.
 Qed.
 
 End thm1_lasalle_derivative_from_sk_only.

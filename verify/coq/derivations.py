@@ -14,13 +14,18 @@ prelude's definitions (``SO3.v``):
 - side conditions and the paper's assumptions are named ``Hypothesis``es (never proved
   facts), and each theorem's ``Proof using`` lists exactly those it may use, so after
   the section closes they are premises of the theorem;
-- an equality is proved entry by entry by ``field`` (denominators are quaternion
-  norms), with cofactors ``lhs - rhs = sum c_k g_k`` when it needs a unit vector, an
-  angle or a side condition (:mod:`verify.coq.polys` finds them, ``field`` re-checks);
-- an inequality ``lhs <= rhs`` (``>=``) by its slack: ``field`` proves that the slack
-  equals the sum of the justification's terms, and each term is non-negative by the
-  prelude's lemmas (squares, declared positive scalars, assumptions, the trace
-  inequality, the trace of a PSD product), whose premises are proved like equalities.
+- an equality is proved entry by entry, with rotations generalised to free matrices
+  when possible (after the prelude's matrix-level normal form ``so3_norm`` when
+  rotations must meet their transposes, :mod:`verify.coq.normal`); an entry that is a
+  polynomial identity is decided by ``lra`` (``so3_poly``), one with quaternion norms in
+  its denominators by ``field``; cofactors ``lhs - rhs = sum c_k g_k`` enter when it
+  needs a unit vector, an angle or a side condition (:mod:`verify.coq.polys` finds
+  them, Coq re-checks);
+- an inequality ``lhs <= rhs`` (``>=``) by its slack: Coq proves that the slack
+  equals the sum of the justification's terms (as an equality above), and each term
+  is non-negative by the prelude's lemmas (squares, declared positive scalars,
+  assumptions, the trace inequality, the trace of a PSD product), whose premises are
+  proved like equalities.
 
 Derivatives (``ctx.ddt``) arrive as the trees :mod:`verify.proof.calculus` formed by
 the product rule from the declared dynamics; Coq checks the algebra from there on (the
@@ -33,6 +38,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from verify.coq.normal import normal_form
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
 from verify.coq.terms import CoqExportError, Naming, ascii_identifier, constant, coq_text
@@ -340,20 +346,35 @@ def _generators(sec: _Section, atoms: Atoms, conds: list[Condition]) -> list[tup
 def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]) -> list[str]:
     """Tactics proving ``lhs = rhs`` (any shape) from the generators' vanishing.
 
-    First with rotations as free matrices (conditions on rotations left out): when the
+    First with rotations as free matrices (conditions on rotations left out), as they
+    stand and after the prelude's matrix-level normal form ``so3_norm``
+    (:mod:`verify.coq.normal`: rotations meeting their transposes cancel); when the
     identity holds there, ``generalize`` forgets that they are rotations and ``field``
-    works on small polynomials. Otherwise in the quaternion parameters.
+    works on small polynomials (of the two, the one with fewer terms is written).
+    Otherwise with some rotations in quaternion parameters, or with their
+    orthogonality as cofactors, or all in quaternion parameters.
     """
     if lhs.shape not in (SCALAR, VECTOR, MATRIX):
         raise CoqExportError("only scalars, vectors and matrices are compared")
     rotations = [sec.naming.variable(v) for v in variables_of(lhs, rhs)
                  if v.kind == "rotation"]
     attempts = []
+    free_attempts = 0  # the first ones: with free matrices, the smaller polynomials win
     if rotations and sec.gatoms is not None:
         free = [c for c in conds
                 if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
         prefix = [f"generalize (rot q_{n}) as G_{n}; intro G_{n}." for n in rotations]
+        normals = []
+        for hat, tactic in ((False, "so3_norm."), (True, "so3_norm_hat.")):
+            try:
+                normals.append((tactic, (normal_form(lhs, hat=hat), normal_form(rhs, hat=hat))))
+            except CoqExportError:
+                pass
         attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free), prefix, True))
+        for tactic, sides in normals:
+            attempts.append((sec.gatoms, _generators(sec, sec.gatoms, free),
+                             [tactic, *prefix], True, sides))
+        free_attempts = len(attempts)
         ortho_prefix, ortho = [], []
         for n in rotations:
             ortho_prefix += [
@@ -368,17 +389,28 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
                          ortho_prefix, False))
     attempts.append((sec.atoms, _generators(sec, sec.atoms, conds), [], True))
     failure = CoqExportError("no attempt")
-    for atoms, gens, prefix, complete in attempts:
-        left, right = entries(evaluate(lhs, atoms)), entries(evaluate(rhs, atoms))
+    best: tuple[int, list[str]] | None = None
+    for k, (atoms, gens, prefix, complete, *sides) in enumerate(attempts):
+        a, b = sides[0] if sides else (lhs, rhs)
+        left, right = entries(evaluate(a, atoms)), entries(evaluate(b, atoms))
         try:
-            tactics = [_entry_tactic(atoms, a - b, gens, complete)
-                       for a, b in zip(left, right, strict=True)]
+            tactics = [_entry_tactic(atoms, x - y, gens, complete)
+                       for x, y in zip(left, right, strict=True)]
         except CoqExportError as exc:
             failure = exc
             continue
         if lhs.shape == SCALAR:
-            return [*prefix, tactics[0]]
-        return prefix + ["so3_split."] + [f"- {t}" for t in tactics]
+            script = [*prefix, tactics[0]]
+        else:
+            script = prefix + ["so3_split."] + [f"- {t}" for t in tactics]
+        size = sum(len(x.num.terms()) + len(y.num.terms())
+                   for x, y in zip(left, right, strict=True))
+        if best is None or size < best[0]:
+            best = (size, script)
+        if k >= free_attempts - 1:
+            return best[1]
+    if best is not None:
+        return best[1]
     raise failure
 
 
@@ -431,7 +463,7 @@ def _orthogonality(atoms: Atoms, n: str) -> list[tuple]:
 def _entry_tactic(atoms: Atoms, diff, gens: list[tuple], complete: bool = True) -> str:
     num = diff.num
     if num == 0:
-        return "so3_unfold; field; so3_nonzero."
+        return f"{_closer(atoms)}."
     values = [g[0] for g in gens]
     cof = cofactors(num, [v.num for v in values], complete=complete)
     if cof is None:
@@ -446,7 +478,15 @@ def _entry_tactic(atoms: Atoms, diff, gens: list[tuple], complete: bool = True) 
         parts.append(f"({_poly_text(c, atoms)} * ({gden}) / ({den})) * {text}")
         proofs.append(proof)
     return (f"apply (eq_by_sum _ _ ({' + '.join(parts)})); "
-            f"[rewrite {', '.join(proofs)}; ring | so3_unfold; field; so3_nonzero].")
+            f"[rewrite {', '.join(proofs)}; ring | {_closer(atoms)}].")
+
+
+def _closer(atoms: Atoms) -> str:
+    """The tactic deciding an entry: with a rotation in quaternion parameters, ``field``
+    (its denominators are quaternion norms); otherwise the entry is an identity of
+    polynomials with rational coefficients, which ``lra`` decides (nonlinear monomials
+    are atoms to it) many times faster than ``field`` (``so3_poly`` in the prelude)."""
+    return "so3_unfold; field; so3_nonzero" if atoms.rotations else "so3_poly"
 
 
 def _inequality_script(sec: _Section, step: Step, gens: list[tuple]) -> list[str]:
