@@ -44,8 +44,7 @@ Import ListNotations.
 Open Scope R_scope.
 """
 
-UNFOLD = ("cbv beta iota zeta delta [evalM qfR dotR map peval meval hd tl env]; "
-          "unfold Q2R; cbn [Qnum Qden]")
+UNFOLD = "cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]"
 
 
 @dataclass(frozen=True)
@@ -117,17 +116,6 @@ def poly_data(p: dict) -> str:
 
 
 # -- the unit ----------------------------------------------------------------------------
-@dataclass
-class _Param:
-    """One parameter of the environment: its Coq text."""
-
-    text: str
-
-
-def _parse_rational(x: str) -> Fraction:
-    return Fraction(x)
-
-
 def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     """The unit of one certificate (``data``, parsed JSON) for ``step``."""
     from verify.proof.checker import step_problem
@@ -147,7 +135,6 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     env: list[str] = []
     factor_text: dict[tuple, tuple[str, str]] = {}  # factor poly key -> (text, 0 < text)
     unfold_extra: list[str] = []
-    gens = space.gens
 
     def key_of(poly) -> tuple:
         return tuple(sorted(pl.from_ring(poly).items()))
@@ -257,10 +244,6 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     f_exps = {key: k - exps.get(key, 0) for key, k in divided.items()}
     d_text, d_pos, _ = product_text({k: e for k, e in d_exps.items() if e > 0})
     f_text, _, f_nonneg = product_text({k: e for k, e in f_exps.items() if e > 0})
-    if any(e < 0 for e in d_exps.values()) or any(e < 0 for e in f_exps.values()):
-        # a factor divided out more often than the denominator has it moves to F, and
-        # the reverse to D: both are products of positive factors
-        pass
     lhs, rhs = coq_text(st.lhs, naming), coq_text(st.rhs, naming)
     slack_text = f"({rhs} + - {lhs})" if st.relation == "<=" else f"({lhs} + - {rhs})"
     statement = f"{lhs} <= {rhs}" if st.relation == "<=" else f"{lhs} >= {rhs}"
@@ -283,7 +266,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         matrix = [[pl.from_json(e, n, "multiplier") for e in row] for row in b["multiplier"]]
         basis = [tuple(m) for m in b["basis"]]
         k = len(matrix)
-        gram = [[_parse_rational(x) for x in row] for row in b["gram"]]
+        gram = [[Fraction(x) for x in row] for row in b["gram"]]
         if len(gram) != k * len(basis):
             raise CoqExportError(f"block {b_index}: Gram size is not multiplier x basis")
         squares = []
@@ -309,6 +292,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         if k == 1:
             body += [f"Lemma {lemma} : mult_psd env {hname}.", "Proof.",
                      f"  unfold {hname}. apply mult_psd_scalar.",
+                     "  rewrite zeval_peval by (vm_compute; reflexivity).",
                      f"  match goal with |- 0 <= ?g => replace g with {c_text} "
                      f"by ({UNFOLD}; {rewrites}so3_unfold; field; sos_nonzero) end.",
                      f"  exact {c_proof}.", "Qed.", ""]
@@ -317,7 +301,9 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
                      f"  apply (mult_psd_3 env {hname} {c_text} ({q_fun})).",
                      "  - reflexivity.", f"  - exact {c_proof}.",
                      f"  - intros x1 x2 x3. exact ({q_proof} (mkV x1 x2 x3)).",
-                     f"  - intros x1 x2 x3. unfold {hname}. {UNFOLD}. {rewrites}so3_unfold. "
+                     f"  - intros x1 x2 x3. rewrite (evalM_Z env {hname} (eq_refl true <: "
+                     f"all_int_matrix {hname} = true)). unfold {hname}. {UNFOLD}. "
+                     f"{rewrites}so3_unfold. "
                      "field; sos_nonzero.", "Qed.", ""]
         else:
             raise CoqExportError(f"block {b_index}: a multiplier of size {k} is not exported")
@@ -360,12 +346,15 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         f"Definition blocks : list block := [{'; '.join(block_names)}].", "",
         "Lemma cert_checked : cert_ok target blocks = true.",
         "Proof. vm_compute. reflexivity. Qed.", "",
-        f"Lemma grounds : blocks_psd env blocks.",
+        "Lemma grounds : blocks_psd env blocks.",
         f"Proof. exact ({grounds_proof}). Qed.", "",
         f"(** The link: the slack of the statement times {_comment(d_text)} is the target "
         "polynomial at the parameters (times the factors divided out of it). *)",
         f"Lemma link : {slack_text} * {d_text} = {f_text} * peval env target.",
-        f"Proof. unfold target. {UNFOLD}. {rewrites}so3_unfold. field; sos_nonzero. Qed.",
+        "Proof.",
+        "  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).",
+        f"  unfold target. {UNFOLD}. {rewrites}so3_unfold. field; sos_nonzero.",
+        "Qed.",
         "",
         *proof,
         f"End {section}.", ""])
@@ -393,7 +382,7 @@ def _multiplier_plans(problem, because, sp, naming: Naming, assumptions, lam_spe
     scalars: list[tuple[str, str, str]] = []  # grounds, Coq text, proof 0 <= text
 
     def den_of(kfs) -> tuple[str, str]:
-        nums, den = _lifted(kfs)
+        _nums, den = _lifted(kfs)
         return _den_text(den, naming, space)
 
     for v in space.variables:

@@ -354,3 +354,35 @@ Ltac sos_nonzero :=
   | |- 1 + ?a * ?a + ?b * ?b <> 0 => apply Rgt_not_eq, chart_den_pos
   | |- 1 + ?t * ?t <> 0 => apply Rgt_not_eq, angle_den_pos
   end.
+
+(** ** Integer coefficients: a plainer value for [field] *)
+
+Fixpoint zeval (env : list R) (p : poly) : R :=
+  match p with
+  | nil => 0
+  | (m, c) :: p' => IZR (Qnum c) * meval env m + zeval env p'
+  end.
+
+Definition all_int (p : poly) : bool := forallb (fun t => Pos.eqb (Qden (snd t)) 1) p.
+
+Lemma zeval_peval env p : all_int p = true -> peval env p = zeval env p.
+Proof.
+  induction p as [|[m [n d]] p IH]; cbn [peval zeval all_int forallb]; [reflexivity|].
+  intros H. apply andb_true_iff in H as [H1 H2]. cbn [snd Qden] in H1.
+  apply Pos.eqb_eq in H1. subst d.
+  rewrite (IH H2). unfold Q2R. simpl. field.
+Qed.
+
+Definition evalMZ (env : list R) (H : list (list poly)) : list (list R) :=
+  map (map (zeval env)) H.
+
+Definition all_int_matrix (H : list (list poly)) : bool := forallb (forallb all_int) H.
+
+Lemma evalM_Z env H : all_int_matrix H = true -> evalM env H = evalMZ env H.
+Proof.
+  unfold evalM, evalMZ, all_int_matrix. induction H as [|row H IH]; simpl; [reflexivity|].
+  intros E. apply andb_true_iff in E as [E1 E2]. rewrite (IH E2). f_equal.
+  induction row as [|p row IHr]; simpl in *; [reflexivity|].
+  apply andb_true_iff in E1 as [Ep Er]. rewrite (zeval_peval env p Ep), (IHr Er).
+  reflexivity.
+Qed.

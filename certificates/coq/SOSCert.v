@@ -1,0 +1,388 @@
+(** * Sum-of-squares certificates checked by computation
+
+    A polynomial is data: a list of terms (exponents, rational coefficient) over the
+    variables of an environment [env : list R] (a term [(m, c)] denotes
+    [c * env_1^m_1 * env_2^m_2 * ...]).  [peval env p] is its value.  Nothing below
+    trusts the exporter: the exporter hands over polynomials and numbers, and [vm_compute]
+    runs the checks whose soundness is proved here once.
+
+    - [poly_zero p = true] (sort the terms, add the coefficients of equal exponents,
+      drop zeros, nothing left) implies [peval env p = 0] for every [env];
+    - a certificate is a list of blocks: a multiplier [H] (a k x k matrix of
+      polynomials) and squares [(d, u)] (a rational [d], a k-vector [u] of
+      polynomials); [cert_ok target blocks = true] checks, exactly, the identity
+      [target = sum over blocks and squares of d * u^T H u], that every [d] is
+      non-negative and that every [u] has [H]'s size;
+    - [sos_nonneg]: if, moreover, each multiplier is positive semidefinite at [env]
+      (the unit proves that from the paper's hypotheses), then [0 <= peval env target].
+
+    This is the kernel's side of the SOS steps (paper, Lemma 1 and Theorem 1; the
+    certificates' LDL^T squares). *)
+
+From Coq Require Import QArith Qreals Reals List Lra Psatz Sorting.Permutation
+  Sorting.Mergesort Orders Bool.
+From VerifyCoq Require Import SO3.
+Import ListNotations.
+Open Scope R_scope.
+
+Definition mono := list nat.
+Definition term := (mono * Q)%type.
+Definition poly := list term.
+
+(** ** Values *)
+
+Fixpoint meval (env : list R) (m : mono) : R :=
+  match m with
+  | nil => 1
+  | k :: m' => (hd 0 env) ^ k * meval (tl env) m'
+  end.
+
+Fixpoint peval (env : list R) (p : poly) : R :=
+  match p with
+  | nil => 0
+  | (m, c) :: p' => Q2R c * meval env m + peval env p'
+  end.
+
+Fixpoint mono_mul (a b : mono) : mono :=
+  match a, b with
+  | nil, _ => b
+  | _, nil => a
+  | x :: a', y :: b' => (x + y)%nat :: mono_mul a' b'
+  end.
+
+Lemma meval_nil env m : meval env m = meval env m * meval env nil.
+Proof. simpl. ring. Qed.
+
+Lemma meval_mul env a b : meval env (mono_mul a b) = meval env a * meval env b.
+Proof.
+  revert env b. induction a as [|x a IH]; intros env b.
+  - simpl. ring.
+  - destruct b as [|y b]; simpl.
+    + ring.
+    + rewrite IH, pow_add. ring.
+Qed.
+
+Definition pscale (c : Q) (p : poly) : poly := map (fun t => (fst t, (c * snd t)%Q)) p.
+
+Definition pmul_term (t : term) (q : poly) : poly :=
+  map (fun u => (mono_mul (fst t) (fst u), (snd t * snd u)%Q)) q.
+
+Fixpoint pmul (p q : poly) : poly :=
+  match p with
+  | nil => nil
+  | t :: p' => pmul_term t q ++ pmul p' q
+  end.
+
+Lemma peval_app env p q : peval env (p ++ q) = peval env p + peval env q.
+Proof. induction p as [|[m c] p IH]; simpl; [ring | rewrite IH; ring]. Qed.
+
+Lemma peval_scale env c p : peval env (pscale c p) = Q2R c * peval env p.
+Proof.
+  induction p as [|[m d] p IH]; simpl; [ring|]. rewrite IH, Q2R_mult. ring.
+Qed.
+
+Lemma peval_mul_term env t q :
+  peval env (pmul_term t q) = Q2R (snd t) * meval env (fst t) * peval env q.
+Proof.
+  destruct t as [m c]. induction q as [|[m' d] q IH]; simpl in *; [ring|].
+  rewrite IH, Q2R_mult, meval_mul. ring.
+Qed.
+
+Lemma peval_mul env p q : peval env (pmul p q) = peval env p * peval env q.
+Proof.
+  induction p as [|[m c] p IH]; simpl; [ring|].
+  rewrite peval_app, peval_mul_term, IH. simpl. ring.
+Qed.
+
+(** ** Normal form: sort, add equal exponents, drop zero coefficients *)
+
+Fixpoint mono_leb (a b : mono) : bool :=
+  match a, b with
+  | nil, _ => true
+  | _ :: _, nil => false
+  | x :: a', y :: b' => if Nat.ltb x y then true else if Nat.ltb y x then false
+                        else mono_leb a' b'
+  end.
+
+Lemma mono_leb_total a b : mono_leb a b = true \/ mono_leb b a = true.
+Proof.
+  revert b. induction a as [|x a IH]; intros [|y b]; simpl; auto.
+  destruct (Nat.ltb x y) eqn:E1; auto. destruct (Nat.ltb y x) eqn:E2; auto.
+Qed.
+
+Module TermOrder <: Orders.TotalLeBool.
+  Definition t := term.
+  Definition leb (a b : term) := mono_leb (fst a) (fst b).
+  Theorem leb_total : forall a b, leb a b = true \/ leb b a = true.
+  Proof. intros a b. apply mono_leb_total. Qed.
+End TermOrder.
+
+Module TermSort := Sort TermOrder.
+
+Lemma peval_perm env p q : Permutation p q -> peval env p = peval env q.
+Proof.
+  induction 1 as [|[m c] p q _ IH|[m c] [m' d] p|p q r _ IH1 _ IH2]; simpl; try lra.
+Qed.
+
+Fixpoint mono_eqb (a b : mono) : bool :=
+  match a, b with
+  | nil, nil => true
+  | x :: a', y :: b' => Nat.eqb x y && mono_eqb a' b'
+  | _, _ => false
+  end.
+
+Lemma mono_eqb_eq a b : mono_eqb a b = true -> a = b.
+Proof.
+  revert b. induction a as [|x a IH]; intros [|y b]; simpl; try discriminate; auto.
+  intros H. apply andb_true_iff in H as [H1 H2].
+  apply Nat.eqb_eq in H1. rewrite H1, (IH b H2). reflexivity.
+Qed.
+
+Lemma Q2R_Qred q : Q2R (Qred q) = Q2R q.
+Proof. apply Qeq_eqR, Qred_correct. Qed.
+
+(** Merge runs of equal exponents ([m], [c] is the run so far). *)
+Fixpoint merge_runs (m : mono) (c : Q) (p : poly) : poly :=
+  match p with
+  | nil => [(m, c)]
+  | (m', d) :: p' =>
+      if mono_eqb m m' then merge_runs m (Qred (c + d)) p'
+      else (m, c) :: merge_runs m' d p'
+  end.
+
+Lemma peval_merge_runs env m c p :
+  peval env (merge_runs m c p) = Q2R c * meval env m + peval env p.
+Proof.
+  revert m c. induction p as [|[m' d] p IH]; intros m c; cbn [merge_runs peval]; [ring|].
+  destruct (mono_eqb m m') eqn:E.
+  - apply mono_eqb_eq in E. subst m'. rewrite IH, Q2R_Qred, Q2R_plus. ring.
+  - cbn [peval]. rewrite IH. ring.
+Qed.
+
+Definition drop_zeros (p : poly) : poly :=
+  filter (fun t => negb (Qeq_bool (snd t) 0)) p.
+
+Lemma peval_drop_zeros env p : peval env (drop_zeros p) = peval env p.
+Proof.
+  induction p as [|[m c] p IH]; simpl; [reflexivity|].
+  destruct (Qeq_bool c 0) eqn:E; simpl; rewrite IH; [|reflexivity].
+  apply Qeq_bool_eq, Qeq_eqR in E. rewrite E. unfold Q2R. simpl. ring.
+Qed.
+
+Definition normal (p : poly) : poly :=
+  match TermSort.sort p with
+  | nil => nil
+  | (m, c) :: p' => drop_zeros (merge_runs m c p')
+  end.
+
+Lemma peval_normal env p : peval env (normal p) = peval env p.
+Proof.
+  unfold normal. rewrite (peval_perm env p (TermSort.sort p) (TermSort.Permuted_sort p)).
+  destruct (TermSort.sort p) as [|[m c] q]; [reflexivity|].
+  rewrite peval_drop_zeros, peval_merge_runs. reflexivity.
+Qed.
+
+Definition poly_zero (p : poly) : bool :=
+  match normal p with nil => true | _ => false end.
+
+Lemma poly_zero_sound env p : poly_zero p = true -> peval env p = 0.
+Proof.
+  unfold poly_zero. intros H. rewrite <- (peval_normal env p).
+  destruct (normal p); [reflexivity | discriminate].
+Qed.
+
+Definition pneg (p : poly) : poly := pscale (-1)%Q p.
+
+(** ** Certificates *)
+
+Fixpoint dotP (u v : list poly) : poly :=
+  match u, v with
+  | a :: u', b :: v' => normal (pmul a b) ++ dotP u' v'
+  | _, _ => nil
+  end.
+
+Fixpoint dotR (u v : list R) : R :=
+  match u, v with
+  | a :: u', b :: v' => a * b + dotR u' v'
+  | _, _ => 0
+  end.
+
+Lemma peval_dotP env u v :
+  peval env (dotP u v) = dotR (map (peval env) u) (map (peval env) v).
+Proof.
+  revert v. induction u as [|a u IH]; intros [|b v]; simpl; try reflexivity.
+  rewrite peval_app, peval_normal, peval_mul, IH. reflexivity.
+Qed.
+
+(** [u^T H u], with [H u] normalised first. *)
+Definition qformP (H : list (list poly)) (u : list poly) : poly :=
+  dotP u (map (fun row => normal (dotP row u)) H).
+
+(** The quadratic form of a real matrix (a list of rows) at [x]. *)
+Definition qfR (M : list (list R)) (x : list R) : R :=
+  dotR x (map (fun row => dotR row x) M).
+
+Definition evalM (env : list R) (H : list (list poly)) : list (list R) :=
+  map (map (peval env)) H.
+
+Lemma peval_qformP env H u :
+  peval env (qformP H u) = qfR (evalM env H) (map (peval env) u).
+Proof.
+  unfold qformP, qfR, evalM. rewrite peval_dotP. f_equal.
+  rewrite !map_map. apply map_ext. intros row.
+  rewrite peval_normal, peval_dotP. reflexivity.
+Qed.
+
+Record block := mkBlock { mult : list (list poly); squares : list (Q * list poly) }.
+
+Definition block_poly (b : block) : poly :=
+  flat_map (fun s => pscale (fst s) (qformP (mult b) (snd s))) (squares b).
+
+Definition cert_poly (bs : list block) : poly := flat_map block_poly bs.
+
+Definition block_shape_ok (b : block) : bool :=
+  forallb (fun s => Qle_bool 0 (fst s) && Nat.eqb (length (snd s)) (length (mult b)))
+          (squares b).
+
+Definition cert_ok (target : poly) (bs : list block) : bool :=
+  forallb block_shape_ok bs && poly_zero (target ++ pneg (cert_poly bs)).
+
+(** A multiplier positive semidefinite at [env]: its quadratic form is non-negative at
+    every real vector of its size. *)
+Definition mult_psd (env : list R) (H : list (list poly)) : Prop :=
+  forall x : list R, length x = length H -> 0 <= qfR (evalM env H) x.
+
+Lemma Qle_bool_R a : Qle_bool 0 a = true -> 0 <= Q2R a.
+Proof.
+  intros H. apply Qle_bool_iff, Qle_Rle in H. unfold Q2R in H at 1. simpl in H. lra.
+Qed.
+
+Lemma block_nonneg env b :
+  block_shape_ok b = true -> mult_psd env (mult b) -> 0 <= peval env (block_poly b).
+Proof.
+  unfold block_shape_ok, block_poly. intros Hs Hm.
+  induction (squares b) as [|[d u] ss IH]; simpl in *; [lra|].
+  apply andb_true_iff in Hs as [Hs Hss]. apply andb_true_iff in Hs as [Hd Hl].
+  rewrite peval_app, peval_scale, peval_qformP.
+  apply Rplus_le_le_0_compat; [|exact (IH Hss)].
+  apply Rmult_le_pos; [exact (Qle_bool_R d Hd)|].
+  apply Hm. rewrite map_length. apply Nat.eqb_eq, Hl.
+Qed.
+
+Lemma cert_poly_nonneg env bs :
+  forallb block_shape_ok bs = true -> (forall b, In b bs -> mult_psd env (mult b)) ->
+  0 <= peval env (cert_poly bs).
+Proof.
+  induction bs as [|b bs IH]; simpl; intros Hs Hm; [lra|].
+  apply andb_true_iff in Hs as [Hb Hbs]. rewrite peval_app.
+  apply Rplus_le_le_0_compat; [apply block_nonneg; auto|apply IH; auto].
+Qed.
+
+Theorem sos_nonneg env target bs :
+  cert_ok target bs = true -> (forall b, In b bs -> mult_psd env (mult b)) ->
+  0 <= peval env target.
+Proof.
+  unfold cert_ok. intros H Hm. apply andb_true_iff in H as [Hs Hz].
+  apply (poly_zero_sound env) in Hz.
+  rewrite peval_app in Hz. unfold pneg in Hz. rewrite peval_scale in Hz.
+  assert (E : Q2R (-1) = -1) by (unfold Q2R; simpl; lra). rewrite E in Hz.
+  pose proof (cert_poly_nonneg env bs Hs Hm). lra.
+Qed.
+
+(** ** Multipliers from the paper's facts *)
+
+(** A 1 x 1 multiplier [g] is positive semidefinite when [0 <= g]. *)
+Lemma mult_psd_scalar env g : 0 <= peval env g -> mult_psd env [[g]].
+Proof.
+  intros Hg [|x [|y xs]]; simpl; try discriminate. intros _.
+  unfold qfR, evalM; simpl. nra.
+Qed.
+
+(** A 3 x 3 multiplier whose quadratic form is [c] times a non-negative one. *)
+Lemma mult_psd_3 env H (c : R) (Q : R -> R -> R -> R) :
+  length H = 3%nat -> 0 <= c -> (forall a b d, 0 <= Q a b d) ->
+  (forall a b d, qfR (evalM env H) [a; b; d] = c * Q a b d) -> mult_psd env H.
+Proof.
+  intros Hl Hc HQ E [|a [|b [|d [|e xs]]]]; rewrite Hl; simpl; try discriminate.
+  intros _. rewrite E. apply Rmult_le_pos; auto.
+Qed.
+
+Definition blocks_psd (env : list R) (bs : list block) : Prop :=
+  forall b, In b bs -> mult_psd env (mult b).
+
+Lemma blocks_psd_cons env b bs :
+  mult_psd env (mult b) -> blocks_psd env bs -> blocks_psd env (b :: bs).
+Proof. intros H1 H2 x [<-|Hx]; auto. Qed.
+
+Lemma blocks_psd_nil env : blocks_psd env nil.
+Proof. intros x []. Qed.
+
+(** ** From the certificate to the step *)
+
+(** [slack * D = F * T] with [D > 0], [F >= 0], [T >= 0] gives [slack >= 0]. *)
+Lemma slack_nonneg (s D F T : R) :
+  s * D = F * T -> 0 < D -> 0 <= F -> 0 <= T -> 0 <= s.
+Proof.
+  intros E HD HF HT. assert (0 <= F * T) by (apply Rmult_le_pos; auto).
+  destruct (Rle_or_lt 0 s) as [|Hs]; [assumption|]. nra.
+Qed.
+
+Lemma qn_pos (q : quat) : qn q <> 0 -> 0 < qn q.
+Proof.
+  unfold qn. intros H.
+  destruct (Rle_lt_or_eq_dec 0 (qw q * qw q + qx q * qx q + qy q * qy q + qz q * qz q))
+    as [|E]; [nra|assumption|]. symmetry in E. contradiction.
+Qed.
+
+Lemma chart_den_pos (a b : R) : 0 < 1 + a * a + b * b.
+Proof. nra. Qed.
+
+Lemma angle_den_pos (t : R) : 0 < 1 + t * t.
+Proof. nra. Qed.
+
+(** The paper's charts: the stereographic unit vector and the half-angle tangent (they
+    miss the pole [(0, 0, 1)] and the angle pi; see the units' comments). *)
+Definition stereo (a b : R) : V3 :=
+  mkV (2 * a / (1 + a * a + b * b)) (2 * b / (1 + a * a + b * b))
+      ((a * a + b * b - 1) / (1 + a * a + b * b)).
+
+(** Non-zero denominators of [field] in the SOS units: quaternion norms and the charts'
+    [1 + a^2 + b^2], [1 + t^2]. *)
+Ltac sos_nonzero :=
+  so3_nonzero;
+  repeat match goal with
+  | |- 1 + ?a * ?a + ?b * ?b <> 0 => apply Rgt_not_eq, chart_den_pos
+  | |- 1 + ?t * ?t <> 0 => apply Rgt_not_eq, angle_den_pos
+  end.
+
+(** ** Integer coefficients: a plainer value for [field] *)
+
+Fixpoint zeval (env : list R) (p : poly) : R :=
+  match p with
+  | nil => 0
+  | (m, c) :: p' => IZR (Qnum c) * meval env m + zeval env p'
+  end.
+
+Definition all_int (p : poly) : bool := forallb (fun t => Pos.eqb (Qden (snd t)) 1) p.
+
+Lemma zeval_peval env p : all_int p = true -> peval env p = zeval env p.
+Proof.
+  induction p as [|[m [n d]] p IH]; cbn [peval zeval all_int forallb]; [reflexivity|].
+  intros H. apply andb_true_iff in H as [H1 H2]. cbn [snd Qden] in H1.
+  apply Pos.eqb_eq in H1. subst d.
+  rewrite (IH H2). unfold Q2R. simpl. field.
+Qed.
+
+Definition evalMZ (env : list R) (H : list (list poly)) : list (list R) :=
+  map (map (zeval env)) H.
+
+Definition all_int_matrix (H : list (list poly)) : bool := forallb (forallb all_int) H.
+
+Lemma evalM_Z env H : all_int_matrix H = true -> evalM env H = evalMZ env H.
+Proof.
+  unfold evalM, evalMZ, all_int_matrix. induction H as [|row H IH]; simpl; [reflexivity|].
+  intros E. apply andb_true_iff in E as [E1 E2]. rewrite (IH E2). f_equal.
+  induction row as [|p row IHr]; simpl in *; [reflexivity|].
+  apply andb_true_iff in E1 as [Ep Er]. rewrite (zeval_peval env p Ep), (IHr Er).
+  reflexivity.
+Qed.
