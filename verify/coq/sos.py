@@ -135,6 +135,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     env: list[str] = []
     factor_text: dict[tuple, tuple[str, str]] = {}  # factor poly key -> (text, 0 < text)
     unfold_extra: list[str] = []
+    rot_positions: dict[tuple, tuple[int, str]] = {}  # |q|^2 -> (env position, q <> 0)
 
     def key_of(poly) -> tuple:
         return tuple(sorted(pl.from_ring(poly).items()))
@@ -148,6 +149,8 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
                       f"Variable q_{nm} : quat.",
                       f"Hypothesis q_{nm}_nonzero : qn q_{nm} <> 0.",
                       f"Local Notation {nm} := (rot q_{nm}).", ""]
+            rot_positions[key_of(g[0] ** 2 + g[1] ** 2 + g[2] ** 2 + g[3] ** 2)] = (
+                len(env), f"q_{nm}_nonzero")
             env += [f"(q{c} q_{nm})" for c in "wxyz"]
             w, x, y, z = g
             factor_text[key_of(w * w + x * x + y * y + z * z)] = (
@@ -332,12 +335,40 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         "Proof.",
         f"  apply ({'le' if st.relation == '<=' else 'ge'}_by_slack _ _ {slack_text}); "
         "[reflexivity|].",
-        f"  apply (slack_nonneg _ {d_text} {f_text} (peval env target)).",
-        "  - exact link.",
-        f"  - exact {d_pos}.",
-        f"  - exact {f_nonneg}.",
-        "  - exact (sos_nonneg env target blocks cert_checked grounds).",
+        "  destruct link as (D & F & HD & HF & E).",
+        "  exact (slack_nonneg _ D F _ E HD HF "
+        "(sos_nonneg env target blocks cert_checked grounds)).",
         "Qed.", ""]
+    link_head = [f"Lemma link : exists D F, 0 < D /\\ 0 <= F /\\ {slack_text} * D = "
+                 "F * peval env target.", "Proof."]
+    reflective = all(v.kind in ("rotation", "scalar", "vector") for v in space.variables)
+    if reflective:
+        fe = [0] * (max((pos for pos, _ in rot_positions.values()), default=0) + 1)
+        for key, k in d_exps.items():
+            if k > 0:
+                fe[rot_positions[key][0]] = k
+        positions = sorted(rot_positions.values())
+        qs = "[" + "; ".join(str(pos) for pos, _ in positions) + "]%nat"
+        hq = "".join(f"apply Forall_cons; [exact {h}|]; " for _, h in positions)
+        link = [
+            "(** The link, by computation: the statement's slack, unfolded and read as an "
+            "expression (sos_reify), times a positive product of quaternion norms is the "
+            "target polynomial at the parameters times a non-negative one. *)",
+            *link_head,
+            f"  assert (Hq : Forall (fun p => qnR env p <> 0) {qs}) by ({hq}apply Forall_nil).",
+            f"  sos_link [{'; '.join(env)}] {qs} Hq [{'; '.join(map(str, fe))}]%nat.",
+            "Qed.", ""]
+    else:
+        link = [
+            f"(** The link: the slack of the statement times {_comment(d_text)} is the "
+            "target polynomial at the parameters (times the factors divided out of it), "
+            "by field. *)",
+            *link_head,
+            f"  exists {d_text}, {f_text}. split; [exact {d_pos}|]. "
+            f"split; [exact {f_nonneg}|].",
+            "  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).",
+            f"  unfold target. {UNFOLD}. {rewrites}so3_unfold. field; sos_nonzero.",
+            "Qed.", ""]
     text = "\n".join([
         *head, "", HEADER, f"Section {section}.", "", *lines,
         f"Let env : list R := [{'; '.join(env)}].", "",
@@ -348,14 +379,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         "Proof. vm_compute. reflexivity. Qed.", "",
         "Lemma grounds : blocks_psd env blocks.",
         f"Proof. exact ({grounds_proof}). Qed.", "",
-        f"(** The link: the slack of the statement times {_comment(d_text)} is the target "
-        "polynomial at the parameters (times the factors divided out of it). *)",
-        f"Lemma link : {slack_text} * {d_text} = {f_text} * peval env target.",
-        "Proof.",
-        "  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).",
-        f"  unfold target. {UNFOLD}. {rewrites}so3_unfold. field; sos_nonzero.",
-        "Qed.",
-        "",
+        *link,
         *proof,
         f"End {section}.", ""])
     return CoqUnit(unit_name(step.original, step.step), text, (thm,), file_label)
