@@ -50,8 +50,8 @@ Lemma H1_psd : mult_psd env H1.
 Proof.
   unfold H1. apply mult_psd_scalar.
   rewrite zeval_peval by (vm_compute; reflexivity).
-  match goal with |- 0 <= ?g => replace g with (k_s * (lam1 * 1)) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; rewrite ?xi_chart; unfold stereo; rewrite ?theta_cos, ?theta_sin; so3_unfold; field; sos_nonzero) end.
-  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rmult_le_pos _ _ (Rlt_le _ _ assumption1) Rle_0_1)).
+  match goal with |- 0 <= ?g => replace g with (k_s * lam1) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; rewrite ?xi_chart; unfold stereo; rewrite ?theta_cos, ?theta_sin; so3_unfold; field; sos_nonzero) end.
+  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rlt_le _ _ assumption1)).
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
@@ -62,9 +62,10 @@ Proof. vm_compute. reflexivity. Qed.
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link: the slack of the statement times 1 is the target polynomial at the parameters (times the factors divided out of it). *)
-Lemma link : (((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) + - 0) * 1 = 1 * peval env target.
+(** The link: the slack of the statement times 1 is the target polynomial at the parameters (times the factors divided out of it), by field. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ (((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) + - 0) * D = F * peval env target.
 Proof.
+  exists 1, 1. split; [exact Rlt_0_1|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
   unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; rewrite ?theta_cos, ?theta_sin; so3_unfold. field; sos_nonzero.
 Qed.
@@ -72,11 +73,8 @@ Qed.
 Theorem step5_by_sos : ((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) >= 0.
 Proof.
   apply (ge_by_slack _ _ (((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) + - 0)); [reflexivity|].
-  apply (slack_nonneg _ 1 1 (peval env target)).
-  - exact link.
-  - exact Rlt_0_1.
-  - exact Rle_0_1.
-  - exact (sos_nonneg env target blocks cert_checked grounds).
+  destruct link as (D & F & HD & HF & E).
+  exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.
 
 End Sos_lemma1_boundary_h_dot_5.

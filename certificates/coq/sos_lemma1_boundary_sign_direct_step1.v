@@ -57,9 +57,10 @@ Proof. vm_compute. reflexivity. Qed.
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link: the slack of the statement times ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1) is the target polynomial at the parameters (times the factors divided out of it). *)
-Lemma link : ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0) * ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1) = 1 * peval env target.
+(** The link: the slack of the statement times ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1) is the target polynomial at the parameters (times the factors divided out of it), by field. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0) * D = F * peval env target.
 Proof.
+  exists ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1), 1. split; [exact (Rmult_lt_0_compat _ _ (pow_lt _ 2 (chart_den_pos a_xi b_xi)) (pow_lt _ 1 (qn_pos q_R_rl q_R_rl_nonzero)))|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
   unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
 Qed.
@@ -67,11 +68,8 @@ Qed.
 Theorem step1_by_sos : (k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) >= 0.
 Proof.
   apply (ge_by_slack _ _ ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0)); [reflexivity|].
-  apply (slack_nonneg _ ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1) 1 (peval env target)).
-  - exact link.
-  - exact (Rmult_lt_0_compat _ _ (pow_lt _ 2 (chart_den_pos a_xi b_xi)) (pow_lt _ 1 (qn_pos q_R_rl q_R_rl_nonzero))).
-  - exact Rle_0_1.
-  - exact (sos_nonneg env target blocks cert_checked grounds).
+  destruct link as (D & F & HD & HF & E).
+  exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.
 
 End Sos_lemma1_boundary_sign_direct_1.

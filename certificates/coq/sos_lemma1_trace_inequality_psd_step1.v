@@ -33,9 +33,9 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  apply (mult_psd_3 env H1 1 (fun x1 x2 x3 => qform (msub (sym A) (mscale lam1 I3)) (mkV x1 x2 x3))).
+  apply (mult_psd_3 env H1 (1 * 1) (fun x1 x2 x3 => qform (msub (sym A) (mscale lam1 I3)) (mkV x1 x2 x3))).
   - reflexivity.
-  - exact Rle_0_1.
+  - exact (Rmult_le_pos _ _ Rle_0_1 Rle_0_1).
   - intros x1 x2 x3. exact (lam1_spec (mkV x1 x2 x3)).
   - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
 Qed.
@@ -48,9 +48,10 @@ Proof. vm_compute. reflexivity. Qed.
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link: the slack of the statement times 1 is the target polynomial at the parameters (times the factors divided out of it). *)
-Lemma link : ((tr (mmul A (mmul (mT G) G))) + - (lam1 * (tr (mmul (mT G) G)))) * 1 = 1 * peval env target.
+(** The link: the slack of the statement times 1 is the target polynomial at the parameters (times the factors divided out of it), by field. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((tr (mmul A (mmul (mT G) G))) + - (lam1 * (tr (mmul (mT G) G)))) * D = F * peval env target.
 Proof.
+  exists 1, 1. split; [exact Rlt_0_1|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
   unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
 Qed.
@@ -58,11 +59,8 @@ Qed.
 Theorem step1_by_sos : (tr (mmul A (mmul (mT G) G))) >= (lam1 * (tr (mmul (mT G) G))).
 Proof.
   apply (ge_by_slack _ _ ((tr (mmul A (mmul (mT G) G))) + - (lam1 * (tr (mmul (mT G) G))))); [reflexivity|].
-  apply (slack_nonneg _ 1 1 (peval env target)).
-  - exact link.
-  - exact Rlt_0_1.
-  - exact Rle_0_1.
-  - exact (sos_nonneg env target blocks cert_checked grounds).
+  destruct link as (D & F & HD & HF & E).
+  exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.
 
 End Sos_lemma1_trace_inequality_psd_1.

@@ -45,11 +45,10 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  apply (mult_psd_3 env H1 (k_s * ((qn q_R_r) ^ 1 * (qn q_Rbar) ^ 1)) (fun x1 x2 x3 => qform (msub (sym (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar)))) (mscale lam1 I3)) (mkV x1 x2 x3))).
-  - reflexivity.
-  - exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rlt_le _ _ (Rmult_lt_0_compat _ _ (pow_lt _ 1 (qn_pos q_R_r q_R_r_nonzero)) (pow_lt _ 1 (qn_pos q_Rbar q_Rbar_nonzero))))).
-  - intros x1 x2 x3. exact (lam1_spec (mkV x1 x2 x3)).
-  - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
+  assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_R_r_nonzero|]; apply Forall_cons; [exact q_Rbar_nonzero|]; apply Forall_cons; [exact q_R_l_nonzero|]; apply Forall_nil).
+  unfold H1. apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ (msub (sym (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar)))) (mscale lam1 I3)) k_s (denp env 0 [0; 1; 0; 0; 0; 1; 0; 0; 0; 0; 0; 0; 0; 0]%nat));
+    [exact (Rlt_le _ _ k_s_pos) | apply denp_nonneg | exact lam1_spec |
+     sos_exact [k_s; (qw q_R_r); (qx q_R_r); (qy q_R_r); (qz q_R_r); (qw q_Rbar); (qx q_Rbar); (qy q_Rbar); (qz q_Rbar); (qw q_R_l); (qx q_R_l); (qy q_R_l); (qz q_R_l); lam1] [1; 5; 9]%nat Hq ..].
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
@@ -60,21 +59,18 @@ Proof. vm_compute. reflexivity. Qed.
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link: the slack of the statement times (((qn q_R_l) ^ 1 * (qn q_Rbar) ^ 2) * (qn q_R_r) ^ 1) is the target polynomial at the parameters (times the factors divided out of it). *)
-Lemma link : (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))) + - (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l))))))) * (((qn q_R_l) ^ 1 * (qn q_Rbar) ^ 2) * (qn q_R_r) ^ 1) = 1 * peval env target.
+(** The link, by computation: the statement's slack, unfolded and read as an expression (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))) + - (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l))))))) * D = F * peval env target.
 Proof.
-  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
-  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
+  assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_R_r_nonzero|]; apply Forall_cons; [exact q_Rbar_nonzero|]; apply Forall_cons; [exact q_R_l_nonzero|]; apply Forall_nil).
+  sos_link [k_s; (qw q_R_r); (qx q_R_r); (qy q_R_r); (qz q_R_r); (qw q_Rbar); (qx q_Rbar); (qy q_Rbar); (qz q_Rbar); (qw q_R_l); (qx q_R_l); (qy q_R_l); (qz q_R_l); lam1] [1; 5; 9]%nat Hq [0; 1; 0; 0; 0; 2; 0; 0; 0; 1]%nat.
 Qed.
 
 Theorem step7_by_sos : (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))) <= ((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))).
 Proof.
   apply (le_by_slack _ _ (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))) + - (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))))); [reflexivity|].
-  apply (slack_nonneg _ (((qn q_R_l) ^ 1 * (qn q_Rbar) ^ 2) * (qn q_R_r) ^ 1) 1 (peval env target)).
-  - exact link.
-  - exact (Rmult_lt_0_compat _ _ (Rmult_lt_0_compat _ _ (pow_lt _ 1 (qn_pos q_R_l q_R_l_nonzero)) (pow_lt _ 2 (qn_pos q_Rbar q_Rbar_nonzero))) (pow_lt _ 1 (qn_pos q_R_r q_R_r_nonzero))).
-  - exact Rle_0_1.
-  - exact (sos_nonneg env target blocks cert_checked grounds).
+  destruct link as (D & F & HD & HF & E).
+  exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.
 
 End Sos_thm1_S_r_dot_7.

@@ -60,8 +60,8 @@ Lemma H1_psd : mult_psd env H1.
 Proof.
   unfold H1. apply mult_psd_scalar.
   rewrite zeval_peval by (vm_compute; reflexivity).
-  match goal with |- 0 <= ?g => replace g with (k_s * (lam1 * 1)) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; so3_unfold; field; sos_nonzero) end.
-  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rmult_le_pos _ _ assumption1 Rle_0_1)).
+  match goal with |- 0 <= ?g => replace g with (k_s * lam1) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; so3_unfold; field; sos_nonzero) end.
+  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) assumption1).
 Qed.
 
 (** block 2: k_s > 0 (declared) × assumed: λmin(R_rl + R_rlᵀ) > 0 *)
@@ -78,8 +78,8 @@ Lemma H2_psd : mult_psd env H2.
 Proof.
   unfold H2. apply mult_psd_scalar.
   rewrite zeval_peval by (vm_compute; reflexivity).
-  match goal with |- 0 <= ?g => replace g with (k_s * (lam2 * 1)) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; so3_unfold; field; sos_nonzero) end.
-  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rmult_le_pos _ _ (Rlt_le _ _ assumption2) Rle_0_1)).
+  match goal with |- 0 <= ?g => replace g with (k_s * lam2) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; so3_unfold; field; sos_nonzero) end.
+  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rlt_le _ _ assumption2)).
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1); (mkBlock H2 S2)].
@@ -90,21 +90,18 @@ Proof. vm_compute. reflexivity. Qed.
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_cons env (mkBlock H2 S2) _ H2_psd (blocks_psd_nil env))). Qed.
 
-(** The link: the slack of the statement times ((qn q_R_l) ^ 1 * (qn q_Rbar) ^ 1) is the target polynomial at the parameters (times the factors divided out of it). *)
-Lemma link : (0 + - ((((-1/2) * k_s) * (lam1 + lam2)) * (phi (mmul (mT R_l) Rbar)))) * ((qn q_R_l) ^ 1 * (qn q_Rbar) ^ 1) = 1 * peval env target.
+(** The link, by computation: the statement's slack, unfolded and read as an expression (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ (0 + - ((((-1/2) * k_s) * (lam1 + lam2)) * (phi (mmul (mT R_l) Rbar)))) * D = F * peval env target.
 Proof.
-  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
-  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
+  assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_R_r_nonzero|]; apply Forall_cons; [exact q_Rbar_nonzero|]; apply Forall_cons; [exact q_R_l_nonzero|]; apply Forall_nil).
+  sos_link [k_s; (qw q_R_r); (qx q_R_r); (qy q_R_r); (qz q_R_r); (qw q_Rbar); (qx q_Rbar); (qy q_Rbar); (qz q_Rbar); (qw q_R_l); (qx q_R_l); (qy q_R_l); (qz q_R_l); lam1; lam2] [1; 5; 9]%nat Hq [0; 0; 0; 0; 0; 1; 0; 0; 0; 1]%nat.
 Qed.
 
 Theorem step3_by_sos : ((((-1/2) * k_s) * (lam1 + lam2)) * (phi (mmul (mT R_l) Rbar))) <= 0.
 Proof.
   apply (le_by_slack _ _ (0 + - ((((-1/2) * k_s) * (lam1 + lam2)) * (phi (mmul (mT R_l) Rbar))))); [reflexivity|].
-  apply (slack_nonneg _ ((qn q_R_l) ^ 1 * (qn q_Rbar) ^ 1) 1 (peval env target)).
-  - exact link.
-  - exact (Rmult_lt_0_compat _ _ (pow_lt _ 1 (qn_pos q_R_l q_R_l_nonzero)) (pow_lt _ 1 (qn_pos q_Rbar q_Rbar_nonzero))).
-  - exact Rle_0_1.
-  - exact (sos_nonneg env target blocks cert_checked grounds).
+  destruct link as (D & F & HD & HF & E).
+  exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.
 
 End Sos_thm1_V_dot_3.

@@ -252,7 +252,11 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     statement = f"{lhs} <= {rhs}" if st.relation == "<=" else f"{lhs} >= {rhs}"
 
     # -- blocks: multipliers and squares -----------------------------------------------
-    multipliers = _multiplier_plans(problem, st.because, sp, naming, assumptions, lam_specs)
+    multipliers = _multiplier_plans(problem, st.because, naming, assumptions, lam_specs)
+    reflective = all(v.kind in ("rotation", "scalar", "vector") for v in space.variables)
+    positions = sorted(rot_positions.values())
+    qs_text = "[" + "; ".join(str(pos) for pos, _ in positions) + "]%nat"
+    hq_text = "".join(f"apply Forall_cons; [exact {h}|]; " for _, h in positions)
     rewrites = "".join(f"{r}; " for r in unfold_extra)
     body: list[str] = []
     block_names: list[str] = []
@@ -290,26 +294,41 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
                  f"Definition {sname} : list (Q * list poly) :=",
                  "  [" + ";\n   ".join(squares) + "].", ""]
         block_names.append(f"(mkBlock {hname} {sname})")
-        c_text, c_proof, q_fun, q_proof = plan(k)
         lemma = f"{hname}_psd"
-        if k == 1:
+        if k == 1 and not plan.matrix:
             body += [f"Lemma {lemma} : mult_psd env {hname}.", "Proof.",
                      f"  unfold {hname}. apply mult_psd_scalar.",
                      "  rewrite zeval_peval by (vm_compute; reflexivity).",
-                     f"  match goal with |- 0 <= ?g => replace g with {c_text} "
+                     f"  match goal with |- 0 <= ?g => replace g with {plan.scalar} "
                      f"by ({UNFOLD}; {rewrites}so3_unfold; field; sos_nonzero) end.",
-                     f"  exact {c_proof}.", "Qed.", ""]
-        elif k == 3:
+                     f"  exact {plan.scalar_proof}.", "Qed.", ""]
+        elif k == 3 and plan.matrix and reflective:
+            d = [0] * len(env)
+            for key, e in plan.den_exps:
+                d[rot_positions[key][0]] = e
+            body += [f"Lemma {lemma} : mult_psd env {hname}.", "Proof.",
+                     f"  assert (Hq : Forall (fun p => qnR env p <> 0) {qs_text}) by "
+                     f"({hq_text}apply Forall_nil).",
+                     f"  unfold {hname}. apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ "
+                     f"{plan.matrix} {plan.scalar} (denp env 0 [{'; '.join(map(str, d))}]%nat));",
+                     f"    [exact {plan.scalar_proof} | apply denp_nonneg | "
+                     f"exact {plan.matrix_proof} |",
+                     f"     sos_exact [{'; '.join(env)}] {qs_text} Hq ..].", "Qed.", ""]
+        elif k == 3 and plan.matrix:
+            dtext, dpos = plan.den
+            c_text = f"({plan.scalar} * {dtext})"
+            c_proof = f"(Rmult_le_pos _ _ {plan.scalar_proof} {dpos})"
+            q_fun = f"fun x1 x2 x3 => qform {plan.matrix} (mkV x1 x2 x3)"
             body += [f"Lemma {lemma} : mult_psd env {hname}.", "Proof.",
                      f"  apply (mult_psd_3 env {hname} {c_text} ({q_fun})).",
                      "  - reflexivity.", f"  - exact {c_proof}.",
-                     f"  - intros x1 x2 x3. exact ({q_proof} (mkV x1 x2 x3)).",
+                     f"  - intros x1 x2 x3. exact ({plan.matrix_proof} (mkV x1 x2 x3)).",
                      f"  - intros x1 x2 x3. rewrite (evalM_Z env {hname} (eq_refl true <: "
                      f"all_int_matrix {hname} = true)). unfold {hname}. {UNFOLD}. "
-                     f"{rewrites}so3_unfold. "
-                     "field; sos_nonzero.", "Qed.", ""]
+                     f"{rewrites}so3_unfold. field; sos_nonzero.", "Qed.", ""]
         else:
-            raise CoqExportError(f"block {b_index}: a multiplier of size {k} is not exported")
+            raise CoqExportError(f"block {b_index}: a multiplier of size {k} with grounds "
+                                 f"{grounds!r} is not exported")
         psd_proofs.append(lemma)
     grounds_proof = "blocks_psd_nil env"
     for lemma, block in reversed(list(zip(psd_proofs, block_names, strict=True))):
@@ -341,15 +360,12 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         "Qed.", ""]
     link_head = [f"Lemma link : exists D F, 0 < D /\\ 0 <= F /\\ {slack_text} * D = "
                  "F * peval env target.", "Proof."]
-    reflective = all(v.kind in ("rotation", "scalar", "vector") for v in space.variables)
     if reflective:
         fe = [0] * (max((pos for pos, _ in rot_positions.values()), default=0) + 1)
         for key, k in d_exps.items():
             if k > 0:
                 fe[rot_positions[key][0]] = k
-        positions = sorted(rot_positions.values())
-        qs = "[" + "; ".join(str(pos) for pos, _ in positions) + "]%nat"
-        hq = "".join(f"apply Forall_cons; [exact {h}|]; " for _, h in positions)
+        qs, hq = qs_text, hq_text
         link = [
             "(** The link, by computation: the statement's slack, unfolded and read as an "
             "expression (sos_reify), times a positive product of quaternion norms is the "
@@ -389,9 +405,24 @@ def _comment(text: str) -> str:
     return text.replace("(*", "( *").replace("*)", "* )")
 
 
-def _multiplier_plans(problem, because, sp, naming: Naming, assumptions, lam_specs):
-    """For every multiplier the step allows (by its grounds), a function giving
-    (c, proof 0 <= c, Q, proof of Q's non-negativity) for the unit's grounds lemma.
+@dataclass(frozen=True)
+class _Plan:
+    """How a multiplier's grounds are proved: a non-negative scalar ``scalar`` (with its
+    proof) times, for a 3 x 3 multiplier, ``den`` (the lifted denominator of the matrix,
+    exponents by chart factor) times ``matrix`` whose quadratic form is non-negative by
+    ``matrix_proof``."""
+
+    scalar: str
+    scalar_proof: str
+    matrix: str = ""
+    matrix_proof: str = ""
+    den: tuple[str, str] = ("1", "Rle_0_1")  # text, proof 0 <= text
+    den_exps: tuple[tuple[tuple, int], ...] = ()
+
+
+def _multiplier_plans(problem, because, naming: Naming, assumptions,
+                      lam_specs) -> dict[str, _Plan]:
+    """Every multiplier the step allows, by its grounds, with how Coq proves it PSD.
 
     Mirrors :func:`verify.proof.sos_step.step_program`; Coq re-checks every link, so a
     mismatch here makes ``coqc`` fail, never accept.
@@ -400,20 +431,22 @@ def _multiplier_plans(problem, because, sp, naming: Naming, assumptions, lam_spe
 
     from verify.proof.expr import structural_key, sym, variables_of
     from verify.proof.sos_step import MAX_PRODUCT, PARTIAL_CHARTS, _lifted
+    from verify.sos import poly as pl
 
     space = problem.space
-    plans: dict[str, object] = {}
     scalars: list[tuple[str, str, str]] = []  # grounds, Coq text, proof 0 <= text
 
-    def den_of(kfs) -> tuple[str, str]:
+    def den_of(kfs):
         _nums, den = _lifted(kfs)
-        return _den_text(den, naming, space)
+        exps = tuple((tuple(sorted(pl.from_ring(f).items())), e)
+                     for f, e in zip(den.den.factors, den.exps, strict=False) if e)
+        return _den_text(den, naming, space), exps
 
     for v in space.variables:
         if v.kind == "scalar" and v.positive:
             nm = naming.variable(v)
             scalars.append((f"{v.name} > 0 (declared)", nm, f"(Rlt_le _ _ {nm}_pos)"))
-    matrices: list[tuple[str, ...]] = []  # grounds, den, 0 <= den, Q fun, Q proof
+    matrices: list[tuple] = []  # grounds, matrix, its proof, den, den exps
     for a in because.assumptions:
         partial = sorted({v.name for v in variables_of(a.expr) if v.kind in PARTIAL_CHARTS})
         if partial:
@@ -424,47 +457,35 @@ def _multiplier_plans(problem, because, sp, naming: Naming, assumptions, lam_spe
             (value,) = problem.exact(a.expr)
             dtext, dpos = _den_text(value, naming, space)
             hyp = f"(Rlt_le _ _ {name})" if a.kind == "pos" else name
-            scalars.append((f"assumed: {a.label}", f"({e} * {dtext})",
-                            f"(Rmult_le_pos _ _ {hyp} {dpos})"))
+            text = e if dtext == "1" else f"({e} * {dtext})"
+            proof = hyp if dtext == "1" else f"(Rmult_le_pos _ _ {hyp} {dpos})"
+            scalars.append((f"assumed: {a.label}", text, proof))
         else:
-            dtext, dpos = den_of(problem.exact(sym(a.expr)))
+            den, exps = den_of(problem.exact(sym(a.expr)))
             hyp = f"(pd_psd _ {name})" if a.kind == "pd" else name
-            matrices.append((f"assumed: {a.label}", dtext, dpos,
-                             f"fun x1 x2 x3 => qform (sym {e}) (mkV x1 x2 x3)", hyp))
+            matrices.append((f"assumed: {a.label}", f"(sym {e})", hyp, den, exps))
     for atom in space.atoms:
         arg = atom.args[0]
         if all(v.is_zero() for v in problem.exact(arg - arg.T)):
             lam = lam_specs[structural_key(arg)]
-            dtext, dpos = den_of(problem.exact(arg))
-            matrices.append((f"spectral: {atom} I ⪯ {arg} (symmetric)", dtext, dpos,
-                             f"fun x1 x2 x3 => qform (msub (sym {coq_text(arg, naming)}) "
-                             f"(mscale {lam} I3)) (mkV x1 x2 x3)", f"{lam}_spec"))
-    products = []
+            den, exps = den_of(problem.exact(arg))
+            matrices.append((f"spectral: {atom} I ⪯ {arg} (symmetric)",
+                             f"(msub (sym {coq_text(arg, naming)}) (mscale {lam} I3))",
+                             f"{lam}_spec", den, exps))
+    prods: list[tuple[str, str, str]] = []
     for size in range(1, MAX_PRODUCT + 1):
         for combo in itertools.combinations(scalars, size):
-            products.append(combo)
-
-    def product(combo) -> tuple[str, str, str]:
-        grounds = " × ".join(g for g, _, _ in combo)
-        text, proof = combo[0][1], combo[0][2]
-        for _, t2, p2 in combo[1:]:
-            text, proof = f"({text} * {t2})", f"(Rmult_le_pos _ _ {proof} {p2})"
-        return grounds, text, proof
-
-    def scalar_plan(text, proof):
-        return lambda k: (text, proof, "", "")
-
-    plans["1 (plain SOS)"] = scalar_plan("1", "Rle_0_1")
-    prods = [product(c) for c in products]
+            text, proof = combo[0][1], combo[0][2]
+            for _, t2, p2 in combo[1:]:
+                text, proof = f"({text} * {t2})", f"(Rmult_le_pos _ _ {proof} {p2})"
+            prods.append((" × ".join(g for g, _, _ in combo), text, proof))
+    plans = {"1 (plain SOS)": _Plan("1", "Rle_0_1")}
     for grounds, text, proof in prods:
-        plans[grounds] = scalar_plan(text, proof)
-    for mg, dtext, dpos, qfun, qproof in matrices:
-        plans[mg] = (lambda dt=dtext, dp=dpos, qf=qfun, qp=qproof:
-                     lambda k: (dt, dp, qf, qp))()
+        plans[grounds] = _Plan(text, proof)
+    for mg, mtext, mproof, den, exps in matrices:
+        plans[mg] = _Plan("1", "Rle_0_1", mtext, mproof, den, exps)
         for grounds, text, proof in prods:
-            plans[f"{grounds} × {mg}"] = (
-                lambda t=text, p=proof, dt=dtext, dp=dpos, qf=qfun, qp=qproof:
-                lambda k: (f"({t} * {dt})", f"(Rmult_le_pos _ _ {p} {dp})", qf, qp))()
+            plans[f"{grounds} × {mg}"] = _Plan(text, proof, mtext, mproof, den, exps)
     return plans
 
 

@@ -697,3 +697,76 @@ Ltac sos_link params qs Hq fe :=
       let r := sos_reify l s' in
       apply (link_ok env qs r s fe t Hq); [reflexivity | vm_compute; reflexivity]
   end.
+
+(** ** Multipliers' entries by computation *)
+
+Fixpoint eqb_list (a b : list nat) : bool :=
+  match a, b with
+  | nil, nil => true
+  | x :: a', y :: b' => Nat.eqb x y && eqb_list a' b'
+  | _, _ => false
+  end.
+
+Lemma eqb_list_eq a b : eqb_list a b = true -> a = b.
+Proof.
+  revert b. induction a as [|x a IH]; intros [|y b]; simpl; try discriminate; auto.
+  intros H. apply andb_true_iff in H as [H1 H2]. apply Nat.eqb_eq in H1.
+  rewrite H1, (IH b H2). reflexivity.
+Qed.
+
+(** [s * den d = h] exactly, when [s]'s computed denominator divides [den d]. *)
+Definition exact_check (qs : list nat) (r : sx) (d : list nat) (h : poly) : bool :=
+  let (n, e) := ev r in
+  sx_valid qs r && eqb_list (emax e d) d
+  && poly_zero (pmul n (liftP 0 (ediff e d)) ++ pneg h).
+
+Theorem exact_ok env qs r (s : R) d h :
+  Forall (fun p => qnR env p <> 0) qs -> s = sden env r ->
+  exact_check qs r d h = true -> peval env h = s * denp env 0 d.
+Proof.
+  intros Hq Hs H. unfold exact_check in H.
+  pose proof (ev_sound env qs r Hq) as Hev.
+  destruct (ev r) as [n e]. simpl in Hev.
+  apply andb_true_iff in H as [H Hz]. apply andb_true_iff in H as [Hv Hd].
+  apply eqb_list_eq in Hd. specialize (Hev Hv).
+  subst s. rewrite <- Hd at 1. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
+  rewrite Hd.
+  apply (poly_zero_sound env) in Hz. rewrite peval_app in Hz. unfold pneg in Hz.
+  rewrite peval_scale, peval_mul, peval_liftP in Hz.
+  assert (E : Q2R (-1) = -1) by (unfold Q2R; simpl; lra). rewrite E in Hz. lra.
+Qed.
+
+(** A 3 x 3 multiplier that is [c * D] times a matrix with a non-negative quadratic form,
+    entry by entry. *)
+Lemma mult_psd_9 env (h11 h12 h13 h21 h22 h23 h31 h32 h33 : poly) (M : M3) (c D : R) :
+  0 <= c -> 0 <= D -> (forall v, 0 <= qform M v) ->
+  peval env h11 = c * m11 M * D -> peval env h12 = c * m12 M * D ->
+  peval env h13 = c * m13 M * D -> peval env h21 = c * m21 M * D ->
+  peval env h22 = c * m22 M * D -> peval env h23 = c * m23 M * D ->
+  peval env h31 = c * m31 M * D -> peval env h32 = c * m32 M * D ->
+  peval env h33 = c * m33 M * D ->
+  mult_psd env [[h11; h12; h13]; [h21; h22; h23]; [h31; h32; h33]].
+Proof.
+  intros Hc HD HM E11 E12 E13 E21 E22 E23 E31 E32 E33 [|a [|b [|d [|e xs]]]];
+    simpl; try discriminate. intros _.
+  unfold qfR, evalM. cbn [map dotR].
+  rewrite E11, E12, E13, E21, E22, E23, E31, E32, E33.
+  specialize (HM (mkV a b d)). unfold qform, vdot, mvmul in HM. simpl in HM.
+  replace (a * (c * m11 M * D * a + (c * m12 M * D * b + (c * m13 M * D * d + 0))) +
+           (b * (c * m21 M * D * a + (c * m22 M * D * b + (c * m23 M * D * d + 0))) +
+            (d * (c * m31 M * D * a + (c * m32 M * D * b + (c * m33 M * D * d + 0))) + 0)))
+    with (c * D * (a * (m11 M * a + m12 M * b + m13 M * d) +
+                   b * (m21 M * a + m22 M * b + m23 M * d) +
+                   d * (m31 M * a + m32 M * b + m33 M * d))) by ring.
+  apply Rmult_le_pos; [apply Rmult_le_pos|]; assumption.
+Qed.
+
+(** Proves [peval env h = s * denp env 0 d] by [exact_ok]. *)
+Ltac sos_exact params qs Hq :=
+  lazymatch goal with
+  | |- peval ?env ?h = ?s * denp ?env 0 ?d =>
+      let l := sos_unfold_in params in
+      let s' := sos_unfold_in s in
+      let r := sos_reify l s' in
+      apply (exact_ok env qs r s d h Hq); [reflexivity | vm_compute; reflexivity]
+  end.
