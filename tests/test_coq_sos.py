@@ -229,3 +229,18 @@ def test_coqc_rejects_a_weakened_hypothesis(prelude_dir):
     old = "Hypothesis assumption1 : pd R_rl."
     assert old in text
     assert not _compiles(prelude_dir, text.replace(old, "Hypothesis assumption1 : pd (mneg R_rl)."))
+
+
+def test_the_report_names_each_sos_step_by_its_exported_theorem(paper_export):
+    from verify.report.steps import _coq_theorem
+
+    exported = {f"{u.name}.{t}" for u in paper_export.units for t in u.theorems}
+    for step in paper_sos_steps():
+        if not certificate_for(step, CERTS).is_file():
+            continue
+        row = {"verdict": "verified", "relation": "<=", "index": 1,
+               "justification": f"SOS re-proof of step {step.step}: SOS certificate"}
+        name = _coq_theorem(f"{step.original}.step{step.step}-sos", row, set())
+        assert name in exported
+        assert _coq_theorem(f"{step.original}.step{step.step}-sos",
+                            {**row, "verdict": "inconclusive"}, set()) == ""
