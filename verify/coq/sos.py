@@ -13,13 +13,19 @@ proves it from the certificate with the prelude ``SOSCert.v``:
    LDL^T of its Gram matrix (computed here, untrusted: Coq re-checks the identity);
 2. **the identity** ``T = sum d * u^T H u`` with every ``d >= 0``, decided by
    ``vm_compute`` on the data (``cert_ok``, sound by ``sos_nonneg`` proved once);
-3. **the multipliers' grounds**: each ``H`` is proved, by ``field`` on its few entries,
-   to be ``c * (sym A - lam I)`` (lambda_min's hypothesis), ``c * sym M`` (an assumed
-   ``pd``/``psd`` matrix) or ``c`` (a product of declared-positive scalars and assumed
-   non-negative ones), with ``c >= 0`` from those hypotheses and ``|q|^2 > 0``;
-4. **the link**: ``(rhs - lhs) * D = F * T`` at the parameters, proved by ``field``
-   after unfolding the prelude (``D`` and ``F`` products of the charts' positive
-   denominators), so the slack is ``>= 0`` and the step holds.
+3. **the multipliers' grounds**: each ``H`` is ``c * D * (sym A - lam I)``
+   (lambda_min's hypothesis), ``c * D * sym M`` (an assumed ``pd``/``psd`` matrix) or
+   ``c`` (a product of declared-positive scalars and assumed non-negative ones), with
+   ``c >= 0`` from those hypotheses and ``D`` a product of norms ``|q|^2 > 0``;
+4. **the link**: ``(rhs - lhs) * D = F * T`` at the parameters with ``D > 0``,
+   ``F >= 0``, so the slack is ``>= 0`` and the step holds.
+
+In a step over rotations, scalars and vectors (the Theorem 1 steps), 3 and 4 are proved
+by computation: the tactic ``sos_reify`` reads the unfolded statement into an expression
+``sx`` (sums, products, integers, parameters, ``/ |q|^2``), Coq computes its value as a
+polynomial over a product of norms and compares it with ``T`` (or ``H``'s entries) by
+``vm_compute`` (``link_ok``, ``exact_ok``: soundness proved once). Otherwise (charts,
+free matrices) ``field`` proves them after unfolding the prelude.
 
 Charts. A unit vector ``xi`` is stated with the hypothesis ``xi = stereo a b`` and an
 angle ``theta`` with ``cos theta``, ``sin theta`` given by ``t = tan(theta/2)``: the
