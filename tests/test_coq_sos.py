@@ -65,10 +65,11 @@ def sos_units():
 
 
 def test_every_stored_paper_sos_certificate_becomes_a_unit(sos_units):
-    units, exported = sos_units
+    units, outcome = sos_units
     stored = sorted(p.name for p in CERTS.glob("sos-*.json"))
     assert len(units) == len(stored) == 8
-    assert sorted(u.source for u in units) == stored == sorted(exported)
+    assert sorted(u.source for u in units) == stored == sorted(outcome)
+    assert not [f for f in outcome.values() if f.startswith("refused")]
     names = {u.name: u for u in units}
     unit = names["sos_lemma1_boundary_sign_direct_step1"]
     assert unit.theorems == ("step1_by_sos",)
@@ -124,6 +125,21 @@ def test_the_exporter_refuses_a_certificate_of_other_variables():
     other = _data(_step(*TRACE))
     with pytest.raises(CoqExportError, match="variables"):
         sos_unit(step, other, file_label="x.json")
+
+
+def test_a_refused_paper_certificate_is_listed_with_its_reason(tmp_path):
+    """A stored certificate made indefinite: the development leaves it out and says why
+    (no crash, the other certificates still exported)."""
+    for p in CERTS.glob("sos-*.json"):
+        shutil.copy(p, tmp_path / p.name)
+    step = _step(*SIGN)
+    path = tmp_path / certificate_for(step, CERTS).name
+    data = json.loads(path.read_text())
+    data["blocks"][0]["gram"][0][0] = "-1"
+    path.write_text(json.dumps(data))
+    units, outcome = paper_sos_units(tmp_path)
+    assert len(units) == 7
+    assert outcome[path.name].startswith("refused: ") and "not PSD" in outcome[path.name]
 
 
 def test_the_exporter_refuses_a_gram_matrix_made_indefinite():
@@ -248,3 +264,16 @@ def test_the_report_names_each_sos_step_by_its_exported_theorem(sos_units):
         assert name in exported
         assert _coq_theorem(f"{step.original}.step{step.step}-sos",
                             {**row, "verdict": "inconclusive"}, set()) == ""
+
+
+@needs_coqc
+@pytest.mark.parametrize("key", [SIGN, ("thm1.S_r-dot", 7)])
+def test_coqc_rejects_a_changed_multiplier(prelude_dir, key):
+    """A multiplier entry changed under the same grounds: its grounds lemma (by field, or
+    by computation for Theorem 1's rotations) fails."""
+    step = _step(*key)
+    data = copy.deepcopy(_data(step))
+    block = next(b for b in data["blocks"] if len(b["multiplier"]) == 3)
+    mono, coeff = block["multiplier"][0][0][0]
+    block["multiplier"][0][0][0] = [mono, str(Fraction(coeff) * 2)]
+    assert not _compiles(prelude_dir, sos_unit(step, data, file_label="x.json").text)

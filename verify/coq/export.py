@@ -132,6 +132,14 @@ def paper_development_units(certificates_dir: Path) -> Export:
     from verify.coq.sos import paper_sos_units
 
     certs = export_certificates([certificates_dir])
-    sos_units, exported = paper_sos_units(certificates_dir)
-    left = tuple(i for i in certs.not_exported if i.file not in exported)
-    return Export((*derivation_units(), *sos_units, *certs.units), left)
+    sos_units, outcome = paper_sos_units(certificates_dir)
+    left: list[NotExported] = []
+    for item in certs.not_exported:
+        fate = outcome.get(item.file)
+        if fate is None:
+            left.append(item)
+        elif fate.startswith("refused: "):
+            left.append(NotExported(item.file, item.schema,
+                                    "SOS certificate of a paper's step, not exported: "
+                                    + fate.removeprefix("refused: ")))
+    return Export((*derivation_units(), *sos_units, *certs.units), tuple(left))

@@ -552,19 +552,28 @@ def certificate_for(step: SosStep, folder: Path) -> Path:
 
 
 def paper_sos_units(folder: Path) -> tuple[list[CoqUnit], dict[str, str]]:
-    """Units of the paper's SOS certificates found in ``folder``, and the exported file
-    names mapped to their unit's theorem (``Module.theorem``)."""
+    """Units of the paper's SOS certificates found in ``folder``, and every such file by
+    name: its unit's theorem (``Module.theorem``), or why it was refused (a certificate
+    that is not PSD, of another step, malformed), prefixed ``refused: ``."""
     units: list[CoqUnit] = []
-    exported: dict[str, str] = {}
+    outcome: dict[str, str] = {}
     for step in paper_sos_steps():
         path = certificate_for(step, folder)
         if not path.is_file():
             continue
-        data = json.loads(path.read_text(encoding="utf-8"))
-        unit = sos_unit(step, data, file_label=path.name)
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+            unit = sos_unit(step, data, file_label=path.name)
+        except CoqExportError as exc:
+            outcome[path.name] = f"refused: {exc}"
+            continue
+        except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError,
+                AttributeError, IndexError) as exc:
+            outcome[path.name] = f"refused: malformed SOS certificate ({type(exc).__name__})"
+            continue
         units.append(unit)
-        exported[path.name] = f"{unit.name}.{unit.theorems[0]}"
-    return units, exported
+        outcome[path.name] = f"{unit.name}.{unit.theorems[0]}"
+    return units, outcome
 
 
 __all__ = ["SosStep", "certificate_for", "ldl", "paper_sos_steps", "paper_sos_units",
