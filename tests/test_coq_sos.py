@@ -177,8 +177,15 @@ def _compiles(folder: Path, text: str, name: str = "SosAttack") -> bool:
 
 
 @needs_coqc
-@pytest.mark.parametrize("key", [SIGN, H_DOT_5, TRACE])
+@pytest.mark.parametrize("key", [SIGN, H_DOT_5, TRACE, ("thm1.V-dot", 3)])
 def test_coqc_accepts_the_paper_sos_certificate(prelude_dir, key):
+    assert _compiles(prelude_dir, _unit_text(key))
+
+
+@pytest.mark.slow  # the two Gram-48 certificates: about 15 s of CPU together
+@needs_coqc
+@pytest.mark.parametrize("key", [("thm1.S_r-dot", 7), ("thm1.S_rl-dot", 4)])
+def test_coqc_accepts_the_large_paper_sos_certificates(prelude_dir, key):
     assert _compiles(prelude_dir, _unit_text(key))
 
 
