@@ -1,5 +1,11 @@
-"""Cost of the Coq kernel check of KYP certificates, against the Python exact checker.
+"""Cost of the Coq kernel check of certificates, against the Python exact checker.
 
+SOS certificates (``--sos``, on by default): each of the paper's stored
+``certificates/sos-*.json`` is exported (:mod:`verify.coq.sos`) and compiled, and the
+CPU time is set beside the Python exact check of the same certificate against its step
+(:func:`verify.sos.certificate.check_bound`, the step's program derived beforehand).
+
+KYP certificates:
 For the paper's k_s = 3.0 certificate and for gate certificates of random passive
 port-Hamiltonian models (float data, the test suite's family) of the sizes given, it
 exports the unit, compiles it with ``coqc`` (the prelude compiled once, not counted),
@@ -7,7 +13,7 @@ and prints coqc's wall time and peak memory beside the Python exact check
 (:func:`verify.passivity.check.certificate.check_kyp`) on the same certificate, and the
 ratio. A compile past ``--timeout`` seconds is reported as such.
 
-    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--timeout 900]
+    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--timeout 900] [--no-sos]
 """
 
 from __future__ import annotations
@@ -67,10 +73,48 @@ def python_check_seconds(model, P, repeat: int = 3) -> float:
     return best
 
 
+def sos_rows(folder: Path, timeout: float) -> None:
+    """Compile every paper SOS unit in ``folder`` (prelude already there) and print the
+    CPU time beside the Python exact check of the same certificate."""
+    import json
+
+    from verify.coq.sos import certificate_for, paper_sos_steps, sos_unit
+    from verify.proof.checker import step_problem
+    from verify.proof.sos_step import step_program
+    from verify.sos.certificate import check_bound
+
+    print(f"{'SOS certificate':<44} {'coqc CPU':>8} {'peak MB':>8} {'python s':>9} "
+          f"{'CPU ratio':>9}")
+    total_cpu = total_py = 0.0
+    for step in paper_sos_steps():
+        path = certificate_for(step, ROOT / "certificates")
+        if not path.is_file():
+            continue
+        data = json.loads(path.read_text(encoding="utf-8"))
+        unit = sos_unit(step, data, file_label=path.name)
+        (folder / f"{unit.name}.v").write_text(unit.text)
+        _secs, cpu, mb, ok = coqc(folder, f"{unit.name}.v", timeout)
+        d = step.derivation
+        sp = step_program(step_problem(d, d.steps[0]), d.steps[0].because)
+        best = float("inf")
+        for _ in range(3):
+            t = time.perf_counter()
+            assert check_bound(data, sp).ok
+            best = min(best, time.perf_counter() - t)
+        total_cpu, total_py = total_cpu + cpu, total_py + best
+        state = "" if ok else "  FAILED"
+        label = f"{step.original} step {step.step}"
+        print(f"{label:<44} {cpu:8.1f} {mb:8.0f} {best:9.3f} {cpu / best:9.0f}{state}",
+              flush=True)
+    print(f"{'all SOS units':<44} {total_cpu:8.1f} {'':>8} {total_py:9.3f} "
+          f"{total_cpu / max(total_py, 1e-9):9.0f}")
+
+
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", type=int, nargs="*", default=[4, 10, 30])
     ap.add_argument("--timeout", type=float, default=900.0)
+    ap.add_argument("--no-sos", action="store_true", help="skip the SOS certificates")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
@@ -79,6 +123,8 @@ def main() -> int:
             secs, cpu, mb, ok = coqc(folder, f"{name}.v", args.timeout)
             print(f"prelude {name}.v: {secs:.1f} s wall, {cpu:.1f} s CPU, {mb:.0f} MB, "
                   f"ok={ok}")
+        if not args.no_sos:
+            sos_rows(folder, args.timeout)
         cases = []
         cert = cf.parse_kyp(read_strict(KS3))
         cases.append(("paper k_s=3.0 (4 states)", kyp_unit_from_file(KS3), cert.model, cert.P))

@@ -21,6 +21,14 @@ From VerifyCoq Require thm1_V_dot_zero_implies_sync.
 From VerifyCoq Require thm1_V_dot_zero_on_sync.
 From VerifyCoq Require thm1_lasalle_derivative.
 From VerifyCoq Require thm1_lasalle_derivative_from_sk_only.
+From VerifyCoq Require sos_lemma1_boundary_h_dot_step4.
+From VerifyCoq Require sos_lemma1_boundary_h_dot_step5.
+From VerifyCoq Require sos_lemma1_boundary_sign_direct_step1.
+From VerifyCoq Require sos_lemma1_trace_inequality_psd_step1.
+From VerifyCoq Require sos_lemma1_trace_inequality_sym_psd_step1.
+From VerifyCoq Require sos_thm1_S_r_dot_step7.
+From VerifyCoq Require sos_thm1_S_rl_dot_step4.
+From VerifyCoq Require sos_thm1_V_dot_step3.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
 
 (** Every top theorem of the development. *)
@@ -80,5 +88,13 @@ Definition top_theorems :=
    thm1_lasalle_derivative.step2,
    thm1_lasalle_derivative.claim,
    thm1_lasalle_derivative_from_sk_only.step1,
+   sos_lemma1_boundary_h_dot_step4.step4_by_sos,
+   sos_lemma1_boundary_h_dot_step5.step5_by_sos,
+   sos_lemma1_boundary_sign_direct_step1.step1_by_sos,
+   sos_lemma1_trace_inequality_psd_step1.step1_by_sos,
+   sos_lemma1_trace_inequality_sym_psd_step1.step1_by_sos,
+   sos_thm1_S_r_dot_step7.step7_by_sos,
+   sos_thm1_S_rl_dot_step4.step4_by_sos,
+   sos_thm1_V_dot_step3.step3_by_sos,
    Cert_reconstructed_k_s_3_0_99babda880e6.passive).
 Print Assumptions top_theorems.

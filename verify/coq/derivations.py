@@ -29,8 +29,9 @@ prelude's definitions (``SO3.v``):
 
 Derivatives (``ctx.ddt``) arrive as the trees :mod:`verify.proof.calculus` formed by
 the product rule from the declared dynamics; Coq checks the algebra from there on (the
-README says so). A step justified by a citation is not exported; an SOS step is
-not exported: SOS certificates are not yet turned into Coq units.
+README says so). A step justified by a citation is not exported; an SOS step is not
+exported here: the paper's SOS certificates are units of their own
+(:mod:`verify.coq.sos`), a user's derivation file keeps its by_sos steps out.
 """
 
 from __future__ import annotations
@@ -165,7 +166,8 @@ def _not_exported_reason(step: Step) -> str:
     if kind == "citation":
         return "cited, not proved: there is nothing for Coq to check"
     if kind == "sos":
-        return "proved by an SOS certificate, which is not exported to Coq yet"
+        return ("proved by an SOS certificate: the paper's are exported as units of their "
+                "own (verify coq); a derivation file's are not exported")
     return f"justification {kind!r} is not exported"
 
 

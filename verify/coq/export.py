@@ -1,8 +1,9 @@
 """Which stored certificates become Coq units, and why the others do not.
 
 :func:`export_certificates` turns certificate files into :class:`~verify.coq.unit.CoqUnit`
-s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`)
-and lists every file it does not export with
+s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`;
+the paper's SOS certificates, :mod:`verify.coq.sos`) and lists every file it does not
+export with
 the reason, machine-readably (:func:`not_exported_json`, written beside the development
 as ``NOT_EXPORTED.json``). :func:`paper_development_units` is the paper's development:
 the derivation units of :mod:`verify.coq.paper` when that module is installed, then the
@@ -26,9 +27,9 @@ BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
 #: Certificate kinds not exported, with the reason (shown in the README and the list).
 NOT_EXPORTED_REASONS: dict[str, str] = {
     "verify-sos-certificate/1":
-        "SOS certificate of a derivation step: not exported yet (checked by the Python "
-        "exact checker only); the same inequality is kernel-checked through its "
-        "hand-written terms in the paper's derivation units",
+        "SOS certificate that is not one of the paper's by_sos steps: not exported (the "
+        "paper's SOS certificates are; a user's is checked by the Python exact checker "
+        "only)",
     "verify-band-fd-certificate/1":
         "exact-band certificate (polynomial non-negativity on an interval from Descartes "
         "and breakpoint data): not exported yet; checked by the Python exact checker only",
@@ -126,6 +127,19 @@ def derivation_units() -> list[CoqUnit]:
 
 
 def paper_development_units(certificates_dir: Path) -> Export:
-    """The paper's development: derivation units, then the certificates' units."""
+    """The paper's development: derivation units, the SOS certificates of the paper's
+    ``by_sos`` steps (:mod:`verify.coq.sos`), then the other certificates' units."""
+    from verify.coq.sos import paper_sos_units
+
     certs = export_certificates([certificates_dir])
-    return Export((*derivation_units(), *certs.units), certs.not_exported)
+    sos_units, outcome = paper_sos_units(certificates_dir)
+    left: list[NotExported] = []
+    for item in certs.not_exported:
+        fate = outcome.get(item.file)
+        if fate is None:
+            left.append(item)
+        elif fate.startswith("refused: "):
+            left.append(NotExported(item.file, item.schema,
+                                    "SOS certificate of a paper's step, not exported: "
+                                    + fate.removeprefix("refused: ")))
+    return Export((*derivation_units(), *sos_units, *certs.units), tuple(left))

@@ -109,12 +109,24 @@ def _row(name: str, step: dict, twins: set[tuple[str, int]]) -> StepRow:
 
 
 def _coq_theorem(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
-    """``module.stepK`` of a verified step proved by algebra or hand terms ("" otherwise):
-    the exporter (:mod:`verify.coq.derivations`) writes exactly these theorems."""
+    """The Coq theorem of a verified step ("" for a cited or unverified one):
+    ``module.stepK`` for a step proved by algebra or hand terms
+    (:mod:`verify.coq.derivations`), and for the SOS twin ``<derivation>.step<k>-sos``
+    of a hand step, the unit exported from its certificate (:mod:`verify.coq.sos`)."""
+    from verify.coq import sos
     from verify.coq.derivations import theorem_name
 
-    if step["verdict"] != "verified" or _proved_by(name, step, twins) in ("SOS", "citation"):
+    if step["verdict"] != "verified":
         return ""
+    how = _proved_by(name, step, twins)
+    if how == "citation":
+        return ""
+    if how == "SOS":
+        head, _, tail = name.rpartition(".step")
+        if not (tail.endswith("-sos") and tail[:-4].isdigit()):
+            return ""
+        k = int(tail[:-4])
+        return f"{sos.unit_name(head, k)}.{sos.theorem_name(k)}"
     return theorem_name(name, step["index"])
 
 

@@ -1,0 +1,75 @@
+(** SOS certificate sos-0d7a67545a4e02ce9d38.json, exported to Coq.
+    It proves step 1 of the derivation 'lemma1.boundary-sign-direct' (verify.paper_proofs): k_s tr(sym(R_rl) (I - ξξᵀ)) >= 0.
+    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by field.
+    Charts: a unit vector is stated in its stereographic chart (all but the pole (0, 0, 1)) and an angle by tan(theta/2) (all but pi); the missed points are covered by the Python checker's continuity argument, not by this theorem. *)
+
+From Coq Require Import Reals QArith List Lra.
+From VerifyCoq Require Import SO3 SOSCert.
+Import ListNotations.
+Open Scope R_scope.
+
+Section Sos_lemma1_boundary_sign_direct_1.
+
+(** k_s: a scalar *)
+Variable k_s : R.
+Hypothesis k_s_pos : 0 < k_s.
+
+(** R_rl: a rotation, rot q with |q|^2 <> 0 *)
+Variable q_R_rl : quat.
+Hypothesis q_R_rl_nonzero : qn q_R_rl <> 0.
+Local Notation R_rl := (rot q_R_rl).
+
+(** ξ: a unit vector in the stereographic chart (every unit vector but the pole (0, 0, 1)) *)
+Variable xi : V3.
+Variables a_xi b_xi : R.
+Hypothesis xi_chart : xi = stereo a_xi b_xi.
+
+(** assumption: sym(R_rl) ≻ 0 (Assumption 1, item 2) *)
+Hypothesis assumption1 : pd R_rl.
+
+Let env : list R := [k_s; (qw q_R_rl); (qx q_R_rl); (qy q_R_rl); (qz q_R_rl); a_xi; b_xi].
+
+Definition target : poly := [([1;0;0;0;2;0;0]%nat, (-2)%Q); ([1;0;0;0;2;0;2]%nat, 4%Q); ([1;0;0;0;2;0;4]%nat, (-2)%Q); ([1;0;0;0;2;2;0]%nat, 4%Q); ([1;0;0;0;2;2;2]%nat, (-4)%Q); ([1;0;0;0;2;4;0]%nat, (-2)%Q); ([1;0;0;1;1;0;1]%nat, 8%Q); ([1;0;0;1;1;0;3]%nat, (-8)%Q); ([1;0;0;1;1;2;1]%nat, (-8)%Q); ([1;0;0;2;0;0;2]%nat, (-8)%Q); ([1;0;1;0;1;1;0]%nat, 8%Q); ([1;0;1;0;1;1;2]%nat, (-8)%Q); ([1;0;1;0;1;3;0]%nat, (-8)%Q); ([1;0;1;1;0;1;1]%nat, (-16)%Q); ([1;0;2;0;0;2;0]%nat, (-8)%Q); ([1;2;0;0;0;0;0]%nat, 2%Q); ([1;2;0;0;0;0;2]%nat, 4%Q); ([1;2;0;0;0;0;4]%nat, 2%Q); ([1;2;0;0;0;2;0]%nat, 4%Q); ([1;2;0;0;0;2;2]%nat, 4%Q); ([1;2;0;0;0;4;0]%nat, 2%Q)].
+
+(** block 1: k_s > 0 (declared) × assumed: sym(R_rl) ≻ 0 *)
+Definition H1 : list (list poly) := [[[([1;0;0;0;2;0;0]%nat, (-1)%Q); ([1;0;0;2;0;0;0]%nat, (-1)%Q); ([1;0;2;0;0;0;0]%nat, 1%Q); ([1;2;0;0;0;0;0]%nat, 1%Q)]; [([1;0;1;1;0;0;0]%nat, 2%Q)]; [([1;0;1;0;1;0;0]%nat, 2%Q)]]; [[([1;0;1;1;0;0;0]%nat, 2%Q)]; [([1;0;0;0;2;0;0]%nat, (-1)%Q); ([1;0;0;2;0;0;0]%nat, 1%Q); ([1;0;2;0;0;0;0]%nat, (-1)%Q); ([1;2;0;0;0;0;0]%nat, 1%Q)]; [([1;0;0;1;1;0;0]%nat, 2%Q)]]; [[([1;0;1;0;1;0;0]%nat, 2%Q)]; [([1;0;0;1;1;0;0]%nat, 2%Q)]; [([1;0;0;0;2;0;0]%nat, 1%Q); ([1;0;0;2;0;0;0]%nat, (-1)%Q); ([1;0;2;0;0;0;0]%nat, (-1)%Q); ([1;2;0;0;0;0;0]%nat, 1%Q)]]].
+Definition S1 : list (Q * list poly) :=
+  [(1%Q, [[([0;0;0;0;0;0;0]%nat, 1%Q); ([0;0;0;0;0;0;2]%nat, (-2#7)%Q); ([0;0;0;0;0;2;0]%nat, (-1)%Q)]; [([0;0;0;0;0;1;1]%nat, (-5#7)%Q)]; [([0;0;0;0;0;1;0]%nat, 2%Q)]]);
+   (1%Q, [[([0;0;0;0;0;1;1]%nat, (-5#7)%Q)]; [([0;0;0;0;0;0;0]%nat, 1%Q); ([0;0;0;0;0;0;2]%nat, (-1)%Q); ([0;0;0;0;0;2;0]%nat, (-2#7)%Q)]; [([0;0;0;0;0;0;1]%nat, 2%Q)]]);
+   ((18#7)%Q, [[([0;0;0;0;0;0;1]%nat, 1%Q)]; [([0;0;0;0;0;1;0]%nat, (-1)%Q)]; []]);
+   ((45#49)%Q, [[([0;0;0;0;0;0;2]%nat, 1%Q)]; [([0;0;0;0;0;1;1]%nat, (-1)%Q)]; []]);
+   ((45#49)%Q, [[([0;0;0;0;0;1;1]%nat, 1%Q)]; [([0;0;0;0;0;2;0]%nat, (-1)%Q)]; []])].
+
+Lemma H1_psd : mult_psd env H1.
+Proof.
+  apply (mult_psd_3 env H1 (k_s * (qn q_R_rl) ^ 1) (fun x1 x2 x3 => qform (sym R_rl) (mkV x1 x2 x3))).
+  - reflexivity.
+  - exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rlt_le _ _ (pow_lt _ 1 (qn_pos q_R_rl q_R_rl_nonzero)))).
+  - intros x1 x2 x3. exact ((pd_psd _ assumption1) (mkV x1 x2 x3)).
+  - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
+Qed.
+
+Definition blocks : list block := [(mkBlock H1 S1)].
+
+Lemma cert_checked : cert_ok target blocks = true.
+Proof. vm_compute. reflexivity. Qed.
+
+Lemma grounds : blocks_psd env blocks.
+Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
+
+(** The link: the slack of the statement times ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1) is the target polynomial at the parameters (times the factors divided out of it), by field. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0) * D = F * peval env target.
+Proof.
+  exists ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1), 1. split; [exact (Rmult_lt_0_compat _ _ (pow_lt _ 2 (chart_den_pos a_xi b_xi)) (pow_lt _ 1 (qn_pos q_R_rl q_R_rl_nonzero)))|]. split; [exact Rle_0_1|].
+  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
+  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
+Qed.
+
+Theorem step1_by_sos : (k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) >= 0.
+Proof.
+  apply (ge_by_slack _ _ ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0)); [reflexivity|].
+  destruct link as (D & F & HD & HF & E).
+  exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
+Qed.
+
+End Sos_lemma1_boundary_sign_direct_1.
