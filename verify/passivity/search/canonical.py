@@ -87,7 +87,7 @@ def pivot_rows(G: ex.RationalMatrix) -> list[int] | None:
         for i in rest:
             if i != r and W[i][c] != 0:
                 f = W[i][c] / W[r][c]
-                W[i] = [a - f * b for a, b in zip(W[i], W[r])]
+                W[i] = [a - f * b for a, b in zip(W[i], W[r], strict=True)]
     return sorted(chosen)
 
 
@@ -121,26 +121,26 @@ def solve_pivot_rows(P: ex.RationalMatrix, G: ex.RationalMatrix, target: ex.Rati
 def coarse_kyp(model: ExactModel, P: ex.RationalMatrix) -> ex.RationalMatrix:
     """The coarsest grid rounding of a valid KYP matrix P that ``check_kyp`` accepts.
 
-    When the KYP matrix needs P G = T exactly, each grid is tried with the pivot rows of G
-    solved for (:func:`solve_pivot_rows`: short entries elsewhere), then with the
-    correction projected over every entry."""
+    When the KYP matrix needs P G = T exactly, the grids are tried first with the pivot
+    rows of G solved for (:func:`solve_pivot_rows`: short entries elsewhere), then with
+    the correction projected over every entry (long entries everywhere)."""
     from verify.passivity.search.kyp import _project_equalities
 
-    if model.n == 0:
+    if model.n == 0 or _exponent([P], GRID_BITS[0]) is None:
         return P
     equalities = _equalities(model)
-    pivots = pivot_rows(equalities[0]) if equalities is not None else None
-    for bits in GRID_BITS:
-        exponent = _exponent([P], bits)
-        if exponent is None:
-            return P
-        rounded = _symmetric(_round(P, exponent))
-        candidates = [rounded]
-        if equalities is not None:
-            candidates = [_project_equalities(rounded, *equalities)]
-            if pivots is not None:
-                candidates.insert(0, solve_pivot_rows(rounded, *equalities, pivots))
-        for candidate in candidates:
+    if equalities is None:
+        fixes = [lambda X: X]
+    else:
+        fixes = [lambda X: _project_equalities(X, *equalities)]
+        pivots = pivot_rows(equalities[0])
+        if pivots is not None:
+            fixes.insert(0, lambda X: solve_pivot_rows(X, *equalities, pivots))
+    for fix in fixes:
+        for bits in GRID_BITS:
+            exponent = _exponent([P], bits)
+            assert exponent is not None  # P is not zero
+            candidate = fix(_symmetric(_round(P, exponent)))
             if ex.is_symmetric(candidate) and check_kyp(model, candidate).ok:
                 return candidate
     return P
