@@ -460,3 +460,36 @@ def test_coq_sums_over_several_denominators_exactly(prelude_dir):
                 " (4 # 3) = true.\nProof. vm_compute. reflexivity. Qed.\n")
     assert _compiles(prelude_dir, unit("(32 # 15)"), "Bins")  # 1/2 + 2/15 + 3/2
     assert not _compiles(prelude_dir, unit("(31 # 15)"), "Bins")
+
+
+@pytest.mark.slow  # about 15 CPU seconds (the 30-state unit: about 10 s in coqc)
+@needs_coqc
+def test_gate_with_coq_on_a_30_state_model(tmp_path, capsys):
+    """A 30-state strictly proper model (P B = C^T binds) through ``verify gate --coq``:
+    the stored certificate has short entries off two pivot rows and coqc accepts it."""
+    from decimal import Decimal
+
+    import numpy as np
+
+    from verify.passivity.port_hamiltonian import random_port_hamiltonian
+
+    A, B, C, D = random_port_hamiltonian(30, 2, np.random.default_rng([11, 30]), False)
+
+    def mat(M) -> str:  # each float as its exact decimal expansion
+        return "[" + ", ".join("[" + ", ".join(format(Decimal(float(x)), "f") + ".0"
+                                               if float(x).is_integer() else
+                                               format(Decimal(float(x)), "f") for x in row)
+                               + "]" for row in M) + "]"
+    model = tmp_path / "ph30.toml"
+    model.write_text(f'name = "pH 30"\n\n[state_space]\nA = {mat(A)}\nB = {mat(B)}\n'
+                     f"C = {mat(C)}\nD = {mat(D)}\n")
+    rc = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+               "--coq", str(tmp_path / "coq")])
+    out = capsys.readouterr().out
+    assert rc == 0, out
+    assert "coq: compiled by coqc, accepted" in out
+    [cert] = list((tmp_path / "c").glob("*.json"))
+    P = [[mpq(x) for x in row] for row in json.loads(cert.read_text())["P"]]
+    bits = sorted(max(int(x.numerator).bit_length(), int(x.denominator).bit_length())
+                  for row in P for x in row)
+    assert bits[-1] > 100 and bits[-(2 * 2 * 30)] <= 40  # long only in 2 rows and columns
