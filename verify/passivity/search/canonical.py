@@ -7,8 +7,8 @@ matrices are rounded to the coarsest dyadic grid (a few significant bits relativ
 largest entry) on which the exact check still passes. Rounding an exact matrix to a
 coarse grid is a deterministic function of it, and last-bit noise in the proposal moves
 the result only when an entry sits on a grid boundary. Equalities the KYP matrix needs
-exactly (P B N = C^T N for N spanning ker(D + D^T)) are restored by an exact projection
-after rounding: k pivot rows and columns of P (k = rank B N, the pivot rows of B N found
+exactly (P B N = C^T N for N spanning ker(D + D^T)) are restored exactly after
+rounding: k pivot rows and columns of P (k = rank B N, the pivot rows of B N found
 by exact elimination) are solved for exactly and every other entry keeps its grid value,
 so only those rows carry long numbers (the denominator of the pivot block of B N) and
 the rest stay short; a projection that spreads the correction over every entry is the
