@@ -32,9 +32,10 @@ Definition entry (M : matQ) (i j : nat) : Q := nth j (nth i M nil) 0%Q.
 
 (** Exact arithmetic on [Q] with shortcuts for speed: [qadd a b == a + b] and
     [qmul a b = a * b] (lemmas [Q2R_qadd], [Q2R_qmul] below).  Fractions are not reduced:
-    the exporter writes each matrix over one common denominator, so that the terms of a
-    sum share theirs and are added by their numerators; a product multiplies the shorter
-    number into the longer. *)
+    the exporter writes each matrix over one common denominator (or two, for short and
+    long entries), so that the terms of a sum share theirs and are added by their
+    numerators; every product, in [qadd] too, multiplies the shorter number into the
+    longer ([Pos.mul] costs the length of its first argument times the result's). *)
 Definition pmul (x y : positive) : positive :=
   if Pos.leb (Pos.size x) (Pos.size y) then Pos.mul x y else Pos.mul y x.
 Definition zmul (x y : Z) : Z :=
