@@ -398,3 +398,105 @@ def test_gate_refuses_a_coq_folder_that_is_the_certificates_folder(tmp_path, cap
                  "--coq", str(tmp_path / "c")]) == 2
     assert "--coq" in capsys.readouterr().err
     assert not (tmp_path / "c").exists()
+
+
+@pytest.fixture(scope="module")
+def pivot_row_unit():
+    """The Coq unit of a gate certificate whose P has long pivot rows and short dyadic
+    entries elsewhere (a 6-state port-Hamiltonian model with D = 0: P B = C^T binds)."""
+    from fractions import Fraction
+
+    import numpy as np
+
+    from verify.coq.kyp import kyp_unit
+    from verify.passivity.decision import decide
+    from verify.passivity.model import from_state_space
+    from verify.passivity.port_hamiltonian import random_port_hamiltonian
+    from verify.passivity.search.canonical import coarse_kyp
+
+    A, B, C, D = random_port_hamiltonian(6, 2, np.random.default_rng([11, 6]), False)
+    d = decide(from_state_space(A, B, C, D, name="pH n=6"))
+    assert d.certificate is not None, d.reason
+    model = d.certificate.model
+    P = coarse_kyp(model, d.certificate.P)
+    return kyp_unit("PivotRows", model=model, P=P, margin=Fraction(0), label="pH n=6",
+                    source="(test)", fingerprint=model.fingerprint(), origin="test").text
+
+
+def _p_block(text: str) -> str:
+    return text[text.index("Definition P : matQ"):text.index("(** Witnesses")]
+
+
+def test_a_matrix_with_long_and_short_entries_is_written_over_two_denominators(
+        pivot_row_unit):
+    import re
+
+    dens = {int(d) for d in re.findall(r"\(-?\d+ # (\d+)\)", _p_block(pivot_row_unit))}
+    assert len(dens) == 2
+    short, long = sorted(dens)
+    assert short & (short - 1) == 0 and long.bit_length() > short.bit_length() + 64
+    paper = _p_block(kyp_unit_from_file(KS3).text)  # short rationals: one denominator
+    assert set(re.findall(r"\(-?\d+ # (\d+)\)", paper)) == {"160"}
+
+
+@needs_coqc
+def test_coqc_accepts_pivot_rows_and_rejects_a_changed_long_entry(prelude_dir,
+                                                                 pivot_row_unit):
+    import re
+
+    assert _compiles(prelude_dir, pivot_row_unit, "PivotRows")
+    block = _p_block(pivot_row_unit)
+    longest = max(int(d) for d in re.findall(r"\(-?\d+ # (\d+)\)", block))
+    entry = re.search(r"\((-?\d+) # " + str(longest) + r"\)", block)
+    assert entry is not None
+    changed = block.replace(entry.group(0), f"({int(entry.group(1)) + 1} # {longest})", 1)
+    assert not _compiles(prelude_dir, pivot_row_unit.replace(block, changed), "PivotRows")
+
+
+@needs_coqc
+def test_coq_sums_over_several_denominators_exactly(prelude_dir):
+    """QCert's dot product and row sums by bins of denominators compute the exact value
+    (and a wrong value is refused)."""
+    def unit(value: str) -> str:
+        return ("From Coq Require Import QArith List.\nFrom VerifyCoq Require Import QCert.\n"
+                "Import ListNotations.\nLocal Open Scope Q_scope.\n"
+                "Example e1 : Qeq_bool (dot [(1 # 2); (2 # 6); (3 # 2)] "
+                "[(1 # 1); (2 # 5); (1 # 1)]) " + value + " = true.\n"
+                "Proof. vm_compute. reflexivity. Qed.\n"
+                "Example e2 : Qeq_bool (sumQb 3 (fun j => nth j [(1 # 2); (1 # 3); (1 # 2)] 0))"
+                " (4 # 3) = true.\nProof. vm_compute. reflexivity. Qed.\n")
+    assert _compiles(prelude_dir, unit("(32 # 15)"), "Bins")  # 1/2 + 2/15 + 3/2
+    assert not _compiles(prelude_dir, unit("(31 # 15)"), "Bins")
+
+
+@pytest.mark.slow  # about 15 CPU seconds (the 30-state unit: about 10 s in coqc)
+@needs_coqc
+def test_gate_with_coq_on_a_30_state_model(tmp_path, capsys):
+    """A 30-state strictly proper model (P B = C^T binds) through ``verify gate --coq``:
+    the stored certificate has short entries off two pivot rows and coqc accepts it."""
+    from decimal import Decimal
+
+    import numpy as np
+
+    from verify.passivity.port_hamiltonian import random_port_hamiltonian
+
+    A, B, C, D = random_port_hamiltonian(30, 2, np.random.default_rng([11, 30]), False)
+
+    def mat(M) -> str:  # each float as its exact decimal expansion
+        return "[" + ", ".join("[" + ", ".join(format(Decimal(float(x)), "f") + ".0"
+                                               if float(x).is_integer() else
+                                               format(Decimal(float(x)), "f") for x in row)
+                               + "]" for row in M) + "]"
+    model = tmp_path / "ph30.toml"
+    model.write_text(f'name = "pH 30"\n\n[state_space]\nA = {mat(A)}\nB = {mat(B)}\n'
+                     f"C = {mat(C)}\nD = {mat(D)}\n")
+    rc = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+               "--coq", str(tmp_path / "coq")])
+    out = capsys.readouterr().out
+    assert rc == 0, out
+    assert "coq: compiled by coqc, accepted" in out
+    [cert] = list((tmp_path / "c").glob("*.json"))
+    P = [[mpq(x) for x in row] for row in json.loads(cert.read_text())["P"]]
+    bits = sorted(max(int(x.numerator).bit_length(), int(x.denominator).bit_length())
+                  for row in P for x in row)
+    assert bits[-1] > 100 and bits[-(2 * 2 * 30)] <= 40  # long only in 2 rows and columns

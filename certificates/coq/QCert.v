@@ -32,9 +32,10 @@ Definition entry (M : matQ) (i j : nat) : Q := nth j (nth i M nil) 0%Q.
 
 (** Exact arithmetic on [Q] with shortcuts for speed: [qadd a b == a + b] and
     [qmul a b = a * b] (lemmas [Q2R_qadd], [Q2R_qmul] below).  Fractions are not reduced:
-    the exporter writes each matrix over one common denominator, so that the terms of a
-    sum share theirs and are added by their numerators; a product multiplies the shorter
-    number into the longer. *)
+    the exporter writes each matrix over one common denominator (or two, for short and
+    long entries), so that the terms of a sum share theirs and are added by their
+    numerators; every product, in [qadd] too, multiplies the shorter number into the
+    longer ([Pos.mul] costs the length of its first argument times the result's). *)
 Definition pmul (x y : positive) : positive :=
   if Pos.leb (Pos.size x) (Pos.size y) then Pos.mul x y else Pos.mul y x.
 Definition zmul (x y : Z) : Z :=
@@ -46,7 +47,9 @@ Definition zmul (x y : Z) : Z :=
 Definition qmul (a b : Q) : Q := Qmake (zmul (Qnum a) (Qnum b)) (pmul (Qden a) (Qden b)).
 Definition qadd (a b : Q) : Q :=
   if Z.eqb (Qnum a) 0 then b else if Z.eqb (Qnum b) 0 then a
-  else if Pos.eqb (Qden a) (Qden b) then Qmake (Qnum a + Qnum b) (Qden a) else a + b.
+  else if Pos.eqb (Qden a) (Qden b) then Qmake (Qnum a + Qnum b) (Qden a)
+  else Qmake (zmul (Qnum a) (Zpos (Qden b)) + zmul (Qnum b) (Zpos (Qden a)))
+             (pmul (Qden a) (Qden b)).
 
 Fixpoint zipw (f : Q -> Q -> Q) (u v : list Q) : list Q :=
   match u, v with
@@ -69,14 +72,40 @@ Fixpoint dot_num (u v : list Q) : Z :=
   | _, _ => 0%Z
   end.
 
+(** Bins of a sum: [(d1, d2, s)] stands for [s / (d1 d2)].  A product of entries with
+    denominators [d1] and [d2] adds its numerator to the bin of [(d1, d2)], so that a
+    sum whose terms have a few distinct denominators (a matrix written over one
+    denominator per group of entries) is a few sums of numerators (lemma [Q2R_dot_bins]). *)
+Definition bin := (positive * positive * Z)%type.
+
+Fixpoint bin_add (d1 d2 : positive) (z : Z) (bs : list bin) : list bin :=
+  match bs with
+  | nil => [(d1, d2, z)]
+  | (e1, e2, s) :: bs' =>
+      if Pos.eqb e1 d1 && Pos.eqb e2 d2 then (e1, e2, (s + z)%Z) :: bs'
+      else (e1, e2, s) :: bin_add d1 d2 z bs'
+  end.
+
+Fixpoint dot_bins (u v : list Q) (bs : list bin) : list bin :=
+  match u, v with
+  | a :: u', b :: v' => dot_bins u' v' (bin_add (Qden a) (Qden b) (zmul (Qnum a) (Qnum b)) bs)
+  | _, _ => bs
+  end.
+
+Fixpoint bins_sum (bs : list bin) : Q :=
+  match bs with
+  | nil => 0%Q
+  | (d1, d2, s) :: bs' => qadd (Qmake s (pmul d1 d2)) (bins_sum bs')
+  end.
+
 (** The dot product u . v (lemma [Q2R_dot]); when the entries of u share one
     denominator and those of v another, the numerators' products are summed once over
-    the product of the two denominators. *)
+    the product of the two denominators; otherwise by bins of denominators. *)
 Definition dot (u v : list Q) : Q :=
   match u, v with
   | a :: _, b :: _ =>
       if same_den (Qden a) u && same_den (Qden b) v
-      then Qmake (dot_num u v) (pmul (Qden a) (Qden b)) else dot_plain u v
+      then Qmake (dot_num u v) (pmul (Qden a) (Qden b)) else bins_sum (dot_bins u v nil)
   | _, _ => 0%Q
   end.
 
@@ -310,20 +339,21 @@ Proof. apply Qeq_eqR, Qred_correct. Qed.
 Lemma Q2R_num0 d : Q2R (Qmake 0 d) = 0.
 Proof. unfold Q2R. simpl. ring. Qed.
 
-Lemma Q2R_qadd a b : Q2R (qadd a b) = Q2R a + Q2R b.
-Proof.
-  destruct a as [na da], b as [nb db]. unfold qadd. simpl.
-  destruct (Z.eqb_spec na 0) as [->|Ha]; [rewrite Q2R_num0; ring|].
-  destruct (Z.eqb_spec nb 0) as [->|Hb]; [rewrite Q2R_num0; ring|].
-  destruct (Pos.eqb_spec da db) as [<-|Hd]; [|apply Q2R_plus].
-  unfold Q2R. simpl. rewrite plus_IZR. ring.
-Qed.
-
 Lemma pmul_mul x y : pmul x y = Pos.mul x y.
 Proof. unfold pmul. destruct (Pos.leb _ _); [reflexivity | apply Pos.mul_comm]. Qed.
 
 Lemma zmul_mul x y : zmul x y = Z.mul x y.
 Proof. destruct x, y; simpl; rewrite ?pmul_mul; reflexivity. Qed.
+
+Lemma Q2R_qadd a b : Q2R (qadd a b) = Q2R a + Q2R b.
+Proof.
+  destruct a as [na da], b as [nb db]. unfold qadd. simpl.
+  destruct (Z.eqb_spec na 0) as [->|Ha]; [rewrite Q2R_num0; ring|].
+  destruct (Z.eqb_spec nb 0) as [->|Hb]; [rewrite Q2R_num0; ring|].
+  destruct (Pos.eqb_spec da db) as [<-|Hd].
+  - unfold Q2R. simpl. rewrite plus_IZR. ring.
+  - rewrite !zmul_mul, pmul_mul. exact (Q2R_plus (na # da) (nb # db)).
+Qed.
 
 Lemma Q2R_qmul a b : Q2R (qmul a b) = Q2R a * Q2R b.
 Proof.
@@ -355,12 +385,33 @@ Proof.
   split; apply not_0_IZR; discriminate.
 Qed.
 
+Lemma Q2R_bin_add d1 d2 z bs :
+  Q2R (bins_sum (bin_add d1 d2 z bs)) = Q2R (bins_sum bs) + Q2R (Qmake z (pmul d1 d2)).
+Proof.
+  induction bs as [|[[e1 e2] s] bs IH]; simpl.
+  - rewrite Q2R_qadd, Q2R_zero. ring.
+  - destruct (Pos.eqb_spec e1 d1) as [->|_]; simpl;
+      [destruct (Pos.eqb_spec e2 d2) as [->|_]; simpl|].
+    + rewrite !Q2R_qadd. unfold Q2R. simpl. rewrite plus_IZR. ring.
+    + rewrite !Q2R_qadd, IH. ring.
+    + rewrite !Q2R_qadd, IH. ring.
+Qed.
+
+Lemma Q2R_dot_bins u v bs :
+  Q2R (bins_sum (dot_bins u v bs)) = Q2R (bins_sum bs) + dotR u v.
+Proof.
+  revert v bs. induction u as [|a u IH]; intros [|b v] bs; simpl; try ring.
+  rewrite IH, Q2R_bin_add.
+  change (Qmake (zmul (Qnum a) (Qnum b)) (pmul (Qden a) (Qden b))) with (qmul a b).
+  rewrite Q2R_qmul. ring.
+Qed.
+
 Lemma Q2R_dot u v : Q2R (dot u v) = dotR u v.
 Proof.
   destruct u as [|a u'], v as [|b v']; try apply Q2R_zero.
   unfold dot. destruct (same_den (Qden a) (a :: u') && same_den (Qden b) (b :: v')) eqn:H.
   - apply andb_true_iff in H as [Hu Hv]. apply Q2R_dot_num; assumption.
-  - apply Q2R_dot_plain.
+  - rewrite Q2R_dot_bins. simpl. rewrite Q2R_zero. ring.
 Qed.
 
 Lemma Q2R_Qabs q : Q2R (Qabs q) = Rabs (Q2R q).
@@ -401,14 +452,61 @@ Fixpoint sumQ (n : nat) (f : nat -> Q) : Q :=
 
 Definition offdQ (i j : nat) (q : Q) : Q := if Nat.eqb i j then 0%Q else q.
 
+(** The sum f 0 + ... + f (n - 1) by bins of denominators (lemma [Q2R_sumQb]): the
+    terms of a row of a residual have a few distinct denominators. *)
+Fixpoint sum_bins (n : nat) (f : nat -> Q) (bs : list bin) : list bin :=
+  match n with O => bs | S k => sum_bins k f (bin_add (Qden (f k)) 1 (Qnum (f k)) bs) end.
+
+Definition sumQb (n : nat) (f : nat -> Q) : Q := bins_sum (sum_bins n f nil).
+
 (** Every row i of r: sum_(j <> i) (|r_ij| + |r_ji|) <= 2 r_ii. *)
 Definition dominant (n : nat) (r : nat -> nat -> Q) : bool :=
-  forallb (fun i => Qle_bool (sumQ n (fun j => offdQ i j (qadd (Qabs (r i j)) (Qabs (r j i)))))
+  forallb (fun i => Qle_bool (sumQb n (fun j => offdQ i j (qadd (Qabs (r i j)) (Qabs (r j i)))))
                              (2 * r i i)) (seq 0 n).
+
+(** The n x n matrix of the entries [f i j], computed once (the check reads each
+    residual entry twice: lemma [entry_tabulate]). *)
+Definition tabulate (n : nat) (f : nat -> nat -> Q) : matQ :=
+  map (fun i => map (fun j => f i j) (seq 0 n)) (seq 0 n).
 
 Definition psd_check (n : nat) (M : matQ) (eps : Q) (ws : list term) : bool :=
   Qle_bool 0 eps && forallb (fun w => Qle_bool 0 (fst w)) ws
-  && dominant n (resid M eps ws).
+  && dominant n (entry (tabulate n (resid M eps ws))).
+
+Lemma entry_tabulate n f i j :
+  (i < n)%nat -> (j < n)%nat -> entry (tabulate n f) i j = f i j.
+Proof.
+  intros Hi Hj. unfold entry, tabulate.
+  rewrite (nth_indep _ nil (map (fun j => f i j) (seq 0 n)))
+    by (rewrite map_length, seq_length; exact Hi).
+  rewrite (map_nth (fun i => map (fun j => f i j) (seq 0 n))), seq_nth by exact Hi.
+  rewrite (nth_indep _ 0%Q (f i 0%nat)) by (rewrite map_length, seq_length; exact Hj).
+  rewrite (map_nth (fun j => f i j)), seq_nth by exact Hj. reflexivity.
+Qed.
+
+Lemma sumQ_ext n f g : (forall j, (j < n)%nat -> f j = g j) -> sumQ n f = sumQ n g.
+Proof.
+  induction n; intros H; simpl; [reflexivity|].
+  rewrite IHn by (intros; apply H; lia). rewrite H by lia. reflexivity.
+Qed.
+
+Lemma sumQb_ext n f g : (forall j, (j < n)%nat -> f j = g j) -> sumQb n f = sumQb n g.
+Proof.
+  unfold sumQb. generalize (@nil bin) as bs.
+  induction n; intros bs H; simpl; [reflexivity|].
+  rewrite H by lia. apply IHn. intros; apply H; lia.
+Qed.
+
+Lemma dominant_tabulate n r :
+  dominant n (entry (tabulate n r)) = true -> dominant n r = true.
+Proof.
+  unfold dominant. rewrite !forallb_forall. intros H i Hin.
+  pose proof (H i Hin) as Hi. apply in_seq in Hin.
+  rewrite (entry_tabulate n r i i) in Hi by lia.
+  rewrite (sumQb_ext n _ (fun j => offdQ i j (qadd (Qabs (r i j)) (Qabs (r j i))))) in Hi.
+  - exact Hi.
+  - intros j Hj. rewrite !entry_tabulate by lia. reflexivity.
+Qed.
 
 Definition pd_check (n : nat) (M : matQ) (eps : Q) (ws : list term) : bool :=
   negb (Qle_bool eps 0) && psd_check n M eps ws.
@@ -439,6 +537,17 @@ Qed.
 
 Lemma Q2R_sumQ n f : Q2R (sumQ n f) = sumR n (fun j => Q2R (f j)).
 Proof. induction n; simpl; [apply Q2R_zero|]. rewrite Q2R_qadd, IHn. reflexivity. Qed.
+
+Lemma Q2R_sum_bins n f bs :
+  Q2R (bins_sum (sum_bins n f bs)) = Q2R (bins_sum bs) + sumR n (fun j => Q2R (f j)).
+Proof.
+  revert bs. induction n; intros bs; simpl; [ring|].
+  rewrite IHn, Q2R_bin_add, pmul_mul, Pos.mul_1_r.
+  destruct (f n) as [a b]. simpl. ring.
+Qed.
+
+Lemma Q2R_sumQb n f : Q2R (sumQb n f) = sumR n (fun j => Q2R (f j)).
+Proof. unfold sumQb. rewrite Q2R_sum_bins. simpl. rewrite Q2R_zero. ring. Qed.
 
 Lemma lsum_scal_r {T : Type} (ws : list T) g c : lsum ws g * c = lsum ws (fun w => g w * c).
 Proof. induction ws; simpl; [lra|]. rewrite <- IHws. lra. Qed.
@@ -494,6 +603,7 @@ Theorem psd_check_sound n M eps ws :
   forall x, Q2R eps * sumR n (fun i => x i * x i) <= qform n M x.
 Proof.
   unfold psd_check. rewrite !andb_true_iff. intros [[Heps Hws] Hdom] x.
+  apply dominant_tabulate in Hdom.
   rewrite (qform_split n M eps ws x), delta_part, terms_part.
   assert (Ht : 0 <= lsum ws (fun w => Q2R (fst w) * (lin n (snd w) x * lin n (snd w) x))).
   { apply lsum_nonneg. intros w Hw. rewrite forallb_forall in Hws.
@@ -502,7 +612,7 @@ Proof.
   assert (Hg : 0 <= sumR n (fun i => sumR n (fun j => Q2R (resid M eps ws i j) * (x i * x j)))).
   { apply (gershgorin n (fun i j => Q2R (resid M eps ws i j))). intros i Hi.
     pose proof (forallb_seq _ n Hdom i Hi) as H. apply Qle_bool_R in H.
-    rewrite Q2R_sumQ, Q2R_mult in H.
+    rewrite Q2R_sumQb, Q2R_mult in H.
     replace (Q2R 2) with 2 in H by (unfold Q2R; simpl; field).
     rewrite (sumR_ext n _ (fun j => Q2R (offdQ i j (qadd (Qabs (resid M eps ws i j))
                                                         (Qabs (resid M eps ws j i)))))).

@@ -62,13 +62,39 @@ def common_denominator(values) -> int:
     return int(reduce(lcm, (int(mpq(x).denominator) for x in values), 1))
 
 
+#: A matrix is written over two denominators (one for its dyadic entries, one for the
+#: rest) when one common denominator would lengthen its dyadic entries by more bits.
+SPLIT_BITS = 64
+
+
+def _is_dyadic(x: mpq) -> bool:
+    d = int(mpq(x).denominator)
+    return d & (d - 1) == 0
+
+
+def entry_denominators(values) -> list[int]:
+    """The denominator each entry is written over: one common denominator, or, when that
+    would lengthen the dyadic entries (0 and integers included) by more than
+    ``SPLIT_BITS`` bits, the common denominator of the dyadic entries for them and that
+    of the others for the rest. ``QCert.dot`` sums a product of such matrices in one bin
+    of numerators per pair of denominators."""
+    values = [mpq(x) for x in values]
+    whole = common_denominator(values)
+    dyadic = common_denominator(x for x in values if _is_dyadic(x))
+    if whole.bit_length() - dyadic.bit_length() <= SPLIT_BITS:
+        return [whole] * len(values)
+    rest = common_denominator(x for x in values if not _is_dyadic(x))
+    return [dyadic if _is_dyadic(x) else rest for x in values]
+
+
 def matrix_literal(m: ex.RationalMatrix, indent: str = "  ") -> str:
     """A matrix as a Coq ``list (list Q)``, one row a line, its entries over one common
-    denominator (``QCert.qadd`` then adds them by their numerators)."""
+    denominator (``QCert.qadd`` then adds them by their numerators), or over two
+    (:func:`entry_denominators`)."""
     if not m:
         return "[]"
-    den = common_denominator(x for row in m for x in row)
-    rows = [f"[{'; '.join(q_literal(x, den) for x in row)}]" for row in m]
+    dens = iter(entry_denominators(x for row in m for x in row))
+    rows = [f"[{'; '.join(q_literal(x, next(dens)) for x in row)}]" for row in m]
     return "[" + (";\n" + indent + " ").join(rows) + "]"
 
 

@@ -7,9 +7,14 @@ matrices are rounded to the coarsest dyadic grid (a few significant bits relativ
 largest entry) on which the exact check still passes. Rounding an exact matrix to a
 coarse grid is a deterministic function of it, and last-bit noise in the proposal moves
 the result only when an entry sits on a grid boundary. Equalities the KYP matrix needs
-exactly (P B N = C^T N for N spanning ker(D + D^T)) are restored by an exact projection
-after rounding. Every candidate is checked exactly; the unrounded matrix is kept when
-no coarse one passes.
+exactly (P B N = C^T N for N spanning ker(D + D^T)) are restored exactly after
+rounding: k pivot rows and columns of P (k = rank B N, the pivot rows of B N found
+by exact elimination) are solved for exactly and every other entry keeps its grid value,
+so only those rows carry long numbers (the denominator of the pivot block of B N) and
+the rest stay short; a projection that spreads the correction over every entry is the
+fallback. Short entries are what makes a certificate cheap to re-check, in Python and in
+Coq's kernel (:mod:`verify.coq.kyp`). Every candidate is checked exactly; the unrounded
+matrix is kept when no coarse one passes.
 """
 
 from __future__ import annotations
@@ -63,22 +68,81 @@ def _equalities(model: ExactModel):
     return G, ex.matmul(ex.transpose(model.C), N)
 
 
+def pivot_rows(G: ex.RationalMatrix) -> list[int] | None:
+    """k rows of G (n x k) whose k x k block is invertible, in increasing order: exact
+    elimination, each column's pivot the remaining row of largest magnitude (the first
+    such row on a tie), so the choice is a function of the exact G. None when G has
+    rank below k."""
+    n, k = len(G), len(G[0]) if G else 0
+    W = [row[:] for row in G]
+    chosen: list[int] = []
+    for c in range(k):
+        rest = [i for i in range(n) if i not in chosen]
+        if not rest:
+            return None
+        r = max(rest, key=lambda i: (abs(W[i][c]), -i))
+        if W[r][c] == 0:
+            return None
+        chosen.append(r)
+        for i in rest:
+            if i != r and W[i][c] != 0:
+                f = W[i][c] / W[r][c]
+                W[i] = [a - f * b for a, b in zip(W[i], W[r], strict=True)]
+    return sorted(chosen)
+
+
+def solve_pivot_rows(P: ex.RationalMatrix, G: ex.RationalMatrix, target: ex.RationalMatrix,
+                     pivots: list[int]) -> ex.RationalMatrix:
+    """The symmetric matrix equal to P off the ``pivots`` rows and columns with
+    (result) G = target, exactly.
+
+    With S the pivot rows, F the others and Y = P_FF: the rows F of the equality give
+    P_FS = (T_F - Y G_F) G_S^-1 and the rows S give P_SS = (T_S - P_FS^T G_F) G_S^-1,
+    which is symmetric when G^T T is (the condition for any symmetric solution).
+    """
+    n = len(P)
+    free = [i for i in range(n) if i not in set(pivots)]
+    Y = [[P[i][j] for j in free] for i in free]
+    GS, GF = [G[i] for i in pivots], [G[i] for i in free]
+    TS, TF = [target[i] for i in pivots], [target[i] for i in free]
+    GSi = ex.inverse(GS)
+    PFS = ex.matmul(ex.add(TF, ex.matmul(Y, GF), -1), GSi) if free else []
+    PSS = ex.matmul(ex.add(TS, ex.matmul(ex.transpose(PFS), GF), -1) if free else TS, GSi)
+    out = [row[:] for row in P]
+    for a, i in enumerate(free):
+        for b, j in enumerate(pivots):
+            out[i][j] = out[j][i] = PFS[a][b]
+    for a, i in enumerate(pivots):
+        for b, j in enumerate(pivots):
+            out[i][j] = PSS[a][b]
+    return out
+
+
 def coarse_kyp(model: ExactModel, P: ex.RationalMatrix) -> ex.RationalMatrix:
-    """The coarsest grid rounding of a valid KYP matrix P that ``check_kyp`` accepts."""
+    """The coarsest grid rounding of a valid KYP matrix P that ``check_kyp`` accepts.
+
+    When the KYP matrix needs P G = T exactly, the grids are tried first with the pivot
+    rows of G solved for (:func:`solve_pivot_rows`: short entries elsewhere), then with
+    the correction projected over every entry (long entries everywhere)."""
     from verify.passivity.search.kyp import _project_equalities
 
-    if model.n == 0:
+    if model.n == 0 or _exponent([P], GRID_BITS[0]) is None:
         return P
     equalities = _equalities(model)
-    for bits in GRID_BITS:
-        exponent = _exponent([P], bits)
-        if exponent is None:
-            return P
-        candidate = _symmetric(_round(P, exponent))
-        if equalities is not None:
-            candidate = _project_equalities(candidate, *equalities)
-        if check_kyp(model, candidate).ok:
-            return candidate
+    if equalities is None:
+        fixes = [lambda X: X]
+    else:
+        fixes = [lambda X: _project_equalities(X, *equalities)]
+        pivots = pivot_rows(equalities[0])
+        if pivots is not None:
+            fixes.insert(0, lambda X: solve_pivot_rows(X, *equalities, pivots))
+    for fix in fixes:
+        for bits in GRID_BITS:
+            exponent = _exponent([P], bits)
+            assert exponent is not None  # P is not zero
+            candidate = fix(_symmetric(_round(P, exponent)))
+            if ex.is_symmetric(candidate) and check_kyp(model, candidate).ok:
+                return candidate
     return P
 
 
@@ -104,4 +168,4 @@ def coarse_band(model: ExactModel, P: ComplexMatrix, Q: ComplexMatrix,
     return P, Q
 
 
-__all__ = ["GRID_BITS", "coarse_band", "coarse_kyp"]
+__all__ = ["GRID_BITS", "coarse_band", "coarse_kyp", "pivot_rows", "solve_pivot_rows"]
