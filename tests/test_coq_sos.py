@@ -88,8 +88,11 @@ def test_the_sos_units_have_no_forbidden_command_and_print_their_assumptions(sos
     sos = {k: v for k, v in files.items() if k.startswith("sos_") or k == "SOSCert.v"}
     assert len(sos) == 9
     assert forbidden_commands(sos) == []
+    all_v = files["All.v"]  # one Print Assumptions of the tuple of every top theorem
+    tuple_text = all_v[all_v.index("top_theorems"):all_v.index("Print Assumptions")]
+    assert all_v.rstrip().endswith("Print Assumptions top_theorems.")
     for unit in units:
-        assert f"Print Assumptions {unit.name}.{unit.theorems[0]}." in files["All.v"]
+        assert f"{unit.name}.{unit.theorems[0]}" in tuple_text
 
 
 def test_ldl_rebuilds_the_gram_matrix_exactly():
