@@ -22,6 +22,7 @@ from verify.coq.development import (
     write_development,
 )
 from verify.coq.export import (
+    EXPORTED_SCHEMAS,
     Export,
     export_certificates,
     not_exported_json,
@@ -122,8 +123,7 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
         return 2
     print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
           f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
-    refused = [i for i in export.not_exported
-               if i.schema.startswith(("verify-kyp-certificate", "verify-gkyp-certificate"))]
+    refused = [i for i in export.not_exported if i.schema in EXPORTED_SCHEMAS]
     for item in refused:
         print(f"not exported: {item.reason}")
     ok = not refused

@@ -25,7 +25,7 @@ from verify.coq.unit import CoqUnit
 LOGICAL_ROOT = "VerifyCoq"
 
 # Prelude modules in dependency order (each may Require the ones before it).
-PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert")
+PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "BandCert")
 
 
 def prelude_sources() -> dict[str, str]:

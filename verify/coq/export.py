@@ -1,7 +1,8 @@
 """Which stored certificates become Coq units, and why the others do not.
 
 :func:`export_certificates` turns certificate files into :class:`~verify.coq.unit.CoqUnit`
-s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`)
+s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`;
+exact-band certificates, :mod:`verify.coq.band_fd`)
 and lists every file it does not export with
 the reason, machine-readably (:func:`not_exported_json`, written beside the development
 as ``NOT_EXPORTED.json``). :func:`paper_development_units` is the paper's development:
@@ -17,11 +18,17 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from verify.coq.band import gkyp_unit_from_file
+from verify.coq.band_fd import band_fd_unit_from_file
 from verify.coq.kyp import CoqExportError, kyp_unit_from_file
 from verify.coq.unit import CoqUnit
 
 KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
 BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
+BAND_FD_SCHEMAS = ("verify-band-fd-certificate/1",)
+
+#: Every schema :func:`export_certificates` turns into a unit (a file of one of these
+#: kinds that is not exported was refused, with the reason).
+EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS)
 
 #: Certificate kinds not exported, with the reason (shown in the README and the list).
 NOT_EXPORTED_REASONS: dict[str, str] = {
@@ -29,9 +36,6 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "SOS certificate of a derivation step: not exported yet (checked by the Python "
         "exact checker only); the same inequality is kernel-checked through its "
         "hand-written terms in the paper's derivation units",
-    "verify-band-fd-certificate/1":
-        "exact-band certificate (polynomial non-negativity on an interval from Descartes "
-        "and breakpoint data): not exported yet; checked by the Python exact checker only",
     "verify-pr-certificate/1":
         "positive-real (frequency-domain) certificate: not exported yet; checked by the "
         "Python exact checker only",
@@ -83,19 +87,21 @@ def schema_of(path: Path) -> str:
 
 
 def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Export:
-    """Units for the KYP certificates among ``paths``; the rest listed with the reason.
+    """Units for the KYP, band and exact-band certificates among ``paths``; the rest
+    listed with the reason.
 
-    ``strict``: a KYP certificate that cannot be exported (unbound, no witness) raises
+    ``strict``: such a certificate that cannot be exported (unbound, no witness) raises
     :class:`CoqExportError` instead of being listed.
     """
     units: list[CoqUnit] = []
     left: list[NotExported] = []
     for path in certificate_files(paths):
         schema = schema_of(path)
-        if schema in KYP_SCHEMAS or schema in BAND_SCHEMAS:
+        if schema in EXPORTED_SCHEMAS:
+            make = (kyp_unit_from_file if schema in KYP_SCHEMAS else
+                    gkyp_unit_from_file if schema in BAND_SCHEMAS else band_fd_unit_from_file)
             try:
-                units.append(kyp_unit_from_file(path) if schema in KYP_SCHEMAS
-                             else gkyp_unit_from_file(path))
+                units.append(make(path))
             except CoqExportError as exc:
                 if strict:
                     raise
