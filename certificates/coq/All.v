@@ -21,6 +21,7 @@ From VerifyCoq Require thm1_V_dot_zero_implies_sync.
 From VerifyCoq Require thm1_V_dot_zero_on_sync.
 From VerifyCoq Require thm1_lasalle_derivative.
 From VerifyCoq Require thm1_lasalle_derivative_from_sk_only.
+From VerifyCoq Require Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
 Print Assumptions lemma1_spectrum.step1.
 Print Assumptions lemma1_spectrum_projector.step1.
@@ -77,4 +78,5 @@ Print Assumptions thm1_lasalle_derivative.step1.
 Print Assumptions thm1_lasalle_derivative.step2.
 Print Assumptions thm1_lasalle_derivative.claim.
 Print Assumptions thm1_lasalle_derivative_from_sk_only.step1.
+Print Assumptions Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.passive_on_band.
 Print Assumptions Cert_reconstructed_k_s_3_0_99babda880e6.passive.
