@@ -1,13 +1,16 @@
 """Cost of the Coq kernel check of KYP certificates, against the Python exact checker.
 
 For the paper's k_s = 3.0 certificate and for gate certificates of random passive
-port-Hamiltonian models (float data, the test suite's family) of the sizes given, it
+port-Hamiltonian models (float data, the test suite's family) of the sizes given, and
+for exact-band certificates (the paper's k_s = 2.5 one on [0, 3/2], random passive
+models of ``--band-sizes`` states on [0, 1]), it
 exports the unit, compiles it with ``coqc`` (the prelude compiled once, not counted),
 and prints coqc's wall time and peak memory beside the Python exact check
 (:func:`verify.passivity.check.certificate.check_kyp`) on the same certificate, and the
 ratio. A compile past ``--timeout`` seconds is reported as such.
 
-    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--timeout 900]
+    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--band-sizes 4 6]
+                                             [--timeout 900]
 """
 
 from __future__ import annotations
@@ -23,9 +26,11 @@ from pathlib import Path
 
 import numpy as np
 
+from verify.coq.band_fd import band_fd_unit_from_file, band_unit
 from verify.coq.development import LOGICAL_ROOT, prelude_sources
 from verify.coq.kyp import kyp_unit, kyp_unit_from_file
-from verify.passivity.check.certificate import check_kyp
+from verify.passivity.check.band_fd import BandFdCertificate, analyse_band, check_band_fd_data
+from verify.passivity.check.certificate import check_kyp, exact_model
 from verify.passivity.decision import decide
 from verify.passivity.io import certificate_files as cf
 from verify.passivity.io.strict_json import read_strict
@@ -34,6 +39,7 @@ from verify.passivity.port_hamiltonian import random_port_hamiltonian
 
 ROOT = Path(__file__).resolve().parents[1]
 KS3 = ROOT / "certificates" / "reconstructed-k_s-3.0-99babda880e6.json"
+KS25 = ROOT / "certificates" / "reconstructed-k_s-2.5-band-0-1.5-f0739b7ae628.json"
 
 
 def coqc(folder: Path, rel: str, timeout: float) -> tuple[float, float, float, bool]:
@@ -70,6 +76,7 @@ def python_check_seconds(model, P, repeat: int = 3) -> float:
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", type=int, nargs="*", default=[4, 10, 30])
+    ap.add_argument("--band-sizes", type=int, nargs="*", default=[4, 6])
     ap.add_argument("--timeout", type=float, default=900.0)
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
@@ -100,7 +107,44 @@ def main() -> int:
             state = "" if ok else ("  TIMEOUT" if secs >= args.timeout else "  FAILED")
             print(f"{label:<26} {secs:9.1f} {cpu:9.1f} {mb:8.0f} {py:9.4f} {cpu / py:9.0f}  "
                   f"{len(unit.text) // 1024} KiB{state}", flush=True)
+        band_cases(folder, args)
     return 0
+
+
+def band_python_seconds(data: dict, repeat: int = 3) -> float:
+    """The Python exact checker of an exact-band certificate (its binding aside)."""
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        assert check_band_fd_data(data)[0].ok
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def band_cases(folder: Path, args: argparse.Namespace) -> None:
+    """Exact-band certificates: the paper's k_s = 2.5 one, and random passive
+    port-Hamiltonian models (2 ports) on the band [0, 1]."""
+    cases = [("paper k_s=2.5 band (4 st.)", band_fd_unit_from_file(KS25),
+              read_strict(KS25))]
+    for n in args.band_sizes:
+        A, B, C, D = random_port_hamiltonian(n, 2, np.random.default_rng([12, n]), False)
+        model = exact_model(A, B, C, D)
+        band = (Fraction(0), Fraction(1))
+        analysis = analyse_band(model, band)
+        assert analysis.passive
+        data = BandFdCertificate(f"pH n={n}", "(benchmark)", model, band, Fraction(0),
+                                 analysis).to_json()
+        unit = band_unit(f"Band{n}", model=model, band=band, margin=Fraction(0),
+                         label=f"pH n={n}", source="(benchmark)",
+                         fingerprint=model.fingerprint(), origin=f"band n={n}")
+        cases.append((f"band pH {n} states", unit, data))
+    for label, unit, data in cases:
+        (folder / f"{unit.name}.v").write_text(unit.text)
+        secs, cpu, mb, ok = coqc(folder, f"{unit.name}.v", args.timeout)
+        py = band_python_seconds(data)
+        state = "" if ok else ("  TIMEOUT" if secs >= args.timeout else "  FAILED")
+        print(f"{label:<26} {secs:9.1f} {cpu:9.1f} {mb:8.0f} {py:9.4f} {cpu / py:9.0f}  "
+              f"{len(unit.text) // 1024} KiB{state}", flush=True)
 
 
 if __name__ == "__main__":
