@@ -37,14 +37,23 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "exact checker only); the same inequality is kernel-checked through its "
         "hand-written terms in the paper's derivation units",
     "verify-pr-certificate/1":
-        "positive-real (frequency-domain) certificate: not exported yet; checked by the "
-        "Python exact checker only",
+        "positive-real certificate (stability by Routh, imaginary-axis poles with their "
+        "residues, H(jw) + H(jw)^H >= 0 for every real w by univariate SOS): not exported; "
+        "the frequency inequality would fit BandCert.v's Bernstein witnesses once a piece "
+        "reaching to infinity is added, but the pole conditions (Routh-Hurwitz, residues) "
+        "have no lemma in the Coq prelude; checked by the Python exact checker only",
     "verify-robust-band-certificate/1":
-        "robust certificate over a set of identified models (interval data): not "
-        "exported; checked by the Python exact checker only",
+        "robust certificate over an ellipsoidal region of identified models: a tree of "
+        "coefficient boxes, each leaf checked by rational interval arithmetic (natural "
+        "interval extensions), Kharitonov's theorem for the denominators, and the "
+        "ellipsoid's enclosing box; the statement quantifies over a continuum of models, "
+        "and none of these three lemmas is in the Coq prelude, so no finite list of exact "
+        "checks Coq could re-run stands for it; checked by the Python exact checker only",
     "verify-robust-refutation-certificate/1":
-        "refutation (a witness that a model is not passive): not a passivity proof; "
-        "checked by the Python exact checker only",
+        "refutation (every model of an identified region is not passive, from leaves where "
+        "an exact vector makes H(jw) + H(jw)^H negative): a negative verdict, not a "
+        "passivity proof, and its leaves rest on the same interval arithmetic as the robust "
+        "certificates; checked by the Python exact checker only",
 }
 
 
