@@ -262,3 +262,71 @@ def test_gate_band_with_coq_writes_and_compiles_the_exact_band_unit(tmp_path, ca
     text = unit.read_text()
     assert "Definition nu0 : Q := (-1 # 10)." in text
     assert "Theorem passive_on_band : band_passive 4 2 A B C D_shifted w1 w2." in text
+
+
+# ---------------------------------------------------------------- positive-real certificates
+
+
+def test_half_line_witness_with_a_bounded_part_and_its_replica():
+    p = poly(4, 0, -4, 0, 1) * poly(1, 1) * poly(5, -4, 1)  # (x^2-2)^2 (x+1) (x^2-4x+5)
+    w = iw.find_ray(p, fmpq(0))
+    assert w is not None and iw.check_ray(p, fmpq(0), w)
+    assert not iw.check_ray(p * poly(1, -1), fmpq(0), w)  # another polynomial
+    assert iw.find_ray(poly(-1, 0, 1), fmpq(0)) is None  # x^2 - 1 < 0 on [0, 1)
+    assert iw.find_ray(poly(1, 0, -1), fmpq(0)) is None  # 1 - x^2 < 0 beyond 1
+
+
+@pytest.fixture(scope="module")
+def pr_certificate(tmp_path_factory):
+    """A positive-real certificate of the k_s = 3.0 model (the exact frequency route)."""
+    from verify.passivity.check.fd_certificate import model_from_json
+    from verify.passivity.fd_decision import decide_positive_real
+    from verify.passivity.gate import store_pr_certificate
+
+    model = model_from_json(json.loads((CERTS / "reconstructed-k_s-3.0-99babda880e6.json")
+                                       .read_text()))
+    verdict, reason, cert, _ = decide_positive_real(model, "k_s = 3.0", "")
+    assert verdict == "passive" and cert is not None, reason
+    path, _ = store_pr_certificate(cert, Fraction(0), tmp_path_factory.mktemp("pr"))
+    return path
+
+
+def test_positive_real_certificates_are_exported_in_part(pr_certificate):
+    from verify.coq.command import development_files
+
+    export = export_certificates([pr_certificate])
+    assert len(export.units) == 1 and not export.not_exported
+    assert "Theorem frequency_inequality : fdi_holds 4 2 A B C D." in export.units[0].text
+    [partly] = export.partly
+    assert partly.file == pr_certificate.name and "pole conditions" in partly.reason
+    listed = json.loads(development_files(export)["NOT_EXPORTED.json"])
+    assert listed["not_kernel_checked"][0]["file"] == pr_certificate.name
+
+
+def test_the_exporter_refuses_a_tampered_positive_real_certificate(tmp_path, pr_certificate):
+    from verify.coq.positive_real import pr_unit_from_file
+
+    data = json.loads(pr_certificate.read_text())
+    data["model"]["D"][0][1] = "1/10"
+    bad = tmp_path / pr_certificate.name
+    bad.write_text(json.dumps(data, indent=1))
+    with pytest.raises(CoqExportError):
+        pr_unit_from_file(bad)
+
+
+@needs_coqc
+def test_coqc_accepts_a_positive_real_unit_and_rejects_a_changed_one(prelude_dir,
+                                                                     pr_certificate):
+    from verify.coq.positive_real import pr_unit_from_file
+
+    text = pr_unit_from_file(pr_certificate).text
+    assert _compiles(prelude_dir, text, "PR")
+    old = "[(-1 # 20); (0 # 20)]"
+    assert old in text
+    assert not _compiles(prelude_dir, text.replace(old, "[(-3 # 20); (0 # 20)]", 1))
+    # a static gain -1/10 with the witnesses of another polynomial
+    neg = text.replace("fdi_holds 4 2 A B C D.", "fdi_holds 4 2 A B C Dn.", 1).replace(
+        "fdi_check_sound 4 2 A B C D certs", "fdi_check_sound 4 2 A B C Dn certs", 1)
+    neg = neg.replace("(** Witnesses", "Definition Dn : matQ := msub D (scaled_identity 2 1)."
+                      "\n(** Witnesses", 1)
+    assert not _compiles(prelude_dir, neg)

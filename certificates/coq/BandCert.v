@@ -4,7 +4,7 @@
     [w1, w2], [verify gate --band]): the Hermitian part H(jw) + H(jw)^H of the human's
     model is positive semidefinite at every w of the band where H(jw) is defined.
 
-    What a reader audits ([band_passive] below):
+    What a reader audits ([band_passive] and [hermitian_part_psd_at] below):
 
     - Coq computes from the model's A (as data) its characteristic polynomial
       d(s) = det(sI - A) and the adjugate Adj(s) of sI - A by the Faddeev-LeVerrier
@@ -25,7 +25,13 @@
     of these real polynomials p is shown >= 0 on [w1, w2] from a witness Coq re-checks:
     p = g^2 q, and [w1, w2] cut into pieces [u, v] on each of which
     q(x) = sum_k c_k (x - u)^(i_k) (v - x)^(j_k) with every c_k >= 0 (a Bernstein form):
-    both identities are checked by computing with polynomials over Q. *)
+    both identities are checked by computing with polynomials over Q.
+
+    The same for the frequency-domain inequality of positive realness on all of [0, oo)
+    ([fdi_holds], [fdi_check_sound]): the last piece is a half line [u, oo) on which
+    q(x) = sum_k c_k (x - u)^(i_k) with every c_k >= 0.  (Positive realness also asks
+    that H have no pole in Re s > 0 and only simple imaginary-axis poles with Hermitian
+    positive semidefinite residues: those conditions are not stated here.) *)
 
 From Coq Require Import QArith Qabs Qreals Reals List Lra Lia.
 From VerifyCoq Require Import QCert.
@@ -144,18 +150,29 @@ Definition herm_of (Nv : nat -> nat -> R * R) (dv : R * R) (i k : nat) : R * R :
 Definition hform (m : nat) (M : nat -> nat -> R * R) (z : nat -> R * R) : R :=
   sumR m (fun i => sumR m (fun k => fst (cmul (cconj (z i)) (cmul (M i k) (z k))))).
 
-(** The model (A, B, C, D), n states and m ports, is passive on [w1, w2]: the shapes
-    match, w1 < w2, (sI - A) Adj(s) = d(s) I, and H(jw) + H(jw)^H >= 0 at every w of the
-    band where d(jw) <> 0, H(jw) = N(jw) / d(jw) as in the header. *)
-Definition band_passive (n m : nat) (A B C D : matQ) (w1 w2 : Q) : Prop :=
+(** At the frequency w: H(jw) + H(jw)^H >= 0 when d(jw) <> 0, with H(jw) = N(jw) / d(jw)
+    as in the header. *)
+Definition hermitian_part_psd_at (n m : nat) (A B C D : matQ) (w : R) : Prop :=
+  at_jw (fst (charpoly_adj n A)) w <> (0, 0) ->
+  forall z, 0 <= hform m (herm_of (fun i k => at_jw (tf_num C B D (fst (charpoly_adj n A))
+                                                        (snd (charpoly_adj n A)) i k) w)
+                                  (at_jw (fst (charpoly_adj n A)) w)) z.
+
+(** The data describe a model: the shapes match and (sI - A) Adj(s) = d(s) I. *)
+Definition model_ok (n m : nat) (A B C D : matQ) : Prop :=
   has_shape n n A /\ has_shape n m B /\ has_shape m n C /\ has_shape m m D
-  /\ (w1 < w2)%Q
-  /\ resolvent_ok n A (zeros n n) (fst (charpoly_adj n A)) (snd (charpoly_adj n A)) = true
-  /\ forall w, Q2R w1 <= w <= Q2R w2 ->
-       at_jw (fst (charpoly_adj n A)) w <> (0, 0) ->
-       forall z, 0 <= hform m (herm_of (fun i k => at_jw (tf_num C B D (fst (charpoly_adj n A))
-                                                             (snd (charpoly_adj n A)) i k) w)
-                                       (at_jw (fst (charpoly_adj n A)) w)) z.
+  /\ resolvent_ok n A (zeros n n) (fst (charpoly_adj n A)) (snd (charpoly_adj n A)) = true.
+
+(** The model (A, B, C, D), n states and m ports, is passive on [w1, w2], w1 < w2:
+    H(jw) + H(jw)^H >= 0 at every w of the band where d(jw) <> 0. *)
+Definition band_passive (n m : nat) (A B C D : matQ) (w1 w2 : Q) : Prop :=
+  model_ok n m A B C D /\ (w1 < w2)%Q
+  /\ forall w, Q2R w1 <= w <= Q2R w2 -> hermitian_part_psd_at n m A B C D w.
+
+(** The frequency-domain inequality of positive realness: H(jw) + H(jw)^H >= 0 at every
+    w >= 0 where d(jw) <> 0 (for w < 0, H(-jw) is the conjugate of H(jw), so the same). *)
+Definition fdi_holds (n m : nat) (A B C D : matQ) : Prop :=
+  model_ok n m A B C D /\ forall w, 0 <= w -> hermitian_part_psd_at n m A B C D w.
 
 (** ** Polynomial evaluation respects the operations *)
 
@@ -310,6 +327,57 @@ Proof.
   apply Rmult_le_pos; assumption.
 Qed.
 
+(** A half line [u, oo): q(x) = sum_k c_k (x - u)^(i_k), every c_k >= 0 (its Taylor
+    coefficients at u). *)
+Definition ray := (Q * list (Q * nat))%type.
+
+Definition ray_poly (u : Q) (ts : list (Q * nat)) : poly :=
+  fold_right (fun t acc => padd (pscale (fst t) (ppow [Qopp u; 1%Q] (snd t))) acc) nil ts.
+
+Definition ray_ok (q : poly) (r : ray) : bool :=
+  pzero (psub q (ray_poly (fst r) (snd r))) && forallb (fun t => Qle_bool 0 (fst t)) (snd r).
+
+(** p = g^2 q; q >= 0 on [a, u] piece by piece (no piece when u = a) and on [u, oo). *)
+Definition ray_cert := (poly * poly * list piece * ray)%type.
+
+Definition ray_nonneg_ok (a : Q) (p : poly) (c : ray_cert) : bool :=
+  let '(g, q, ps, r) := c in
+  pzero (psub p (pmul (pmul g g) q))
+  && match ps with nil => Qeq_bool (fst r) a | _ => cover_ok a (fst r) q ps end
+  && ray_ok q r.
+
+Lemma ray_poly_nonneg u ts x :
+  forallb (fun t => Qle_bool 0 (fst t)) ts = true -> Q2R u <= x -> 0 <= peval (ray_poly u ts) x.
+Proof.
+  intros Hc Hx. induction ts as [|[c i] ts IH]; simpl; [lra|].
+  simpl in Hc. apply andb_true_iff in Hc as [Hc0 Hc].
+  rewrite peval_add, peval_scale, peval_pow. cbn [peval]. rewrite Q2R_opp, Q2R_1.
+  apply Qle_bool_R in Hc0. rewrite Q2R_0 in Hc0.
+  pose proof (IH Hc).
+  assert (0 <= (- Q2R u + x * (1 + x * 0)) ^ i) by (apply pow_le; lra).
+  assert (0 <= Q2R c * (- Q2R u + x * (1 + x * 0)) ^ i) by (apply Rmult_le_pos; lra).
+  lra.
+Qed.
+
+Theorem ray_nonneg_sound a p c : ray_nonneg_ok a p c = true ->
+  forall x, Q2R a <= x -> 0 <= peval p x.
+Proof.
+  destruct c as [[[g q] ps] [u ts]]. unfold ray_nonneg_ok. rewrite !andb_true_iff.
+  intros [[Hid Hcov] Hray] x Hx.
+  rewrite (pzero_sub _ _ x Hid), !peval_mul.
+  assert (0 <= peval q x).
+  { destruct (Rle_dec x (Q2R u)) as [Hle|Hgt].
+    - destruct ps as [|pc ps'].
+      + apply Qeq_bool_R in Hcov. simpl in Hcov.
+        unfold ray_ok in Hray. apply andb_true_iff in Hray as [Hr Hc]. simpl in Hr, Hc.
+        rewrite (pzero_sub _ _ x Hr). apply ray_poly_nonneg; [exact Hc | simpl; lra].
+      + exact (cover_sound (pc :: ps') a u q Hcov x ltac:(simpl; lra)).
+    - unfold ray_ok in Hray. apply andb_true_iff in Hray as [Hr Hc]. simpl in Hr, Hc.
+      rewrite (pzero_sub _ _ x Hr). apply ray_poly_nonneg; [exact Hc | lra]. }
+  assert (0 <= peval g x * peval g x) by apply Rle_0_sqr.
+  apply Rmult_le_pos; assumption.
+Qed.
+
 (** ** The Hermitian numerator and its sign polynomials *)
 
 (** Mt(w) = N(jw) conj(d(jw)) + d(jw) N(jw)^H, entry (i, k): real and imaginary parts. *)
@@ -419,14 +487,58 @@ Fixpoint all_nonneg (a b : Q) (ps : list poly) (cs : list nonneg_cert) : bool :=
   | _, _ => false
   end.
 
+Definition model_check (n m : nat) (A B C D : matQ) : bool :=
+  has_shape_b n n A && has_shape_b n m B && has_shape_b m n C && has_shape_b m m D
+  && resolvent_ok n A (zeros n n) (fst (charpoly_adj n A)) (snd (charpoly_adj n A))
+  && (Nat.eqb m 1 || Nat.eqb m 2).
+
+(** The sign polynomials of the model, as Coq computes them. *)
+Definition model_signs (n m : nat) (A B C D : matQ) : list poly :=
+  sign_polys m (tf_num C B D (fst (charpoly_adj n A)) (snd (charpoly_adj n A)))
+             (fst (charpoly_adj n A)).
+
 Definition band_check (n m : nat) (A B C D : matQ) (w1 w2 : Q)
     (certs : list nonneg_cert) : bool :=
-  let fl := charpoly_adj n A in
-  has_shape_b n n A && has_shape_b n m B && has_shape_b m n C && has_shape_b m m D
-  && negb (Qle_bool w2 w1)
-  && resolvent_ok n A (zeros n n) (fst fl) (snd fl)
-  && (Nat.eqb m 1 || Nat.eqb m 2)
-  && all_nonneg w1 w2 (sign_polys m (tf_num C B D (fst fl) (snd fl)) (fst fl)) certs.
+  model_check n m A B C D && negb (Qle_bool w2 w1)
+  && all_nonneg w1 w2 (model_signs n m A B C D) certs.
+
+Lemma model_check_sound n m A B C D :
+  model_check n m A B C D = true -> model_ok n m A B C D /\ (m = 1 \/ m = 2)%nat.
+Proof.
+  unfold model_check. rewrite !andb_true_iff, orb_true_iff, !Nat.eqb_eq.
+  intros [[[[[HA HB] HC] HD] Hres] Hm].
+  split; [|exact Hm].
+  split; [apply has_shape_b_sound, HA|]. split; [apply has_shape_b_sound, HB|].
+  split; [apply has_shape_b_sound, HC|]. split; [apply has_shape_b_sound, HD|].
+  exact Hres.
+Qed.
+
+(** Non-negative sign polynomials at w give H(jw) + H(jw)^H >= 0 there (one or two ports). *)
+Lemma psd_at_of_signs n m A B C D w : (m = 1 \/ m = 2)%nat ->
+  (forall k p, nth_error (model_signs n m A B C D) k = Some p -> 0 <= peval p w) ->
+  hermitian_part_psd_at n m A B C D w.
+Proof.
+  intros Hm Hnn Hd z. unfold model_signs in Hnn.
+  set (d := fst (charpoly_adj n A)) in *.
+  set (N := tf_num C B D d (snd (charpoly_adj n A))) in *.
+  destruct (at_jw d w) as [p q] eqn:Ed.
+  pose proof (pair_nonzero p q Hd) as Hn.
+  assert (Hpos : 0 < p * p + q * q).
+  { assert (0 <= p * p) by apply Rle_0_sqr. assert (0 <= q * q) by apply Rle_0_sqr. lra. }
+  destruct Hm as [-> | ->].
+  - rewrite hform1_eq by exact Hn.
+    pose proof (Hnn 0%nat _ eq_refl) as H1. rewrite peval_mt_re, Ed in H1. simpl in H1.
+    unfold Rdiv. apply Rmult_le_pos; [|apply Rlt_le, Rinv_0_lt_compat, Hpos].
+    apply Rmult_le_pos; [exact H1|]. nra.
+  - rewrite hform2_eq by exact Hn.
+    pose proof (Hnn 0%nat _ eq_refl) as H1.
+    pose proof (Hnn 1%nat _ eq_refl) as H2.
+    rewrite peval_add, !peval_mt_re, Ed in H1. simpl in H1.
+    rewrite peval_sub, peval_add, !peval_mul, !peval_mt_re, !peval_mt_im, Ed in H2.
+    simpl in H2.
+    unfold Rdiv. apply Rmult_le_pos; [|apply Rlt_le, Rinv_0_lt_compat, Hpos]. cbv zeta.
+    apply herm2; lra.
+Qed.
 
 Lemma all_nonneg_nth a b ps cs : all_nonneg a b ps cs = true ->
   forall k p, nth_error ps k = Some p -> forall x, Q2R a <= x <= Q2R b -> 0 <= peval p x.
@@ -442,31 +554,44 @@ Qed.
 Theorem band_check_sound n m A B C D w1 w2 certs :
   band_check n m A B C D w1 w2 certs = true -> band_passive n m A B C D w1 w2.
 Proof.
-  unfold band_check. rewrite !andb_true_iff, negb_true_iff, orb_true_iff, !Nat.eqb_eq.
-  intros [[[[[[[HA HB] HC] HD] Hw] Hres] Hm] Hall].
-  split; [apply has_shape_b_sound, HA|]. split; [apply has_shape_b_sound, HB|].
-  split; [apply has_shape_b_sound, HC|]. split; [apply has_shape_b_sound, HD|].
+  unfold band_check. rewrite !andb_true_iff, negb_true_iff.
+  intros [[Hmodel Hw] Hall].
+  destruct (model_check_sound _ _ _ _ _ _ Hmodel) as [Hok Hm].
+  split; [exact Hok|].
   split; [apply Qnot_le_lt; intros Hle; apply Qle_bool_iff in Hle; congruence|].
-  split; [exact Hres|].
-  intros w Hx Hd z.
-  set (d := fst (charpoly_adj n A)) in *.
-  set (N := tf_num C B D d (snd (charpoly_adj n A))) in *.
-  pose proof (all_nonneg_nth _ _ _ _ Hall) as Hnn.
-  destruct (at_jw d w) as [p q] eqn:Ed.
-  pose proof (pair_nonzero p q Hd) as Hn.
-  assert (Hpos : 0 < p * p + q * q).
-  { assert (0 <= p * p) by apply Rle_0_sqr. assert (0 <= q * q) by apply Rle_0_sqr. lra. }
-  destruct Hm as [-> | ->].
-  - rewrite hform1_eq by exact Hn.
-    pose proof (Hnn 0%nat _ eq_refl w Hx) as H1. rewrite peval_mt_re, Ed in H1. simpl in H1.
-    unfold Rdiv. apply Rmult_le_pos; [|apply Rlt_le, Rinv_0_lt_compat, Hpos].
-    apply Rmult_le_pos; [exact H1|]. nra.
-  - rewrite hform2_eq by exact Hn.
-    pose proof (Hnn 0%nat _ eq_refl w Hx) as H1.
-    pose proof (Hnn 1%nat _ eq_refl w Hx) as H2.
-    rewrite peval_add, !peval_mt_re, Ed in H1. simpl in H1.
-    rewrite peval_sub, peval_add, !peval_mul, !peval_mt_re, !peval_mt_im, Ed in H2.
-    simpl in H2.
-    unfold Rdiv. apply Rmult_le_pos; [|apply Rlt_le, Rinv_0_lt_compat, Hpos]. cbv zeta.
-    apply herm2; lra.
+  intros w Hx. apply (psd_at_of_signs _ _ _ _ _ _ w Hm).
+  intros k p Hk. exact (all_nonneg_nth _ _ _ _ Hall k p Hk w Hx).
+Qed.
+
+(** ** The frequency-domain inequality on [0, oo) *)
+
+Fixpoint all_ray_nonneg (ps : list poly) (cs : list ray_cert) : bool :=
+  match ps, cs with
+  | nil, nil => true
+  | p :: ps', c :: cs' => ray_nonneg_ok 0 p c && all_ray_nonneg ps' cs'
+  | _, _ => false
+  end.
+
+Definition fdi_check (n m : nat) (A B C D : matQ) (certs : list ray_cert) : bool :=
+  model_check n m A B C D && all_ray_nonneg (model_signs n m A B C D) certs.
+
+Lemma all_ray_nonneg_nth ps cs : all_ray_nonneg ps cs = true ->
+  forall k p, nth_error ps k = Some p -> forall x, 0 <= x -> 0 <= peval p x.
+Proof.
+  revert cs. induction ps as [|p0 ps IH]; intros [|c cs] H k p Hk x Hx; simpl in H;
+    try discriminate.
+  - destruct k; discriminate.
+  - apply andb_true_iff in H as [H0 H]. destruct k as [|k]; simpl in Hk.
+    + injection Hk as <-. apply (ray_nonneg_sound 0 p0 c H0 x). rewrite Q2R_0. exact Hx.
+    + exact (IH cs H k p Hk x Hx).
+Qed.
+
+Theorem fdi_check_sound n m A B C D certs :
+  fdi_check n m A B C D certs = true -> fdi_holds n m A B C D.
+Proof.
+  unfold fdi_check. rewrite andb_true_iff. intros [Hmodel Hall].
+  destruct (model_check_sound _ _ _ _ _ _ Hmodel) as [Hok Hm].
+  split; [exact Hok|].
+  intros w Hx. apply (psd_at_of_signs _ _ _ _ _ _ w Hm).
+  intros k p Hk. exact (all_ray_nonneg_nth _ _ Hall k p Hk w Hx).
 Qed.

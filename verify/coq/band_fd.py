@@ -100,21 +100,43 @@ def sign_polynomials(model: ExactModel) -> list[fmpq_poly]:
 
 # the unit ---------------------------------------------------------------------------------
 
-def _q(x: fmpq) -> str:
+def q_text(x: fmpq) -> str:
     return q_literal(Fraction(int(x.p), int(x.q)))
 
 
-def _poly_literal(p: fmpq_poly) -> str:
-    return "[" + "; ".join(_q(c) for c in p.coeffs()) + "]"
+def poly_literal(p: fmpq_poly) -> str:
+    return "[" + "; ".join(q_text(c) for c in p.coeffs()) + "]"
 
 
-def _witness_literal(w: iw.NonnegWitness) -> str:
+def witness_literal(w: iw.NonnegWitness) -> str:
     pieces = []
     for pc in w.pieces:
-        terms = "; ".join(f"({_q(c)}, {i}%nat, {j}%nat)" for c, i, j in pc.terms)
-        pieces.append(f"({_q(pc.u)}, {_q(pc.v)},\n     [{terms}])")
-    return (f"({_poly_literal(w.g)},\n   {_poly_literal(w.q)},\n   ["
+        terms = "; ".join(f"({q_text(c)}, {i}%nat, {j}%nat)" for c, i, j in pc.terms)
+        pieces.append(f"({q_text(pc.u)}, {q_text(pc.v)},\n     [{terms}])")
+    return (f"({poly_literal(w.g)},\n   {poly_literal(w.q)},\n   ["
             + ";\n    ".join(pieces) + "])")
+
+
+def model_lines(model: ExactModel, margin: Fraction) -> list[str]:
+    """The unit's preamble and the model's matrices (and nu0, D_shifted for a margin)."""
+    n, m = model.n, model.m
+    lines = [
+        "From Coq Require Import QArith List.",
+        "From VerifyCoq Require Import QCert BandCert.",
+        "Import ListNotations.",
+        "Local Open Scope Q_scope.",
+        "",
+        f"(** The model: {n} states, {m} port(s); x' = A x + B u, y = C x + D u. *)",
+        f"Definition A : matQ :=\n  {matrix_literal(model.A)}.",
+        f"Definition B : matQ :=\n  {matrix_literal(model.B)}.",
+        f"Definition C : matQ :=\n  {matrix_literal(model.C)}.",
+        f"Definition D : matQ :=\n  {matrix_literal(model.D)}.",
+    ]
+    if margin != 0:
+        lines.append(f"(** H - nu0 I has the realisation (A, B, C, D - nu0 I). *)\n"
+                     f"Definition nu0 : Q := {q_literal(margin)}.\n"
+                     f"Definition D_shifted : matQ := msub D (scaled_identity {m} nu0).")
+    return lines
 
 
 def band_unit(name: str, *, model: ExactModel, band: tuple[Fraction, Fraction],
@@ -161,21 +183,8 @@ def band_unit(name: str, *, model: ExactModel, band: tuple[Fraction, Fraction],
         "    p = g^2 q and q = sum c (x - u)^i (v - x)^j with c >= 0 on each piece [u, v] of "
         "the band. *)",
         "",
-        "From Coq Require Import QArith List.",
-        "From VerifyCoq Require Import QCert BandCert.",
-        "Import ListNotations.",
-        "Local Open Scope Q_scope.",
-        "",
-        f"(** The model: {n} states, {m} port(s); x' = A x + B u, y = C x + D u. *)",
-        f"Definition A : matQ :=\n  {matrix_literal(model.A)}.",
-        f"Definition B : matQ :=\n  {matrix_literal(model.B)}.",
-        f"Definition C : matQ :=\n  {matrix_literal(model.C)}.",
-        f"Definition D : matQ :=\n  {matrix_literal(model.D)}.",
+        *model_lines(model, margin),
     ]
-    if margin != 0:
-        lines.append(f"(** H - nu0 I has the realisation (A, B, C, D - nu0 I). *)\n"
-                     f"Definition nu0 : Q := {q_literal(margin)}.\n"
-                     f"Definition D_shifted : matQ := msub D (scaled_identity {m} nu0).")
     lines += [
         f"Definition w1 : Q := {q_literal(band[0])}.",
         f"Definition w2 : Q := {q_literal(band[1])}.",
@@ -183,7 +192,7 @@ def band_unit(name: str, *, model: ExactModel, band: tuple[Fraction, Fraction],
         "(** Witnesses (data Coq re-checks), one per sign polynomial: (g, q, pieces). *)",
     ]
     for k, w in enumerate(witnesses, start=1):
-        lines.append(f"Definition cert{k} : nonneg_cert :=\n  {_witness_literal(w)}.")
+        lines.append(f"Definition cert{k} : nonneg_cert :=\n  {witness_literal(w)}.")
     names = "; ".join(f"cert{k}" for k in range(1, len(witnesses) + 1))
     lines += [
         f"Definition certs : list nonneg_cert := [{names}].",

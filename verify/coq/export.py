@@ -20,15 +20,20 @@ from pathlib import Path
 from verify.coq.band import gkyp_unit_from_file
 from verify.coq.band_fd import band_fd_unit_from_file
 from verify.coq.kyp import CoqExportError, kyp_unit_from_file
+from verify.coq.positive_real import NOT_KERNEL_CHECKED, pr_unit_from_file
 from verify.coq.unit import CoqUnit
 
 KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
 BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
 BAND_FD_SCHEMAS = ("verify-band-fd-certificate/1",)
+PR_SCHEMAS = ("verify-pr-certificate/1",)
 
 #: Every schema :func:`export_certificates` turns into a unit (a file of one of these
 #: kinds that is not exported was refused, with the reason).
-EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS)
+EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS, *PR_SCHEMAS)
+
+#: Kinds exported in part: what their unit does not state, left to the Python checker.
+PARTLY_EXPORTED: dict[str, str] = {"verify-pr-certificate/1": NOT_KERNEL_CHECKED}
 
 #: Certificate kinds not exported, with the reason (shown in the README and the list).
 NOT_EXPORTED_REASONS: dict[str, str] = {
@@ -36,12 +41,6 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "SOS certificate of a derivation step: not exported yet (checked by the Python "
         "exact checker only); the same inequality is kernel-checked through its "
         "hand-written terms in the paper's derivation units",
-    "verify-pr-certificate/1":
-        "positive-real certificate (stability by Routh, imaginary-axis poles with their "
-        "residues, H(jw) + H(jw)^H >= 0 for every real w by univariate SOS): not exported; "
-        "the frequency inequality would fit BandCert.v's Bernstein witnesses once a piece "
-        "reaching to infinity is added, but the pole conditions (Routh-Hurwitz, residues) "
-        "have no lemma in the Coq prelude; checked by the Python exact checker only",
     "verify-robust-band-certificate/1":
         "robust certificate over an ellipsoidal region of identified models: a tree of "
         "coefficient boxes, each leaf checked by rational interval arithmetic (natural "
@@ -70,6 +69,8 @@ class NotExported:
 class Export:
     units: tuple[CoqUnit, ...]
     not_exported: tuple[NotExported, ...]
+    #: Files exported in part, with what their unit leaves out (``reason``).
+    partly: tuple[NotExported, ...] = ()
 
 
 def certificate_files(paths: Iterable[Path]) -> list[Path]:
@@ -104,13 +105,17 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
     """
     units: list[CoqUnit] = []
     left: list[NotExported] = []
+    partly: list[NotExported] = []
     for path in certificate_files(paths):
         schema = schema_of(path)
         if schema in EXPORTED_SCHEMAS:
             make = (kyp_unit_from_file if schema in KYP_SCHEMAS else
-                    gkyp_unit_from_file if schema in BAND_SCHEMAS else band_fd_unit_from_file)
+                    gkyp_unit_from_file if schema in BAND_SCHEMAS else
+                    band_fd_unit_from_file if schema in BAND_FD_SCHEMAS else pr_unit_from_file)
             try:
                 units.append(make(path))
+                if schema in PARTLY_EXPORTED:
+                    partly.append(NotExported(path.name, schema, PARTLY_EXPORTED[schema]))
             except CoqExportError as exc:
                 if strict:
                     raise
@@ -118,14 +123,20 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
         else:
             reason = NOT_EXPORTED_REASONS.get(schema, "unknown certificate kind: not exported")
             left.append(NotExported(path.name, schema, reason))
-    return Export(tuple(units), tuple(left))
+    return Export(tuple(units), tuple(left), tuple(partly))
 
 
-def not_exported_json(items: Sequence[NotExported]) -> str:
-    """The machine-readable list of files left out (stable bytes)."""
-    rows = [{"file": i.file, "schema": i.schema, "reason": i.reason}
-            for i in sorted(items, key=lambda i: i.file)]
-    return json.dumps({"not_exported": rows}, indent=1) + "\n"
+def not_exported_json(items: Sequence[NotExported],
+                      partly: Sequence[NotExported] = ()) -> str:
+    """The machine-readable list of files left out and, when there are any, of files
+    exported in part with what their unit does not state (stable bytes)."""
+    def rows(found: Sequence[NotExported]) -> list[dict[str, str]]:
+        return [{"file": i.file, "schema": i.schema, "reason": i.reason}
+                for i in sorted(found, key=lambda i: i.file)]
+    data: dict[str, list[dict[str, str]]] = {"not_exported": rows(items)}
+    if partly:
+        data["not_kernel_checked"] = rows(partly)
+    return json.dumps(data, indent=1) + "\n"
 
 
 def derivation_units() -> list[CoqUnit]:
@@ -143,4 +154,4 @@ def derivation_units() -> list[CoqUnit]:
 def paper_development_units(certificates_dir: Path) -> Export:
     """The paper's development: derivation units, then the certificates' units."""
     certs = export_certificates([certificates_dir])
-    return Export((*derivation_units(), *certs.units), certs.not_exported)
+    return Export((*derivation_units(), *certs.units), certs.not_exported, certs.partly)

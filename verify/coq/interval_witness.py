@@ -6,7 +6,9 @@ that on each piece [u, v] (the pieces run from a to b, each starting where the l
 
     q(x) = sum_k c_k (x - u)^(i_k) (v - x)^(j_k),   every c_k >= 0,
 
-a Bernstein form, non-negative on [u, v] term by term. This module only proposes such
+a Bernstein form, non-negative on [u, v] term by term (:func:`find`); on a half line
+[a, oo) (``ray_nonneg_ok``) the last piece is [u, oo) with q(x) = sum_k c_k (x - u)^(i_k),
+every c_k >= 0 (:func:`find_ray`). This module only proposes such
 witnesses; :func:`check` repeats Coq's computation so that the exporter refuses a
 polynomial Coq would refuse.
 
@@ -106,6 +108,77 @@ def find(p: fmpq_poly, a: fmpq, b: fmpq) -> NonnegWitness | None:
         stack.append((u, mid, depth + 1))
     witness = NonnegWitness(g, q, tuple(pieces))
     return witness if check(p, a, b, witness) else None
+
+
+@dataclass(frozen=True)
+class RayWitness:
+    """p = g^2 q; q in Bernstein form on pieces of [a, u] (none when u = a) and
+    q(x) = sum c (x - u)^i with every c >= 0 on [u, oo), the terms as (c, i)."""
+
+    g: fmpq_poly
+    q: fmpq_poly
+    pieces: tuple[Piece, ...]
+    u: fmpq
+    ray: tuple[tuple[fmpq, int], ...]
+
+
+#: Doublings of the half line's start before the search gives up.
+MAX_DOUBLINGS = 256
+
+
+def taylor(q: fmpq_poly, u: fmpq) -> list[fmpq]:
+    """The coefficients of q(x + u), lowest degree first (q(x) = sum c_i (x - u)^i)."""
+    shifted = q(fmpq_poly([u, 1]))
+    return [shifted[i] for i in range(max(shifted.degree(), -1) + 1)]
+
+
+def find_ray(p: fmpq_poly, a: fmpq) -> RayWitness | None:
+    """A witness that p >= 0 on [a, oo), or None when none was found.
+
+    The half line starts at the first u = a, max(1, a), 2 u, 4 u, ... where every Taylor
+    coefficient of q at u is >= 0 (true from some u on when q's leading coefficient is
+    positive: beyond every real root of q and its derivatives); [a, u] is then cut into
+    Bernstein pieces as in :func:`find`.
+    """
+    if p.is_zero():
+        return RayWitness(fmpq_poly([]), fmpq_poly([]), (), a, ())
+    g, q = _split(p)
+    u = a
+    for step in range(MAX_DOUBLINGS + 1):
+        coeffs = taylor(q, u)
+        if all(c >= 0 for c in coeffs):
+            break
+        u = max(fmpq(1), a) if step == 0 else (u * 2 if u > 0 else fmpq(1))
+    else:
+        return None
+    ray = tuple((c, i) for i, c in enumerate(coeffs) if c != 0)
+    pieces: tuple[Piece, ...] = ()
+    if u != a:
+        bounded = find(p, a, u)
+        if bounded is None:
+            return None
+        if bounded.g != g or bounded.q != q:
+            return None  # the same split of p, so the same q on both parts
+        pieces = bounded.pieces
+    witness = RayWitness(g, q, pieces, u, ray)
+    return witness if check_ray(p, a, witness) else None
+
+
+def check_ray(p: fmpq_poly, a: fmpq, w: RayWitness) -> bool:
+    """Coq's ``ray_nonneg_ok``, repeated."""
+    if p != w.g * w.g * w.q:
+        return False
+    if w.pieces:
+        if not check(p, a, w.u, NonnegWitness(w.g, w.q, w.pieces)):
+            return False
+    elif w.u != a:
+        return False
+    total = fmpq_poly([])
+    for c, i in w.ray:
+        if c < 0:
+            return False
+        total += c * fmpq_poly([-w.u, 1]) ** i
+    return total == w.q
 
 
 def _bern(piece: Piece) -> fmpq_poly:
