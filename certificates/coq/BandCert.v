@@ -395,12 +395,39 @@ Definition mt_im (N : nat -> nat -> poly) (d : poly) (i k : nat) : poly :=
 Definition sign_polys (m : nat) (N : nat -> nat -> poly) (d : poly) : list poly :=
   match m with
   | 1%nat => [mt_re N d 0 0]
-  | 2%nat => [padd (mt_re N d 0 0) (mt_re N d 1 1);
-              psub (pmul (mt_re N d 0 0) (mt_re N d 1 1))
-                   (padd (pmul (mt_re N d 0 1) (mt_re N d 0 1))
-                         (pmul (mt_im N d 0 1) (mt_im N d 0 1)))]
+  | 2%nat => let s00 := mt_re N d 0 0 in let s11 := mt_re N d 1 1 in
+             let s01 := mt_re N d 0 1 in let t01 := mt_im N d 0 1 in
+             [padd s00 s11; psub (pmul s00 s11) (padd (pmul s01 s01) (pmul t01 t01))]
   | _ => nil
   end.
+
+Lemma sign_polys_ext m N1 N2 d : (m = 1 \/ m = 2)%nat ->
+  (forall i k, (i < m)%nat -> (k < m)%nat -> N1 i k = N2 i k) ->
+  sign_polys m N1 d = sign_polys m N2 d.
+Proof.
+  intros [-> | ->] H; unfold sign_polys, mt_re, mt_im; cbv zeta;
+    rewrite ?(H 0%nat 0%nat), ?(H 0%nat 1%nat), ?(H 1%nat 0%nat), ?(H 1%nat 1%nat) by lia;
+    reflexivity.
+Qed.
+
+(** The entries N i k (i, k < m) computed once, as a table. *)
+Definition num_table (m : nat) (N : nat -> nat -> poly) : list (list poly) :=
+  map (fun i => map (fun k => N i k) (seq 0 m)) (seq 0 m).
+
+Lemma nth_map_seq {T : Type} (f : nat -> T) m i d : (i < m)%nat ->
+  nth i (map f (seq 0 m)) d = f i.
+Proof.
+  intros Hi. rewrite (nth_indep _ d (f 0%nat)) by (rewrite map_length, seq_length; exact Hi).
+  rewrite map_nth, seq_nth by exact Hi. reflexivity.
+Qed.
+
+Lemma num_table_nth m N i k : (i < m)%nat -> (k < m)%nat ->
+  nth k (nth i (num_table m N) nil) nil = N i k.
+Proof.
+  intros Hi Hk. unfold num_table.
+  rewrite (nth_map_seq (fun i => map (fun k => N i k) (seq 0 m))) by exact Hi. cbv beta.
+  apply (nth_map_seq (fun k => N i k)), Hk.
+Qed.
 
 Lemma peval_mt_re N d i k w :
   peval (mt_re N d i k) w
@@ -492,10 +519,11 @@ Definition model_check (n m : nat) (A B C D : matQ) : bool :=
   && resolvent_ok n A (zeros n n) (fst (charpoly_adj n A)) (snd (charpoly_adj n A))
   && (Nat.eqb m 1 || Nat.eqb m 2).
 
-(** The sign polynomials of the model, as Coq computes them. *)
+(** The sign polynomials of the model, as Coq computes them (each entry of N once). *)
 Definition model_signs (n m : nat) (A B C D : matQ) : list poly :=
-  sign_polys m (tf_num C B D (fst (charpoly_adj n A)) (snd (charpoly_adj n A)))
-             (fst (charpoly_adj n A)).
+  let fl := charpoly_adj n A in
+  let T := num_table m (tf_num C B D (fst fl) (snd fl)) in
+  sign_polys m (fun i k => nth k (nth i T nil) nil) (fst fl).
 
 Definition band_check (n m : nat) (A B C D : matQ) (w1 w2 : Q)
     (certs : list nonneg_cert) : bool :=
@@ -518,7 +546,9 @@ Lemma psd_at_of_signs n m A B C D w : (m = 1 \/ m = 2)%nat ->
   (forall k p, nth_error (model_signs n m A B C D) k = Some p -> 0 <= peval p w) ->
   hermitian_part_psd_at n m A B C D w.
 Proof.
-  intros Hm Hnn Hd z. unfold model_signs in Hnn.
+  intros Hm Hnn Hd z. unfold model_signs in Hnn. cbv zeta in Hnn.
+  rewrite (sign_polys_ext m _ (tf_num C B D (fst (charpoly_adj n A)) (snd (charpoly_adj n A))))
+    in Hnn by (exact Hm || (intros i k Hi Hk; apply num_table_nth; assumption)).
   set (d := fst (charpoly_adj n A)) in *.
   set (N := tf_num C B D d (snd (charpoly_adj n A))) in *.
   destruct (at_jw d w) as [p q] eqn:Ed.
