@@ -16,7 +16,11 @@ P on the coarse grid, :func:`verify.passivity.search.canonical.coarse_kyp`); wit
 ``--raw`` the decision's P as found, for comparison. A compile past ``--timeout``
 seconds is reported as such.
 
-    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--timeout 900] [--raw] [--no-sos]
+Exact-band certificates: the paper's k_s = 2.5 one on [0, 3/2] and random passive models
+of ``--band-sizes`` states on [0, 1], the same way.
+
+    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--band-sizes 4 6]
+                                             [--timeout 900] [--raw] [--no-sos]
 """
 
 from __future__ import annotations
@@ -32,10 +36,16 @@ from pathlib import Path
 
 import numpy as np
 
+from verify.coq.band_fd import band_fd_unit_from_file, band_unit
 from verify.coq.development import LOGICAL_ROOT, prelude_sources
 from verify.coq.kyp import kyp_unit, kyp_unit_from_file
-from verify.passivity.check.certificate import check_kyp
+from verify.coq.positive_real import pr_unit_from_file
+from verify.passivity.check.band_fd import BandFdCertificate, analyse_band, check_band_fd_data
+from verify.passivity.check.certificate import check_kyp, exact_model
+from verify.passivity.check.fd_certificate import check_pr_certificate_data
 from verify.passivity.decision import decide
+from verify.passivity.fd_decision import decide_positive_real
+from verify.passivity.gate import store_pr_certificate
 from verify.passivity.io import certificate_files as cf
 from verify.passivity.io.strict_json import read_strict
 from verify.passivity.model import from_state_space
@@ -44,6 +54,7 @@ from verify.passivity.search.canonical import coarse_kyp
 
 ROOT = Path(__file__).resolve().parents[1]
 KS3 = ROOT / "certificates" / "reconstructed-k_s-3.0-99babda880e6.json"
+KS25 = ROOT / "certificates" / "reconstructed-k_s-2.5-band-0-1.5-f0739b7ae628.json"
 
 
 def coqc(folder: Path, rel: str, timeout: float) -> tuple[float, float, float, bool]:
@@ -122,6 +133,7 @@ def entry_bits(P) -> int:
 def main() -> int:
     ap = argparse.ArgumentParser()
     ap.add_argument("--sizes", type=int, nargs="*", default=[4, 10, 30])
+    ap.add_argument("--band-sizes", type=int, nargs="*", default=[4, 6])
     ap.add_argument("--timeout", type=float, default=900.0)
     ap.add_argument("--no-sos", action="store_true", help="skip the SOS certificates")
     ap.add_argument("--raw", action="store_true",
@@ -158,7 +170,56 @@ def main() -> int:
             state = "" if ok else ("  TIMEOUT" if secs >= args.timeout else "  FAILED")
             print(f"{label:<26} {secs:9.1f} {cpu:9.1f} {mb:8.0f} {py:9.4f} {cpu / py:9.0f}  "
                   f"{len(unit.text) // 1024} KiB, {entry_bits(P)} bits{state}", flush=True)
+        band_cases(folder, args)
     return 0
+
+
+def band_python_seconds(data: dict, repeat: int = 3) -> float:
+    """The Python exact checker of an exact-band or positive-real certificate (its
+    binding aside)."""
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        if data["schema"] == "verify-pr-certificate/1":
+            assert check_pr_certificate_data(data).ok
+        else:
+            assert check_band_fd_data(data)[0].ok
+        best = min(best, time.perf_counter() - t)
+    return best
+
+
+def pr_case(folder: Path) -> tuple[str, object, dict]:
+    """The positive-real certificate of the k_s = 3.0 model (frequency inequality)."""
+    model = cf.parse_kyp(read_strict(KS3)).model
+    _verdict, _reason, cert, _ = decide_positive_real(model, "k_s = 3.0", "")
+    path, _ = store_pr_certificate(cert, Fraction(0), folder)
+    return "paper k_s=3.0 PR (4 st.)", pr_unit_from_file(path), read_strict(path)
+
+
+def band_cases(folder: Path, args: argparse.Namespace) -> None:
+    """Exact-band certificates: the paper's k_s = 2.5 one, and random passive
+    port-Hamiltonian models (2 ports) on the band [0, 1]."""
+    cases = [("paper k_s=2.5 band (4 st.)", band_fd_unit_from_file(KS25),
+              read_strict(KS25))]
+    for n in args.band_sizes:
+        A, B, C, D = random_port_hamiltonian(n, 2, np.random.default_rng([12, n]), False)
+        model = exact_model(A, B, C, D)
+        band = (Fraction(0), Fraction(1))
+        analysis = analyse_band(model, band)
+        assert analysis.passive
+        data = BandFdCertificate(f"pH n={n}", "(benchmark)", model, band, Fraction(0),
+                                 analysis).to_json()
+        unit = band_unit(f"Band{n}", model=model, band=band, margin=Fraction(0),
+                         label=f"pH n={n}", source="(benchmark)",
+                         fingerprint=model.fingerprint(), origin=f"band n={n}")
+        cases.append((f"band pH {n} states", unit, data))
+    for label, unit, data in [*cases, pr_case(folder)]:
+        (folder / f"{unit.name}.v").write_text(unit.text)
+        secs, cpu, mb, ok = coqc(folder, f"{unit.name}.v", args.timeout)
+        py = band_python_seconds(data)
+        state = "" if ok else ("  TIMEOUT" if secs >= args.timeout else "  FAILED")
+        print(f"{label:<26} {secs:9.1f} {cpu:9.1f} {mb:8.0f} {py:9.4f} {cpu / py:9.0f}  "
+              f"{len(unit.text) // 1024} KiB{state}", flush=True)
 
 
 if __name__ == "__main__":

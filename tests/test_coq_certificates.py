@@ -107,9 +107,11 @@ def test_other_certificate_kinds_are_listed_with_a_reason():
     export = export_certificates([CERTS])
     names = {u.name for u in export.units}
     assert "Cert_reconstructed_k_s_3_0_99babda880e6" in names
+    assert "Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628" in names  # exact band
     left = {i.file: i for i in export.not_exported}
     assert all(i.reason for i in left.values())
-    assert any(i.schema == "verify-band-fd-certificate/1" for i in left.values())
+    assert any(i.schema == "verify-robust-band-certificate/1" for i in left.values())
+    assert not any(i.schema == "verify-band-fd-certificate/1" for i in left.values())
     assert KS3.name not in left
 
 

@@ -200,5 +200,6 @@ def test_check_writes_a_development(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "4 of 4 steps as theorems" in out
     project = (tmp_path / "coq" / "_CoqProject").read_text().splitlines()
-    assert project == ["-R . VerifyCoq", "SO3.v", "QCert.v", "SOSCert.v", "small_trace.v", "small_bound.v",
+    assert project == ["-R . VerifyCoq", "SO3.v", "QCert.v", "SOSCert.v", "BandCert.v",
+                       "small_trace.v", "small_bound.v",
                        "small_condition.v", "All.v"]

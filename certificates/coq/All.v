@@ -29,6 +29,7 @@ From VerifyCoq Require sos_lemma1_trace_inequality_sym_psd_step1.
 From VerifyCoq Require sos_thm1_S_r_dot_step7.
 From VerifyCoq Require sos_thm1_S_rl_dot_step4.
 From VerifyCoq Require sos_thm1_V_dot_step3.
+From VerifyCoq Require Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
 
 (** Every top theorem of the development. *)
@@ -96,5 +97,6 @@ Definition top_theorems :=
    sos_thm1_S_r_dot_step7.step7_by_sos,
    sos_thm1_S_rl_dot_step4.step4_by_sos,
    sos_thm1_V_dot_step3.step3_by_sos,
+   Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.passive_on_band,
    Cert_reconstructed_k_s_3_0_99babda880e6.passive).
 Print Assumptions top_theorems.

@@ -22,6 +22,7 @@ from verify.coq.development import (
     write_development,
 )
 from verify.coq.export import (
+    EXPORTED_SCHEMAS,
     Export,
     export_certificates,
     not_exported_json,
@@ -37,12 +38,14 @@ INSTALL_HINT = "apt-get install coq libcoq-stdlib"
 def development_files(export: Export) -> dict[str, str]:
     """Every file of the development of ``export`` (sources, project, the list left out)."""
     return render_development(export.units,
-                              extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported)})
+                              extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported,
+                                                                export.partly)})
 
 
 def write_export(folder: Path, export: Export) -> None:
     write_development(folder, export.units,
-                      extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported)})
+                      extra={NOT_EXPORTED_FILE: not_exported_json(export.not_exported,
+                                                                export.partly)})
 
 
 def check_and_audit(files: dict[str, str], jobs: int = 1
@@ -122,8 +125,7 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
         return 2
     print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
           f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
-    refused = [i for i in export.not_exported
-               if i.schema.startswith(("verify-kyp-certificate", "verify-gkyp-certificate"))]
+    refused = [i for i in export.not_exported if i.schema in EXPORTED_SCHEMAS]
     for item in refused:
         print(f"not exported: {item.reason}")
     ok = not refused
@@ -156,6 +158,8 @@ def gate_development(certificate_paths: Sequence[Path], folder: Path) -> bool:
     print(f"coq: wrote {folder} ({len(export.units)} unit(s))")
     for item in export.not_exported:
         print(f"coq: {item.file} not exported: {item.reason}")
+    for item in export.partly:
+        print(f"coq: {item.file} exported in part: {item.reason}")
     if not coqc_available():
         print(f"coq: coqc not found, not compiled ({INSTALL_HINT})")
         return True

@@ -2,8 +2,8 @@
 
 :func:`export_certificates` turns certificate files into :class:`~verify.coq.unit.CoqUnit`
 s (KYP certificates, :mod:`verify.coq.kyp`; band certificates, :mod:`verify.coq.band`;
-the paper's SOS certificates, :mod:`verify.coq.sos`) and lists every file it does not
-export with
+exact-band certificates, :mod:`verify.coq.band_fd`; the paper's SOS certificates,
+:mod:`verify.coq.sos`) and lists every file it does not export with
 the reason, machine-readably (:func:`not_exported_json`, written beside the development
 as ``NOT_EXPORTED.json``). :func:`paper_development_units` is the paper's development:
 the derivation units of :mod:`verify.coq.paper` when that module is installed, then the
@@ -18,11 +18,22 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from verify.coq.band import gkyp_unit_from_file
+from verify.coq.band_fd import band_fd_unit_from_file
 from verify.coq.kyp import CoqExportError, kyp_unit_from_file
+from verify.coq.positive_real import NOT_KERNEL_CHECKED, pr_unit_from_file
 from verify.coq.unit import CoqUnit
 
 KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
 BAND_SCHEMAS = ("verify-gkyp-certificate/1", "verify-gkyp-certificate/2")
+BAND_FD_SCHEMAS = ("verify-band-fd-certificate/1",)
+PR_SCHEMAS = ("verify-pr-certificate/1",)
+
+#: Every schema :func:`export_certificates` turns into a unit (a file of one of these
+#: kinds that is not exported was refused, with the reason).
+EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS, *PR_SCHEMAS)
+
+#: Kinds exported in part: what their unit does not state, left to the Python checker.
+PARTLY_EXPORTED: dict[str, str] = {"verify-pr-certificate/1": NOT_KERNEL_CHECKED}
 
 #: Certificate kinds not exported, with the reason (shown in the README and the list).
 NOT_EXPORTED_REASONS: dict[str, str] = {
@@ -30,18 +41,18 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "SOS certificate that is not one of the paper's by_sos steps: not exported (the "
         "paper's SOS certificates are; a user's is checked by the Python exact checker "
         "only)",
-    "verify-band-fd-certificate/1":
-        "exact-band certificate (polynomial non-negativity on an interval from Descartes "
-        "and breakpoint data): not exported yet; checked by the Python exact checker only",
-    "verify-pr-certificate/1":
-        "positive-real (frequency-domain) certificate: not exported yet; checked by the "
-        "Python exact checker only",
     "verify-robust-band-certificate/1":
-        "robust certificate over a set of identified models (interval data): not "
-        "exported; checked by the Python exact checker only",
+        "robust certificate over an ellipsoidal region of identified models: a tree of "
+        "coefficient boxes, each leaf checked by rational interval arithmetic (natural "
+        "interval extensions), Kharitonov's theorem for the denominators, and the "
+        "ellipsoid's enclosing box; the statement quantifies over a continuum of models, "
+        "and none of these three lemmas is in the Coq prelude, so no finite list of exact "
+        "checks Coq could re-run stands for it; checked by the Python exact checker only",
     "verify-robust-refutation-certificate/1":
-        "refutation (a witness that a model is not passive): not a passivity proof; "
-        "checked by the Python exact checker only",
+        "refutation (every model of an identified region is not passive, from leaves where "
+        "an exact vector makes H(jw) + H(jw)^H negative): a negative verdict, not a "
+        "passivity proof, and its leaves rest on the same interval arithmetic as the robust "
+        "certificates; checked by the Python exact checker only",
 }
 
 
@@ -58,6 +69,8 @@ class NotExported:
 class Export:
     units: tuple[CoqUnit, ...]
     not_exported: tuple[NotExported, ...]
+    #: Files exported in part, with what their unit leaves out (``reason``).
+    partly: tuple[NotExported, ...] = ()
 
 
 def certificate_files(paths: Iterable[Path]) -> list[Path]:
@@ -84,19 +97,25 @@ def schema_of(path: Path) -> str:
 
 
 def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Export:
-    """Units for the KYP certificates among ``paths``; the rest listed with the reason.
+    """Units for the KYP, band and exact-band certificates among ``paths``; the rest
+    listed with the reason.
 
-    ``strict``: a KYP certificate that cannot be exported (unbound, no witness) raises
+    ``strict``: such a certificate that cannot be exported (unbound, no witness) raises
     :class:`CoqExportError` instead of being listed.
     """
     units: list[CoqUnit] = []
     left: list[NotExported] = []
+    partly: list[NotExported] = []
     for path in certificate_files(paths):
         schema = schema_of(path)
-        if schema in KYP_SCHEMAS or schema in BAND_SCHEMAS:
+        if schema in EXPORTED_SCHEMAS:
+            make = (kyp_unit_from_file if schema in KYP_SCHEMAS else
+                    gkyp_unit_from_file if schema in BAND_SCHEMAS else
+                    band_fd_unit_from_file if schema in BAND_FD_SCHEMAS else pr_unit_from_file)
             try:
-                units.append(kyp_unit_from_file(path) if schema in KYP_SCHEMAS
-                             else gkyp_unit_from_file(path))
+                units.append(make(path))
+                if schema in PARTLY_EXPORTED:
+                    partly.append(NotExported(path.name, schema, PARTLY_EXPORTED[schema]))
             except CoqExportError as exc:
                 if strict:
                     raise
@@ -104,14 +123,20 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
         else:
             reason = NOT_EXPORTED_REASONS.get(schema, "unknown certificate kind: not exported")
             left.append(NotExported(path.name, schema, reason))
-    return Export(tuple(units), tuple(left))
+    return Export(tuple(units), tuple(left), tuple(partly))
 
 
-def not_exported_json(items: Sequence[NotExported]) -> str:
-    """The machine-readable list of files left out (stable bytes)."""
-    rows = [{"file": i.file, "schema": i.schema, "reason": i.reason}
-            for i in sorted(items, key=lambda i: i.file)]
-    return json.dumps({"not_exported": rows}, indent=1) + "\n"
+def not_exported_json(items: Sequence[NotExported],
+                      partly: Sequence[NotExported] = ()) -> str:
+    """The machine-readable list of files left out and, when there are any, of files
+    exported in part with what their unit does not state (stable bytes)."""
+    def rows(found: Sequence[NotExported]) -> list[dict[str, str]]:
+        return [{"file": i.file, "schema": i.schema, "reason": i.reason}
+                for i in sorted(found, key=lambda i: i.file)]
+    data: dict[str, list[dict[str, str]]] = {"not_exported": rows(items)}
+    if partly:
+        data["not_kernel_checked"] = rows(partly)
+    return json.dumps(data, indent=1) + "\n"
 
 
 def derivation_units() -> list[CoqUnit]:
@@ -142,4 +167,5 @@ def paper_development_units(certificates_dir: Path) -> Export:
             left.append(NotExported(item.file, item.schema,
                                     "SOS certificate of a paper's step, not exported: "
                                     + fate.removeprefix("refused: ")))
-    return Export((*derivation_units(), *sos_units, *certs.units), tuple(left))
+    return Export((*derivation_units(), *sos_units, *certs.units), tuple(left),
+                  certs.partly)
