@@ -74,7 +74,9 @@ def frequency_grid(model: Any, marks: list[float], points: int = 1200) -> np.nda
     scale = mags + finite
     lo = min([1e-2, *(x / 100 for x in scale)])
     hi = max([1e2, *(x * 100 for x in scale)])
-    w = np.logspace(math.log10(lo), math.log10(hi), points)
+    # whole hundredths of a decade: the poles' last bits (BLAS-dependent) do not move the grid
+    w = np.logspace(math.floor(100 * math.log10(lo)) / 100,
+                    math.ceil(100 * math.log10(hi)) / 100, points)
     return np.unique(np.concatenate([w, np.array(finite, dtype=float)]))
 
 
@@ -133,7 +135,15 @@ def _smallest(decision: Any) -> tuple[float, float] | None:
                     None if band is None else (float(band[0]), float(band[1])))
     if found is None or not math.isfinite(found.value):
         return None
-    return float(found.omega), float(found.value)
+    # to the digits the legend prints and a little more: the search's last bits depend on
+    # the BLAS, and this point is inserted into the plotted grid (same figure bytes on
+    # every machine)
+    return _canonical(found.omega), _canonical(found.value)
+
+
+def _canonical(x: float) -> float:
+    """``x`` to 8 significant digits (infinity kept)."""
+    return float(f"{float(x):.8g}")
 
 
 def _verdict_line(decision: Any, witness: Fraction | None) -> str:
