@@ -91,6 +91,8 @@ MAX_STARTS = 8
 #: How the estimator treats the start of a trial, see :func:`estimate_model`.
 INITIAL = "carry"
 BURN_IN = 0.0  # seconds
+#: Whether a constant offset per output is estimated by default (module docstring).
+OFFSET = True
 
 #: Estimation methods: name -> description.
 METHODS = {
@@ -237,7 +239,8 @@ def few_trials_factor(trials: int) -> float:
 
 def estimate_model(trials: Sequence[Trial], structure: Structure, *,
                    method: str = "riv+pem", initial: str = INITIAL,
-                   burn_in: float = BURN_IN, inflate: bool = True) -> Estimate:
+                   burn_in: float = BURN_IN, inflate: bool = True,
+                   offset: bool = OFFSET) -> Estimate:
     """Estimate H(s) in ``structure`` from uniformly sampled (closed-loop) trials.
 
     Parameters
@@ -256,6 +259,9 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
     inflate
         Multiply the covariance by :func:`few_trials_factor` of the number of distinct
         trials (module docstring); False gives the asymptotic covariance.
+    offset
+        Estimate a constant offset per output (an uncalibrated stick, module docstring)
+        as a nuisance parameter; the baseline ``"arx+oe"`` has none.
     method
         ``"riv+pem"`` (module docstring), ``"riv+bj"`` (with an AR noise model when the
         output error is coloured, :func:`with_noise_model`) or ``"arx+oe"`` (the
@@ -289,10 +295,14 @@ def estimate_model(trials: Sequence[Trial], structure: Structure, *,
         from verify.identify.estimate.baseline import oe_from_arx
 
         return oe_from_arx(trials, structure, h)
-    fits = [fit_output(output_data(trials, i, h, initial=initial, skip=skip), structure.poles,
-                       structure.zeros, noise=method == "riv+bj") for i in (0, 1)]
-    est = assemble(structure, fits, method, samples)
+    offset = bool(offset)
+    fits = [fit_output(output_data(trials, i, h, initial=initial, skip=skip, offset=offset),
+                       structure.poles, structure.zeros, noise=method == "riv+bj")
+            for i in (0, 1)]
+    est = assemble(structure, fits, method, samples, offset=offset)
     if not inflate:
         return est
     factor = few_trials_factor(len({tr.trial for tr in trials}))
-    return replace(est, covariance=est.covariance * factor, inflation=factor)
+    return replace(est, covariance=est.covariance * factor, inflation=factor,
+                   offset_errors=tuple(float(x) * float(np.sqrt(factor))
+                                       for x in est.offset_errors))

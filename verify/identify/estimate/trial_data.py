@@ -36,6 +36,9 @@ class OutputData:
     input still acts (one step unless the trial says otherwise, :attr:`Trial.end`).
     ``free[k]`` (with "carry") says that trial k's initial state is estimated instead:
     it starts neither from a carried state nor visibly at rest (:func:`mid_response`).
+    ``offset`` adds a constant to the output, estimated with the other parameters (an
+    uncalibrated stick: the logged u_i is off by a constant; a nuisance parameter, not
+    part of H(s)).
     """
 
     output: int
@@ -48,10 +51,16 @@ class OutputData:
     gaps: tuple[float | None, ...] = ()
     ahead: tuple[float, ...] = ()
     free: tuple[bool, ...] = ()
+    offset: bool = False
 
     @property
     def samples(self) -> int:
         return sum(len(y) for y in self.y)
+
+    def shared(self, zeros: int) -> int:
+        """Columns of the regressors shared by all trials: the numerator's zeros + 1, the
+        coupling, and the offset when there is one (the trials' initial states follow)."""
+        return zeros + 2 + int(self.offset)
 
     def estimated(self, k: int) -> bool:
         """True if trial k's initial state is a fitted parameter."""
@@ -190,8 +199,9 @@ def dead_time_gaps(trials: Sequence[Trial]) -> tuple[float | None, ...]:
 
 
 def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "estimate",
-                skip: int = 0) -> OutputData:
-    """The view of output ``i`` (0 or 1) of checked trials."""
+                skip: int = 0, offset: bool = False) -> OutputData:
+    """The view of output ``i`` (0 or 1) of checked trials (``offset``: a constant on the
+    output is estimated too, :class:`OutputData`)."""
     j = 1 - i
     return OutputData(
         i,
@@ -205,4 +215,5 @@ def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "es
         tuple(h if tr.end is None else max(float(tr.end - np.asarray(tr.t, float)[-1]), 0.0)
               for tr in trials),
         fresh_starts(trials),
+        bool(offset),
     )

@@ -48,8 +48,15 @@ initial state estimated, which is unbiased when the input does not depend on the
 (:mod:`verify.identify.estimate.estimation`), so the joins no longer matter; the test
 says which form it used.
 
+**Offsets.** When the estimate has a constant offset per output (an uncalibrated stick,
+:attr:`verify.identify.estimate.result.Estimate.offsets`), both classes are fitted with
+their own offset, so the comparison is of H(s) alone; the test reports the identified
+offsets with their standard errors and whether each differs from zero at the 5 % level
+(|o| > 1.96 se; a nuisance parameter, so "significant" only says the stick is off).
+
 What flows in: the identification trials and the estimate. What flows out: a
-:class:`ClassTest` (per output LR, p-value, N_eff; the larger model's parameters).
+:class:`ClassTest` (per output LR, p-value, N_eff; the larger model's parameters; the
+offsets).
 """
 
 from __future__ import annotations
@@ -78,6 +85,8 @@ LEVEL = 5e-4
 DEGREES = 2
 #: Smallest R(e) / R(u) (roughness, module docstring) taken as open-loop data.
 OPEN_LOOP_ROUGHNESS = 0.6
+#: Two-sided normal quantile of the offsets' significance (5 %).
+OFFSET_Z = 1.959963984540054
 
 
 def looks_open_loop(trials: Sequence[Trial]) -> bool:
@@ -115,6 +124,25 @@ class ClassTest:
     larger_covariance: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)),
                                           compare=False, repr=False)
     open_loop: bool = False
+    offsets: tuple[float, ...] = ()
+    offset_errors: tuple[float, ...] = ()
+
+    @property
+    def offsets_significant(self) -> tuple[bool, ...]:
+        """Per output: the offset differs from zero at the 5 % level (|o| > 1.96 se)."""
+        return tuple(abs(o) > OFFSET_Z * se for o, se in
+                     zip(self.offsets, self.offset_errors, strict=True))
+
+    def offset_text(self) -> str:
+        """The offsets with standard errors and significance, or '' when none."""
+        if not self.offsets:
+            return ""
+        parts = [f"u{i + 1} {o:+.3g} (se {se:.2g}, "
+                 f"{'significant' if sig else 'not significant'})"
+                 for i, (o, se, sig) in enumerate(zip(self.offsets, self.offset_errors,
+                                                      self.offsets_significant, strict=True))]
+        return ("offsets of the logged outputs, estimated with both classes: "
+                + ", ".join(parts) + " at the 5 % level")
 
     @property
     def rejected(self) -> bool:
@@ -135,7 +163,8 @@ class ClassTest:
                 f"p = {ps} (chi-square, {DEGREES} degrees of freedom; level {LEVEL:g} per "
                 f"output)" + (f"; {tail}" if tail else "")
                 + ("; open-loop data: both classes fitted with each trial's initial state "
-                   "estimated" if self.open_loop else ""))
+                   "estimated" if self.open_loop else "")
+                + (f"; {self.offset_text()}" if self.offsets else ""))
 
     def to_json(self) -> dict[str, object]:
         """Figures to 4 significant digits (byte-reproducible)."""
@@ -149,7 +178,10 @@ class ClassTest:
                 "effective_samples": [four(x) for x in self.effective],
                 "rejected": self.rejected, "larger_fit_failed": list(self.fallbacks),
                 "open_loop": self.open_loop,
-                "larger_theta": [four(x) for x in self.larger_theta]}
+                "larger_theta": [four(x) for x in self.larger_theta],
+                "offsets": [four(x) for x in self.offsets],
+                "offset_standard_errors": [four(x) for x in self.offset_errors],
+                "offsets_significant": list(self.offsets_significant)}
 
 
 def _embedding(b: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -181,10 +213,11 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
     cov = np.asarray(estimate.covariance, float) / max(float(estimate.inflation), 1e-300)
     per = structure.zeros + 1 + structure.poles
     open_loop = looks_open_loop(trials)
+    offset = bool(estimate.offsets)
     stats, ps, effs, fits, fallbacks = [], [], [], [], []
     for i in (0, 1):
         data = output_data(trials, i, h, initial="estimate" if open_loop else INITIAL,
-                           skip=skip)
+                           skip=skip, offset=offset)
         b, a, c = element_parameters(structure, theta, i)
         if open_loop:  # refit the class too: the estimate's denominator was carried
             try:
@@ -217,4 +250,5 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
     return ClassTest(structure, larger, (stats[0], stats[1]), (ps[0], ps[1]),
                      (effs[0], effs[1]), tuple(float(x) for x in both.theta),
                      tuple(fallbacks), both.covariance * float(estimate.inflation),
-                     open_loop)
+                     open_loop, tuple(float(x) for x in estimate.offsets),
+                     tuple(float(x) for x in estimate.offset_errors))
