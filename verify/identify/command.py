@@ -222,10 +222,12 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
         dead_time_gaps,
         fresh_starts,
         mid_response,
+        rest_level,
     )
 
     gaps = dead_time_gaps(trials)
     fresh = fresh_starts(trials)
+    level = rest_level(trials)
     carried = [g for g in gaps[1:] if g is not None]
     paused, rest = [], []
     for prev, tr, g in zip(trials, trials[1:], gaps[1:], strict=False):
@@ -249,11 +251,13 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
                    "move forward)")
     for tr, is_fresh in zip(trials, fresh, strict=True):
         if is_fresh:
+            share = 100 * mid_response(tr, level)
             out.append(f"warning: trial {tr.trial} (from t = {float(tr.t[0]):.4g} s) begins "
-                       f"mid-response (u over its first 0.25 s at {100 * mid_response(tr):.0f} "
-                       "% of its largest value): logging started during a response, so its "
-                       "initial state is estimated, not taken as rest (in closed loop that "
-                       "estimate is biased; log from before the response where possible)")
+                       f"mid-response (u over its first 0.25 s, from the rest level, at "
+                       f"{share:.0f} % of its largest value): logging started during a "
+                       "response, so its initial state is estimated, not taken as rest "
+                       "(in closed loop that estimate is biased; log from before the "
+                       "response where possible)")
     return tuple(out)
 
 

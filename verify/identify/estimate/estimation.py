@@ -138,15 +138,17 @@ def _cost(a: np.ndarray, data: OutputData, zeros: int) -> float:
 
 
 def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
-               noise: bool = False) -> OutputFit:
+               noise: bool = False, more_starts: Sequence[np.ndarray] = ()) -> OutputFit:
     """The output-error estimate of one output, refined from the best starting points.
 
-    Candidates: the SRIVC denominators from each first prefilter and the grid of
-    :func:`starting_denominators`. The ``starts`` candidates of least output-error cost
-    (after eliminating the linear parameters) are refined; the refinement of least cost
-    that ends inside the search box is kept (further candidates are refined, up to
-    MAX_STARTS, until one does), then given a noise model if its residual is coloured
-    (:func:`with_noise_model`, when ``noise``). The grid is there because in this loop
+    Candidates: the SRIVC denominators from each first prefilter, the grid of
+    :func:`starting_denominators` and ``more_starts`` (denominators a_{n-1}..a_0 the
+    caller knows to be good, e.g. a smaller model's times one more factor). The
+    ``starts`` candidates of least output-error cost (after eliminating the linear
+    parameters) are refined; the refinement of least cost that ends inside the search
+    box is kept (further candidates are refined, up to MAX_STARTS, until one does),
+    then given a noise model if its residual is coloured (:func:`with_noise_model`,
+    when ``noise``). The grid is there because in this loop
     SRIVC can be ill-conditioned: the leader is noise-free, so u_h is close to a
     deterministic function of the derivative of e and the equation-error regressors of
     u_h and e are nearly collinear; the output-error criterion, whose predictor is
@@ -163,9 +165,13 @@ def fit_output(data: OutputData, poles: int, zeros: int, *, starts: int = 3,
         if np.all(np.isfinite(a0)):
             candidates.append(a0)
     candidates += starting_denominators(poles, data.h)
+    candidates += [np.asarray(a0, float) for a0 in more_starts if len(a0) == poles]
+    upper = denominator_bounds(poles, data.h)
+    # ranked where the refinement starts: inside the search box (an unstable SRIVC
+    # candidate is clipped there, and its cost before clipping says nothing of that point)
+    candidates = [np.clip(a0, 0.0, upper * (1 - 1e-9)) for a0 in candidates]
     costs = [_cost(a0, data, zeros) for a0 in candidates]
     order = [k for k in np.argsort(costs, kind="stable") if np.isfinite(costs[k])]
-    upper = denominator_bounds(poles, data.h)
     best: OutputFit | None = None
     tried = 0
     for k in order:

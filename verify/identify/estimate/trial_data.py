@@ -18,7 +18,7 @@ from verify.identify.estimate.structure import Structure
 from verify.inputs.experiment import Trial
 
 __all__ = ["MAX_CARRY_GAP", "MID_RESPONSE", "START_WINDOW", "OutputData", "check_trials",
-           "dead_time_gaps", "fresh_starts", "mid_response", "output_data"]
+           "dead_time_gaps", "fresh_starts", "mid_response", "output_data", "rest_level"]
 
 
 @dataclass(frozen=True)
@@ -139,10 +139,24 @@ START_WINDOW = 0.25
 MID_RESPONSE = 0.5
 
 
-def mid_response(trial: Trial) -> float:
-    """How far into a response trial ``trial`` begins: the size of u averaged over its
-    first ``START_WINDOW`` seconds relative to the largest such average over the trial
-    (0: at rest, 1: at the peak).
+def rest_level(trials: Sequence[Trial]) -> np.ndarray:
+    """The logged u at rest, per component: its median over every sample of ``trials``.
+
+    In the loop the operator's responses are transients between long stretches near rest,
+    so the median is the rest level: 0 for a calibrated stick, the stick's offset
+    otherwise (an offset must not make a trial that begins at rest look mid-response).
+    """
+    u = [np.asarray(tr.u, float) for tr in trials if np.asarray(tr.u).shape[0]]
+    if not u:
+        return np.zeros(2)
+    return np.median(np.concatenate(u), axis=0)
+
+
+def mid_response(trial: Trial, rest: np.ndarray | None = None) -> float:
+    """How far into a response trial ``trial`` begins: the size of u - ``rest`` (the rest
+    level, :func:`rest_level`; 0 when not given) averaged over its first ``START_WINDOW``
+    seconds relative to the largest such average over the trial (0: at rest, 1: at the
+    peak).
 
     A trial of the protocol begins at the operator's start event, before the response
     (or continues a previous trial whose state is carried); one that begins with u
@@ -154,6 +168,8 @@ def mid_response(trial: Trial) -> float:
     t = np.asarray(trial.t, float)
     if u.shape[0] < 2:
         return 0.0
+    if rest is not None:
+        u = u - np.asarray(rest, float)
     h = float(t[1] - t[0])
     width = min(max(1, round(START_WINDOW / h)), u.shape[0])
     csum = np.cumsum(np.vstack([np.zeros((1, u.shape[1])), u]), axis=0)
@@ -165,9 +181,11 @@ def mid_response(trial: Trial) -> float:
 def fresh_starts(trials: Sequence[Trial]) -> tuple[bool, ...]:
     """Per trial, True if its initial state must be estimated: it is not carried
     (:func:`dead_time_gaps` gives None: the first trial, a segment after invalid samples,
-    a trial after a pause) and it begins mid-response (:func:`mid_response`)."""
+    a trial after a pause) and it begins mid-response (:func:`mid_response`, measured
+    from the log's rest level, :func:`rest_level`)."""
     gaps = dead_time_gaps(trials)
-    return tuple(g is None and mid_response(tr) >= MID_RESPONSE
+    rest = rest_level(trials)
+    return tuple(g is None and mid_response(tr, rest) >= MID_RESPONSE
                  for tr, g in zip(trials, gaps, strict=True))
 
 

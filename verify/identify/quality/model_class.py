@@ -13,14 +13,20 @@ does not.
 **The test.** Output i is u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. It is fitted by the
 estimator's own output-error criterion (:func:`verify.identify.estimate.estimation.fit_output`,
 the same identification trials, the state carried across trials) in the identified
-structure P:Z and in the larger (P+1):(Z+1). The classes are nested (a common factor
-s + p on both sides of h_i), so the likelihood ratio of Gaussian output errors
+structure P:Z and in the larger (P+1):(Z+1); the larger fit also starts from the
+identified denominator times (s + p) for p on a grid (``EMBEDDED_POLES``), so that its
+search begins where the classes meet (without those starts one open-loop fit stopped in a
+local minimum worse than the smaller model, whose residual was coloured). The classes
+are nested (a common factor s + p on both sides of h_i), so the likelihood ratio of
+Gaussian output errors
 
     LR_i = N_eff,i log(V_i(P:Z) / V_i(P+1:Z+1))
 
 (V the residual sums of squares, N_eff the effective sample size of the larger fit's
 residual, :func:`verify.identify.estimate.residual_tests.effective_samples`) is compared
-with chi-square with 2 degrees of freedom. The nesting is not regular (p is not
+with chi-square with 2 degrees of freedom, plus one for each trial whose initial state
+is fitted (the larger model has one more state to start from in each such trial: on
+open-loop data every trial, below). The nesting is not regular (p is not
 identified under the smaller class), so the law is a guide; measured on 24 outputs of
 in-class closed-loop logs at 120 Hz: LR 0.13-8.1, against 449 and 26 for the
 third-order operator. The class is **rejected** when some output's p-value is below
@@ -46,7 +52,13 @@ leader integrates the operator's command and e is the smoother signal: R(e)/R(u)
 open-loop multisine logs). There both classes are fitted afresh with each trial's
 initial state estimated, which is unbiased when the input does not depend on the noise
 (:mod:`verify.identify.estimate.estimation`), so the joins no longer matter; the test
-says which form it used.
+says which form it used. The larger model then also has one more initial state per
+trial, and its likelihood ratio has that many more degrees of freedom: counted with 2
+alone, in-class operators on open-loop multisine logs of 4 trials gave likelihood
+ratios of 4-14 (mean about 8, where chi-square with 2 degrees of freedom has 2) and
+p-values down to 9e-4 against the level 5e-4; the larger model had moved its extra pole
+to 0, where the free response it adds is a constant per trial. Counting 2 + T for T
+fitted initial states is what ``benchmarks/bench_identify_open_loop.py`` calibrates.
 
 **Offsets.** When the estimate has a constant offset per output (an uncalibrated stick,
 :attr:`verify.identify.estimate.result.Estimate.offsets`), both classes are fitted with
@@ -85,6 +97,9 @@ LEVEL = 5e-4
 DEGREES = 2
 #: Smallest R(e) / R(u) (roughness, module docstring) taken as open-loop data.
 OPEN_LOOP_ROUGHNESS = 0.6
+#: Extra poles p (rad/s) of the larger fit's starts A(s)(s + p), below half the Nyquist
+#: frequency (module docstring).
+EMBEDDED_POLES = (0.3, 1.0, 3.0, 10.0, 30.0)
 #: Two-sided normal quantile of the offsets' significance (5 %).
 OFFSET_Z = 1.959963984540054
 
@@ -112,7 +127,9 @@ class ClassTest:
     model's parameters, in ``larger.names()`` order) with ``larger_covariance`` (the
     estimator's asymptotic covariance, outputs independent, times the identified
     estimate's few-trials factor); ``fallbacks`` names the outputs whose larger fit failed
-    (their larger model is the identified one, LR 0, its covariance mapped alike)."""
+    (their larger model is the identified one, LR 0, its covariance mapped alike);
+    ``degrees`` per output the chi-square degrees of freedom (``DEGREES`` plus the
+    trials whose initial state is fitted, module docstring)."""
 
     structure: Structure
     larger: Structure
@@ -126,6 +143,7 @@ class ClassTest:
     open_loop: bool = False
     offsets: tuple[float, ...] = ()
     offset_errors: tuple[float, ...] = ()
+    degrees: tuple[int, int] = (DEGREES, DEGREES)
 
     @property
     def offsets_significant(self) -> tuple[bool, ...]:
@@ -156,11 +174,13 @@ class ClassTest:
         """One line: rejected or not, with the figures."""
         lr = ", ".join(f"{x:.4g}" for x in self.statistic)
         ps = ", ".join(f"{p:.3g}" for p in self.p_value)
+        dof = (f"{self.degrees[0]}" if self.degrees[0] == self.degrees[1] else
+               f"{self.degrees[0]}, {self.degrees[1]}")
         verdict = ("the data reject it" if self.rejected else "the data do not reject it")
         tail = "; ".join(self.fallbacks)
         return (f"{verdict} against {self.larger_text()} (one pole and one zero more per "
                 f"diagonal element, same output-error criterion): likelihood ratio {lr}, "
-                f"p = {ps} (chi-square, {DEGREES} degrees of freedom; level {LEVEL:g} per "
+                f"p = {ps} (chi-square, {dof} degrees of freedom; level {LEVEL:g} per "
                 f"output)" + (f"; {tail}" if tail else "")
                 + ("; open-loop data: both classes fitted with each trial's initial state "
                    "estimated" if self.open_loop else "")
@@ -172,7 +192,7 @@ class ClassTest:
             return float(f"{x:.4g}")
 
         return {"larger_structure": self.larger_text(), "level": LEVEL,
-                "degrees_of_freedom": DEGREES,
+                "degrees_of_freedom": list(self.degrees),
                 "likelihood_ratio": [four(x) for x in self.statistic],
                 "p_value": [four(x) for x in self.p_value],
                 "effective_samples": [four(x) for x in self.effective],
@@ -214,7 +234,7 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
     per = structure.zeros + 1 + structure.poles
     open_loop = looks_open_loop(trials)
     offset = bool(estimate.offsets)
-    stats, ps, effs, fits, fallbacks = [], [], [], [], []
+    stats, ps, effs, fits, fallbacks, dofs = [], [], [], [], [], []
     for i in (0, 1):
         data = output_data(trials, i, h, initial="estimate" if open_loop else INITIAL,
                            skip=skip, offset=offset)
@@ -227,9 +247,11 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
                 pass
         residual = fit_linear(np.asarray(a, float), data, structure.zeros)[1]
         cost = float(residual @ residual)
+        starts = [np.convolve(np.r_[1.0, np.asarray(a, float)], [1.0, p])[1:]
+                  for p in EMBEDDED_POLES if p < 0.5 * math.pi / h]
         try:
             with np.errstate(all="ignore"):
-                fit = fit_output(data, larger.poles, larger.zeros)
+                fit = fit_output(data, larger.poles, larger.zeros, more_starts=starts)
         except (CannotIdentifyError, np.linalg.LinAlgError, ValueError) as exc:
             fallbacks.append(f"output {i + 1}: no larger fit ({exc})")
             big_b, big_a, J = _embedding(np.asarray(b, float), np.asarray(a, float))
@@ -242,8 +264,10 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
             lr = max(0.0, n_eff * math.log(cost / big_cost))
         else:
             lr = 0.0
+        dof = DEGREES + sum(data.estimated(k) for k in range(len(data.y)))
         stats.append(lr)
-        ps.append(float(chi2.sf(lr, DEGREES)))
+        dofs.append(int(dof))
+        ps.append(float(chi2.sf(lr, dof)))
         effs.append(float(n_eff))
         fits.append(fit)
     both = assemble(larger, fits, estimate.method, estimate.samples)
@@ -251,4 +275,4 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
                      (effs[0], effs[1]), tuple(float(x) for x in both.theta),
                      tuple(fallbacks), both.covariance * float(estimate.inflation),
                      open_loop, tuple(float(x) for x in estimate.offsets),
-                     tuple(float(x) for x in estimate.offset_errors))
+                     tuple(float(x) for x in estimate.offset_errors), (dofs[0], dofs[1]))
