@@ -60,6 +60,19 @@ incidental-parameter bias that does not shrink with more trials); it also triple
 spread of the estimates. Measured on simulated experiments
 (benchmarks/bench_identify_coverage.py).
 
+Offsets (``offset=True``, the default ``OFFSET``): an uncalibrated stick logs u_i with a
+constant added, which no model of the class produces from e (at rest, e = 0 gives
+u = 0), so the fit bends H(s) to explain it. Fitted without an offset term, 0.1 on the logged u_1
+of a simulated experiment moved a0_1 168 standard errors off its true value. The offset
+o_i is one more linear column (all ones) of output i's output-error fit
+(:func:`verify.identify.estimate.prediction.design`), solved with the numerator and the
+coupling; its covariance block is marginalised out, so H(s)'s covariance (and the 95 %
+region and every verdict drawn from it) accounts for it, and it is stored on the
+:class:`Estimate` (``offsets``, ``offset_errors``), never in H(s). On logs without an
+offset the term costs little: ``benchmarks/bench_identify_offset.py`` measures coverage
+and error with and without it, on data with and without an offset (results in the
+README, "Offsets").
+
 The state-space structure ``order:N`` is not yet supported (one-line error).
 """
 

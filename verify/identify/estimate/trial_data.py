@@ -140,16 +140,24 @@ MID_RESPONSE = 0.5
 
 
 def rest_level(trials: Sequence[Trial]) -> np.ndarray:
-    """The logged u at rest, per component: its median over every sample of ``trials``.
+    """The logged u at rest, per component: the median over ``trials`` of u averaged over
+    each trial's last ``START_WINDOW`` seconds.
 
-    In the loop the operator's responses are transients between long stretches near rest,
-    so the median is the rest level: 0 for a calibrated stick, the stick's offset
-    otherwise (an offset must not make a trial that begins at rest look mid-response).
+    A trial of the loop ends settled (the leader has reached the reference and the
+    operator's command has decayed), so its last samples are the stick at rest: 0 for a
+    calibrated stick, the stick's offset otherwise (an offset must not make a trial that
+    begins at rest look mid-response). The median over all samples is not that level:
+    the responses take a large share of a 15 s trial.
     """
-    u = [np.asarray(tr.u, float) for tr in trials if np.asarray(tr.u).shape[0]]
-    if not u:
-        return np.zeros(2)
-    return np.median(np.concatenate(u), axis=0)
+    ends = []
+    for tr in trials:
+        u = np.asarray(tr.u, float)
+        t = np.asarray(tr.t, float)
+        if u.shape[0] < 2:
+            continue
+        width = min(max(1, round(START_WINDOW / float(t[1] - t[0]))), u.shape[0])
+        ends.append(u[-width:].mean(axis=0))
+    return np.median(np.array(ends), axis=0) if ends else np.zeros(2)
 
 
 def mid_response(trial: Trial, rest: np.ndarray | None = None) -> float:
