@@ -58,7 +58,18 @@ alone, in-class operators on open-loop multisine logs of 4 trials gave likelihoo
 ratios of 4-14 (mean about 8, where chi-square with 2 degrees of freedom has 2) and
 p-values down to 9e-4 against the level 5e-4; the larger model had moved its extra pole
 to 0, where the free response it adds is a constant per trial. Counting 2 + T for T
-fitted initial states is what ``benchmarks/bench_identify_open_loop.py`` calibrates.
+fitted initial states was not enough: on 30 seeds x 2 in-class operators
+(``benchmarks/bench_identify_open_loop.py``, 4 trials, noise 0.002 on e and u) the
+likelihood ratio averaged OPEN_LOOP_MEAN against the 6 of chi-square with 6 degrees of
+freedom, and a quarter of the outputs had p < 0.05 (the extra pole's location is not
+identified under the smaller class, and the sensor noise on the logged e, which the
+operator never saw, is something a larger model can partly filter). On open-loop data
+the ratio is therefore divided by ``OPEN_LOOP_SCALE`` before the chi-square law is
+applied, the factor that bench measured (a Satterthwaite-style scaling, as the
+effective sample size does for coloured residuals); it is an empirical calibration for
+multisine logs like those, so the sentence calls the open-loop p-value calibrated on
+simulated multisine logs, and the third-order operator is still rejected with it
+(tests).
 
 **Offsets.** When the estimate has a constant offset per output (an uncalibrated stick,
 :attr:`verify.identify.estimate.result.Estimate.offsets`), both classes are fitted with
@@ -97,6 +108,9 @@ LEVEL = 5e-4
 DEGREES = 2
 #: Smallest R(e) / R(u) (roughness, module docstring) taken as open-loop data.
 OPEN_LOOP_ROUGHNESS = 0.6
+#: What the open-loop likelihood ratio is divided by: its mean over 2 + T on open-loop
+#: logs of in-class operators (module docstring).
+OPEN_LOOP_SCALE = 1.7
 #: Extra poles p (rad/s) of the larger fit's starts A(s)(s + p), below half the Nyquist
 #: frequency (module docstring).
 EMBEDDED_POLES = (0.3, 1.0, 3.0, 10.0, 30.0)
@@ -183,7 +197,9 @@ class ClassTest:
                 f"p = {ps} (chi-square, {dof} degrees of freedom; level {LEVEL:g} per "
                 f"output)" + (f"; {tail}" if tail else "")
                 + ("; open-loop data: both classes fitted with each trial's initial state "
-                   "estimated" if self.open_loop else "")
+                   f"estimated, the likelihood ratio divided by {OPEN_LOOP_SCALE:g} before the "
+                   "chi-square law (a calibration measured on simulated multisine logs)"
+                   if self.open_loop else "")
                 + (f"; {self.offset_text()}" if self.offsets else ""))
 
     def to_json(self) -> dict[str, object]:
@@ -198,6 +214,7 @@ class ClassTest:
                 "effective_samples": [four(x) for x in self.effective],
                 "rejected": self.rejected, "larger_fit_failed": list(self.fallbacks),
                 "open_loop": self.open_loop,
+                "open_loop_scale": OPEN_LOOP_SCALE if self.open_loop else 1.0,
                 "larger_theta": [four(x) for x in self.larger_theta],
                 "offsets": [four(x) for x in self.offsets],
                 "offset_standard_errors": [four(x) for x in self.offset_errors],
@@ -267,7 +284,7 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
         dof = DEGREES + sum(data.estimated(k) for k in range(len(data.y)))
         stats.append(lr)
         dofs.append(int(dof))
-        ps.append(float(chi2.sf(lr, dof)))
+        ps.append(float(chi2.sf(lr / (OPEN_LOOP_SCALE if open_loop else 1.0), dof)))
         effs.append(float(n_eff))
         fits.append(fit)
     both = assemble(larger, fits, estimate.method, estimate.samples)
