@@ -10,9 +10,11 @@ of the two shipped example operators (both in the paper's class), prepares them 
 protocol, estimates H(s) and runs the class test
 (:func:`verify.identify.quality.model_class.model_class_test`, which recognises open-loop
 data and refits both classes with each trial's initial state estimated). Under the null
-hypothesis (the operator is in the class) each output's likelihood ratio should follow
-roughly chi-square with 2 degrees of freedom. Printed: per output the likelihood ratios'
-quantiles against chi-square(2)'s, the fraction of p-values below 0.05, 0.01 and 1e-3, and
+hypothesis (the operator is in the class) each output's likelihood ratio, divided by the
+test's open-loop factor, should follow roughly chi-square with 2 + T degrees of freedom
+(T trials, each with one more initial state in the larger model). Printed: the raw
+likelihood ratios' mean over 2 + T (what the factor ``OPEN_LOOP_SCALE`` was set to) and
+their quantiles against chi-square(2 + T)'s, the fraction of p-values below 0.05, 0.01 and 1e-3, and
 the number of rejections at the test's level (5e-4 per output) with the exact binomial
 95 % interval of the false-rejection rate per experiment (the test rejects when either
 output does, nominal rate 1e-3). BLAS threads are pinned to 1 unless set.
@@ -38,7 +40,11 @@ from verify.identify.data.protocol import prepare  # noqa: E402
 from verify.identify.data.simulated_experiment import simulate_open_loop_experiment  # noqa: E402
 from verify.identify.estimate.estimation import estimate_model  # noqa: E402
 from verify.identify.estimate.structure import Structure  # noqa: E402
-from verify.identify.quality.model_class import LEVEL, model_class_test  # noqa: E402
+from verify.identify.quality.model_class import (  # noqa: E402
+    LEVEL,
+    OPEN_LOOP_SCALE,
+    model_class_test,
+)
 
 
 def clopper_pearson(hits: int, count: int) -> tuple[float, float]:
@@ -80,12 +86,15 @@ def main() -> None:
           f"recognised as open loop: {sum(open_loop)} of {count}; "
           f"{time.process_time() - start:.0f} s CPU")
     qs = (0.5, 0.9, 0.95, 0.99)
-    print("likelihood ratio quantiles " + ", ".join(
-        f"{q:g}: {np.quantile(stats_a, q):.3g} (chi2(2) {chi2.ppf(q, 2):.3g})" for q in qs))
-    print(f"mean likelihood ratio {stats_a.mean():.3g} (chi2(2): 2); largest "
-          f"{stats_a.max():.3g} (p = {chi2.sf(stats_a.max(), 2):.3g})")
+    dof = 2 + args.trials
+    print("raw likelihood ratio quantiles " + ", ".join(
+        f"{q:g}: {np.quantile(stats_a, q):.3g} (chi2({dof}) {chi2.ppf(q, dof):.3g})"
+        for q in qs))
+    print(f"mean raw likelihood ratio {stats_a.mean():.3g}, over {dof}: "
+          f"{stats_a.mean() / dof:.3g} (the test divides by OPEN_LOOP_SCALE = "
+          f"{OPEN_LOOP_SCALE:g}); largest {stats_a.max():.3g}")
     for level in (0.05, 0.01, 1e-3, LEVEL):
-        print(f"p < {level:g}: {np.sum(ps_a < level)} of {len(ps_a)} outputs "
+        print(f"test's p < {level:g}: {np.sum(ps_a < level)} of {len(ps_a)} outputs "
               f"({100 * np.mean(ps_a < level):.1f} %, nominal {100 * level:g} %)")
     hits = int(sum(rejected))
     lo, hi = clopper_pearson(hits, count)
