@@ -25,6 +25,13 @@ work (220-800 s per setting). Coverage per parameter / joint ellipsoid:
   rest (the command's handling now): 100 % / 100 %, the estimates within 0.01 of the
   coasted ones on average.
 
+With the offset term (on by default since) and starts ranked inside the search box,
+more seeds, one process at ``nice`` on the shared machine: 120 Hz with 2-5 s reset
+pauses, seeds 1010-1019 (957 s): b0_1, a0_1 90 %, the rest 100 % / joint 100 %; 250 Hz,
+seeds 1020-1029 (1163 s): b1_2, a1_2 90 %, the rest 100 % / joint 100 %. Over all the
+seeds so far: pauses 19-20 of 20 per parameter, 20 of 20 jointly; 250 Hz 28-30 of 30
+per parameter (a1_2 28), 30 of 30 jointly.
+
 Ten seeds bound little: the exact binomial 95 % interval of 9/10 is 55.5-99.7 %, of
 10/10 69.2-100 %. The lowest fit ratio on the noisy data over outputs and seeds was
 9.3-11.6 % at the four rates (9.5 % in the second 250 Hz run) and 4.9 % with pauses
