@@ -340,8 +340,17 @@ def _offset_table(est: Estimate) -> dict[str, Any]:
     table (nuisance parameters: not part of the model's H(s)), or nothing."""
     if not est.offsets:
         return {"offsets": "not estimated"}
-    return {"offsets": [canonical(x) for x in est.offsets],
+    return {"offsets": _offset_values(est),
             "offset_standard_errors": [canonical(x) for x in est.offset_errors]}
+
+
+def _offset_values(est: Estimate) -> list[float]:
+    """The offsets to the digits their standard errors justify, as the coefficients are
+    written (float noise far below them never changes a written digit)."""
+    from verify.identify.model.model_writer import coefficient_text
+
+    return [float(coefficient_text(x, e)) for x, e in
+            zip(est.offsets, est.offset_errors, strict=True)]
 
 
 def residual_tests(q: Any) -> dict[str, Any]:
@@ -552,7 +561,7 @@ def summary_json(o: Outcome) -> dict[str, Any]:
                      "written": [str(x) for x in o.ident.center],
                      "standard_errors": [canonical(math.sqrt(max(v, 0.0)))
                                          for v in np.diag(est.covariance)],
-                     "offsets": [canonical(x) for x in est.offsets],
+                     "offsets": _offset_values(est),
                      "offset_standard_errors": [canonical(x) for x in est.offset_errors]},
         "fit": {"identification": [canonical(x) for x in q.fit_identification],
                 "validation": [canonical(x) for x in q.fit_validation],
