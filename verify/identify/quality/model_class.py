@@ -72,7 +72,8 @@ applied, the factor that bench measured (a Satterthwaite-style scaling, as the
 effective sample size does for coloured residuals); it is an empirical calibration for
 multisine logs like those, so the sentence calls the open-loop p-value calibrated on
 simulated multisine logs, and the third-order operator is still rejected with it
-(tests).
+(tests). Out of sample (seeds 31-50, 40 experiments) the raw ratio averaged 1.72 times
+2 + T, 1 of 80 outputs had p < 0.05 after the scaling and none was rejected.
 
 **Offsets.** When the estimate has a constant offset per output (an uncalibrated stick,
 :attr:`verify.identify.estimate.result.Estimate.offsets`), both classes are fitted with
