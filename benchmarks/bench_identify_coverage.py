@@ -28,9 +28,12 @@ work (220-800 s per setting). Coverage per parameter / joint ellipsoid:
 With the offset term (on by default since) and starts ranked inside the search box,
 more seeds, one process at ``nice`` on the shared machine: 120 Hz with 2-5 s reset
 pauses, seeds 1010-1019 (957 s): b0_1, a0_1 90 %, the rest 100 % / joint 100 %; 250 Hz,
-seeds 1020-1029 (1163 s): b1_2, a1_2 90 %, the rest 100 % / joint 100 %. Over all the
-seeds so far: pauses 19-20 of 20 per parameter, 20 of 20 jointly; 250 Hz 28-30 of 30
-per parameter (a1_2 28), 30 of 30 jointly.
+seeds 1020-1029 (1163 s): b1_2, a1_2 90 %, the rest 100 % / joint 100 %; then, on a
+quieter machine, 20 and 50 Hz seeds 1010-1059 (50 each), 120 Hz seeds 1010-1044 (35)
+and pauses seeds 1020-1034. With the current estimator: 20 Hz 46-50 of 50 per parameter
+(b0_1, a0_1 46), joint 50; 50 Hz 48-50 of 50, joint 49; 120 Hz 32-35 of 35 (a1_2, b1_2
+32; a1_2 22 of 25 in the second batch), joint 35; pauses 23-25 of 25 (b0_1 23), joint
+24. 250 Hz over all 30 seeds: 28-30 of 30 per parameter (a1_2 28), 30 of 30 jointly.
 
 Ten seeds bound little: the exact binomial 95 % interval of 9/10 is 55.5-99.7 %, of
 10/10 69.2-100 %. The lowest fit ratio on the noisy data over outputs and seeds was
