@@ -52,28 +52,13 @@ __all__ = ["PAPER_THETA", "biproper_model", "correlated_covariance", "open_loop_
 
 def open_loop_log(model, *, trials: int = 6, seconds: float = 15.0, rate: float = 120.0,
                   noise: float = 0.002, seed: int = 0):
-    """A fast synthetic experiment log: u = H e + white noise for smooth random e.
+    """A fast synthetic experiment log: u = H e + white noise for a multisine e
+    (:func:`verify.identify.data.simulated_experiment.simulate_open_loop_experiment`).
 
-    Not the closed loop of Section 4 (that is ``verify.identify.data.simulated_experiment``,
-    slower): enough to exercise the command's files, verdicts and exit codes.
+    Not the closed loop of Section 4 (that is ``simulate_experiment``, slower): enough to
+    exercise the command's files, verdicts and exit codes.
     """
-    from scipy import signal
+    from verify.identify.data.simulated_experiment import simulate_open_loop_experiment
 
-    from verify.inputs.experiment import ExperimentLog, Trial
-
-    rng = np.random.default_rng(seed)
-    h = 1.0 / rate
-    A, B, C, D = (np.asarray(x, dtype=float) for x in (model.A, model.B, model.C, model.D))
-    Ad, Bd, Cd, Dd, _ = signal.cont2discrete((A, B, C, D), h, method="foh")
-    out = []
-    for k in range(trials):
-        t = k * seconds + np.arange(round(seconds * rate)) * h
-        freqs = rng.uniform(0.1, 4.0, size=(2, 8))
-        phases = rng.uniform(0, 2 * np.pi, size=(2, 8))
-        e = np.column_stack([np.sum(0.3 * np.sin(np.outer(t - t[0], freqs[i]) + phases[i]),
-                                    axis=1) / np.sqrt(8) for i in range(2)])
-        _, y, _ = signal.dlsim((Ad, Bd, Cd, Dd, h), e)
-        u = y + noise * rng.standard_normal(y.shape)
-        e = e + noise * rng.standard_normal(e.shape)
-        out.append(Trial(k, t, e, u, start=float(t[0])))
-    return ExperimentLog(tuple(out), rate, "synthetic open loop")
+    return simulate_open_loop_experiment(model, trials=trials, seconds=seconds, rate=rate,
+                                         noise=noise, seed=seed)

@@ -87,7 +87,8 @@ def shipped():
     for name in ("passive_human", "nonpassive_human"):
         prepared = prepare(read_logs([LOGS / f"{name}.npz"]), rate=None, split=(6, 6))
         est = estimate_model(prepared.identification, Structure.paper())
-        out[name] = (est, passivity_test(prepared.identification, est.theta))
+        out[name] = (est, passivity_test(prepared.identification, est.theta,
+                                         offset=bool(est.offsets)))
     return out
 
 

@@ -69,3 +69,6 @@ def test_identify_progress_names_each_stage(tmp_path, capsys):
     assert any(s.startswith("estimating the model") for s in stages)
     assert stages[-1].startswith("writing the files") or any(
         "cannot" in s for s in stages)
+    # the passive fit, once one silent stage of about 28 s, names its four fits
+    fits = [s.split("(fit ")[1] for s in stages if s.startswith("passivity test:")]
+    assert fits in ([], ["1 of 4)", "2 of 4)", "3 of 4)", "4 of 4)"])

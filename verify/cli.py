@@ -224,6 +224,9 @@ def _build_parser() -> argparse.ArgumentParser:
     p_id.add_argument("--progress", action="store_true",
                       help="stage lines on stderr even when it is not a terminal (on a "
                       "terminal they are shown anyway)")
+    p_id.add_argument("--no-offset", dest="offset", action="store_false", default=None,
+                      help="do not estimate a constant offset per output (an uncalibrated "
+                      "stick); by default it is estimated as a nuisance parameter")
 
     p_cert = sub.add_parser("certificates", help="certificates/ tools")
     cert_sub = p_cert.add_subparsers(dest="cert_command", metavar="ACTION", required=True)
@@ -656,7 +659,7 @@ def _cmd_identify(args: argparse.Namespace) -> int:
     return run_identify(IdentifySettings(
         logs=tuple(args.logs), structure=args.structure, rate=args.rate, split=args.split,
         band=args.band, out=args.out, json=args.json, junit=args.junit, name=args.name,
-        progress=args.progress))
+        progress=args.progress, offset=args.offset))
 
 
 def _cmd_campaign(args: argparse.Namespace) -> int:

@@ -76,6 +76,7 @@ class IdentifySettings:
     name: str | None = None
     max_boxes: int = 40_000
     progress: bool = False  # stage lines on stderr even when it is not a terminal
+    offset: bool | None = None  # estimate a constant offset per output (None: the default)
 
 
 @dataclass(frozen=True)
@@ -92,6 +93,7 @@ class Plan:
     junit: Path | None
     name: str
     max_boxes: int
+    offset: bool = True
 
 
 def parse_split(text: str) -> tuple[int, int]:
@@ -162,9 +164,12 @@ def validate(settings: IdentifySettings) -> Plan:
                                "output of verify identify (it would be replaced); choose a "
                                "new or empty directory")
     name = settings.name or Path(settings.logs[0]).stem
+    from verify.identify.estimate.estimation import OFFSET
+
+    offset = OFFSET if settings.offset is None else bool(settings.offset)
     return Plan(tuple(Path(p) for p in settings.logs), structure, parse_rate(settings.rate),
                 parse_split(settings.split), band, settings.out, settings.json,
-                settings.junit, name, settings.max_boxes)
+                settings.junit, name, settings.max_boxes, offset)
 
 
 # ------------------------------------------------------------------ data -> estimate
@@ -217,10 +222,12 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
         dead_time_gaps,
         fresh_starts,
         mid_response,
+        rest_level,
     )
 
     gaps = dead_time_gaps(trials)
     fresh = fresh_starts(trials)
+    level = rest_level(trials)
     carried = [g for g in gaps[1:] if g is not None]
     paused, rest = [], []
     for prev, tr, g in zip(trials, trials[1:], gaps[1:], strict=False):
@@ -244,11 +251,13 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
                    "move forward)")
     for tr, is_fresh in zip(trials, fresh, strict=True):
         if is_fresh:
+            share = 100 * mid_response(tr, level)
             out.append(f"warning: trial {tr.trial} (from t = {float(tr.t[0]):.4g} s) begins "
-                       f"mid-response (u over its first 0.25 s at {100 * mid_response(tr):.0f} "
-                       "% of its largest value): logging started during a response, so its "
-                       "initial state is estimated, not taken as rest (in closed loop that "
-                       "estimate is biased; log from before the response where possible)")
+                       f"mid-response (u over its first 0.25 s, from the rest level, at "
+                       f"{share:.0f} % of its largest value): logging started during a "
+                       "response, so its initial state is estimated, not taken as rest "
+                       "(in closed loop that estimate is biased; log from before the "
+                       "response where possible)")
     return tuple(out)
 
 
@@ -281,7 +290,8 @@ def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identifi
         shape = {"paper": "the paper's structure", "order": f"order {st.states}"}.get(
             st.kind, f"structure {st.poles}:{st.zeros}")
         stage(f"estimating the model ({shape}) from {len(ids)} trial(s)")
-        estimate = estimate_model(prepared.identification, plan.structure)
+        estimate = estimate_model(prepared.identification, plan.structure,
+                                  offset=plan.offset)
     except CannotIdentifyError as exc:
         gate = identifiability.Identifiability(False, (str(exc),), figures)
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
@@ -302,13 +312,14 @@ def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identifi
                    else None)
     if gate.identifiable:
         stage("fitting the best passive model of the class (passivity test)")
-    passivity = (_passivity(estimate, prepared.identification, model_class)
+    passivity = (_passivity(estimate, prepared.identification, model_class, stage)
                  if gate.identifiable else None)
     return Identified(estimate, quality, prepared.rate, (ids, vals), prepared.notes, gate,
                       joins, passivity, model_class)
 
 
-def _passivity(estimate: Estimate, trials, model_class: Any) -> Any:
+def _passivity(estimate: Estimate, trials, model_class: Any,
+               stage: Callable[[str], None] = silent) -> Any:
     """Can the data reject passivity (:mod:`verify.identify.robust.passive_fit`), asked
     only where the fitted class holds: when the data reject the class, the best passive
     model *of the class* against the best model of the class says nothing about the
@@ -321,7 +332,25 @@ def _passivity(estimate: Estimate, trials, model_class: Any) -> Any:
                 f"{model_class.larger_text()}, so whether a passive model of the class "
                 "explains the data says nothing about the operator (fit the larger class, "
                 f"--structure {model_class.larger_text()}, to ask it there)")
-    return test_or_reason(estimate, trials)
+    return test_or_reason(estimate, trials, stage)
+
+
+def _offset_table(est: Estimate) -> dict[str, Any]:
+    """The estimated offsets of the logged outputs for the model file's [identification]
+    table (nuisance parameters: not part of the model's H(s)), or nothing."""
+    if not est.offsets:
+        return {"offsets": "not estimated"}
+    return {"offsets": _offset_values(est),
+            "offset_standard_errors": [canonical(x) for x in est.offset_errors]}
+
+
+def _offset_values(est: Estimate) -> list[float]:
+    """The offsets to the digits their standard errors justify, as the coefficients are
+    written (float noise far below them never changes a written digit)."""
+    from verify.identify.model.model_writer import coefficient_text
+
+    return [float(coefficient_text(x, e)) for x, e in
+            zip(est.offsets, est.offset_errors, strict=True)]
 
 
 def residual_tests(q: Any) -> dict[str, Any]:
@@ -425,6 +454,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
         "trials_validation": identified.trials[1],
         "samples": int(est.samples),
         "noise_std": [canonical(x) for x in est.noise_std],
+        **_offset_table(est),
         "fit_identification": [canonical(x) for x in q.fit_identification],
         "fit_validation": [canonical(x) for x in q.fit_validation],
         "fit_initial_condition": q.initial,
@@ -530,7 +560,9 @@ def summary_json(o: Outcome) -> dict[str, Any]:
                      "theta": [float(x) for x in o.ident.center],
                      "written": [str(x) for x in o.ident.center],
                      "standard_errors": [canonical(math.sqrt(max(v, 0.0)))
-                                         for v in np.diag(est.covariance)]},
+                                         for v in np.diag(est.covariance)],
+                     "offsets": _offset_values(est),
+                     "offset_standard_errors": [canonical(x) for x in est.offset_errors]},
         "fit": {"identification": [canonical(x) for x in q.fit_identification],
                 "validation": [canonical(x) for x in q.fit_validation],
                 "initial_condition": q.initial},
@@ -630,6 +662,11 @@ def lines(o: Outcome) -> list[str]:
     out.append("  parameters: " + ", ".join(
         f"{n} = {float(c):.10g} ± {s:.2g}" for n, c, s in zip(est.names, o.ident.center, se,
                                                             strict=True)))
+    if est.offsets:
+        out.append("  offsets of the logged u (estimated with the model, not part of "
+                   "H(s)): " + ", ".join(f"u{i + 1} {x:+.3g} ± {s:.2g}" for i, (x, s) in
+                                         enumerate(zip(est.offsets, est.offset_errors,
+                                                       strict=True))))
     out.append(f"  model file: {o.model_path}")
     d = o.nominal.decision
     out.append(f"  nominal ({'all frequencies' if o.plan.band is None else o.robust.where()})"

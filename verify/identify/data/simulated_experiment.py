@@ -13,6 +13,11 @@ and u_h = first two components of omega_h^b (the operator's output).
 seeded reaction time per trial ended by the start event), and adds measurement noise to
 the logged e and u. The run becomes trials by
 :func:`verify.sim.experiment_log.trajectory_trials`.
+
+Conditions labs log in, each from a known operator: :func:`simulate_paused_experiment`
+(reset pauses between trials), :func:`with_output_offset` (an uncalibrated stick: a
+constant on the logged u) and :func:`simulate_open_loop_experiment` (no loop: a
+multisine e drives the operator).
 """
 
 from __future__ import annotations
@@ -188,3 +193,53 @@ def simulate_paused_experiment(true_model, *, pauses: tuple[float, float] = (2.0
         clock += one.t.shape[0]
     return ExperimentLog(tuple(out), rate, f"simulated experiment with reset pauses "
                          f"{lo:g}-{hi:g} s between {trials} trials, seed {seed}")
+
+
+def with_output_offset(log: ExperimentLog, offset: tuple[float, float]) -> ExperimentLog:
+    """``log`` with the constant ``offset`` added to the logged u of every trial: an
+    uncalibrated stick, whose reading is off by a constant the loop never saw."""
+    o = np.array([real(v, "offset") for v in offset], float)
+    if o.shape != (2,):
+        raise VerifyInputError(f"offset must be two numbers (u1, u2), got {offset!r}")
+    trials = tuple(Trial(tr.trial, tr.t, tr.e, np.asarray(tr.u, float) + o,
+                         reference=tr.reference, start=tr.start) for tr in log.trials)
+    return ExperimentLog(trials, log.rate, f"{log.source}; offset {o[0]:g}, {o[1]:g} on u")
+
+
+def simulate_open_loop_experiment(true_model, *, trials: int = 6, seconds: float = 15.0,
+                                  rate: float = 120.0, noise: float = 0.002, seed: int = 0,
+                                  sines: int = 8) -> ExperimentLog:
+    """Open-loop trials of ``true_model``: u = H e + white noise, e a multisine.
+
+    Each trial's e is a sum of ``sines`` sines per component (frequencies uniform in
+    0.1-4 rad/s, random phases, amplitude 0.3 / sqrt(sines)), the operator starts each
+    trial at rest, the trials are logged back to back (a start event on each first
+    sample), and white noise of standard deviation ``noise`` is added to the logged e
+    and u. Not the loop of Section 4: e does not depend on u.
+    """
+    from scipy import signal
+
+    rate = positive_real(rate, "rate")
+    seconds = positive_real(seconds, "seconds")
+    if not (isinstance(trials, int) and trials >= 1 and isinstance(sines, int) and sines >= 1):
+        raise VerifyInputError(f"trials and sines must be positive integers, got "
+                               f"trials={trials!r}, sines={sines!r}")
+    rng = np.random.default_rng(seed)
+    h = 1.0 / rate
+    A, B, C, D = (np.asarray(x, dtype=float) for x in (true_model.A, true_model.B,
+                                                        true_model.C, true_model.D))
+    Ad, Bd, Cd, Dd, _ = signal.cont2discrete((A, B, C, D), h, method="foh")
+    out = []
+    for k in range(trials):
+        t = k * seconds + np.arange(round(seconds * rate)) * h
+        freqs = rng.uniform(0.1, 4.0, size=(2, sines))
+        phases = rng.uniform(0, 2 * np.pi, size=(2, sines))
+        e = np.column_stack([np.sum(0.3 * np.sin(np.outer(t - t[0], freqs[i]) + phases[i]),
+                                    axis=1) / np.sqrt(sines) for i in range(2)])
+        _, y, _ = signal.dlsim((Ad, Bd, Cd, Dd, h), e)
+        u = y + noise * rng.standard_normal(y.shape)
+        e = e + noise * rng.standard_normal(e.shape)
+        out.append(Trial(k, t, e, u, start=float(t[0])))
+    return ExperimentLog(tuple(out), rate, f"simulated open-loop experiment: "
+                         f"{true_model.name}, {trials} trials x {seconds:g} s at {rate:g} Hz, "
+                         f"multisine e, noise {noise:g}, seed {seed}")

@@ -28,8 +28,9 @@ constants of a few tenths of a second, Section 4), whatever the logging rate: a 
 20 lags covered 1 s at 20 Hz but 0.08 s at 250 Hz, and there the 95 % region held the
 true operator in 3 of 7 simulated experiments against 8 of 8 at 120 Hz. The coverage at
 20-250 Hz with a 1 s window is measured in ``benchmarks/bench_identify_coverage.py``.
-The initial states are nuisance parameters; the covariance of H(s)'s parameters is the
-corresponding block of the full matrix (so their uncertainty is accounted for).
+The initial states and the output's offset (when estimated) are nuisance parameters; the
+covariance of H(s)'s parameters is the corresponding block of the full matrix (so their
+uncertainty is accounted for).
 """
 
 from __future__ import annotations
@@ -72,7 +73,9 @@ class OutputFit:
     prediction errors (whitened when there is a noise model), ``cost`` their sum of
     squares, ``covariance`` of (b, a, c) in that order (asymptotic), ``sigma`` the
     prediction-error standard deviation, ``noise`` the whitening filter
-    (1, d_1, ..., d_p) of the noise model v = e / D(q) (just (1,) for output error).
+    (1, d_1, ..., d_p) of the noise model v = e / D(q) (just (1,) for output error);
+    ``offset`` the estimated constant on the output and ``offset_variance`` its
+    (asymptotic) variance, 0 and 0 when no offset is estimated.
     """
 
     b: np.ndarray
@@ -84,6 +87,8 @@ class OutputFit:
     covariance: np.ndarray
     sigma: float
     noise: np.ndarray = field(default_factory=lambda: np.ones(1))
+    offset: float = 0.0
+    offset_variance: float = 0.0
 
 
 def covariance_lags(h: float, lengths: Sequence[int] = (),
@@ -155,7 +160,8 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
     beta, r, X = fit_linear(a, data, zeros, w)
     b = beta[: zeros + 1]
     c = float(beta[zeros + 1])
-    eta = beta[zeros + 2:]
+    shared = data.shared(zeros)
+    eta = beta[shared:]
     # Jacobian of the (whitened) prediction error in (b, a, c, initial states, d):
     # linear columns are the whitened X; the denominator's by central differences of
     # X(a) beta with beta fixed; d_k's the raw output error delayed by k samples
@@ -169,8 +175,8 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
                         ) / (2 * step)
     Xw = used(X, data, w)
     free = [col for k in range(len(data.y)) if data.estimated(k)
-            for col in range(zeros + 2 + k * n, zeros + 2 + (k + 1) * n)]
-    tail = Xw[:, [zeros + 1, *free]]
+            for col in range(shared + k * n, shared + (k + 1) * n)]
+    tail = Xw[:, [*range(zeros + 1, shared), *free]]  # c, the offset, initial states
     columns = [Xw[:, : zeros + 1], Ja, tail]
     if len(d):
         raw = np.concatenate(data.y) - X @ beta
@@ -198,7 +204,10 @@ def refine(data: OutputData, a0: np.ndarray, zeros: int, d0: np.ndarray | None =
     cov = full[:p, :p]
     noise = np.concatenate(([1.0], d))
     initial = eta.reshape(-1, n)  # zero for the trials whose state is not fitted
-    return OutputFit(b, a, c, initial, r, rss, cov, float(np.sqrt(sigma2)), noise)
+    offset, offset_variance = ((float(beta[zeros + 2]), float(full[p, p])) if data.offset
+                               else (0.0, 0.0))
+    return OutputFit(b, a, c, initial, r, rss, cov, float(np.sqrt(sigma2)), noise, offset,
+                     offset_variance)
 
 
 def _noise_weighted(J: np.ndarray, r: np.ndarray, lengths: list[int], lags: int,

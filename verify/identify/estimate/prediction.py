@@ -2,12 +2,14 @@
 
 For one output of the constant-coupling structures (Section 4, "Human Modeling"),
 
-    yhat_i = B_i(s)/A_i(s) e_i + c_ij e_j + (a free response of A_i per trial),
+    yhat_i = B_i(s)/A_i(s) e_i + c_ij e_j [+ o_i] + (a free response of A_i per trial),
 
 simulated from the measured inputs (first-order hold, :mod:`verify.identify.estimate.ct_filters`).
-For a fixed denominator A_i the output is linear in the numerator, the coupling and the
-initial state of each trial, so those are solved by linear least squares and only A_i is
-searched (variable projection, Golub & Pereyra, SIAM J. Numer. Anal. 10(2), 1973).
+o_i an optional constant offset of the logged output (``OutputData.offset``: an
+uncalibrated stick). For a fixed denominator A_i the output is linear in the numerator,
+the coupling, the offset and the initial state of each trial, so those are solved by
+linear least squares and only A_i is searched (variable projection, Golub & Pereyra,
+SIAM J. Numer. Anal. 10(2), 1973).
 
 How a trial starts (``OutputData.initial``): "estimate" fits each trial's free response
 (n numbers per trial; a re-initialised figure that absorbs transients, never what the
@@ -45,10 +47,12 @@ __all__ = ["INITIAL_STATES", "design", "element_parameters", "fit_linear", "leng
 
 
 def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
-    """Regressors of output data for denominator ``a``, shape (N, zeros + 2 + T n).
+    """Regressors of output data for denominator ``a``, shape (N, p + T n) with
+    p = ``data.shared(zeros)``.
 
-    Columns: s^k/A e_i for k = zeros..0, then e_j, then per trial the n free responses of
-    A (zero outside that trial). With ``data.initial == "carry"`` the filter of a trial
+    Columns: s^k/A e_i for k = zeros..0, then e_j, then a column of ones when
+    ``data.offset``, then per trial the n free responses of A (zero outside that trial).
+    With ``data.initial == "carry"`` the filter of a trial
     with a dead-time gap starts from the state the previous trial ended in, coasted over
     the gap (:class:`verify.identify.estimate.trial_data.OutputData`); otherwise from rest.
     """
@@ -57,7 +61,10 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
     filt = Filter(a, data.h)
     T = len(data.y)
     total = data.samples
-    X = np.zeros((total, zeros + 2 + T * n))
+    p = data.shared(zeros)
+    X = np.zeros((total, p + T * n))
+    if data.offset:
+        X[:, zeros + 2] = 1.0
     row = 0
     end = None
     lead = data.h
@@ -77,7 +84,7 @@ def design(a: np.ndarray, data: OutputData, zeros: int) -> np.ndarray:
             end = filt.held(Z[-1, :n], own[-1], lead, slope)
         X[row:row + N, : zeros + 1] = Z[:, zeros::-1]
         X[row:row + N, zeros + 1] = other
-        col = zeros + 2 + k * n
+        col = p + k * n
         X[row:row + N, col:col + n] = free
         row += N
     return X
@@ -123,7 +130,8 @@ def lengths(data: OutputData, w: np.ndarray | None) -> list[int]:
 
 def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None = None
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(beta, residual, X): the least-squares numerator, coupling and initial states for
+    """(beta, residual, X): the least-squares numerator, coupling, offset and initial
+    states for
     denominator ``a`` (columns as :func:`design`), the residual and X.
 
     With a whitening filter ``w`` (see :func:`whiten`) the least squares and the
@@ -131,11 +139,11 @@ def fit_linear(a: np.ndarray, data: OutputData, zeros: int, w: np.ndarray | None
     Box-Jenkins model with noise 1/D(q) times white noise); without, the output error
     y - X beta. The initial states are eliminated trial by trial (projection onto the
     orthogonal complement of the trial's free responses), so the shared least-squares
-    problem has only zeros + 2 columns.
+    problem has only ``data.shared(zeros)`` columns.
     """
     X = design(a, data, zeros)
     y = np.concatenate(data.y)
-    p = zeros + 2
+    p = data.shared(zeros)
     n = len(a)
     if not np.all(np.isfinite(X)):
         return np.full(X.shape[1], np.nan), np.full(used(y, data, w).shape, np.inf), X
@@ -180,21 +188,23 @@ def element_parameters(structure: Structure, theta: Sequence[float], i: int
 
 
 def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
-                   initial: str = "estimate") -> np.ndarray:
+                   initial: str = "estimate", offset: float = 0.0) -> np.ndarray:
     """The model's output i over all trials (concatenated) from the measured inputs.
 
     ``initial``: "estimate" (each trial's initial state by least squares), "carry" or
-    "zero" (module docstring).
+    "zero" (module docstring); ``offset``: the constant added to the output (an
+    estimated offset of the logged output, not refitted here).
     """
     if initial not in INITIAL_STATES:
         raise ValueError(f"initial must be one of {', '.join(INITIAL_STATES)}, got {initial!r}")
     zeros = len(b) - 1
-    data = replace(data, initial=initial)
+    data = replace(data, initial=initial, offset=False)
     X = design(a, data, zeros)
-    forced = X[:, : zeros + 1] @ np.asarray(b, float) + c * X[:, zeros + 1]
+    forced = X[:, : zeros + 1] @ np.asarray(b, float) + c * X[:, zeros + 1] + float(offset)
     n = len(a)
+    p = data.shared(zeros)
     columns = [col for k in range(len(data.y)) if data.estimated(k)
-               for col in range(zeros + 2 + k * n, zeros + 2 + (k + 1) * n)]
+               for col in range(p + k * n, p + (k + 1) * n)]
     if not columns:
         return forced
     F = X[:, columns]
@@ -204,13 +214,15 @@ def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
 
 
 def predict(structure: Structure, theta: Sequence[float], trials: Sequence[Trial], *,
-            initial: str = "estimate") -> list[np.ndarray]:
-    """The model's (N, 2) output per trial, simulated from the trials' measured inputs."""
+            initial: str = "estimate", offsets: Sequence[float] = ()) -> list[np.ndarray]:
+    """The model's (N, 2) output per trial, simulated from the trials' measured inputs,
+    plus ``offsets`` (one constant per output, :attr:`Estimate.offsets`; none: zero)."""
     h = check_trials(trials, structure, what="the simulation of a model")
     sizes = [np.asarray(tr.t).shape[0] for tr in trials]
     columns = []
     for i in (0, 1):
         b, a, c = element_parameters(structure, theta, i)
-        columns.append(predict_output(b, a, c, output_data(trials, i, h), initial=initial))
+        columns.append(predict_output(b, a, c, output_data(trials, i, h), initial=initial,
+                                      offset=float(offsets[i]) if len(offsets) else 0.0))
     both = np.column_stack(columns)
     return np.split(both, np.cumsum(sizes)[:-1])

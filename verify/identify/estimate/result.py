@@ -43,7 +43,10 @@ class Estimate:
     white noise through 1/D(q) (Box-Jenkins with AR noise); (1.0,) or empty means white
     output noise (output error). ``inflation`` is the factor the covariance was
     multiplied by for few trials (:func:`verify.identify.estimate.estimation.few_trials_factor`),
-    1 when none.
+    1 when none. ``offsets`` are the estimated constants on the logged outputs u_1, u_2 and
+    ``offset_errors`` their standard errors (widened like the covariance); both empty
+    when no offset was estimated. The offsets are nuisance parameters: H(s) is
+    ``theta`` alone, and ``covariance`` (of ``theta``) already accounts for them.
     """
 
     structure: Structure
@@ -56,6 +59,8 @@ class Estimate:
     covariance_kind: str = "asymptotic"
     noise_model: tuple[tuple[float, ...], ...] = ()
     inflation: float = 1.0
+    offsets: tuple[float, ...] = ()
+    offset_errors: tuple[float, ...] = ()
 
     def standard_errors(self) -> np.ndarray:
         """Square roots of the covariance's diagonal, in ``names`` order."""
@@ -63,8 +68,9 @@ class Estimate:
 
 
 def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, samples: int,
-             covariance_kind: str = "asymptotic") -> Estimate:
-    """The :class:`Estimate` of two output fits, parameters ordered as ``structure.names()``."""
+             covariance_kind: str = "asymptotic", *, offset: bool = False) -> Estimate:
+    """The :class:`Estimate` of two output fits, parameters ordered as ``structure.names()``
+    (with their offsets when ``offset``: the fits estimated one)."""
     per = structure.zeros + 1 + structure.poles
     theta = np.empty(2 * per + 2)
     cov = np.zeros((2 * per + 2, 2 * per + 2))
@@ -76,4 +82,7 @@ def assemble(structure: Structure, fits: Sequence[OutputFit], method: str, sampl
     return Estimate(structure, theta, cov, structure.names(), method,
                     np.array([fit.sigma for fit in fits]), samples,
                     covariance_kind=covariance_kind,
-                    noise_model=tuple(tuple(float(v) for v in fit.noise) for fit in fits))
+                    noise_model=tuple(tuple(float(v) for v in fit.noise) for fit in fits),
+                    offsets=tuple(float(fit.offset) for fit in fits) if offset else (),
+                    offset_errors=tuple(float(np.sqrt(max(fit.offset_variance, 0.0)))
+                                        for fit in fits) if offset else ())

@@ -18,7 +18,7 @@ from verify.identify.estimate.structure import Structure
 from verify.inputs.experiment import Trial
 
 __all__ = ["MAX_CARRY_GAP", "MID_RESPONSE", "START_WINDOW", "OutputData", "check_trials",
-           "dead_time_gaps", "fresh_starts", "mid_response", "output_data"]
+           "dead_time_gaps", "fresh_starts", "mid_response", "output_data", "rest_level"]
 
 
 @dataclass(frozen=True)
@@ -36,6 +36,9 @@ class OutputData:
     input still acts (one step unless the trial says otherwise, :attr:`Trial.end`).
     ``free[k]`` (with "carry") says that trial k's initial state is estimated instead:
     it starts neither from a carried state nor visibly at rest (:func:`mid_response`).
+    ``offset`` adds a constant to the output, estimated with the other parameters (an
+    uncalibrated stick: the logged u_i is off by a constant; a nuisance parameter, not
+    part of H(s)).
     """
 
     output: int
@@ -48,10 +51,16 @@ class OutputData:
     gaps: tuple[float | None, ...] = ()
     ahead: tuple[float, ...] = ()
     free: tuple[bool, ...] = ()
+    offset: bool = False
 
     @property
     def samples(self) -> int:
         return sum(len(y) for y in self.y)
+
+    def shared(self, zeros: int) -> int:
+        """Columns of the regressors shared by all trials: the numerator's zeros + 1, the
+        coupling, and the offset when there is one (the trials' initial states follow)."""
+        return zeros + 2 + int(self.offset)
 
     def estimated(self, k: int) -> bool:
         """True if trial k's initial state is a fitted parameter."""
@@ -130,10 +139,32 @@ START_WINDOW = 0.25
 MID_RESPONSE = 0.5
 
 
-def mid_response(trial: Trial) -> float:
-    """How far into a response trial ``trial`` begins: the size of u averaged over its
-    first ``START_WINDOW`` seconds relative to the largest such average over the trial
-    (0: at rest, 1: at the peak).
+def rest_level(trials: Sequence[Trial]) -> np.ndarray:
+    """The logged u at rest, per component: the median over ``trials`` of u averaged over
+    each trial's last ``START_WINDOW`` seconds.
+
+    A trial of the loop ends settled (the leader has reached the reference and the
+    operator's command has decayed), so its last samples are the stick at rest: 0 for a
+    calibrated stick, the stick's offset otherwise (an offset must not make a trial that
+    begins at rest look mid-response). The median over all samples is not that level:
+    the responses take a large share of a 15 s trial.
+    """
+    ends = []
+    for tr in trials:
+        u = np.asarray(tr.u, float)
+        t = np.asarray(tr.t, float)
+        if u.shape[0] < 2:
+            continue
+        width = min(max(1, round(START_WINDOW / float(t[1] - t[0]))), u.shape[0])
+        ends.append(u[-width:].mean(axis=0))
+    return np.median(np.array(ends), axis=0) if ends else np.zeros(2)
+
+
+def mid_response(trial: Trial, rest: np.ndarray | None = None) -> float:
+    """How far into a response trial ``trial`` begins: the size of u - ``rest`` (the rest
+    level, :func:`rest_level`; 0 when not given) averaged over its first ``START_WINDOW``
+    seconds relative to the largest such average over the trial (0: at rest, 1: at the
+    peak).
 
     A trial of the protocol begins at the operator's start event, before the response
     (or continues a previous trial whose state is carried); one that begins with u
@@ -145,6 +176,8 @@ def mid_response(trial: Trial) -> float:
     t = np.asarray(trial.t, float)
     if u.shape[0] < 2:
         return 0.0
+    if rest is not None:
+        u = u - np.asarray(rest, float)
     h = float(t[1] - t[0])
     width = min(max(1, round(START_WINDOW / h)), u.shape[0])
     csum = np.cumsum(np.vstack([np.zeros((1, u.shape[1])), u]), axis=0)
@@ -156,9 +189,11 @@ def mid_response(trial: Trial) -> float:
 def fresh_starts(trials: Sequence[Trial]) -> tuple[bool, ...]:
     """Per trial, True if its initial state must be estimated: it is not carried
     (:func:`dead_time_gaps` gives None: the first trial, a segment after invalid samples,
-    a trial after a pause) and it begins mid-response (:func:`mid_response`)."""
+    a trial after a pause) and it begins mid-response (:func:`mid_response`, measured
+    from the log's rest level, :func:`rest_level`)."""
     gaps = dead_time_gaps(trials)
-    return tuple(g is None and mid_response(tr) >= MID_RESPONSE
+    rest = rest_level(trials)
+    return tuple(g is None and mid_response(tr, rest) >= MID_RESPONSE
                  for tr, g in zip(trials, gaps, strict=True))
 
 
@@ -190,8 +225,9 @@ def dead_time_gaps(trials: Sequence[Trial]) -> tuple[float | None, ...]:
 
 
 def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "estimate",
-                skip: int = 0) -> OutputData:
-    """The view of output ``i`` (0 or 1) of checked trials."""
+                skip: int = 0, offset: bool = False) -> OutputData:
+    """The view of output ``i`` (0 or 1) of checked trials (``offset``: a constant on the
+    output is estimated too, :class:`OutputData`)."""
     j = 1 - i
     return OutputData(
         i,
@@ -205,4 +241,5 @@ def output_data(trials: Sequence[Trial], i: int, h: float, *, initial: str = "es
         tuple(h if tr.end is None else max(float(tr.end - np.asarray(tr.t, float)[-1]), 0.0)
               for tr in trials),
         fresh_starts(trials),
+        bool(offset),
     )

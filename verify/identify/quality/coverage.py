@@ -28,6 +28,7 @@ from verify.identify.data.protocol import prepare
 from verify.identify.data.simulated_experiment import (
     simulate_experiment,
     simulate_paused_experiment,
+    with_output_offset,
 )
 from verify.identify.estimate.estimation import estimate_model
 from verify.identify.estimate.prediction import predict
@@ -55,6 +56,8 @@ class Repetition:
     fit_noisy: dict[str, np.ndarray] = field(default_factory=dict)
     fit_clean: dict[str, np.ndarray] = field(default_factory=dict)
     failed: dict[str, str] = field(default_factory=dict)
+    offsets: dict[str, np.ndarray] = field(default_factory=dict)
+    offset_errors: dict[str, np.ndarray] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -84,13 +87,17 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
               trials: int = 6, trial_seconds: float = 15.0, rate: float = 120.0,
               out_rate: float | str | None = None, operator_noise: float | None = None,
               measurement_noise: float | None = None, pauses: tuple[float, float] | None = None,
-              progress=None, jobs: int = 1) -> Study:
+              progress=None, jobs: int = 1, offset: bool | None = None,
+              true_offset: tuple[float, float] | None = None) -> Study:
     """Simulate, prepare and estimate once per seed (module docstring).
 
     ``rate`` is the loop and logging rate (Hz), ``out_rate`` the protocol's rate after
     decimation; ``pauses`` (lo, hi) seconds separates the trials by pauses in which the
     loop is reset to rest
-    (:func:`verify.identify.data.simulated_experiment.simulate_paused_experiment`).
+    (:func:`verify.identify.data.simulated_experiment.simulate_paused_experiment`);
+    ``true_offset`` adds a constant to the logged u (an uncalibrated stick,
+    :func:`verify.identify.data.simulated_experiment.with_output_offset`); ``offset`` is
+    the estimator's option (None: its default).
 
     ``jobs`` > 1 runs the seeds in that many processes; each repetition depends on its
     seed alone, so the study is the same as with one job.
@@ -103,7 +110,7 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
         extra["measurement_noise"] = measurement_noise
     settings = dict(methods=tuple(methods), k_s=k_s, n=n, trials=trials,
                     trial_seconds=trial_seconds, rate=rate, out_rate=out_rate, extra=extra,
-                    pauses=pauses)
+                    pauses=pauses, offset=offset, true_offset=true_offset)
     reps: dict[int, Repetition] = {}
     if jobs > 1:
         from concurrent.futures import ProcessPoolExecutor
@@ -126,7 +133,8 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
 def repetition(theta_true: np.ndarray, seed: int, *, methods: tuple[str, ...], k_s: float,
                n: int, trials: int, trial_seconds: float, rate: float,
                out_rate: float | str | None, extra: dict,
-               pauses: tuple[float, float] | None = None) -> Repetition:
+               pauses: tuple[float, float] | None = None, offset: bool | None = None,
+               true_offset: tuple[float, float] | None = None) -> Repetition:
     """One seeded experiment of :func:`run_study`."""
     structure = Structure.paper()
     if pauses is None:
@@ -136,12 +144,15 @@ def repetition(theta_true: np.ndarray, seed: int, *, methods: tuple[str, ...], k
         log = simulate_paused_experiment(true_model(theta_true), pauses=pauses, k_s=k_s, n=n,
                                          trials=trials, trial_seconds=trial_seconds,
                                          rate=rate, seed=seed, **extra)
+    if true_offset is not None:
+        log = with_output_offset(log, true_offset)
     data = prepare(log, rate=out_rate, split=(trials, 0)).identification
     clean = predict(structure, theta_true, data)
     rep = Repetition(seed)
     for method in methods:
         try:
-            est = estimate_model(data, structure, method=method)
+            est = estimate_model(data, structure, method=method,
+                                 **({} if offset is None else {"offset": offset}))
         except VerifyInputError as err:
             rep.failed[method] = str(err)
             continue
@@ -153,10 +164,13 @@ def repetition(theta_true: np.ndarray, seed: int, *, methods: tuple[str, ...], k
         except np.linalg.LinAlgError:
             stat = np.inf
         rep.in_ellipsoid[method] = stat <= chi2.ppf(0.95, len(diff))
-        yhat = predict(structure, est.theta, data)
+        rep.offsets[method] = np.array(est.offsets)
+        rep.offset_errors[method] = np.array(est.offset_errors)
+        yhat = predict(structure, est.theta, data, offsets=est.offsets)
         u = np.concatenate([np.asarray(tr.u, float) for tr in data])
         yh = np.concatenate(yhat)
         yc = np.concatenate(clean)
         rep.fit_noisy[method] = np.array([fit_ratio(u[:, i], yh[:, i]) for i in (0, 1)])
-        rep.fit_clean[method] = np.array([fit_ratio(yc[:, i], yh[:, i]) for i in (0, 1)])
+        yh_h = np.concatenate(predict(structure, est.theta, data))  # H(s) alone
+        rep.fit_clean[method] = np.array([fit_ratio(yc[:, i], yh_h[:, i]) for i in (0, 1)])
     return rep

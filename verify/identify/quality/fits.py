@@ -11,8 +11,10 @@
   The one exception is a trial that begins mid-response after a pause or at the log's
   start (:func:`verify.identify.estimate.trial_data.fresh_starts`): its initial state is
   fitted, since neither rest nor a carried state is what the operator was in; the
-  command's warning names such trials. That is the only fit the command reports and
-  decides with.
+  command's warning names such trials. When the estimate has offsets (constants on the
+  logged outputs, :attr:`Estimate.offsets`), the simulated output includes them: they are
+  the stick's, not the operator's, and are added as estimated, never refitted. That is the
+  only fit the command reports and decides with.
 * Residual tests are diagnostics: they are reported, never a reason to stop. A test that
   cannot be computed (e.g. a noise-free input that does not vary enough at the tested
   lags, or an identically zero residual) is reported as not computed, with the reason.
@@ -88,7 +90,8 @@ def honest_fits(estimate: Estimate, identification: Sequence[Trial],
     identification trial, yhat per validation trial), the trials taken in log order,
     identification first, the state carried across trials that follow on."""
     trials = [*identification, *validation]
-    yhat = predict(estimate.structure, estimate.theta, trials, initial="carry")
+    yhat = predict(estimate.structure, estimate.theta, trials, initial="carry",
+                   offsets=estimate.offsets)
     return list(yhat[:len(identification)]), list(yhat[len(identification):])
 
 
@@ -101,7 +104,8 @@ def assess(estimate: Estimate, trials: Sequence[Trial], *, yhat: Sequence[np.nda
     from rest, then carried; "zero"; "estimate": each trial's free response re-fitted,
     a figure that absorbs transients and is never a decision's basis)."""
     if yhat is None:
-        yhat = predict(estimate.structure, estimate.theta, trials, initial=initial)
+        yhat = predict(estimate.structure, estimate.theta, trials, initial=initial,
+                       offsets=estimate.offsets)
     elif initial == "estimate":
         raise ValueError("a given yhat is a simulation, not a re-initialised fit")
     u = [np.asarray(tr.u, float) for tr in trials]

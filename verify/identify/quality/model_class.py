@@ -13,14 +13,20 @@ does not.
 **The test.** Output i is u_i = B_i(s)/A_i(s) e_i + c_ij e_j + noise. It is fitted by the
 estimator's own output-error criterion (:func:`verify.identify.estimate.estimation.fit_output`,
 the same identification trials, the state carried across trials) in the identified
-structure P:Z and in the larger (P+1):(Z+1). The classes are nested (a common factor
-s + p on both sides of h_i), so the likelihood ratio of Gaussian output errors
+structure P:Z and in the larger (P+1):(Z+1); the larger fit also starts from the
+identified denominator times (s + p) for p on a grid (``EMBEDDED_POLES``), so that its
+search begins where the classes meet (without those starts one open-loop fit stopped in a
+local minimum worse than the smaller model, whose residual was coloured). The classes
+are nested (a common factor s + p on both sides of h_i), so the likelihood ratio of
+Gaussian output errors
 
     LR_i = N_eff,i log(V_i(P:Z) / V_i(P+1:Z+1))
 
 (V the residual sums of squares, N_eff the effective sample size of the larger fit's
 residual, :func:`verify.identify.estimate.residual_tests.effective_samples`) is compared
-with chi-square with 2 degrees of freedom. The nesting is not regular (p is not
+with chi-square with 2 degrees of freedom, plus one for each trial whose initial state
+is fitted (the larger model has one more state to start from in each such trial: on
+open-loop data every trial, below). The nesting is not regular (p is not
 identified under the smaller class), so the law is a guide; measured on 24 outputs of
 in-class closed-loop logs at 120 Hz: LR 0.13-8.1, against 449 and 26 for the
 third-order operator. The class is **rejected** when some output's p-value is below
@@ -46,10 +52,38 @@ leader integrates the operator's command and e is the smoother signal: R(e)/R(u)
 open-loop multisine logs). There both classes are fitted afresh with each trial's
 initial state estimated, which is unbiased when the input does not depend on the noise
 (:mod:`verify.identify.estimate.estimation`), so the joins no longer matter; the test
-says which form it used.
+says which form it used. The larger model then also has one more initial state per
+trial, and its likelihood ratio has that many more degrees of freedom: counted with 2
+alone, in-class operators on open-loop multisine logs of 4 trials gave likelihood
+ratios of 4-14 (mean about 8, where chi-square with 2 degrees of freedom has 2) and
+p-values down to 9e-4 against the level 5e-4; the larger model had moved its extra pole
+to 0, where the free response it adds is a constant per trial. Counting 2 + T for T
+fitted initial states was not enough: on 30 seeds x 2 in-class operators
+(``benchmarks/bench_identify_open_loop.py``, 4 trials, noise 0.002 on e and u) the
+likelihood ratio averaged 9.79 against the 6 of chi-square with 6 degrees of freedom
+(quantiles 0.5, 0.9, 0.99: 8.7, 15.2, 21.6 against 5.3, 10.6, 16.8), 20 % of the outputs
+had p < 0.05 and one experiment of 60 rejected the class (p = 1.9e-4). Likely causes,
+not separated here: the extra pole's location is not identified under the smaller
+class (the law of such a ratio has a heavier tail than chi-square), and the sensor noise
+on the logged e, which the operator never saw, is something a larger model can partly
+filter. On open-loop data
+the ratio is therefore divided by ``OPEN_LOOP_SCALE`` before the chi-square law is
+applied, the factor that bench measured (a Satterthwaite-style scaling, as the
+effective sample size does for coloured residuals); it is an empirical calibration for
+multisine logs like those, so the sentence calls the open-loop p-value calibrated on
+simulated multisine logs, and the third-order operator is still rejected with it
+(tests). Out of sample (seeds 31-50, 40 experiments) the raw ratio averaged 1.72 times
+2 + T, 1 of 80 outputs had p < 0.05 after the scaling and none was rejected.
+
+**Offsets.** When the estimate has a constant offset per output (an uncalibrated stick,
+:attr:`verify.identify.estimate.result.Estimate.offsets`), both classes are fitted with
+their own offset, so the comparison is of H(s) alone; the test reports the identified
+offsets with their standard errors and whether each differs from zero at the 5 % level
+(|o| > 1.96 se; a nuisance parameter, so "significant" only says the stick is off).
 
 What flows in: the identification trials and the estimate. What flows out: a
-:class:`ClassTest` (per output LR, p-value, N_eff; the larger model's parameters).
+:class:`ClassTest` (per output LR, p-value, N_eff; the larger model's parameters; the
+offsets).
 """
 
 from __future__ import annotations
@@ -78,6 +112,14 @@ LEVEL = 5e-4
 DEGREES = 2
 #: Smallest R(e) / R(u) (roughness, module docstring) taken as open-loop data.
 OPEN_LOOP_ROUGHNESS = 0.6
+#: What the open-loop likelihood ratio is divided by: its mean over 2 + T on open-loop
+#: logs of in-class operators (module docstring).
+OPEN_LOOP_SCALE = 1.63
+#: Extra poles p (rad/s) of the larger fit's starts A(s)(s + p), below half the Nyquist
+#: frequency (module docstring).
+EMBEDDED_POLES = (0.3, 1.0, 3.0, 10.0, 30.0)
+#: Two-sided normal quantile of the offsets' significance (5 %).
+OFFSET_Z = 1.959963984540054
 
 
 def looks_open_loop(trials: Sequence[Trial]) -> bool:
@@ -103,7 +145,9 @@ class ClassTest:
     model's parameters, in ``larger.names()`` order) with ``larger_covariance`` (the
     estimator's asymptotic covariance, outputs independent, times the identified
     estimate's few-trials factor); ``fallbacks`` names the outputs whose larger fit failed
-    (their larger model is the identified one, LR 0, its covariance mapped alike)."""
+    (their larger model is the identified one, LR 0, its covariance mapped alike);
+    ``degrees`` per output the chi-square degrees of freedom (``DEGREES`` plus the
+    trials whose initial state is fitted, module docstring)."""
 
     structure: Structure
     larger: Structure
@@ -115,6 +159,26 @@ class ClassTest:
     larger_covariance: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)),
                                           compare=False, repr=False)
     open_loop: bool = False
+    offsets: tuple[float, ...] = ()
+    offset_errors: tuple[float, ...] = ()
+    degrees: tuple[int, int] = (DEGREES, DEGREES)
+
+    @property
+    def offsets_significant(self) -> tuple[bool, ...]:
+        """Per output: the offset differs from zero at the 5 % level (|o| > 1.96 se)."""
+        return tuple(abs(o) > OFFSET_Z * se for o, se in
+                     zip(self.offsets, self.offset_errors, strict=True))
+
+    def offset_text(self) -> str:
+        """The offsets with standard errors and significance, or '' when none."""
+        if not self.offsets:
+            return ""
+        parts = [f"u{i + 1} {o:+.3g} (se {se:.2g}, "
+                 f"{'significant' if sig else 'not significant'})"
+                 for i, (o, se, sig) in enumerate(zip(self.offsets, self.offset_errors,
+                                                      self.offsets_significant, strict=True))]
+        return ("offsets of the logged outputs, estimated with both classes: "
+                + ", ".join(parts) + " at the 5 % level")
 
     @property
     def rejected(self) -> bool:
@@ -128,14 +192,19 @@ class ClassTest:
         """One line: rejected or not, with the figures."""
         lr = ", ".join(f"{x:.4g}" for x in self.statistic)
         ps = ", ".join(f"{p:.3g}" for p in self.p_value)
+        dof = (f"{self.degrees[0]}" if self.degrees[0] == self.degrees[1] else
+               f"{self.degrees[0]}, {self.degrees[1]}")
         verdict = ("the data reject it" if self.rejected else "the data do not reject it")
         tail = "; ".join(self.fallbacks)
         return (f"{verdict} against {self.larger_text()} (one pole and one zero more per "
                 f"diagonal element, same output-error criterion): likelihood ratio {lr}, "
-                f"p = {ps} (chi-square, {DEGREES} degrees of freedom; level {LEVEL:g} per "
+                f"p = {ps} (chi-square, {dof} degrees of freedom; level {LEVEL:g} per "
                 f"output)" + (f"; {tail}" if tail else "")
                 + ("; open-loop data: both classes fitted with each trial's initial state "
-                   "estimated" if self.open_loop else ""))
+                   f"estimated, the likelihood ratio divided by {OPEN_LOOP_SCALE:g} before the "
+                   "chi-square law (a calibration measured on simulated multisine logs)"
+                   if self.open_loop else "")
+                + (f"; {self.offset_text()}" if self.offsets else ""))
 
     def to_json(self) -> dict[str, object]:
         """Figures to 4 significant digits (byte-reproducible)."""
@@ -143,13 +212,17 @@ class ClassTest:
             return float(f"{x:.4g}")
 
         return {"larger_structure": self.larger_text(), "level": LEVEL,
-                "degrees_of_freedom": DEGREES,
+                "degrees_of_freedom": list(self.degrees),
                 "likelihood_ratio": [four(x) for x in self.statistic],
                 "p_value": [four(x) for x in self.p_value],
                 "effective_samples": [four(x) for x in self.effective],
                 "rejected": self.rejected, "larger_fit_failed": list(self.fallbacks),
                 "open_loop": self.open_loop,
-                "larger_theta": [four(x) for x in self.larger_theta]}
+                "open_loop_scale": OPEN_LOOP_SCALE if self.open_loop else 1.0,
+                "larger_theta": [four(x) for x in self.larger_theta],
+                "offsets": [four(x) for x in self.offsets],
+                "offset_standard_errors": [four(x) for x in self.offset_errors],
+                "offsets_significant": list(self.offsets_significant)}
 
 
 def _embedding(b: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -181,10 +254,11 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
     cov = np.asarray(estimate.covariance, float) / max(float(estimate.inflation), 1e-300)
     per = structure.zeros + 1 + structure.poles
     open_loop = looks_open_loop(trials)
-    stats, ps, effs, fits, fallbacks = [], [], [], [], []
+    offset = bool(estimate.offsets)
+    stats, ps, effs, fits, fallbacks, dofs = [], [], [], [], [], []
     for i in (0, 1):
         data = output_data(trials, i, h, initial="estimate" if open_loop else INITIAL,
-                           skip=skip)
+                           skip=skip, offset=offset)
         b, a, c = element_parameters(structure, theta, i)
         if open_loop:  # refit the class too: the estimate's denominator was carried
             try:
@@ -194,9 +268,11 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
                 pass
         residual = fit_linear(np.asarray(a, float), data, structure.zeros)[1]
         cost = float(residual @ residual)
+        starts = [np.convolve(np.r_[1.0, np.asarray(a, float)], [1.0, p])[1:]
+                  for p in EMBEDDED_POLES if p < 0.5 * math.pi / h]
         try:
             with np.errstate(all="ignore"):
-                fit = fit_output(data, larger.poles, larger.zeros)
+                fit = fit_output(data, larger.poles, larger.zeros, more_starts=starts)
         except (CannotIdentifyError, np.linalg.LinAlgError, ValueError) as exc:
             fallbacks.append(f"output {i + 1}: no larger fit ({exc})")
             big_b, big_a, J = _embedding(np.asarray(b, float), np.asarray(a, float))
@@ -209,12 +285,15 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
             lr = max(0.0, n_eff * math.log(cost / big_cost))
         else:
             lr = 0.0
+        dof = DEGREES + sum(data.estimated(k) for k in range(len(data.y)))
         stats.append(lr)
-        ps.append(float(chi2.sf(lr, DEGREES)))
+        dofs.append(int(dof))
+        ps.append(float(chi2.sf(lr / (OPEN_LOOP_SCALE if open_loop else 1.0), dof)))
         effs.append(float(n_eff))
         fits.append(fit)
     both = assemble(larger, fits, estimate.method, estimate.samples)
     return ClassTest(structure, larger, (stats[0], stats[1]), (ps[0], ps[1]),
                      (effs[0], effs[1]), tuple(float(x) for x in both.theta),
                      tuple(fallbacks), both.covariance * float(estimate.inflation),
-                     open_loop)
+                     open_loop, tuple(float(x) for x in estimate.offsets),
+                     tuple(float(x) for x in estimate.offset_errors), (dofs[0], dofs[1]))
