@@ -23,7 +23,8 @@ Gaussian output errors
     LR_i = N_eff,i log(V_i(P:Z) / V_i(P+1:Z+1))
 
 (V the residual sums of squares, N_eff the effective sample size of the larger fit's
-residual, :func:`verify.identify.estimate.residual_tests.effective_samples`) is compared
+residual over the covariance's noise window, 1 s at any logging rate,
+:func:`verify.identify.estimate.residual_tests.effective_samples`) is compared
 with chi-square with 2 degrees of freedom, plus one for each trial whose initial state
 is fitted (the larger model has one more state to start from in each such trial: on
 open-loop data every trial, below). The nesting is not regular (p is not
@@ -95,7 +96,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from verify.identify.estimate.estimation import BURN_IN, INITIAL, fit_output
-from verify.identify.estimate.pem import OutputFit
+from verify.identify.estimate.pem import OutputFit, covariance_lags
 from verify.identify.estimate.prediction import element_parameters, fit_linear, lengths
 from verify.identify.estimate.residual_tests import effective_samples
 from verify.identify.estimate.result import CannotIdentifyError, Estimate, assemble
@@ -280,7 +281,8 @@ def model_class_test(estimate: Estimate, trials: Sequence[Trial]) -> ClassTest |
             fit = OutputFit(big_b, big_a, float(c), np.zeros((0, 0)), residual, cost,
                             J @ cov[np.ix_(idx, idx)] @ J.T, 0.0)
         big_cost = float(fit.residual @ fit.residual)
-        n_eff = effective_samples(fit.residual, lengths(data, None))
+        spans = lengths(data, None)
+        n_eff = effective_samples(fit.residual, spans, lags=covariance_lags(h, spans))
         if cost > 0 and big_cost > 0 and math.isfinite(cost) and math.isfinite(big_cost):
             lr = max(0.0, n_eff * math.log(cost / big_cost))
         else:

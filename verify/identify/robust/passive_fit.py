@@ -42,7 +42,8 @@ start would weigh on the comparison as if it were evidence about H(s).
 **The test.** The likelihood ratio of Gaussian output errors with a variance per output,
 LR = sum_i N_i log(V_i(passive) / V_i(free)), V_i the residual sums of squares, with N_i
 the effective number of samples (N_i divided by the Bartlett-weighted sum of the free
-fit's residual autocorrelation over ``LAGS`` lags, >= 1: the protocol's filtering and
+fit's residual autocorrelation over the covariance's noise window, 1 s at any logging
+rate (:func:`verify.identify.estimate.pem.covariance_lags`), >= 1: the protocol's filtering and
 decimation colour the residuals, and counting correlated samples as independent would
 overstate the evidence). Under passivity LR is asymptotically chi-bar-squared (a
 mixture of chi-square laws with 0..q degrees of freedom: M. J. Silvapulle and P. K. Sen,
@@ -76,6 +77,7 @@ import numpy as np
 
 from verify.errors import VerifyInputError
 from verify.identify.estimate.estimation import BURN_IN as ESTIMATOR_BURN_IN
+from verify.identify.estimate.pem import covariance_lags
 from verify.identify.estimate.prediction import design, used
 from verify.identify.estimate.residual_tests import effective_samples
 from verify.identify.estimate.structure import Structure
@@ -90,8 +92,6 @@ ALPHA = 0.05
 INFORMATIVE = 1e-6
 #: Constraints of the passive class (c12 = -c21, b0_i >= 0, a1_i b1_i >= b0_i).
 CONSTRAINTS = 5
-#: Residual autocorrelation lags of the effective sample size.
-LAGS = 20
 #: Burn-in left out of the criterion, seconds: the estimator's own default.
 BURN_IN = ESTIMATOR_BURN_IN
 #: The denominator search's Jacobian (central differences, relative step) and stopping
@@ -290,8 +290,8 @@ def _fit(data, weights, start: np.ndarray, passive: bool):
 
 def _effective(residual: np.ndarray, data: OutputData) -> float:
     """N divided by the Bartlett-weighted residual autocorrelation sum (>= 1)."""
-    return effective_samples(residual, [len(own) - data.skip for own in data.own],
-                             lags=LAGS)
+    spans = [len(own) - data.skip for own in data.own]
+    return effective_samples(residual, spans, lags=covariance_lags(data.h, spans))
 
 
 def _fit_ratio(y: np.ndarray, residual: np.ndarray) -> float:
@@ -449,7 +449,6 @@ __all__ = [
     "ALPHA",
     "CONSTRAINTS",
     "INFORMATIVE",
-    "LAGS",
     "PASSIVE_MODEL_FILE",
     "PassivityTest",
     "nuisance_columns",
