@@ -140,3 +140,28 @@ def test_other_structures_are_refused_with_one_line():
 
     with pytest.raises(VerifyInputError, match="paper's structure"):
         passivity_test([], [0.0] * 8, structure=Structure.poles_zeros(1, 1))
+
+
+def test_the_effective_sample_size_counts_one_second_at_any_rate():
+    """The test's effective samples use the covariance's noise window in seconds (1 s),
+    not a fixed number of samples: at 250 Hz, 20 samples would be 0.08 s, and a residual
+    correlated over 0.3 s would count several times as many independent samples."""
+    from types import SimpleNamespace
+
+    from verify.identify.estimate.pem import covariance_lags
+    from verify.identify.estimate.residual_tests import effective_samples
+    from verify.identify.robust.passive_fit import _effective
+
+    h, n = 1 / 250, 5000
+    rng = np.random.default_rng(3)
+    phi = np.exp(-h / 0.3)  # AR(1) with a 0.3 s correlation time
+    e = rng.standard_normal(n)
+    r = np.empty(n)
+    r[0] = e[0]
+    for k in range(1, n):
+        r[k] = phi * r[k - 1] + e[k]
+    data = SimpleNamespace(h=h, skip=0, own=[np.zeros(n)])
+    got = _effective(r, data)
+    assert covariance_lags(h, [n]) == 250
+    assert got == pytest.approx(effective_samples(r, [n], lags=250))
+    assert got < 0.5 * effective_samples(r, [n], lags=20)
