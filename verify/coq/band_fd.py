@@ -207,29 +207,38 @@ def band_unit(name: str, *, model: ExactModel, band: tuple[Fraction, Fraction],
     return CoqUnit(name, "\n".join(lines), (THEOREM,), origin)
 
 
-def band_fd_unit_from_file(path: Path) -> CoqUnit:
-    """The unit of a stored exact-band certificate, after the exact checker and the
-    binding accept it (CoqExportError, one line, otherwise)."""
-    from verify.passivity.check.band_fd import check_band_fd_file
+def read_checked_fd(path: Path, schema: str, kind: str, check) -> tuple[dict, ExactModel,
+                                                                       Fraction]:
+    """A stored frequency-domain certificate (exact-band or positive-real) read strictly,
+    of ``schema``, and accepted by the Python exact checker ``check(data, path)`` with its
+    binding: ``(data, H as given, margin)``; CoqExportError, one line, otherwise."""
     from verify.passivity.check.fd_certificate import model_from_json
     from verify.passivity.io.binding import shifted
     from verify.passivity.io.strict_json import CertificateFormatError, rational, read_strict
 
-    path = Path(path)
     try:
         data = read_strict(path)
-        if data.get("schema") != SCHEMA:
-            raise CoqExportError(f"{path.name}: not an exact-band certificate "
+        if data.get("schema") != schema:
+            raise CoqExportError(f"{path.name}: not {kind} certificate "
                                  f"(schema {data.get('schema')!r})")
-        result = check_band_fd_file(data, path)
+        result = check(data, path)
     except CertificateFormatError as exc:
         raise CoqExportError(f"{path.name}: {exc}") from None
     if not result.ok:
         raise CoqExportError(f"{path.name}: not exported: {result.reason}")
-    stored = model_from_json(data)
     margin = rational(data["meta"]["margin"], "meta.margin")
+    return data, shifted(model_from_json(data), -margin), margin
+
+
+def band_fd_unit_from_file(path: Path) -> CoqUnit:
+    """The unit of a stored exact-band certificate, after the exact checker and the
+    binding accept it (CoqExportError, one line, otherwise)."""
+    from verify.passivity.check.band_fd import check_band_fd_file
+    from verify.passivity.io.strict_json import rational
+
+    path = Path(path)
+    data, given, margin = read_checked_fd(path, SCHEMA, "an exact-band", check_band_fd_file)
     band = (rational(data["band"][0], "band"), rational(data["band"][1], "band"))
-    given = shifted(stored, -margin)
     try:
         return band_unit(module_name(path.name), model=given, band=band, margin=margin,
                          label=data["name"], source=data["source"],

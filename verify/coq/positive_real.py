@@ -19,7 +19,14 @@ from pathlib import Path
 from flint import fmpq
 
 from verify.coq import interval_witness as iw
-from verify.coq.band_fd import model_lines, poly_literal, q_text, sign_polynomials, witness_literal
+from verify.coq.band_fd import (
+    model_lines,
+    poly_literal,
+    q_text,
+    read_checked_fd,
+    sign_polynomials,
+    witness_literal,
+)
 from verify.coq.kyp import CoqExportError, _comment_text, module_name
 from verify.coq.unit import CoqUnit
 from verify.passivity.check.certificate import ExactModel
@@ -96,23 +103,10 @@ def pr_unit(name: str, *, model: ExactModel, margin: Fraction, label: str, sourc
 def pr_unit_from_file(path: Path) -> CoqUnit:
     """The unit of a stored positive-real certificate, after the exact checker and the
     binding accept it (CoqExportError, one line, otherwise)."""
-    from verify.passivity.check.fd_certificate import check_pr_file, model_from_json
-    from verify.passivity.io.binding import shifted
-    from verify.passivity.io.strict_json import CertificateFormatError, rational, read_strict
+    from verify.passivity.check.fd_certificate import check_pr_file
 
     path = Path(path)
-    try:
-        data = read_strict(path)
-        if data.get("schema") != SCHEMA:
-            raise CoqExportError(f"{path.name}: not a positive-real certificate "
-                                 f"(schema {data.get('schema')!r})")
-        result = check_pr_file(data, path)
-    except CertificateFormatError as exc:
-        raise CoqExportError(f"{path.name}: {exc}") from None
-    if not result.ok:
-        raise CoqExportError(f"{path.name}: not exported: {result.reason}")
-    margin = rational(data["meta"]["margin"], "meta.margin")
-    given = shifted(model_from_json(data), -margin)
+    data, given, margin = read_checked_fd(path, SCHEMA, "a positive-real", check_pr_file)
     try:
         return pr_unit(module_name(path.name), model=given, margin=margin,
                        label=data["name"], source=data["source"],
