@@ -60,3 +60,15 @@ def _front_end_without_namespaces(request, monkeypatch):
         return plain(path, **options)
 
     monkeypatch.setattr(isolate, "load_isolated", unsandboxed)
+
+
+@pytest.fixture(scope="session")
+def prelude_dir(tmp_path_factory):
+    """The Coq prelude compiled once per test process (skips where coqc is missing)."""
+    from coq_tools import compile_prelude
+
+    from verify.coq.development import coqc_available
+
+    if not coqc_available():
+        pytest.skip("coqc not installed")
+    return compile_prelude(tmp_path_factory.mktemp("coq-prelude"))

@@ -8,12 +8,12 @@ module; each attacked unit is then compiled alone.
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from coq_tools import compiles, run_coqc
 from flint import fmpq, fmpq_poly
 from gmpy2 import mpq
 
@@ -21,7 +21,7 @@ from verify.cli import main
 from verify.coq import interval_witness as iw
 from verify.coq.audit import audit_assumptions
 from verify.coq.band_fd import band_fd_unit_from_file, band_unit, sign_polynomials
-from verify.coq.development import LOGICAL_ROOT, coqc_available, prelude_sources
+from verify.coq.development import coqc_available
 from verify.coq.export import export_certificates
 from verify.coq.kyp import CoqExportError
 from verify.passivity.check.band_fd import band_polynomials
@@ -157,29 +157,6 @@ def test_the_paper_band_certificate_is_exported_not_listed():
 
 
 @pytest.fixture(scope="module")
-def prelude_dir(tmp_path_factory):
-    if not coqc_available():
-        pytest.skip("coqc not installed")
-    folder = tmp_path_factory.mktemp("coqband")
-    for name, text in prelude_sources().items():
-        if name in ("SO3", "SOSCert"):
-            continue  # the derivations' prelude, not needed by certificate units
-        (folder / f"{name}.v").write_text(text)
-        assert _coqc(folder, f"{name}.v").returncode == 0
-    return folder
-
-
-def _coqc(folder: Path, rel: str) -> subprocess.CompletedProcess:
-    return subprocess.run([shutil.which("coqc") or "coqc", "-R", ".", LOGICAL_ROOT, rel],
-                          cwd=folder, capture_output=True, text=True, timeout=600)
-
-
-def _compiles(folder: Path, text: str, name: str = "Attack") -> bool:
-    (folder / f"{name}.v").write_text(text)
-    return _coqc(folder, f"{name}.v").returncode == 0
-
-
-@pytest.fixture(scope="module")
 def paper_unit():
     return band_fd_unit_from_file(KS25).text
 
@@ -187,7 +164,7 @@ def paper_unit():
 @needs_coqc
 def test_coqc_accepts_the_paper_band_certificate_with_only_real_axioms(prelude_dir,
                                                                         paper_unit):
-    assert _compiles(prelude_dir, paper_unit, "Band25")
+    assert compiles(prelude_dir, paper_unit, "Band25")
     done = _coqc_text(prelude_dir, "From VerifyCoq Require Band25.\n"
                       "Print Assumptions Band25.passive_on_band.\n")
     assert done.returncode == 0
@@ -197,7 +174,7 @@ def test_coqc_accepts_the_paper_band_certificate_with_only_real_axioms(prelude_d
 
 def _coqc_text(folder: Path, text: str) -> subprocess.CompletedProcess:
     (folder / "Probe.v").write_text(text)
-    return _coqc(folder, "Probe.v")
+    return run_coqc(folder, "Probe.v")
 
 
 @needs_coqc
@@ -213,7 +190,7 @@ def _coqc_text(folder: Path, text: str) -> subprocess.CompletedProcess:
 ])
 def test_coqc_rejects_a_tampered_band_unit(prelude_dir, paper_unit, old, new):
     assert old in paper_unit
-    assert not _compiles(prelude_dir, paper_unit.replace(old, new, 1))
+    assert not compiles(prelude_dir, paper_unit.replace(old, new, 1))
 
 
 @needs_coqc
@@ -227,12 +204,12 @@ def test_coqc_rejects_the_witnesses_of_another_model(prelude_dir, paper_unit):
     text = band_unit("Other", model=other, band=(Fraction(0), Fraction(3, 2)),
                      margin=Fraction(0), label="k_s = 3.0", source="x", fingerprint="x",
                      origin="test").text
-    assert _compiles(prelude_dir, text, "Other")
+    assert compiles(prelude_dir, text, "Other")
     start, end = "Definition cert1", "Definition certs"
     mixed = (paper_unit[:paper_unit.index(start)] + text[text.index(start):text.index(end)]
              + paper_unit[paper_unit.index(end):])
     assert mixed != paper_unit
-    assert not _compiles(prelude_dir, mixed)
+    assert not compiles(prelude_dir, mixed)
 
 
 @needs_coqc
@@ -244,7 +221,7 @@ def test_one_port_and_static_gain_units(prelude_dir):
         unit = band_unit(name, model=model, band=(Fraction(0), Fraction(10)),
                          margin=Fraction(0), label=name, source="x", fingerprint="x",
                          origin="test")
-        assert _compiles(prelude_dir, unit.text, name)
+        assert compiles(prelude_dir, unit.text, name)
     with pytest.raises(CoqExportError, match="no witness"):
         band_unit("Neg", model=exact([], [], [[]], [[-1]]), band=(Fraction(0), Fraction(1)),
                   margin=Fraction(0), label="x", source="x", fingerprint="x", origin="x")
@@ -320,13 +297,13 @@ def test_coqc_accepts_a_positive_real_unit_and_rejects_a_changed_one(prelude_dir
     from verify.coq.positive_real import pr_unit_from_file
 
     text = pr_unit_from_file(pr_certificate).text
-    assert _compiles(prelude_dir, text, "PR")
+    assert compiles(prelude_dir, text, "PR")
     old = "[(-1 # 20); (0 # 20)]"
     assert old in text
-    assert not _compiles(prelude_dir, text.replace(old, "[(-3 # 20); (0 # 20)]", 1))
+    assert not compiles(prelude_dir, text.replace(old, "[(-3 # 20); (0 # 20)]", 1))
     # a static gain -1/10 with the witnesses of another polynomial
     neg = text.replace("fdi_holds 4 2 A B C D.", "fdi_holds 4 2 A B C Dn.", 1).replace(
         "fdi_check_sound 4 2 A B C D certs", "fdi_check_sound 4 2 A B C Dn certs", 1)
     neg = neg.replace("(** Witnesses", "Definition Dn : matQ := msub D (scaled_identity 2 1)."
                       "\n(** Witnesses", 1)
-    assert not _compiles(prelude_dir, neg)
+    assert not compiles(prelude_dir, neg)

@@ -9,16 +9,16 @@ from __future__ import annotations
 
 import json
 import shutil
-import subprocess
 from pathlib import Path
 
 import pytest
+from coq_tools import compiles
 from gmpy2 import mpq
 
 from verify.cli import main
 from verify.coq.audit import audit_assumptions, forbidden_commands, printed_axioms
 from verify.coq.command import development_files
-from verify.coq.development import LOGICAL_ROOT, coqc_available, prelude_sources
+from verify.coq.development import coqc_available, prelude_sources
 from verify.coq.export import export_certificates, paper_development_units
 from verify.coq.kyp import CoqExportError, kyp_unit_from_file
 from verify.coq.witness import Witness, psd_witness, residual_dominant
@@ -163,33 +163,9 @@ def test_print_assumptions_output_is_read_and_foreign_axioms_refused():
 # ---------------------------------------------------------------- coqc
 
 
-@pytest.fixture(scope="module")
-def prelude_dir(tmp_path_factory):
-    if not coqc_available():
-        pytest.skip("coqc not installed")
-    folder = tmp_path_factory.mktemp("coq")
-    for name, text in prelude_sources().items():
-        (folder / f"{name}.v").write_text(text)
-        _coqc(folder, f"{name}.v", check=True)
-    return folder
-
-
-def _coqc(folder: Path, rel: str, check: bool = False) -> subprocess.CompletedProcess:
-    done = subprocess.run([shutil.which("coqc") or "coqc", "-R", ".", LOGICAL_ROOT, rel],
-                          cwd=folder, capture_output=True, text=True, timeout=600)
-    if check:
-        assert done.returncode == 0, done.stdout + done.stderr
-    return done
-
-
-def _compiles(folder: Path, text: str, name: str = "Attack") -> bool:
-    (folder / f"{name}.v").write_text(text)
-    return _coqc(folder, f"{name}.v").returncode == 0
-
-
 @needs_coqc
 def test_coqc_accepts_the_k_s_3_certificate(prelude_dir):
-    assert _compiles(prelude_dir, kyp_unit_from_file(KS3).text)
+    assert compiles(prelude_dir, kyp_unit_from_file(KS3).text)
 
 
 @needs_coqc
@@ -210,7 +186,7 @@ def test_coqc_rejects_a_tampered_unit(prelude_dir, old, new):
         bad = bad.replace("kyp_check_sound 4 2 A B C D P", "kyp_check_sound 4 2 A B C Dm P")
         bad = bad.replace("(** The certificate. *)",
                           "Definition Dm : matQ := msub D (scaled_identity 2 1).\n")
-    assert not _compiles(prelude_dir, bad)
+    assert not compiles(prelude_dir, bad)
 
 
 @needs_coqc
@@ -219,7 +195,7 @@ def test_a_strengthened_statement_is_rejected(prelude_dir):
     text = kyp_unit_from_file(KS3).text
     extra = ("\nTheorem too_strong : pos_def 6 (mneg (kyp A B C D P)).\n"
              "Proof. apply (pd_check_sound 6 _ eM wM). vm_compute. reflexivity. Qed.\n")
-    assert not _compiles(prelude_dir, text + extra)
+    assert not compiles(prelude_dir, text + extra)
 
 
 def test_the_committed_development_is_current():
@@ -271,11 +247,11 @@ def test_coqc_accepts_a_rounded_witness_and_rejects_it_for_a_changed_matrix(prel
                 f"Definition ws : list term := {terms_literal(w)}.\n"
                 "Theorem t : pos_def 3 M.\n"
                 "Proof. apply (pd_check_sound 3 M e ws). vm_compute. reflexivity. Qed.\n")
-    assert _compiles(prelude_dir, unit(m), "Rounded")
+    assert compiles(prelude_dir, unit(m), "Rounded")
     changed = [row[:] for row in m]
     changed[0][0] = mpq(1, 2)  # no longer dominant after the same terms
     assert not residual_dominant(changed, w)
-    assert not _compiles(prelude_dir, unit(changed), "Rounded")
+    assert not compiles(prelude_dir, unit(changed), "Rounded")
 
 
 def test_coq_command_refuses_a_missing_input(tmp_path, capsys):
@@ -389,9 +365,9 @@ def test_coqc_accepts_a_band_certificate_and_rejects_a_wider_band(prelude_dir,
     from verify.coq.band import gkyp_unit_from_file
 
     text = gkyp_unit_from_file(band_certificate).text
-    assert _compiles(prelude_dir, text, "Band")
+    assert compiles(prelude_dir, text, "Band")
     wider = text.replace("Definition w2 : Q := (3 # 2).", "Definition w2 : Q := (5 # 1).")
-    assert not _compiles(prelude_dir, wider, "Band")
+    assert not compiles(prelude_dir, wider, "Band")
 
 
 def test_gate_refuses_a_coq_folder_that_is_the_certificates_folder(tmp_path, capsys):
@@ -446,13 +422,13 @@ def test_coqc_accepts_pivot_rows_and_rejects_a_changed_long_entry(prelude_dir,
                                                                  pivot_row_unit):
     import re
 
-    assert _compiles(prelude_dir, pivot_row_unit, "PivotRows")
+    assert compiles(prelude_dir, pivot_row_unit, "PivotRows")
     block = _p_block(pivot_row_unit)
     longest = max(int(d) for d in re.findall(r"\(-?\d+ # (\d+)\)", block))
     entry = re.search(r"\((-?\d+) # " + str(longest) + r"\)", block)
     assert entry is not None
     changed = block.replace(entry.group(0), f"({int(entry.group(1)) + 1} # {longest})", 1)
-    assert not _compiles(prelude_dir, pivot_row_unit.replace(block, changed), "PivotRows")
+    assert not compiles(prelude_dir, pivot_row_unit.replace(block, changed), "PivotRows")
 
 
 @needs_coqc
@@ -467,8 +443,8 @@ def test_coq_sums_over_several_denominators_exactly(prelude_dir):
                 "Proof. vm_compute. reflexivity. Qed.\n"
                 "Example e2 : Qeq_bool (sumQb 3 (fun j => nth j [(1 # 2); (1 # 3); (1 # 2)] 0))"
                 " (4 # 3) = true.\nProof. vm_compute. reflexivity. Qed.\n")
-    assert _compiles(prelude_dir, unit("(32 # 15)"), "Bins")  # 1/2 + 2/15 + 3/2
-    assert not _compiles(prelude_dir, unit("(31 # 15)"), "Bins")
+    assert compiles(prelude_dir, unit("(32 # 15)"), "Bins")  # 1/2 + 2/15 + 3/2
+    assert not compiles(prelude_dir, unit("(31 # 15)"), "Bins")
 
 
 @pytest.mark.slow  # about 15 CPU seconds (the 30-state unit: about 10 s in coqc)

@@ -7,13 +7,13 @@ compile, and must fail when its statement is changed.
 
 from __future__ import annotations
 
-import subprocess
 from fractions import Fraction
 
 import pytest
+from coq_tools import compile_development
 
 from verify.coq.derivations import derivation_unit
-from verify.coq.development import coqc_available, write_development
+from verify.coq.development import coqc_available
 from verify.coq.normal import normal_form
 from verify.coq.polys import atoms_for, entries, evaluate
 from verify.coq.terms import Naming
@@ -95,27 +95,15 @@ def test_identities_in_rotations_are_proved_on_free_matrices():
         assert "generalize (rot q_R_v)" in unit.text  # R is Coq's reals: R_v
 
 
-def _compile(tmp_path, units):
-    files = write_development(tmp_path, units)
-    for f in files:
-        if f.name == "All.v":
-            continue
-        done = subprocess.run(["coqc", "-R", ".", "VerifyCoq", f.name], cwd=tmp_path,
-                              capture_output=True, text=True, timeout=600, check=False)
-        if done.returncode != 0:
-            return False, f.name
-    return True, None
-
-
 @needs_coqc
 def test_normalised_proofs_compile_and_a_changed_statement_fails(tmp_path):
     units = _rotation_units()
-    ok, failed = _compile(tmp_path / "good", units)
+    ok, failed, _ = compile_development(tmp_path / "good", units)
     assert ok, failed
     cancel, conj = units
     old = "(mmul (mT (mmul (mT R_v) S)) (mmul (mT R_v) A))"
     assert old in cancel.text
     bad = type(cancel)(cancel.name, cancel.text.replace(old, "(mmul (mT S) (mmul R_v A))", 1),
                        cancel.theorems, cancel.source)
-    ok, failed = _compile(tmp_path / "bad", [bad, conj])
+    ok, failed, _ = compile_development(tmp_path / "bad", [bad, conj])
     assert not ok and failed == f"{cancel.name}.v"

@@ -12,6 +12,7 @@ import subprocess
 from fractions import Fraction
 
 import pytest
+from coq_tools import compile_development
 
 from verify.coq.derivations import derivation_unit
 from verify.coq.development import coqc_available, write_development
@@ -30,18 +31,6 @@ from verify.proof import (
 )
 
 needs_coqc = pytest.mark.skipif(not coqc_available(), reason="coqc is not installed")
-
-
-def _compile(tmp_path, units):
-    files = write_development(tmp_path, units)
-    for f in files:
-        if f.name == "All.v":
-            continue
-        done = subprocess.run(["coqc", "-R", ".", "VerifyCoq", f.name], cwd=tmp_path,
-                              capture_output=True, text=True, timeout=600, check=False)
-        if done.returncode != 0:
-            return False, f.name, done.stdout + done.stderr
-    return True, None, ""
 
 
 def _small() -> list[Derivation]:
@@ -111,7 +100,7 @@ def test_a_false_step_is_refused_by_the_exporter():
 
 @needs_coqc
 def test_small_units_compile(tmp_path):
-    ok, failed, output = _compile(tmp_path, _units(_small()))
+    ok, failed, output = compile_development(tmp_path, _units(_small()))
     assert ok, (failed, output)
 
 
@@ -131,7 +120,7 @@ def test_tampered_units_fail(tmp_path, change):
             "((k * (1 + (- (cos theta)))) * (2 + (- (cos theta))))"
     assert old in unit.text
     tampered = type(unit)(unit.name, unit.text.replace(old, new), unit.theorems, unit.source)
-    ok, failed, _ = _compile(tmp_path, [tampered])
+    ok, failed, _ = compile_development(tmp_path, [tampered])
     assert not ok and failed == f"{unit.name}.v"
 
 

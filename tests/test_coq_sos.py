@@ -13,17 +13,15 @@ from __future__ import annotations
 import copy
 import json
 import shutil
-import subprocess
 from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from coq_tools import compiles
 
 from verify.coq.audit import forbidden_commands
 from verify.coq.development import (
-    LOGICAL_ROOT,
     coqc_available,
-    prelude_sources,
     render_development,
 )
 from verify.coq.sos import certificate_for, ldl, paper_sos_steps, paper_sos_units, sos_unit
@@ -156,40 +154,17 @@ def test_the_exporter_refuses_a_gram_matrix_made_indefinite():
 # ------------------------------------------------------------------ coqc
 
 
-@pytest.fixture(scope="module")
-def prelude_dir(tmp_path_factory):
-    if not coqc_available():
-        pytest.skip("coqc not installed")
-    folder = tmp_path_factory.mktemp("sos-prelude")
-    for name, text in prelude_sources().items():
-        if name in ("QCert", "BandCert"):
-            continue  # the certificates' prelude, not needed by SOS units
-        (folder / f"{name}.v").write_text(text)
-        assert _coqc(folder, f"{name}.v").returncode == 0
-    return folder
-
-
-def _coqc(folder: Path, rel: str) -> subprocess.CompletedProcess:
-    return subprocess.run([shutil.which("coqc") or "coqc", "-R", ".", LOGICAL_ROOT, rel],
-                          cwd=folder, capture_output=True, text=True, timeout=600)
-
-
-def _compiles(folder: Path, text: str, name: str = "SosAttack") -> bool:
-    (folder / f"{name}.v").write_text(text)
-    return _coqc(folder, f"{name}.v").returncode == 0
-
-
 @needs_coqc
 @pytest.mark.parametrize("key", [SIGN, H_DOT_5, TRACE, ("thm1.V-dot", 3)])
 def test_coqc_accepts_the_paper_sos_certificate(prelude_dir, key):
-    assert _compiles(prelude_dir, _unit_text(key))
+    assert compiles(prelude_dir, _unit_text(key))
 
 
 @pytest.mark.slow  # the two Gram-48 certificates: about 15 s of CPU together
 @needs_coqc
 @pytest.mark.parametrize("key", [("thm1.S_r-dot", 7), ("thm1.S_rl-dot", 4)])
 def test_coqc_accepts_the_large_paper_sos_certificates(prelude_dir, key):
-    assert _compiles(prelude_dir, _unit_text(key))
+    assert compiles(prelude_dir, _unit_text(key))
 
 
 @needs_coqc
@@ -206,7 +181,7 @@ def test_coqc_rejects_a_changed_gram_entry(prelude_dir):
         text = sos_unit(step, data, file_label="x.json").text
     except CoqExportError:
         return  # refused by the exporter: also sound
-    assert not _compiles(prelude_dir, text)
+    assert not compiles(prelude_dir, text)
 
 
 @needs_coqc
@@ -215,7 +190,7 @@ def test_coqc_rejects_a_changed_target_coefficient(prelude_dir):
     data = copy.deepcopy(_data(step))
     mono, coeff = data["target"][0]
     data["target"][0] = [mono, str(Fraction(coeff) + 1)]
-    assert not _compiles(prelude_dir, sos_unit(step, data, file_label="x.json").text)
+    assert not compiles(prelude_dir, sos_unit(step, data, file_label="x.json").text)
 
 
 @needs_coqc
@@ -227,7 +202,7 @@ def test_coqc_rejects_a_dropped_square(prelude_dir):
     last = squares.rindex(";\n   (")
     bad = text[:start] + squares[:last] + text[end:]
     assert bad != text
-    assert not _compiles(prelude_dir, bad)
+    assert not compiles(prelude_dir, bad)
 
 
 @needs_coqc
@@ -240,7 +215,7 @@ def test_coqc_rejects_the_certificate_of_another_step(prelude_dir):
         text = sos_unit(step5, other, file_label="x.json").text
     except CoqExportError:
         return
-    assert not _compiles(prelude_dir, text)
+    assert not compiles(prelude_dir, text)
 
 
 @needs_coqc
@@ -248,7 +223,7 @@ def test_coqc_rejects_a_changed_statement(prelude_dir):
     text = _unit_text(SIGN)
     old = "(mneg (outer xi xi)))))) >= 0."
     assert text.count(old) == 1
-    assert not _compiles(prelude_dir, text.replace(old, "(mneg (outer xi xi)))))) >= 1."))
+    assert not compiles(prelude_dir, text.replace(old, "(mneg (outer xi xi)))))) >= 1."))
 
 
 @needs_coqc
@@ -258,7 +233,7 @@ def test_coqc_rejects_a_weakened_hypothesis(prelude_dir):
     text = _unit_text(SIGN)
     old = "Hypothesis assumption1 : pd R_rl."
     assert old in text
-    assert not _compiles(prelude_dir, text.replace(old, "Hypothesis assumption1 : pd (mneg R_rl)."))
+    assert not compiles(prelude_dir, text.replace(old, "Hypothesis assumption1 : pd (mneg R_rl)."))
 
 
 def test_the_report_names_each_sos_step_by_its_exported_theorem(sos_units):
@@ -286,4 +261,4 @@ def test_coqc_rejects_a_changed_multiplier(prelude_dir, key):
     block = next(b for b in data["blocks"] if len(b["multiplier"]) == 3)
     mono, coeff = block["multiplier"][0][0][0]
     block["multiplier"][0][0][0] = [mono, str(Fraction(coeff) * 2)]
-    assert not _compiles(prelude_dir, sos_unit(step, data, file_label="x.json").text)
+    assert not compiles(prelude_dir, sos_unit(step, data, file_label="x.json").text)
