@@ -15,14 +15,13 @@ from pathlib import Path
 
 from verify.coq.kyp import (
     CoqExportError,
-    _comment_text,
     matrix_literal,
     module_name,
     q_literal,
     read_bound_certificate,
     terms_literal,
 )
-from verify.coq.unit import CoqUnit
+from verify.coq.unit import CoqUnit, comment_text
 from verify.coq.witness import psd_witness
 from verify.passivity.check import exact as ex
 from verify.passivity.check.gkyp import embed, gkyp_matrix, is_hermitian
@@ -51,10 +50,10 @@ def gkyp_unit_from_file(path: Path) -> CoqUnit:
         raise CoqExportError(f"{path.name}: no witness that Q >= 0 and L(P, Q) <= 0")
     d_name = "D" if margin == 0 else "D_shifted"
     lines = [
-        f"(** Band certificate {_comment_text(path.name)}: exported by verify; checked by "
+        f"(** Band certificate {comment_text(path.name)}: exported by verify; checked by "
         "coqc.",
-        f"    Model: {_comment_text(cert.name)}",
-        f"    Source file: {_comment_text(cert.source)}",
+        f"    Model: {comment_text(cert.name)}",
+        f"    Source file: {comment_text(cert.source)}",
         f"    Fingerprint (sha256 of the exact A, B, C, D): {cert.fingerprint}",
         f"    Claim: H(jw) + H(jw)^H >= {'0' if margin == 0 else f'2 nu0 I, nu0 = {margin},'}"
         f" for {w1} <= w <= {w2} rad/s wherever H(jw) is defined, by the generalized KYP",

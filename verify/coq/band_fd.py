@@ -32,8 +32,8 @@ from pathlib import Path
 from flint import fmpq, fmpq_mat, fmpq_poly
 
 from verify.coq import interval_witness as iw
-from verify.coq.kyp import CoqExportError, _comment_text, matrix_literal, module_name, q_literal
-from verify.coq.unit import CoqUnit
+from verify.coq.kyp import CoqExportError, matrix_literal, module_name, q_literal
+from verify.coq.unit import CoqUnit, comment_text
 from verify.passivity.check.certificate import ExactModel
 
 THEOREM = "passive_on_band"
@@ -165,9 +165,9 @@ def band_unit(name: str, *, model: ExactModel, band: tuple[Fraction, Fraction],
     d_name = "D" if margin == 0 else "D_shifted"
     bound = "0" if margin == 0 else f"2 nu0 I, nu0 = {margin},"
     lines = [
-        f"(** {_comment_text(origin)}: exported by verify; checked by coqc.",
-        f"    Model: {_comment_text(label)}",
-        f"    Source file: {_comment_text(source)}",
+        f"(** {comment_text(origin)}: exported by verify; checked by coqc.",
+        f"    Model: {comment_text(label)}",
+        f"    Source file: {comment_text(source)}",
         f"    Fingerprint (sha256 of the exact A, B, C, D): {fingerprint}",
         f"    Claim: H(jw) + H(jw)^H >= {bound} for {band[0]} <= w <= {band[1]} rad/s "
         "wherever H(jw) is",

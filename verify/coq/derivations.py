@@ -42,8 +42,15 @@ from fractions import Fraction
 from verify.coq.normal import normal_form
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
-from verify.coq.terms import CoqExportError, Naming, ascii_identifier, constant, coq_text
-from verify.coq.unit import CoqUnit
+from verify.coq.terms import (
+    CoqExportError,
+    Naming,
+    ascii_identifier,
+    assumption_hypothesis,
+    constant,
+    coq_text,
+)
+from verify.coq.unit import CoqUnit, comment_text
 from verify.proof.derivation import Derivation, Step
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, nodes, variables_of
 from verify.proof.hypotheses import Assumption, Condition
@@ -129,8 +136,8 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
         theorems.append("claim")
     section = ascii_identifier(d.name)
     head = [f"(** Exported from the derivation {d.name!r} (verify.proof).",
-            f"    Statement: {_comment(d.statement)}",
-            f"    Paper: {_comment(d.cite)} *)", "", HEADER,
+            f"    Statement: {comment_text(d.statement)}",
+            f"    Paper: {comment_text(d.cite)} *)", "", HEADER,
             f"Section {section}.", ""]
     text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
     return CoqUnit(name, text, tuple(theorems), source or d.name), fates
@@ -156,7 +163,8 @@ def _claim_theorem(sec: _Section, d: Derivation) -> str:
     start, end = coq_text(d.start, sec.naming), coq_text(d.current, sec.naming)
     coq_rel = {"=": "=", "<=": "<=", ">=": ">="}[rel]
     return "\n".join([
-        f"(** The derivation's claim: {_comment(str(d.start))} {rel} {_comment(str(d.current))} *)",
+        f"(** The derivation's claim: {comment_text(str(d.start))} {rel} "
+        f"{comment_text(str(d.current))} *)",
         f"Theorem claim : {start} {coq_rel} {end}.",
         f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""])
 
@@ -169,10 +177,6 @@ def _not_exported_reason(step: Step) -> str:
         return ("proved by an SOS certificate: the paper's are exported as units of their "
                 "own (verify coq); a derivation file's are not exported")
     return f"justification {kind!r} is not exported"
-
-
-def _comment(text: str) -> str:
-    return text.replace("(*", "( *").replace("*)", "* )")
 
 
 # -- collecting ---------------------------------------------------------------------------
@@ -223,7 +227,7 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
     out, naming = sec.lines, sec.naming
     for v in variables:
         n = naming.variable(v)
-        label = _comment(v.name)
+        label = comment_text(v.name)
         if v.kind == "rotation":
             out += [f"(** {label}: a rotation, rot q with |q|^2 <> 0 *)",
                     f"Variable q_{n} : quat.",
@@ -262,7 +266,7 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
             continue
         seen.add(lam)
         arg = coq_text(node.args[0], naming)
-        out += [f"(** lambda_min({_comment(str(node.args[0]))}) *)", f"Variable {lam} : R.",
+        out += [f"(** lambda_min({comment_text(str(node.args[0]))}) *)", f"Variable {lam} : R.",
                 f"Hypothesis {lam}_spec : lam_min_spec {arg} {lam}.", ""]
         sec.variables.append(lam)
         sec.basic.append(f"{lam}_spec")
@@ -273,7 +277,7 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
         name = f"condition{len(sec.conditions) + 1}"
         sec.conditions[id(c)] = name
         sec.condition_objs[id(c)] = c
-        out += [f"(** side condition: {_comment(c.label)} *)",
+        out += [f"(** side condition: {comment_text(c.label)} *)",
                 f"Hypothesis {name} : {coq_text(c.lhs, naming)} = {coq_text(c.rhs, naming)}.",
                 ""]
     assumptions = list(d.assumes)
@@ -288,12 +292,7 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
             continue
         name = f"assumption{len(sec.assumptions) + 1}"
         sec.assumptions[id(a)] = name
-        e = coq_text(a.expr, naming)
-        stmt = {"pos": f"0 < {e}", "nonneg": f"0 <= {e}", "pd": f"pd {e}",
-                "psd": f"psd {e}"}[a.kind]
-        cite = f" ({_comment(a.cite)})" if a.cite else ""
-        out += [f"(** assumption: {_comment(a.label)}{cite} *)",
-                f"Hypothesis {name} : {stmt}.", ""]
+        out += assumption_hypothesis(name, a, naming)
 
 
 # -- steps ----------------------------------------------------------------------------------
@@ -304,8 +303,8 @@ def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) ->
     hyps = list(sec.basic) + [sec.conditions[id(c)] for c in conds]
     lhs, rhs = coq_text(step.lhs, naming), coq_text(step.rhs, naming)
     note = step.because.describe()
-    head = [f"(** Step {k}: {_comment(str(step.lhs))} {step.relation} "
-            f"{_comment(str(step.rhs))}", f"    ({_comment(note)}) *)"]
+    head = [f"(** Step {k}: {comment_text(str(step.lhs))} {step.relation} "
+            f"{comment_text(str(step.rhs))}", f"    ({comment_text(note)}) *)"]
     if isinstance(step.because, ByAlgebra):
         if step.relation != "=":
             raise CoqExportError("an algebra step must be an equality")

@@ -33,7 +33,7 @@ from typing import Any
 
 from gmpy2 import mpq
 
-from verify.coq.unit import CoqUnit
+from verify.coq.unit import CoqExportError, CoqUnit, comment_text
 from verify.coq.witness import Witness, psd_witness
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, kyp_matrix
@@ -42,10 +42,6 @@ from verify.passivity.io.binding import shifted
 
 #: The theorem every KYP unit proves.
 THEOREM = "passive"
-
-
-class CoqExportError(ValueError):
-    """A certificate that cannot be exported (one line, says why)."""
 
 
 def q_literal(x: mpq | Fraction | int, den: int | None = None) -> str:
@@ -116,11 +112,6 @@ def module_name(file_name: str) -> str:
     return "Cert_" + re.sub(r"[^A-Za-z0-9]+", "_", stem).strip("_")
 
 
-def _comment_text(text: str) -> str:
-    """Text safe inside a Coq comment (no nested comment markers)."""
-    return text.replace("(*", "( *").replace("*)", "* )")
-
-
 def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Fraction,
              label: str, source: str, fingerprint: str, origin: str) -> CoqUnit:
     """The Coq unit proving ``kyp_certified`` for (A, B, C, D - margin I) and P.
@@ -143,9 +134,9 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
                              "semidefinite, or has no room for the rounded factor)")
     d_name = "D"
     lines = [
-        f"(** {_comment_text(origin)}: exported by verify; checked by coqc.",
-        f"    Model: {_comment_text(label)}",
-        f"    Source file: {_comment_text(source)}",
+        f"(** {comment_text(origin)}: exported by verify; checked by coqc.",
+        f"    Model: {comment_text(label)}",
+        f"    Source file: {comment_text(source)}",
         f"    Fingerprint (sha256 of the exact A, B, C, D): {fingerprint}",
         "    Claim: H"
         + ("" if margin == 0 else f" - nu0 I, nu0 = {margin},")

@@ -27,8 +27,8 @@ from verify.coq.band_fd import (
     sign_polynomials,
     witness_literal,
 )
-from verify.coq.kyp import CoqExportError, _comment_text, module_name
-from verify.coq.unit import CoqUnit
+from verify.coq.kyp import CoqExportError, module_name
+from verify.coq.unit import CoqUnit, comment_text
 from verify.passivity.check.certificate import ExactModel
 
 THEOREM = "frequency_inequality"
@@ -67,15 +67,15 @@ def pr_unit(name: str, *, model: ExactModel, margin: Fraction, label: str, sourc
     d_name = "D" if margin == 0 else "D_shifted"
     bound = "0" if margin == 0 else f"2 nu0 I, nu0 = {margin},"
     lines = [
-        f"(** {_comment_text(origin)}: exported by verify; checked by coqc.",
-        f"    Model: {_comment_text(label)}",
-        f"    Source file: {_comment_text(source)}",
+        f"(** {comment_text(origin)}: exported by verify; checked by coqc.",
+        f"    Model: {comment_text(label)}",
+        f"    Source file: {comment_text(source)}",
         f"    Fingerprint (sha256 of the exact A, B, C, D): {fingerprint}",
         f"    Claim: H(jw) + H(jw)^H >= {bound} for every w >= 0 wherever H(jw) is defined",
         "    ([fdi_holds] in BandCert.v; H(jw) = N(jw) / d(jw) as in BandCert.v's header, "
         "the",
         "    matrix inverse behind it trusted).  Not kernel-checked: "
-        + _comment_text(NOT_KERNEL_CHECKED.split(" are not stated in Coq")[0]) + ".",
+        + comment_text(NOT_KERNEL_CHECKED.split(" are not stated in Coq")[0]) + ".",
         "    The witnesses: for each sign polynomial p, p = g^2 q, q in Bernstein form on "
         "pieces",
         "    of [0, u] and q = sum c (x - u)^i with c >= 0 on [u, oo). *)",

@@ -41,8 +41,14 @@ from dataclasses import dataclass
 from fractions import Fraction
 from pathlib import Path
 
-from verify.coq.terms import CoqExportError, Naming, ascii_identifier, coq_text
-from verify.coq.unit import CoqUnit
+from verify.coq.terms import (
+    CoqExportError,
+    Naming,
+    ascii_identifier,
+    assumption_hypothesis,
+    coq_text,
+)
+from verify.coq.unit import CoqUnit, comment_text
 
 HEADER = """From Coq Require Import Reals QArith List Lra.
 From VerifyCoq Require Import SO3 SOSCert.
@@ -139,7 +145,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     space = problem.space
     lines: list[str] = []
     env: list[str] = []
-    factor_text: dict[tuple, tuple[str, str]] = {}  # factor poly key -> (text, 0 < text)
+    factor_text = _chart_factors(naming, space)  # factor poly key -> (text, 0 < text)
     unfold_extra: list[str] = []
     rot_positions: dict[tuple, tuple[int, str]] = {}  # |q|^2 -> (env position, q <> 0)
 
@@ -148,7 +154,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
 
     for v in space.variables:
         nm = naming.variable(v)
-        label = v.name.replace("(*", "( *").replace("*)", "* )")
+        label = comment_text(v.name)
         g = space.param_gens[v.uid]
         if v.kind == "rotation":
             lines += [f"(** {label}: a rotation, rot q with |q|^2 <> 0 *)",
@@ -158,9 +164,6 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
             rot_positions[key_of(g[0] ** 2 + g[1] ** 2 + g[2] ** 2 + g[3] ** 2)] = (
                 len(env), f"q_{nm}_nonzero")
             env += [f"(q{c} q_{nm})" for c in "wxyz"]
-            w, x, y, z = g
-            factor_text[key_of(w * w + x * x + y * y + z * z)] = (
-                f"(qn q_{nm})", f"(qn_pos q_{nm} q_{nm}_nonzero)")
         elif v.kind == "unit_vector":
             a, b = f"a_{nm}", f"b_{nm}"
             lines += [f"(** {label}: a unit vector in the stereographic chart (every unit "
@@ -169,8 +172,6 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
                       f"Hypothesis {nm}_chart : {nm} = stereo {a} {b}.", ""]
             env += [a, b]
             unfold_extra.append(f"rewrite ?{nm}_chart; unfold stereo")
-            factor_text[key_of(1 + g[0] ** 2 + g[1] ** 2)] = (
-                f"(1 + {a} * {a} + {b} * {b})", f"(chart_den_pos {a} {b})")
         elif v.kind == "angle":
             t = f"t_{nm}"
             lines += [f"(** {label}: an angle with tan({label}/2) = {t} (every angle but "
@@ -180,7 +181,6 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
                       f"Hypothesis {nm}_sin : sin {nm} = 2 * {t} / (1 + {t} * {t}).", ""]
             env.append(t)
             unfold_extra.append(f"rewrite ?{nm}_cos, ?{nm}_sin")
-            factor_text[key_of(1 + g[0] ** 2)] = (f"(1 + {t} * {t})", f"(angle_den_pos {t})")
         elif v.kind == "symmetric":
             parts = [f"{nm}_{ij}" for ij in ("11", "22", "33", "12", "13", "23")]
             lines += [f"(** {label}: a symmetric matrix, by its six entries *)",
@@ -205,7 +205,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     for atom in space.atoms:
         lam = naming.lambda_atom(atom)
         arg = coq_text(atom.args[0], naming)
-        lines += [f"(** lambda_min({_comment(str(atom.args[0]))}): a lower bound suffices *)",
+        lines += [f"(** lambda_min({comment_text(str(atom.args[0]))}): a lower bound suffices *)",
                   f"Variable {lam} : R.",
                   f"Hypothesis {lam}_spec : lam_min_spec {arg} {lam}.", ""]
         env.append(lam)
@@ -215,30 +215,15 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     assumptions: dict[int, tuple[str, object]] = {}
     for k, a in enumerate(st.because.assumptions, start=1):
         name = f"assumption{k}"
-        e = coq_text(a.expr, naming)
-        stmt = {"pos": f"0 < {e}", "nonneg": f"0 <= {e}", "pd": f"pd {e}",
-                "psd": f"psd {e}"}[a.kind]
-        cite = f" ({_comment(a.cite)})" if a.cite else ""
-        lines += [f"(** assumption: {_comment(a.label)}{cite} *)",
-                  f"Hypothesis {name} : {stmt}.", ""]
+        lines += assumption_hypothesis(name, a, naming)
         assumptions[id(a)] = (name, a)
 
     def product_text(exps: dict[tuple, int]) -> tuple[str, str, str]:
         """(text, proof of 0 < text, proof of 0 <= text) of a product of known factors."""
-        parts, pos = [], []
-        for key, k in sorted(exps.items()):
-            if k <= 0:
-                continue
-            if key not in factor_text:
-                raise CoqExportError("a denominator factor of no known chart")
-            text, proof = factor_text[key]
-            parts.append(f"{text} ^ {k}")
-            pos.append(f"(pow_lt _ {k} {proof})")
-        if not parts:
+        found = _power_product(sorted(exps.items()), factor_text)
+        if found is None:
             return "1", "Rlt_0_1", "Rle_0_1"
-        text, proof = parts[0], pos[0]
-        for t2, p2 in zip(parts[1:], pos[1:], strict=True):
-            text, proof = f"({text} * {t2})", f"(Rmult_lt_0_compat _ _ {proof} {p2})"
+        text, proof = found
         return text, proof, f"(Rlt_le _ _ {proof})"
 
     def den_exps(kf) -> dict[tuple, int]:
@@ -295,7 +280,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
             squares.append(f"({_q(dval)}, [{'; '.join(u)}])")
         hname, sname = f"H{b_index}", f"S{b_index}"
         rows = "; ".join("[" + "; ".join(poly_data(e) for e in row) + "]" for row in matrix)
-        body += [f"(** block {b_index}: {_comment(grounds)} *)",
+        body += [f"(** block {b_index}: {comment_text(grounds)} *)",
                  f"Definition {hname} : list (list poly) := [{rows}].",
                  f"Definition {sname} : list (Q * list poly) :=",
                  "  [" + ";\n   ".join(squares) + "].", ""]
@@ -342,8 +327,8 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
     thm = theorem_name(step.step)
     head = [f"(** SOS certificate {file_label}, exported to Coq.",
             f"    It proves step {step.step} of the derivation {step.original!r} "
-            f"(verify.paper_proofs): {_comment(str(st.lhs))} {st.relation} "
-            f"{_comment(str(st.rhs))}.",
+            f"(verify.paper_proofs): {comment_text(str(st.lhs))} {st.relation} "
+            f"{comment_text(str(st.rhs))}.",
             "    The certificate's data (target polynomial, multipliers, LDL^T squares) "
             "is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and "
             "the link from the statement to the target polynomial are proved by field.",
@@ -382,7 +367,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
             "Qed.", ""]
     else:
         link = [
-            f"(** The link: the slack of the statement times {_comment(d_text)} is the "
+            f"(** The link: the slack of the statement times {comment_text(d_text)} is the "
             "target polynomial at the parameters (times the factors divided out of it), "
             "by field. *)",
             *link_head,
@@ -405,10 +390,6 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         *proof,
         f"End {section}.", ""])
     return CoqUnit(unit_name(step.original, step.step), text, (thm,), file_label)
-
-
-def _comment(text: str) -> str:
-    return text.replace("(*", "( *").replace("*)", "* )")
 
 
 @dataclass(frozen=True)
@@ -495,9 +476,14 @@ def _multiplier_plans(problem, because, naming: Naming, assumptions,
     return plans
 
 
-def _den_text(kf, naming: Naming, space) -> tuple[str, str]:
-    """(text, proof of 0 <= text) of a known fraction's denominator."""
+def _chart_factors(naming: Naming, space) -> dict[tuple, tuple[str, str]]:
+    """The denominators the parametrisations bring (|q|^2 of a rotation, 1 + a^2 + b^2 of
+    a unit vector's chart, 1 + t^2 of an angle's), each by its polynomial's key: its Coq
+    text and the prelude's proof that it is positive."""
     from verify.sos import poly as pl
+
+    def key_of(poly) -> tuple:
+        return tuple(sorted(pl.from_ring(poly).items()))
 
     known: dict[tuple, tuple[str, str]] = {}
     for v in space.variables:
@@ -505,29 +491,47 @@ def _den_text(kf, naming: Naming, space) -> tuple[str, str]:
         g = space.param_gens[v.uid]
         if v.kind == "rotation":
             w, x, y, z = g
-            known[tuple(sorted(pl.from_ring(w * w + x * x + y * y + z * z).items()))] = (
+            known[key_of(w * w + x * x + y * y + z * z)] = (
                 f"(qn q_{nm})", f"(qn_pos q_{nm} q_{nm}_nonzero)")
         elif v.kind == "unit_vector":
-            known[tuple(sorted(pl.from_ring(1 + g[0] ** 2 + g[1] ** 2).items()))] = (
+            known[key_of(1 + g[0] ** 2 + g[1] ** 2)] = (
                 f"(1 + a_{nm} * a_{nm} + b_{nm} * b_{nm})", f"(chart_den_pos a_{nm} b_{nm})")
         elif v.kind == "angle":
-            known[tuple(sorted(pl.from_ring(1 + g[0] ** 2).items()))] = (
-                f"(1 + t_{nm} * t_{nm})", f"(angle_den_pos t_{nm})")
+            known[key_of(1 + g[0] ** 2)] = (f"(1 + t_{nm} * t_{nm})", f"(angle_den_pos t_{nm})")
+    return known
+
+
+def _power_product(exps, known: dict[tuple, tuple[str, str]]) -> tuple[str, str] | None:
+    """(text, proof of 0 < text) of the product of ``known`` factors to the powers
+    ``exps`` ((key, exponent) pairs, in the order given; exponents <= 0 left out), or None
+    for the empty product."""
     parts, proofs = [], []
-    for f, e in zip(kf.den.factors, kf.exps, strict=False):
-        if not e:
+    for key, e in exps:
+        if e <= 0:
             continue
-        key = tuple(sorted(pl.from_ring(f).items()))
         if key not in known:
             raise CoqExportError("a denominator factor of no known chart")
         text, proof = known[key]
         parts.append(f"{text} ^ {e}")
         proofs.append(f"(pow_lt _ {e} {proof})")
     if not parts:
-        return "1", "Rle_0_1"
+        return None
     text, proof = parts[0], proofs[0]
     for t2, p2 in zip(parts[1:], proofs[1:], strict=True):
         text, proof = f"({text} * {t2})", f"(Rmult_lt_0_compat _ _ {proof} {p2})"
+    return text, proof
+
+
+def _den_text(kf, naming: Naming, space) -> tuple[str, str]:
+    """(text, proof of 0 <= text) of a known fraction's denominator."""
+    from verify.sos import poly as pl
+
+    exps = [(tuple(sorted(pl.from_ring(f).items())), e)
+            for f, e in zip(kf.den.factors, kf.exps, strict=False)]
+    found = _power_product(exps, _chart_factors(naming, space))
+    if found is None:
+        return "1", "Rle_0_1"
+    text, proof = found
     return text, f"(Rlt_le _ _ {proof})"
 
 

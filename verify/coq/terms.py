@@ -13,12 +13,8 @@ from __future__ import annotations
 import unicodedata
 from fractions import Fraction
 
+from verify.coq.unit import CoqExportError, comment_text
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, Variable, structural_key
-
-
-class CoqExportError(ValueError):
-    """A step or certificate the exporter cannot state or prove in Coq (with the reason)."""
-
 
 # Names the prelude or Coq's standard library already use.
 RESERVED = frozenset("""
@@ -154,3 +150,17 @@ def _node(e: Expr, go, naming: Naming, use_phi: bool) -> str:
     if op == "outer":
         return f"(outer {go(a[0])} {go(a[1])})"
     raise CoqExportError(f"no Coq counterpart for the operation {op!r}")
+
+
+#: How each kind of declared assumption reads as a Coq proposition about its term.
+ASSUMPTION_STATEMENTS = {"pos": "0 < {}", "nonneg": "0 <= {}", "pd": "pd {}", "psd": "psd {}"}
+
+
+def assumption_hypothesis(name: str, assumption, naming: Naming) -> list[str]:
+    """A paper assumption (``pos``, ``nonneg``, ``pd`` or ``psd`` of an expression) as a
+    named ``Hypothesis``, its label and citation in a comment above it."""
+    statement = ASSUMPTION_STATEMENTS[assumption.kind].format(coq_text(assumption.expr, naming))
+    cite = f" ({comment_text(assumption.cite)})" if assumption.cite else ""
+    return [f"(** assumption: {comment_text(assumption.label)}{cite} *)",
+            f"Hypothesis {name} : {statement}.", ""]
+

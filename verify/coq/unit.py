@@ -1,4 +1,5 @@
-"""One exported Coq file: its module name, its source and the theorems it proves."""
+"""One exported Coq file: its module name, its source and the theorems it proves; the
+error every exporter raises, and text made safe inside a Coq comment."""
 
 from __future__ import annotations
 
@@ -6,6 +7,16 @@ import re
 from dataclasses import dataclass
 
 _COQ_IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
+
+
+class CoqExportError(ValueError):
+    """A step or certificate the exporter cannot state or prove in Coq (one line, with
+    the reason)."""
+
+
+def comment_text(text: str) -> str:
+    """Text safe inside a Coq comment (no nested comment markers)."""
+    return text.replace("(*", "( *").replace("*)", "* )")
 
 
 @dataclass(frozen=True)
