@@ -170,8 +170,13 @@ def _build_parser() -> argparse.ArgumentParser:
                         "and exact witness marked (PNG or PDF by the suffix); with several "
                         "models, one file per model: nu.pdf gives nu-<model stem>.pdf")
     p_gate.add_argument("--coq", type=Path, metavar="DIR",
-                        help="also write a Coq development of the models' KYP certificates "
-                        "to DIR, and compile it with coqc when coqc is installed")
+                        help="also write a Coq development of the verdicts (certificates of "
+                        "passive models, witnesses of the others) to DIR, and compile it "
+                        "with coqc when coqc is installed; the JSON and JUnit outputs give "
+                        "each verdict's kernel status")
+    p_gate.add_argument("--require-coq", action="store_true",
+                        help="with --coq: fail (exit 1) unless coqc accepted a unit for "
+                        "every verdict printed (the flag a lab's CI sets)")
 
     p_coq = sub.add_parser(
         "coq",
@@ -507,6 +512,9 @@ def _cmd_gate(args: argparse.Namespace) -> int:
         raise VerifyInputError("--json - and --junit -: only one output can go to standard "
                                "output")
     outputs.folder("--certificates", args.certificates)
+    if args.require_coq and args.coq is None:
+        raise VerifyInputError("--require-coq needs --coq DIR (the folder of the Coq "
+                               "development it compiles)")
     if args.coq is not None:
         if args.coq.resolve() == args.certificates.resolve():
             raise VerifyInputError("--coq DIR must not be the --certificates folder (the Coq "
@@ -546,6 +554,7 @@ def _cmd_gate(args: argparse.Namespace) -> int:
               + (f" with margin {short_text(margin)}" if margin else "")
               + (f"; {errors} ended in an internal error (no verdict; set "
                  "VERIFY_DEBUG=1 and report it)" if errors else ""), file=text)
+        coq_ok = _gate_kernel(args, results, stage, text)
         if args.json:
             outputs.write(args.json, json_text(results))
         if args.junit:
@@ -561,14 +570,36 @@ def _cmd_gate(args: argparse.Namespace) -> int:
                 stage(f"drawing {path}")
                 outputs.write(path, passivity_figure_bytes(r.decision, figure_format(path)))
                 print(shown(f"figure: {path}"), file=text)
-    coq_ok = True
-    if args.coq is not None:
-        from verify.coq.command import gate_development
-
-        stage(f"writing the Coq development to {args.coq}")
-        paths = [r.certificate_path for r in results if r.certificate_path is not None]
-        coq_ok = gate_development(paths, args.coq)
     return 3 if errors else 0 if passed == len(results) and coq_ok else 1
+
+
+def _gate_kernel(args: argparse.Namespace, results, stage, text) -> bool:
+    """Each result's kernel status (``--coq``: the verdicts' development, compiled);
+    False when coqc refused it or, with ``--require-coq``, a verdict is not in Coq."""
+    import contextlib
+
+    from verify.coq.gate_kernel import (
+        default_status,
+        gate_kernel,
+        require_coq_problems,
+    )
+
+    if args.coq is None:
+        for r in results:
+            status = default_status(r)
+            r.kernel, r.coq_theorem = status.kernel, status.theorem
+        return True
+    stage(f"writing the Coq development to {args.coq}")
+    with contextlib.redirect_stdout(text):
+        statuses, accepted = gate_kernel(results, args.coq)
+    for r, status in zip(results, statuses, strict=True):
+        r.kernel, r.coq_theorem = status.kernel, status.theorem
+    if args.require_coq:
+        problems = require_coq_problems(results, statuses)
+        for p in problems:
+            print(shown(f"coq: --require-coq: not accepted by coqc: {p}"), file=text)
+        return accepted and not problems
+    return accepted
 
 
 #: Models up to this many states decide in well under 2 s: on a terminal no stage lines

@@ -64,6 +64,10 @@ class GateResult:
     indices: tuple | None = None  # (IFP, OFP) IndexBounds when asked for
     kept: bool = False  # the certificate file already held a valid one of the same claim
     error: str | None = None  # the tool failed on this model (a bug): no verdict
+    #: What checked the verdict (``coq``, ``exact-python``, ``not-exported: reason``) and
+    #: the Coq theorem stating it; set by ``verify gate`` (``--coq`` compiles the units).
+    kernel: str | None = None
+    coq_theorem: str | None = None
 
     @property
     def passed(self) -> bool:
@@ -261,11 +265,16 @@ def _json_entry(r: GateResult) -> dict:
         d = r.decision
         return {"name": d.model.name, "source": d.model.source, "verdict": "error",
                 "reason": d.reason, "error": r.error, "seconds": round(d.seconds, 4),
-                "passed": False, "certificate": None}
+                "passed": False, "certificate": None, **_kernel_json(r)}
     return {**r.decision.to_json(), "passed": r.passed,
             "certificate": None if r.certificate_path is None else str(r.certificate_path),
+            **_kernel_json(r),
             **({} if r.indices is None else {
                 "indices": {i.kind: i.to_json() for i in r.indices}})}
+
+
+def _kernel_json(r: GateResult) -> dict:
+    return {} if r.kernel is None else {"kernel": r.kernel, "coq_theorem": r.coq_theorem}
 
 
 def write_json(results: list[GateResult], path: Path) -> None:
@@ -283,6 +292,8 @@ class JunitCase:
     passed: bool
     verdict: str
     reason: str
+    #: Properties of the case (e.g. its kernel status), written as JUnit <properties>.
+    properties: tuple[tuple[str, str], ...] = ()
 
 
 def junit_text(cases: list[JunitCase], suite: str = "passivity gate") -> str:
@@ -297,6 +308,10 @@ def junit_text(cases: list[JunitCase], suite: str = "passivity gate") -> str:
             f"<{tag} message={quoteattr(c.verdict + ': ' + c.reason)}>"
             f"{escape(c.reason)}</{tag}>"
         )
+        props = "".join(f"<property name={quoteattr(k)} value={quoteattr(v)}/>"
+                        for k, v in c.properties)
+        if props:
+            body = f"<properties>{props}</properties>{body}"
         lines.append(
             f'  <testcase classname="{c.classname}" name={quoteattr(c.name)} '
             f'file={quoteattr(c.file)} time="{c.seconds:.4f}">{body}</testcase>'
@@ -313,8 +328,15 @@ def gate_cases(results: list[GateResult]) -> list[JunitCase]:
     return [JunitCase("verify.gate", r.decision.model.name, r.decision.model.source,
                       r.decision.seconds, r.passed,
                       "error" if r.error is not None else str(r.decision.verdict),
-                      r.decision.reason)
+                      r.decision.reason, _kernel_properties(r))
             for r in results]
+
+
+def _kernel_properties(r: GateResult) -> tuple[tuple[str, str], ...]:
+    if r.kernel is None:
+        return ()
+    return (("kernel", r.kernel),) + ((("coq_theorem", r.coq_theorem),)
+                                      if r.coq_theorem else ())
 
 
 def write_junit(results: list[GateResult], path: Path) -> None:
