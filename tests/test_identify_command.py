@@ -74,12 +74,18 @@ def test_json_summary_fields(passive_run):
     w_max = s["largest_band"]["w_max"]
     assert w_max is not None and Fraction(w_max) >= 1
     assert "never exactly 0" in s["high_frequency"]
+    # what checked each verdict, as a CI reads it (verify gate --coq compiles units)
+    assert s["nominal"]["kernel"] == "exact-python"
+    assert s["robust"]["kernel"] == "exact-python"
+    assert "coq_theorem" in s["robust"] and "kernel" in s["largest_band"]
 
 
 def test_junit_has_the_nominal_and_robust_cases(passive_run):
     _, d, _ = passive_run
     suite = ET.parse(d / "j.xml").getroot()
     assert suite.get("tests") == "2" and suite.get("failures") == "0"
+    kernels = [p.get("value") for p in suite.iter("property") if p.get("name") == "kernel"]
+    assert kernels == ["exact-python", "exact-python"]
 
 
 def test_all_frequencies_fail_for_the_paper_class_exit_1(logs, tmp_path, capsys):

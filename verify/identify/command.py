@@ -573,18 +573,31 @@ def summary_json(o: Outcome) -> dict[str, Any]:
         "model": str(o.model_path),
         "nominal": {**nominal, "passed": o.nominal.passed,
                     "certificate": None if o.nominal_certificate is None else
-                    str(o.plan.out / o.nominal_certificate[0])},
+                    str(o.plan.out / o.nominal_certificate[0]),
+                    "kernel": _kernel(str(o.nominal.decision.verdict)), "coq_theorem": None},
         "robust": {**o.robust.to_json(), "level": str(LEVEL),
                    "certificate": _cert_path(o, o.robust.certificate),
-                   **_robust_answer(o)},
+                   **_robust_answer(o), "kernel": _kernel(str(o.robust.verdict)),
+                   "coq_theorem": None},
         "largest_band": {**o.band_search.to_json(),
-                         "certificate": _cert_path(o, o.band_search.certificate)},
+                         "certificate": _cert_path(o, o.band_search.certificate),
+                         "kernel": _kernel("passive" if o.band_search.certificate
+                                           else "inconclusive"), "coq_theorem": None},
         "high_frequency": o.high_frequency_note,
         "passivity_test": _passivity_json(o),
         "model_class": None if o.identified.model_class is None else {
             **o.identified.model_class.to_json(), "answers": o.model_class_note},
         "passed": o.passed,
     }
+
+
+def _kernel(verdict: str) -> str:
+    """The kernel status of a verdict of this command (see ``verify gate --coq``): every
+    verdict here is decided by the exact Python checkers; its certificate files become
+    Coq units with ``verify coq FILES --check``."""
+    if verdict in ("passive", "not passive"):
+        return "exact-python"
+    return f"not-exported: no verdict to prove ({verdict})"
 
 
 def _passive_files(plan: Plan, identified: Identified) -> dict[Path, bytes | str]:
@@ -638,10 +651,12 @@ def junit(o: Outcome) -> str:
     d = o.nominal.decision
     return junit_text([
         JunitCase("verify.identify", f"nominal: {o.plan.name}", str(o.model_path), d.seconds,
-                  o.nominal.passed, str(d.verdict), d.reason),
+                  o.nominal.passed, str(d.verdict), d.reason,
+                  (("kernel", _kernel(str(d.verdict))),)),
         JunitCase("verify.identify", f"robust ({float(LEVEL):.0%} region) {where}: "
                   f"{o.plan.name}", str(o.model_path), o.robust.seconds, o.robust.passed,
-                  str(o.robust.verdict), f"{o.robust.headline()}. {o.robust.reason}"),
+                  str(o.robust.verdict), f"{o.robust.headline()}. {o.robust.reason}",
+                  (("kernel", _kernel(str(o.robust.verdict))),)),
     ], suite="identification")
 
 

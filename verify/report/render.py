@@ -126,12 +126,15 @@ def _claim_json(r: ClaimResult) -> dict[str, Any]:
 
 def report_data(run: RunResult) -> dict[str, Any]:
     """The JSON document of a run (schema ``verify-report/3``: no date, no timings)."""
+    from verify.report.kernel_status import annotate_claims
+
     return {
         "schema": REPORT_SCHEMA,
         "seed": run.seed,
         "environment": _versions(),
         "counts": run.counts(),
-        "claims": [_claim_json(r) for r in run.results],
+        # each step and claim with its Coq theorem and kernel status
+        "claims": annotate_claims([_claim_json(r) for r in run.results]),
     }
 
 

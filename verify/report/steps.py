@@ -130,6 +130,12 @@ def _coq_theorem(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
     return theorem_name(name, step["index"])
 
 
+def step_coq_theorem(name: str, step: dict, twins: set[tuple[str, int]]) -> str:
+    """The Coq theorem of a step of the derivation ``name`` ("" when none): see
+    :func:`_coq_theorem`."""
+    return _coq_theorem(name, step, twins)
+
+
 def derivation_tables(results, twins: set[tuple[str, int]]) -> list[DerivationTable]:
     """The tables of the derivations the given claims checked, in order."""
     out = []

@@ -1,0 +1,69 @@
+"""report.json names what checked each step and claim (:mod:`verify.report.kernel_status`):
+every verified step of a derivation has a Coq theorem of the committed development, or
+says why not."""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+from report_fixtures import claim, derivation, run_of, step
+
+from verify.report.kernel_status import COQ, EXACT_PYTHON, annotate_claims
+from verify.report.render import report_data
+
+ROOT = Path(__file__).resolve().parents[1]
+REPORT = ROOT / "reports" / "report.json"
+DEVELOPMENT = ROOT / "certificates" / "coq"
+
+
+def _steps(claims):
+    for c in claims:
+        for e in c["evidence"]:
+            if e["kind"] == "derivation":
+                for s in e["data"]["steps"]:
+                    yield c, e["data"]["name"], s
+
+
+def test_every_verified_step_of_the_report_has_a_coq_theorem_of_the_development():
+    claims = json.loads(REPORT.read_text())["claims"]
+    checked = 0
+    for c, name, s in _steps(claims):
+        if s["verdict"] != "verified":
+            continue
+        assert "coq_theorem" in s and "kernel_status" in s, (c["id"], name, s["index"])
+        if s["justification"].startswith("cited:"):
+            assert s["kernel_status"].startswith("not-exported: a cited premise")
+            continue
+        theorem = s["coq_theorem"]
+        assert theorem, f"{c['id']}: {name} step {s['index']} is verified without a Coq " \
+            "theorem in report.json"
+        assert s["kernel_status"] == COQ
+        module, _, local = theorem.partition(".")
+        text = (DEVELOPMENT / f"{module}.v").read_text()
+        assert re.search(rf"\b(Theorem|Lemma)\s+{re.escape(local)}\b", text), theorem
+        checked += 1
+    assert checked >= 40  # the paper's Lemma 1 and Theorem 1 steps
+    for c in claims:
+        assert "kernel" in c and "coq_theorems" in c, c["id"]
+    assert all(t in {x for _, _, s in _steps(claims) for x in [s["coq_theorem"]]}
+               for c in claims for t in c["coq_theorems"])
+
+
+def test_the_committed_report_is_annotated_as_a_fresh_render_would_be():
+    data = json.loads(REPORT.read_text())
+    assert annotate_claims(data["claims"]) == data["claims"]
+
+
+def test_statuses_of_a_rendered_run():
+    hand = derivation("d.chain", "x", [step(1, "=", "y"), step(2, "<=", "z",
+                                                               "cited: a textbook bound")])
+    run = run_of(claim("c.one", "S", evidence=[hand]))
+    [c] = report_data(run)["claims"]
+    steps = c["evidence"][0]["data"]["steps"]
+    assert steps[0]["coq_theorem"] == "d_chain.step1" and steps[0]["kernel_status"] == COQ
+    assert steps[1]["coq_theorem"] is None
+    assert steps[1]["kernel_status"].startswith("not-exported: a cited premise")
+    # a verified step without a theorem keeps the claim from the status "coq"
+    assert c["kernel"] == EXACT_PYTHON and c["coq_theorems"] == ["d_chain.step1"]
