@@ -461,16 +461,27 @@ def _cmd_check(args: argparse.Namespace) -> int:
         outputs.write(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
                                             indent=2, ensure_ascii=True) + "\n")
     if args.coq:
-        _write_coq(args.coq, derivations)
+        _write_coq(args.coq, derivations, args.certificates)
     return 0 if all(r.verdict == "verified" for r in results) else 1
 
 
-def _write_coq(folder: Path, derivations) -> None:
-    """``verify check --coq DIR``: export every step Coq can state and prove."""
+def _write_coq(folder: Path, derivations, certificates: Path) -> None:
+    """``verify check --coq DIR``: export every step Coq can state and prove (an SOS
+    step by its stored certificate, :mod:`verify.coq.user_sos`)."""
+    from dataclasses import replace
+
     from verify.coq.development import write_development
     from verify.coq.paper import derivation_exports
+    from verify.coq.user_sos import user_sos_units
 
     units, fates = derivation_exports(derivations)
+    sos_units, sos_fates = user_sos_units(derivations, certificates)
+    units += sos_units
+    for i, f in enumerate(fates):
+        fate = sos_fates.get((f.derivation, f.step))
+        if fate is not None and not f.theorem:
+            fates[i] = replace(f, reason=fate.removeprefix("refused: ")) \
+                if fate.startswith("refused: ") else replace(f, theorem=fate, reason="")
     write_development(folder, units)
     done = [f for f in fates if f.theorem]
     for f in fates:

@@ -128,8 +128,10 @@ def poly_data(p: dict) -> str:
 
 
 # -- the unit ----------------------------------------------------------------------------
-def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
-    """The unit of one certificate (``data``, parsed JSON) for ``step``."""
+def sos_unit(step: SosStep, data: dict, *, file_label: str,
+             module: str | None = None) -> CoqUnit:
+    """The unit of one certificate (``data``, parsed JSON) for ``step`` (its module
+    ``module``, by default named after the step)."""
     from verify.proof.checker import step_problem
     from verify.proof.sos_step import step_program
     from verify.sos import poly as pl
@@ -389,7 +391,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str) -> CoqUnit:
         *link,
         *proof,
         f"End {section}.", ""])
-    return CoqUnit(unit_name(step.original, step.step), text, (thm,), file_label)
+    return CoqUnit(module or unit_name(step.original, step.step), text, (thm,), file_label)
 
 
 @dataclass(frozen=True)
@@ -516,7 +518,9 @@ def _power_product(exps, known: dict[tuple, tuple[str, str]]) -> tuple[str, str]
         proofs.append(f"(pow_lt _ {e} {proof})")
     if not parts:
         return None
-    text, proof = parts[0], proofs[0]
+    # one factor is parenthesised too: a tactic's term list ("exists t, 1") takes no
+    # bare "x ^ e"
+    text, proof = (parts[0] if len(parts) > 1 else f"({parts[0]})"), proofs[0]
     for t2, p2 in zip(parts[1:], proofs[1:], strict=True):
         text, proof = f"({text} * {t2})", f"(Rmult_lt_0_compat _ _ {proof} {p2})"
     return text, proof
