@@ -268,16 +268,35 @@ def pr_certificate(tmp_path_factory):
     return path
 
 
-def test_positive_real_certificates_are_exported_in_part(pr_certificate):
+def test_positive_real_certificates_are_exported_with_their_pole_conditions(pr_certificate):
     from verify.coq.command import development_files
 
     export = export_certificates([pr_certificate])
     assert len(export.units) == 1 and not export.not_exported
-    assert "Theorem frequency_inequality : fdi_holds 4 2 A B C D." in export.units[0].text
-    [partly] = export.partly
-    assert partly.file == pr_certificate.name and "pole conditions" in partly.reason
+    text = export.units[0].text
+    assert "Theorem frequency_inequality : fdi_holds 4 2 A B C D." in text
+    assert "Theorem stable : hurwitz 4 A." in text  # A Hurwitz: no pole with Re s >= 0
+    assert export.units[0].theorems == ("frequency_inequality", "stable")
+    assert not export.partly
     listed = json.loads(development_files(export)["NOT_EXPORTED.json"])
-    assert listed["not_kernel_checked"][0]["file"] == pr_certificate.name
+    assert listed == {"not_exported": []}
+
+
+def test_a_positive_real_certificate_with_an_axis_pole_is_exported_in_part(tmp_path):
+    from verify.coq.command import development_files
+    from verify.passivity.fd_decision import decide_positive_real
+    from verify.passivity.gate import store_pr_certificate
+
+    integrator = exact([[0]], [[1]], [[1]], [[1]])  # 1/s + 1: positive real, pole at 0
+    verdict, reason, cert, _ = decide_positive_real(integrator, "integrator", "")
+    assert verdict == "passive" and cert is not None, reason
+    path, _ = store_pr_certificate(cert, Fraction(0), tmp_path)
+    export = export_certificates([path])
+    assert export.units[0].theorems == ("frequency_inequality",)
+    [partly] = export.partly
+    assert partly.file == path.name and "pole conditions" in partly.reason
+    listed = json.loads(development_files(export)["NOT_EXPORTED.json"])
+    assert listed["not_kernel_checked"][0]["file"] == path.name
 
 
 def test_the_exporter_refuses_a_tampered_positive_real_certificate(tmp_path, pr_certificate):
@@ -298,6 +317,9 @@ def test_coqc_accepts_a_positive_real_unit_and_rejects_a_changed_one(prelude_dir
 
     text = pr_unit_from_file(pr_certificate).text
     assert compiles(prelude_dir, text, "PR")
+    # a Lyapunov witness that is not one: -LP is not positive definite
+    lp = text.index("Definition LP : matQ :=")
+    assert not compiles(prelude_dir, text[:lp] + text[lp:].replace("[(", "[(-", 1), "PR")
     old = "[(-1 # 20); (0 # 20)]"
     assert old in text
     assert not compiles(prelude_dir, text.replace(old, "[(-3 # 20); (0 # 20)]", 1))

@@ -26,7 +26,8 @@ from verify.coq.unit import CoqUnit
 LOGICAL_ROOT = "VerifyCoq"
 
 # Prelude modules in dependency order (each may Require the ones before it).
-PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert")
+PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert",
+                                  "PoleCert")
 
 
 def prelude_sources() -> dict[str, str]:

@@ -114,7 +114,8 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
                     band_fd_unit_from_file if schema in BAND_FD_SCHEMAS else pr_unit_from_file)
             try:
                 units.append(make(path))
-                if schema in PARTLY_EXPORTED:
+                # a positive-real unit with its pole conditions ("stable") is whole
+                if schema in PARTLY_EXPORTED and "stable" not in units[-1].theorems:
                     partly.append(NotExported(path.name, schema, PARTLY_EXPORTED[schema]))
             except CoqExportError as exc:
                 if strict:

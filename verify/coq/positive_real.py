@@ -7,8 +7,11 @@ The unit written here proves the last part, ``fdi_holds`` of ``BandCert.v``: the
 Hermitian part of H(jw) is >= 0 at every w >= 0 where d(jw) != 0 (w < 0 is the complex
 conjugate), from the same sign polynomials as an exact-band unit
 (:mod:`verify.coq.band_fd`) and half-line witnesses
-(:func:`verify.coq.interval_witness.find_ray`). The pole conditions are not stated in
-Coq; :data:`NOT_KERNEL_CHECKED` says so, in the unit and in the development's list.
+(:func:`verify.coq.interval_witness.find_ray`). The pole conditions are the unit's second
+theorem when A is Hurwitz (``stable``, :mod:`verify.coq.lyapunov`: a Lyapunov witness,
+no pole with Re s >= 0, so no residue condition to check); otherwise (an imaginary-axis
+pole) they are not stated in Coq and :data:`NOT_KERNEL_CHECKED` says so, in the unit and
+in the development's list.
 """
 
 from __future__ import annotations
@@ -28,6 +31,8 @@ from verify.coq.band_fd import (
     witness_literal,
 )
 from verify.coq.kyp import CoqExportError, module_name
+from verify.coq.lyapunov import THEOREM as POLES_THEOREM
+from verify.coq.lyapunov import lyapunov_lines
 from verify.coq.unit import CoqUnit, comment_text
 from verify.passivity.check.certificate import ExactModel
 
@@ -66,6 +71,17 @@ def pr_unit(name: str, *, model: ExactModel, margin: Fraction, label: str, sourc
     n, m = model.n, model.m
     d_name = "D" if margin == 0 else "D_shifted"
     bound = "0" if margin == 0 else f"2 nu0 I, nu0 = {margin},"
+    poles = lyapunov_lines(model.A, n)
+    if poles is None:
+        missing = "    matrix inverse behind it trusted).  Not kernel-checked: " \
+            + comment_text(NOT_KERNEL_CHECKED.split(" are not stated in Coq")[0]) + "."
+    else:
+        missing = ("    matrix inverse behind it trusted).  The pole conditions: theorem "
+                   "[stable], every eigenvalue\n    of A has Re < 0 ([hurwitz] in "
+                   "PoleCert.v), so H has no pole with Re s >= 0.")
+    preamble = model_lines(model, margin)
+    if poles is not None:
+        preamble[1] = "From VerifyCoq Require Import QCert BandCert PoleCert."
     lines = [
         f"(** {comment_text(origin)}: exported by verify; checked by coqc.",
         f"    Model: {comment_text(label)}",
@@ -74,13 +90,12 @@ def pr_unit(name: str, *, model: ExactModel, margin: Fraction, label: str, sourc
         f"    Claim: H(jw) + H(jw)^H >= {bound} for every w >= 0 wherever H(jw) is defined",
         "    ([fdi_holds] in BandCert.v; H(jw) = N(jw) / d(jw) as in BandCert.v's header, "
         "the",
-        "    matrix inverse behind it trusted).  Not kernel-checked: "
-        + comment_text(NOT_KERNEL_CHECKED.split(" are not stated in Coq")[0]) + ".",
+        missing,
         "    The witnesses: for each sign polynomial p, p = g^2 q, q in Bernstein form on "
         "pieces",
         "    of [0, u] and q = sum c (x - u)^i with c >= 0 on [u, oo). *)",
         "",
-        *model_lines(model, margin),
+        *preamble,
         "",
         "(** Witnesses (data Coq re-checks), one per sign polynomial: (g, q, pieces, ray). *)",
     ]
@@ -95,9 +110,11 @@ def pr_unit(name: str, *, model: ExactModel, margin: Fraction, label: str, sourc
         f"  apply (fdi_check_sound {n} {m} A B C {d_name} certs).",
         "  vm_cast_no_check (eq_refl true).  (* the kernel evaluates the check once, at Qed *)",
         "Qed.",
+        *(poles or []),
         "",
     ]
-    return CoqUnit(name, "\n".join(lines), (THEOREM,), origin)
+    theorems = (THEOREM,) if poles is None else (THEOREM, POLES_THEOREM)
+    return CoqUnit(name, "\n".join(lines), theorems, origin)
 
 
 def pr_unit_from_file(path: Path) -> CoqUnit:
