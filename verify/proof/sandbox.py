@@ -29,6 +29,7 @@ import sys
 from pathlib import Path
 
 import verify
+from verify.proof import syscalls
 from verify.stopping import child_processes
 
 #: The file's processes at most (its first process included).
@@ -69,6 +70,9 @@ def _mode() -> tuple[str, str]:
     for tool in ("unshare", *(("setpriv",) if os.geteuid() == 0 else ())):
         if shutil.which(tool) is None:
             return "", f"the util-linux tool {tool!r} is not installed"
+    why = syscalls.unavailable()
+    if why:
+        return "", f"no seccomp filter can be installed here: {why}"
     unshare = [shutil.which("unshare") or "unshare", *_NAMESPACES, "--"]
     child = Path(verify.__file__).resolve().parent / "proof" / "child.py"
     # the interpreter runs, and the package and the libraries it needs can be read
