@@ -7,10 +7,10 @@ is root of its own user namespace until :func:`confine` ends: it remounts every 
 inherited read-only (so the project, the checker's modules and every output path stay as
 they are), mounts empty private file systems on ``/tmp``, ``/var/tmp``, ``/dev/shm``,
 ``/dev/pts`` and ``/run`` (no scratch, socket or terminal shared with the checker; 20 MB
-together), joins a fresh session keyring, drops every capability for good (bounding set
-emptied, no new privileges) and installs a seccomp filter (:mod:`verify.proof.syscalls`:
-no sockets, no new process, no memfd or shared memory, no keys), so the file cannot
-undo any of it. See ``verify/proof/TRUSTED.md``; the proof language this
+together), hides ``/proc/keys``, joins a fresh session keyring, drops every capability
+for good (bounding set emptied, no new privileges) and installs a seccomp filter
+(:mod:`verify.proof.syscalls`: no sockets, no new process, no memfd or shared memory, no
+keys), so the file cannot undo any of it. See ``verify/proof/TRUSTED.md``; the proof language this
 serves is the paper's Section 3.
 """
 
@@ -46,6 +46,8 @@ PRIVATE = ("/tmp", "/var/tmp", "/dev/shm", "/dev/pts", "/run")
 PRIVATE_BYTES = {"/tmp": 16 * 2**20, "/var/tmp": 2**20, "/dev/shm": 2**20,
                  "/dev/pts": 2**20, "/run": 2**20}
 PRIVATE_INODES = 1024
+#: Files of /proc the file sees empty (keyrings are not namespaced).
+MASKED = ("/proc/keys", "/proc/key-users")
 #: The only devices the file sees (in a fresh read-only /dev).
 DEVICES = ("null", "zero", "full", "random", "urandom")
 _MNT_DETACH = 2
@@ -201,6 +203,9 @@ def confine(max_processes: int) -> None:
         _remount_read_only(libc, point)
     _private(libc, "/tmp")
     _minimal_dev(libc)
+    for path in MASKED:  # the descriptions of the keys its user may view
+        if os.path.exists(path):
+            _mount(libc, "/dev/null", path, None, _MS_BIND, None, f"hide {path}")
     _remount_read_only(libc, "/dev")  # shm and pts below get their own tmpfs
     for point in PRIVATE:
         if point != "/tmp":
