@@ -167,11 +167,14 @@ MEMORY_ATTACKS = {
     "fork": "pid = os.fork()\nif pid == 0:\n    os._exit(0)",
     "cap": "line = [l for l in open('/proc/self/status') if l.startswith('CapEff')][0]\n"
            "assert int(line.split()[1], 16) != 0",
+    # threads are allowed (they share the one address space and its limit)
+    "thread": "import threading\nt = threading.Thread(target=lambda: None)\nt.start()\n"
+              "t.join()",
 }
 MEMORY_OUTCOMES = {"memfd": "PermissionError", "burst": "MemoryError", "shared": "OSError",
                    "sysv": "AssertionError", "devshm": "OSError", "raise": "ValueError",
                    "prlimit": "PermissionError", "fork": "PermissionError",
-                   "cap": "AssertionError"}
+                   "cap": "AssertionError", "thread": "done"}
 
 
 @pytest.mark.parametrize("who", WHO)
@@ -182,6 +185,29 @@ def test_memory_the_budget_does_not_see_cannot_be_held(who):
         assert code == 0, err
         for label, outcome in MEMORY_OUTCOMES.items():
             assert f"{label}:{outcome}" in report, (label, report)
+
+
+def test_without_seccomp_the_sandbox_is_unavailable(monkeypatch):
+    """No binding, no libseccomp or no kernel support: the sandbox counts as unavailable
+    (``verify check FILE.py`` then refuses unless --unsandboxed)."""
+    from verify.proof import syscalls
+
+    def missing():
+        raise ImportError("No module named 'pyseccomp'")
+
+    monkeypatch.setattr(syscalls, "_binding", missing)
+    syscalls.unavailable.cache_clear()
+    try:
+        why = syscalls.unavailable()
+        assert why.startswith("no seccomp binding")
+        mode, reason = sandbox._mode.__wrapped__()
+        assert mode == "" and "no seccomp filter can be installed here" in reason
+        with pytest.raises(syscalls.SyscallFilterError, match="no seccomp binding"):
+            syscalls.install()
+    finally:
+        monkeypatch.undo()
+        syscalls.unavailable.cache_clear()
+    assert syscalls.unavailable() == ""
 
 
 # -- keys ------------------------------------------------------------------------------------

@@ -232,8 +232,10 @@ def confine(max_processes: int) -> None:
 def fresh_session_keyring() -> None:
     """Join a new anonymous session keyring (``keyctl join_session_keyring``): keyrings
     are not namespaced, and the caller's session keyring (a token an agent or a CI put
-    there) would otherwise be this process's too. A kernel without keys has nothing to
-    hide (ENOSYS); any other failure is a ConfineError."""
+    there) would otherwise be this process's too. A kernel without keys (ENOSYS) or an
+    outer seccomp filter that refuses ``keyctl`` (EPERM, as container runtimes do) leaves
+    no key to reach, since that filter binds the file too; any other failure is a
+    ConfineError."""
     number = syscalls.syscall_number("keyctl")
     libc = _libc()
     libc.syscall.restype = ctypes.c_long
@@ -241,7 +243,7 @@ def fresh_session_keyring() -> None:
                           ctypes.c_void_p(None))
     if serial < 0:
         err = ctypes.get_errno()
-        if err != errno.ENOSYS:
+        if err not in (errno.ENOSYS, errno.EPERM):
             raise ConfineError(f"could not join a fresh session keyring ({os.strerror(err)})")
 
 
