@@ -366,3 +366,19 @@ def test_a_link_to_a_file_is_followed_and_kept(tmp_path):
     with pytest.raises(OutputError, match="symbolic links"):
         write_atomic(loop, "x")
     assert loop.is_symlink()
+
+
+def test_dot_dot_after_a_link_is_taken_from_where_the_link_leads(tmp_path, monkeypatch):
+    """``link/../out.json`` is beside the link's target, as the kernel resolves it, not
+    beside the link (a lexical ``abspath`` would say the latter)."""
+    from verify.artefacts.links import resolve_output
+
+    (tmp_path / "a" / "b").mkdir(parents=True)
+    (tmp_path / "link").symlink_to(tmp_path / "a" / "b")
+    monkeypatch.chdir(tmp_path)
+    assert resolve_output("link/../out.json") == tmp_path / "a" / "out.json"
+    (tmp_path / "fd").symlink_to("/proc/self/fd")
+    from verify.artefacts.links import LinkError
+
+    with pytest.raises(LinkError, match="/proc"):
+        resolve_output("fd/../fd/1")

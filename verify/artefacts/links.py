@@ -48,7 +48,8 @@ def resolve_output(path: str | Path) -> Path:
     does not exist yet kept as written). Raises :class:`LinkError` if the way passes
     through ``/proc`` (``/dev/stdout``, ``/dev/fd/N``) or a loop of links."""
     proc_dev = _proc_device()
-    todo = list(Path(os.path.abspath(path)).parts[1:])
+    # not os.path.abspath: it would fold "link/.." before the link is followed
+    todo = list((Path(os.getcwd()) / path).parts[1:])
     done = "/"
     links = 0
     while todo:
