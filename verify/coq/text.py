@@ -30,7 +30,8 @@ _PREFIX = re.compile(r"[a-z]+\Z")
 #: Module names a unit must not take (compared case-insensitively: a case-insensitive
 #: file system would make ``so3.v`` and ``SO3.v`` one file).
 RESERVED_MODULES = frozenset(name.casefold() for name in (
-    "SO3", "QCert", "SOSCert", "BandCert", "All", "Coq", "Corelib", "Ltac2", "Reals", "Lra",
+    "SO3", "QCert", "SOSCert", "BandCert", "WitnessCert", "PoleCert", "All", "Coq",
+    "Corelib", "Ltac2", "Reals", "Lra",
     "Init", "Logic", "Datatypes", "Specif", "Peano", "Rdefinitions", "Raxioms", "Rbase",
     "Rfunctions", "Rtrigo", "Rtrigo_def", "Interval", "Coquelicot", "Bignums", "VerifyCoq",
     "Top", "Scratch", "Arith", "ZArith", "QArith", "Psatz", "Ring", "Field", "Lia", "Nsatz",
