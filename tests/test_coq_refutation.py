@@ -136,3 +136,21 @@ def test_gate_json_carries_the_kernel_status_without_coq(tmp_path, capsys):
     assert rc == 1
     [entry] = json.loads(out_json.read_text())
     assert entry["kernel"] == "exact-python" and entry["coq_theorem"] is None
+
+
+def test_require_coq_fails_on_a_verdict_without_a_unit(tmp_path, capsys):
+    """1 - 1/s: not passive by its residue at s = 0, a witness Coq does not state; no
+    unit is written, the kernel status says why, and --require-coq fails."""
+    model = tmp_path / "negint.toml"
+    model.write_text('name = "negative integrator"\n[state_space]\nA = [[0.0]]\n'
+                     "B = [[1.0]]\nC = [[-1.0]]\nD = [[1.0]]\n")
+    out_json = tmp_path / "gate.json"
+    rc = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+               "--coq", str(tmp_path / "coq"), "--require-coq", "--json", str(out_json)])
+    out = capsys.readouterr().out
+    assert rc == 1
+    assert "--require-coq: not accepted by coqc: negative integrator" in out
+    [entry] = json.loads(out_json.read_text())
+    assert entry["kernel"].startswith("not-exported: ")
+    assert entry["coq_theorem"] is None
+    assert not list((tmp_path / "coq").glob("Refutation_*.v"))
