@@ -90,8 +90,8 @@ def program_for_key(key: str, statement: str | None = None):
             continue
         sp = step_program(step_problem(d, step), step.because)
         if claim_key(sp) == key:
-            # the paper's labels are this package's own: reported as written
-            return dataclasses.replace(sp, plain="")
+            # the paper's labels are this package's own: written and reported with them
+            return dataclasses.replace(sp, statement=sp.labelled)
     return None
 
 
