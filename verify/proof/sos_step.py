@@ -219,8 +219,10 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
     found = find_certificate(sp.program, sp.groups, max_degree=step.because.degree)
     if not found.check.ok:
         return False, f"no SOS certificate: {found.check.reason}"
+    # the paper's certificates are bound to the paper's step by their key, with its
+    # labels; any other carries its step, to be bound to it again
     data = cert.to_data(sp, found.blocks, found.grams, key, source,
-                        step=_step_data(step, problem))
+                        step=None if source == cert.PAPER else _step_data(step, problem))
     result = cert.check_bound(data, sp)  # the same trusted check a stored file gets
     if not result.ok:
         return False, f"SOS certificate rejected: {result.reason}"
