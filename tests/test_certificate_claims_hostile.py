@@ -160,6 +160,11 @@ def test_identifier_names_are_printed_bare(name):
     ('a"b', '"a\\"b"'),        # a quote inside is escaped
     ("a\\", '"a\\\\"'),
     ("\x1b[2J", '"\\u001b[2J"'),  # a control character never reaches the terminal
+    ("Α", '"Α"'),              # Greek capital alpha, not the Latin A
+    ("ο", '"ο"'),              # Greek omicron, not the Latin o
+    ("R\u0305", '"R\u0305"'),    # an overline looks like the bar R̄
+    ("a\u0304", '"a\u0304"'),    # not in NFC: the same look as ā
+    ("ā", '"ā"'),
 ])
 def test_names_that_could_be_misread_are_quoted(name, printed):
     assert not is_plain_name(name) and name_text(name) == printed

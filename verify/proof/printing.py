@@ -8,9 +8,10 @@ their size (``⟨integer of 5001 digits⟩``), never converted.
 
 Printed as the tree says (``labels=False``, what a checked certificate is reported as),
 a variable's name is shown as it is only when it cannot be read as anything else
-(:func:`name_text`): letters, combining marks, digits, subscript digits, ``_`` and primes,
-not the printer's own words (``I``, ``tr``, ``π``, ...); any other name is quoted, so a
-rotation named ``R)+tr(R`` prints as ``tr("R)+tr(R") <= 3``, never ``tr(R)+tr(R) <= 3``.
+(:func:`is_plain_name`): ASCII or Greek letters that look like no other, digits,
+subscript digits, ``_``, primes and a few accents, not the printer's own words (``I``,
+``tr``, ``π``, ...); any other name is quoted (:func:`name_text`), so a rotation named
+``R)+tr(R`` prints as ``tr("R)+tr(R") <= 3``, never ``tr(R)+tr(R) <= 3``.
 
 The printer reads a tree's fields only (``op``, ``args``, ``data``, ``label``) and
 imports nothing of :mod:`verify.proof.expr`, which uses it for ``str`` and ``repr``.
@@ -55,25 +56,28 @@ def to_text(e: Expr, labels: bool = True, names: Mapping[int, str] | None = None
 
 #: Words of the printed language a bare name must not be (functions, constants, gaps).
 RESERVED = frozenset({*_FUNCS.values(), "I", "π", "gap"})
-_NAME_MARKS = frozenset("_′'")  # besides letters, marks and digits
-_SUBSCRIPTS = frozenset("₀₁₂₃₄₅₆₇₈₉")
-
-
-def _name_char(ch: str, first: bool) -> bool:
-    category = unicodedata.category(ch)
-    if category in ("Lu", "Ll", "Lt", "Lo"):  # not Lm: ᵀ reads as a transpose, ˆ a hat
-        return True
-    if first:
-        return ch == "_"
-    return category in ("Mn", "Mc", "Nd") or ch in _NAME_MARKS or ch in _SUBSCRIPTS
+#: Letters a bare name may hold: ASCII, and the Greek letters that do not look like a
+#: Latin one (omicron and the capitals Α, Β, Ε, ... are quoted, so ``Α`` and ``A``
+#: never print alike).
+_LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                     "αβγδεζηθικλμνξπρςστυφχψω" "ΓΔΘΛΞΠΣΦΨΩ")
+#: After the first letter, also: digits, subscript digits, ``_``, primes, and a few
+#: combining accents (bar, hat, tilde, dot, vector arrow; not the overline, which looks
+#: like the bar).
+_FOLLOWING = frozenset("0123456789₀₁₂₃₄₅₆₇₈₉_′'"
+                       "\u0300\u0301\u0302\u0303\u0304\u0306\u0307\u0308\u030c\u20d7")
 
 
 def is_plain_name(name: str) -> bool:
-    """True when ``name`` prints bare without being misread: a letter or ``_``, then
-    letters, combining marks, digits, subscript digits, ``_`` or primes, and not a word
-    of the printed language (``tr``, ``I``, ``λmin``, ``π``, ...)."""
-    return (bool(name) and name not in RESERVED
-            and all(_name_char(ch, k == 0) for k, ch in enumerate(name)))
+    """True when ``name`` prints bare without being misread: a letter (ASCII, or Greek
+    unlike any Latin one) or ``_``, then letters, digits, subscript digits, ``_``,
+    primes or a few combining accents; in NFC (so no two spellings of one look), and
+    not a word of the printed language (``tr``, ``I``, ``λmin``, ``π``, ...)."""
+    if not name or name in RESERVED or unicodedata.normalize("NFC", name) != name:
+        return False
+    first, rest = name[0], name[1:]
+    return ((first in _LETTERS or first == "_")
+            and all(ch in _LETTERS or ch in _FOLLOWING for ch in rest))
 
 
 def name_text(name: str) -> str:

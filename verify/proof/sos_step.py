@@ -46,9 +46,9 @@ import dataclasses
 import itertools
 from pathlib import Path
 
+from verify.proof.claim_text import claim_text
 from verify.proof.expr import ProofSyntaxError, sym, variables_of
 from verify.proof.justify import BySos
-from verify.proof.claim_text import claim_text
 from verify.proof.problem import StepProblem
 from verify.sos import poly as pl
 from verify.sos.program import Multiplier, SosProgram, StepProgram, scalar_multiplier
