@@ -123,13 +123,17 @@ def test_an_assumption_is_printed_from_its_tree_not_its_label():
 
 
 def test_the_shipped_certificates_print_their_premises():
-    """The paper's certificates (bound to the paper's steps) name their declared gain and
-    Assumption 1's sign."""
-    path = SHIPPED / "sos-0d7a67545a4e02ce9d38.json"
-    done = _certificates_check(path)
+    """The paper's certificates (bound to the paper's steps, written with the package's
+    labels) name their declared gain, Assumption 1's sign, and what each label stands
+    for."""
+    done = _certificates_check(SHIPPED / "sos-0d7a67545a4e02ce9d38.json",
+                               SHIPPED / "sos-3c0bd7455cbf7e25ea7e.json")
     assert done.returncode == 0, done.stdout + done.stderr
-    line = _claim_line(done.stdout)
-    assert "for all k_s > 0" in line and "with sym(R_rl) ≻ 0" in line
+    sign, bound = [ln for ln in done.stdout.splitlines() if ln.startswith("ok")]
+    assert "for all k_s > 0, R_rl ∈ SO(3)" in sign and "with sym(R_rl) ≻ 0" in sign
+    assert "for all k_s > 0, R_r, R̄, R_l ∈ SO(3)" in bound
+    assert "writing " in bound and "R_rl = R_rᵀ R_l" in bound
+    assert "φ(R_lᵀR̄) = (1/2) tr(I - R_lᵀ R̄)" in bound
 
 
 # -- names --------------------------------------------------------------------------------

@@ -19,6 +19,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from verify.artefacts.text import shown
+from verify.proof.expr import Variable, nodes, variables_of
 from verify.proof.printing import name_text, to_text
 from verify.proof.problem import StepProblem
 
@@ -44,6 +46,9 @@ class ClaimText:
     inequality: str
     declarations: tuple[str, ...]
     assumptions: tuple[str, ...]
+    #: ``label = tree`` for each label of the two sides that reads otherwise than its
+    #: tree (what a statement written with labels abbreviates)
+    definitions: tuple[str, ...] = ()
 
     @property
     def premises(self) -> tuple[str, ...]:
@@ -51,12 +56,18 @@ class ClaimText:
         return self.declarations + self.assumptions
 
 
+def claim_variables(problem: StepProblem) -> list[Variable]:
+    """The variables of the claim: of its two sides and its assumptions (a variable of
+    the side conditions only is no part of what an SOS certificate proves)."""
+    return variables_of(problem.lhs, problem.rhs, *(a.expr for a in problem.assumptions))
+
+
 def display_names(problem: StepProblem) -> dict[int, str]:
     """Each variable's printed name by uid: :func:`name_text`, with ``#k`` added when
-    another variable of the problem already prints the same."""
+    another variable of the claim already prints the same."""
     names: dict[int, str] = {}
     used: set[str] = set()
-    for v in problem.variables:
+    for v in claim_variables(problem):
         base = text = name_text(v.name)
         k = 1
         while text in used:
@@ -75,7 +86,7 @@ def claim_text(problem: StepProblem) -> ClaimText:
     # in first-seen order: a declared sign alone, variables of one kind together
     entries: list[tuple[str, list[str]]] = []
     by_kind: dict[str, list[str]] = {}
-    for v in problem.variables:
+    for v in claim_variables(problem):
         if v.kind == "scalar" and v.positive:
             entries.append(("> 0", [names[v.uid]]))
         elif str(v.kind) in by_kind:
@@ -92,7 +103,29 @@ def claim_text(problem: StepProblem) -> ClaimText:
         text = _ASSUMED[a.kind].format(value)
         if text not in assumptions:
             assumptions.append(text)
-    return ClaimText(inequality, tuple(declarations), tuple(assumptions))
+    return ClaimText(inequality, tuple(declarations), tuple(assumptions),
+                     label_definitions(problem, names))
 
 
-__all__ = ["ClaimText", "claim_text", "display_names"]
+#: Leaves whose label is their own name or symbol, never an abbreviation.
+_LEAVES = ("var", "const", "zero", "identity", "chart_gap")
+
+
+def label_definitions(problem: StepProblem, names: dict[int, str]) -> tuple[str, ...]:
+    """``label = tree`` for every labelled node of the two sides whose label is not its
+    tree's text, spaces aside (each once, in first-seen order)."""
+    out: list[str] = []
+    for e in nodes(problem.lhs, problem.rhs):
+        if e.label is None or e.op in _LEAVES:
+            continue
+        tree = to_text(e, labels=False, names=names)
+        label = shown(e.label)
+        text = f"{label} = {tree}"
+        # spaces only separate factors: a label that differs from its tree by them
+        # alone (ξξᵀ for ξ ξᵀ) abbreviates nothing
+        if label.replace(" ", "") != tree.replace(" ", "") and text not in out:
+            out.append(text)
+    return tuple(out)
+
+
+__all__ = ["ClaimText", "claim_text", "claim_variables", "display_names", "label_definitions"]

@@ -153,7 +153,8 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
     claim = claim_text(problem)
     return StepProgram(program, groups, pl.from_ring(slack.num), factors, claim.inequality,
                        labelled=f"{problem.lhs} {problem.relation} {problem.rhs}",
-                       declarations=claim.declarations, assumptions=claim.assumptions)
+                       declarations=claim.declarations, assumptions=claim.assumptions,
+                       definitions=claim.definitions)
 
 
 def _names(space) -> tuple[str, ...]:

@@ -124,13 +124,19 @@ class StepProgram:
     labelled: str = ""
     declarations: tuple[str, ...] = ()
     assumptions: tuple[str, ...] = ()
+    #: ``label = tree`` for each label of the step that reads otherwise than its tree
+    definitions: tuple[str, ...] = ()
 
     @property
     def claim(self) -> str:
-        """``statement for all declarations with assumptions``: what is proved."""
+        """``statement for all declarations with assumptions``: what is proved; a
+        statement written with labels (the paper's) also says what each label stands
+        for (``writing label = tree; ...``)."""
         text = self.statement
         if self.declarations:
             text += " for all " + ", ".join(self.declarations)
         if self.assumptions:
             text += " with " + " and ".join(self.assumptions)
+        if self.definitions and self.statement == self.labelled:
+            text += ", writing " + "; ".join(self.definitions)
         return text
