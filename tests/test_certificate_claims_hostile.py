@@ -261,3 +261,17 @@ def test_verify_check_renews_a_stored_statement_that_is_not_the_steps(tmp_path, 
         assert check(d, SMALL, budget=Budget(120, 2**31)).verdict == "verified"
     assert json.loads(path.read_text())["claim"]["statement"] == "tr(R) <= 3"
     assert _certificates_check(path).returncode == 0
+
+
+def test_a_labelled_user_step_is_written_and_printed_as_its_tree(tmp_path_factory, tmp_path):
+    """A user's label is the author's word: the certificate is written with the tree's
+    text (so it is not refused as edited) and printed as that, with no label in it."""
+    ctx = Context("user")
+    R = ctx.rotation("R")
+    phi = (3 - tr(R)).named("φ(R)")
+    data = _certificate(tmp_path_factory, Derivation("phi", phi, ctx).ge(0, by_sos()))
+    assert data["claim"]["statement"] == "3 - tr(R) >= 0"
+    done = _certificates_check(_write(tmp_path, data))
+    assert done.returncode == 0, done.stdout + done.stderr
+    line = _claim_line(done.stdout)
+    assert ": 3 - tr(R) >= 0 for all R ∈ SO(3):" in line and "φ" not in line
