@@ -275,3 +275,20 @@ def test_a_labelled_user_step_is_written_and_printed_as_its_tree(tmp_path_factor
     assert done.returncode == 0, done.stdout + done.stderr
     line = _claim_line(done.stdout)
     assert ": 3 - tr(R) >= 0 for all R ∈ SO(3):" in line and "φ" not in line
+
+
+def test_many_labels_are_defined_within_bounds():
+    """A tree that doubles at every level, each level labelled: the claim is printed in
+    linear time (one memo over all definitions) and names at most MAX_DEFINITIONS."""
+    from verify.proof.claim_text import MAX_DEFINITIONS
+
+    ctx = Context("user")
+    x = ctx.scalar("x")
+    e = x
+    for k in range(200):
+        e = (e + e).named(f"L{k}")
+    d = Derivation("wide", e, ctx).ge(0, by_sos())
+    text = claim_text(step_problem(d, d.steps[0]))
+    assert len(text.definitions) == MAX_DEFINITIONS + 1
+    assert text.definitions[-1] == f"… ({200 - MAX_DEFINITIONS} more labels)"
+    assert text.inequality == "… >= 0"  # the tree's text is abbreviated, never built

@@ -17,11 +17,12 @@ stronger statement the certificate proves.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from verify.artefacts.text import shown
-from verify.proof.expr import Variable, nodes, variables_of
-from verify.proof.printing import name_text, to_text
+from verify.proof.expr import Expr, Variable, nodes, variables_of
+from verify.proof.printing import MAX_TEXT, name_text, tree_text
 from verify.proof.problem import StepProblem
 
 #: How each kind of variable is declared in a printed claim (``scalar`` by its sign).
@@ -64,25 +65,22 @@ def claim_variables(problem: StepProblem) -> list[Variable]:
 
 def display_names(problem: StepProblem) -> dict[int, str]:
     """Each variable's printed name by uid: :func:`name_text`, with ``#k`` added when
-    another variable of the claim already prints the same."""
+    another variable of the claim already prints the same (``#`` is not in a bare name,
+    so ``R#2`` is no other variable's text)."""
     names: dict[int, str] = {}
-    used: set[str] = set()
+    seen: dict[str, int] = {}
     for v in claim_variables(problem):
-        base = text = name_text(v.name)
-        k = 1
-        while text in used:
-            k += 1
-            text = f"{base}#{k}"
-        used.add(text)
-        names[v.uid] = text
+        base = name_text(v.name)
+        k = seen[base] = seen.get(base, 0) + 1
+        names[v.uid] = base if k == 1 else f"{base}#{k}"
     return names
 
 
 def claim_text(problem: StepProblem) -> ClaimText:
     """The claim of ``problem`` as its tree says, with its declarations and assumptions."""
     names = display_names(problem)
-    inequality = (f"{to_text(problem.lhs, labels=False, names=names)} {problem.relation} "
-                  f"{to_text(problem.rhs, labels=False, names=names)}")
+    text_of = tree_text(names)
+    inequality = f"{text_of(problem.lhs)} {problem.relation} {text_of(problem.rhs)}"
     # in first-seen order: a declared sign alone, variables of one kind together
     entries: list[tuple[str, list[str]]] = []
     by_kind: dict[str, list[str]] = {}
@@ -95,37 +93,42 @@ def claim_text(problem: StepProblem) -> ClaimText:
             by_kind[str(v.kind)] = [names[v.uid]]
             entries.append((_KIND_TEXT[v.kind], by_kind[str(v.kind)]))
     declarations = [f"{', '.join(listed)} {what}" for what, listed in entries]
-    assumptions: list[str] = []
+    assumptions: dict[str, None] = {}  # in order, once each
     for a in problem.assumptions:
-        value = to_text(a.expr, labels=False, names=names)
+        value = text_of(a.expr)
         if a.kind in ("pd", "psd") and a.expr.op != "sym":
             value = f"sym({value})"  # what a definiteness assumption is about
-        text = _ASSUMED[a.kind].format(value)
-        if text not in assumptions:
-            assumptions.append(text)
+        assumptions[_ASSUMED[a.kind].format(value)] = None
     return ClaimText(inequality, tuple(declarations), tuple(assumptions),
-                     label_definitions(problem, names))
+                     label_definitions(problem, text_of))
 
 
 #: Leaves whose label is their own name or symbol, never an abbreviation.
 _LEAVES = ("var", "const", "zero", "identity", "chart_gap")
+MAX_DEFINITIONS = 64  # labels defined in one claim before the rest are counted
 
 
-def label_definitions(problem: StepProblem, names: dict[int, str]) -> tuple[str, ...]:
+def label_definitions(problem: StepProblem, text_of: Callable[[Expr], str]
+                      ) -> tuple[str, ...]:
     """``label = tree`` for every labelled node of the two sides whose label is not its
-    tree's text, spaces aside (each once, in first-seen order)."""
-    out: list[str] = []
+    tree's text, spaces aside (each once, in first-seen order; past
+    :data:`MAX_DEFINITIONS`, how many more)."""
+    out: dict[str, None] = {}
+    more = 0
     for e in nodes(problem.lhs, problem.rhs):
         if e.label is None or e.op in _LEAVES:
             continue
-        tree = to_text(e, labels=False, names=names)
-        label = shown(e.label)
-        text = f"{label} = {tree}"
+        tree = text_of(e)
+        label = shown(e.label, limit=MAX_TEXT)
         # spaces only separate factors: a label that differs from its tree by them
         # alone (ξξᵀ for ξ ξᵀ) abbreviates nothing
-        if label.replace(" ", "") != tree.replace(" ", "") and text not in out:
-            out.append(text)
-    return tuple(out)
+        if label.replace(" ", "") == tree.replace(" ", ""):
+            continue
+        if len(out) < MAX_DEFINITIONS:
+            out[f"{label} = {tree}"] = None
+        else:
+            more += 1
+    return tuple(out) + ((f"… ({more} more labels)",) if more else ())
 
 
 __all__ = ["ClaimText", "claim_text", "claim_variables", "display_names", "label_definitions"]

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import json
 import unicodedata
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
@@ -52,6 +52,13 @@ def to_text(e: Expr, labels: bool = True, names: Mapping[int, str] | None = None
     what is evaluated. Labels and names are user text: shown escaped
     (:func:`verify.artefacts.text.shown`)."""
     return _Printer(labels, names).text(e, 0)
+
+
+def tree_text(names: Mapping[int, str] | None = None) -> Callable[[Expr], str]:
+    """``to_text(e, labels=False, names=names)`` for many expressions with one memo, so
+    shared subtrees are printed once over all of them (linear in the nodes)."""
+    printer = _Printer(False, names)
+    return lambda e: printer.text(e, 0)
 
 
 #: Words of the printed language a bare name must not be (functions, constants, gaps).
