@@ -237,7 +237,11 @@ def _build_parser() -> argparse.ArgumentParser:
         "derived from what it proves, its source model file (looked up relative to the "
         "certificate's folder, never the working directory), and the exact inequalities. "
         "A certificate whose source file is not found is UNBOUND: its name and descriptive "
-        "labels are not checked. Exit 0 if all are valid (or unbound, with "
+        "labels are not checked. Each valid certificate is printed with the claim it "
+        "proves and every premise (an SOS claim: for all its variables, with their kinds "
+        "and declared signs, with its assumptions; names that could be misread are "
+        "quoted); a certificate whose written statement is not that claim's is refused "
+        "as 'statement edited'. Exit 0 if all are valid (or unbound, with "
         "--allow-unbound), 1 if one is refused or unbound or none is found, 2 if a path "
         "does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
