@@ -79,7 +79,7 @@ def test_every_page_is_in_a_toctree():
     text = "\n".join(p.read_text(encoding="utf-8") for p in DOCS.rglob("*.md"))
     for page in DOCS.rglob("*.md"):
         rel = page.relative_to(DOCS).with_suffix("").as_posix()
-        if rel in ("index",) or rel.startswith("notes/") and rel != "notes/index":
+        if rel in ("index",) or (rel.startswith("notes/") and rel != "notes/index"):
             continue
         assert rel in text or rel.split("/")[-1] in text, rel
 
