@@ -45,3 +45,18 @@ def test_a_numeric_matrix_is_a_mathml_matrix_and_text_is_escaped():
     assert "<mtable" in value_html({"P": [["1/2", "0"], ["0", "3"]]})
     page = value_html({"<b>": "<script>alert(1)</script>"})
     assert "<script" not in page and "<b>" not in page  # text never becomes markup
+
+
+def test_the_whole_report_html_holds_no_json_text():
+    """The committed report's claims rendered again: every evidence's data is a table,
+    none is JSON text (report.json still has it)."""
+    from report_fixtures import committed_run
+
+    from verify.report.render import render_html, render_json
+
+    run = committed_run()
+    page = render_html(run)
+    assert "<pre>" not in page and "&quot;chi2&quot;" not in page
+    assert not re.search(r"&quot;[\w -]+&quot;:", page)  # no "key": of JSON anywhere
+    assert page.count("<details><summary>data</summary><table class='evidence'>") >= 20
+    assert '"chi2": "5152973109693711/281474976710656"' in render_json(run)
