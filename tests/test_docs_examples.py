@@ -129,6 +129,7 @@ def run_python(block: Block, namespace: dict, where: str) -> None:
 def test_page_examples_run(page: Path, tmp_path, monkeypatch):
     env = _scratch(tmp_path)
     monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("PATH", env["PATH"])  # `verify` of this interpreter for Python too
     namespace: dict = {"__name__": f"docs.{page.stem}"}
     ran = skipped = 0
     for block in blocks(page):
