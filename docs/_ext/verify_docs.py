@@ -16,6 +16,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+from pathlib import Path
 
 from docutils import nodes
 from sphinx.application import Sphinx
@@ -99,7 +100,33 @@ def plain_bars(app, what, name, obj, options, lines: list[str]) -> None:
             literal = True
 
 
+_LINK = re.compile(r"\[([^\]\n]+)\]\(([^)\s#]+)(#[^)\s]*)?\)")
+
+
+def repository_links(app, docname: str, source: list[str]) -> None:
+    """A Markdown link from a page to a file of the repository outside ``docs/`` (a note's
+    ``[TRUSTED.md](../../verify/passivity/TRUSTED.md)``) becomes the text and the file's
+    repository path in code: the site does not hold that file, and a link to it would be a
+    broken reference (an error under ``-W``). Links to missing files still warn."""
+    srcdir = Path(app.srcdir).resolve()
+    root = srcdir.parent
+    page_dir = (srcdir / docname).parent
+
+    def plain(match: re.Match) -> str:
+        text, target = match.group(1), match.group(2)
+        if "://" in target or target.startswith("mailto:"):
+            return match.group(0)
+        path = (page_dir / target).resolve()
+        if path.is_relative_to(srcdir) or not path.is_relative_to(root) \
+                or not path.exists():
+            return match.group(0)
+        return f"{text} (`{path.relative_to(root).as_posix()}`)"
+
+    source[0] = _LINK.sub(plain, source[0])
+
+
 def setup(app: Sphinx) -> dict[str, object]:
+    app.connect("source-read", repository_links)
     app.add_directive("verify-cli", CliReference)
     app.add_directive("verify-docstring", Docstring)
     app.connect("autodoc-process-docstring", plain_bars)
