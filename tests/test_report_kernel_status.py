@@ -57,13 +57,13 @@ def test_the_committed_report_is_annotated_as_a_fresh_render_would_be():
 
 
 def test_statuses_of_a_rendered_run():
-    hand = derivation("d.chain", "x", [step(1, "=", "y"), step(2, "<=", "z",
+    hand = derivation("demo.chain", "x", [step(1, "=", "y"), step(2, "<=", "z",
                                                                "cited: a textbook bound")])
     run = run_of(claim("c.one", "S", evidence=[hand]))
     [c] = report_data(run)["claims"]
     steps = c["evidence"][0]["data"]["steps"]
-    assert steps[0]["coq_theorem"] == "d_chain.step1" and steps[0]["kernel_status"] == COQ
+    assert steps[0]["coq_theorem"] == "demo_chain.step1" and steps[0]["kernel_status"] == COQ
     assert steps[1]["coq_theorem"] is None
     assert steps[1]["kernel_status"].startswith("not-exported: a cited premise")
     # a verified step without a theorem keeps the claim from the status "coq"
-    assert c["kernel"] == EXACT_PYTHON and c["coq_theorems"] == ["d_chain.step1"]
+    assert c["kernel"] == EXACT_PYTHON and c["coq_theorems"] == ["demo_chain.step1"]
