@@ -49,10 +49,11 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "and none of these three lemmas is in the Coq prelude, so no finite list of exact "
         "checks Coq could re-run stands for it; checked by the Python exact checker only",
     "verify-robust-refutation-certificate/1":
-        "refutation (every model of an identified region is not passive, from leaves where "
-        "an exact vector makes H(jw) + H(jw)^H negative): a negative verdict, not a "
-        "passivity proof, and its leaves rest on the same interval arithmetic as the robust "
-        "certificates; checked by the Python exact checker only",
+        "refutation over an identified region (every model of it is not passive, from "
+        "leaves where an exact vector makes H(jw) + H(jw)^H negative): its leaves rest on "
+        "the same interval arithmetic over boxes of models as the robust certificates, "
+        "which is not in the Coq prelude (one model's refutation is a Coq unit, "
+        "WitnessCert.v: verify gate --coq); checked by the Python exact checker only",
 }
 
 
