@@ -101,7 +101,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "check",
         help="check the derivations of a Python file of your own, step by step",
         description="Exit 0 if every step of every derivation is verified, 1 if some step "
-        "is refuted or inconclusive, 2 if the file is malformed, over a budget while it is "
+        "is refuted or inconclusive (or, with --coq, a verified step is not in Coq or coqc "
+        "refuses it), 2 if the file is malformed, over a budget while it is "
         "read, or a .py file cannot be run in a sandbox (user, PID, mount and network "
         "namespaces) and --unsandboxed was not given.",
     )
@@ -118,8 +119,12 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
     p_check.add_argument("--coq", type=Path, metavar="DIR",
-                         help="also write the derivations as a Coq development (one theorem "
-                         "per step; `coqc` on its files in _CoqProject order re-checks them)")
+                         help="also write the verified steps as a Coq development (one "
+                         "theorem per step), audit it and compile it with coqc; exit 1 "
+                         "unless every verified step is in Coq and coqc accepts it")
+    p_check.add_argument("--allow-partial", action="store_true",
+                         help="with --coq: exit 0 when coqc accepts the steps exported even "
+                         "if some verified step could not be exported (each is named)")
     p_check.add_argument("--certificates", type=Path, default=GATE_CERTIFICATES,
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
                          f"certificates (default {GATE_CERTIFICATES}, git-ignored)")
@@ -455,24 +460,22 @@ def _cmd_check(args: argparse.Namespace) -> int:
     if args.json:
         outputs.write(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
                                             indent=2, ensure_ascii=True) + "\n")
+    coq_ok = True
     if args.coq:
-        _write_coq(args.coq, derivations)
-    return 0 if all(r.verdict == "verified" for r in results) else 1
+        stage(shown(f"writing the verified steps to {args.coq} and compiling them"))
+        coq_ok = _write_coq(args.coq, derivations, results, budget=budget,
+                            allow_partial=args.allow_partial)
+    return 0 if coq_ok and all(r.verdict == "verified" for r in results) else 1
 
 
-def _write_coq(folder: Path, derivations) -> None:
-    """``verify check --coq DIR``: export every step Coq can state and prove."""
-    from verify.coq.development import write_development
-    from verify.coq.paper import derivation_exports
+def _write_coq(folder: Path, derivations, results, *, budget=None,
+               allow_partial: bool = False) -> bool:
+    """``verify check --coq DIR``: the verified steps as a Coq development, audited and
+    compiled (:mod:`verify.coq.check_export`); True when the exit status may be 0."""
+    from verify.coq.check_export import write_and_compile
 
-    units, fates = derivation_exports(derivations)
-    write_development(folder, units)
-    done = [f for f in fates if f.theorem]
-    for f in fates:
-        if not f.theorem:
-            print(shown(f"  Coq: {f.derivation} step {f.step} not exported: {f.reason}"))
-    print(shown(f"Coq development: {folder} ({len(done)} of {len(fates)} steps as theorems; "
-                "check with coqc on the files of _CoqProject in order)"))
+    return write_and_compile(folder, derivations, results, budget=budget,
+                             allow_partial=allow_partial, say=lambda s: print(shown(s)))
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:

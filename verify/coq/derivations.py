@@ -102,9 +102,17 @@ def theorem_name(derivation_name: str, step: int) -> str:
     return f"{module_name(derivation_name)}.step{step}"
 
 
-def derivation_unit(d: Derivation, *, module: str | None = None,
-                    source: str = "") -> tuple[CoqUnit | None, list[StepExport]]:
-    """The Coq unit of ``d`` (None if no step could be exported) and each step's fate."""
+def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "",
+                    exportable: frozenset[int] | None = None, claim: bool = True,
+                    exportable_reason: str = "not verified: not exported"
+                    ) -> tuple[CoqUnit | None, list[StepExport]]:
+    """The Coq unit of ``d`` (None if no step could be exported) and each step's fate.
+
+    ``exportable``: the (1-based) steps that may be exported (the checker verified them);
+    the others are left out with ``exportable_reason``. ``claim``: state the derivation's
+    claim when every step is exported (False when the checker did not verify the
+    derivation as a whole, e.g. its premises cannot hold together).
+    """
     name = module or module_name(d.name)
     exprs, lambda_nodes = _expressions(d)
     naming = Naming()
@@ -117,25 +125,32 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
     _declare(sec, d, variables, lambda_nodes)
     fates: list[StepExport] = []
     theorems: list[str] = []
+    statements: list[tuple[str, str]] = []
     body: list[str] = []
     for k, step in enumerate(d.steps, start=1):
         thm = f"step{k}"
+        if exportable is not None and k not in exportable:
+            fates.append(StepExport(d.name, k, None, exportable_reason))
+            continue
         try:
-            text = _step_theorem(sec, d, step, thm, k)
+            made = _step_theorem(sec, d, step, thm, k)
         except CoqExportError as exc:
             fates.append(StepExport(d.name, k, None, str(exc)))
             continue
-        if text is None:
+        if made is None:
             fates.append(StepExport(d.name, k, None, _not_exported_reason(step)))
             continue
-        body.append(text)
+        body.append(made[0])
         theorems.append(thm)
+        statements.append((thm, made[1]))
         fates.append(StepExport(d.name, k, f"{name}.{thm}"))
     if not theorems:
         return None, fates
-    if len(theorems) == len(d.steps) > 1:
-        body.append(_claim_theorem(sec, d))
+    if len(theorems) == len(d.steps) > 1 and claim:
+        text, statement = _claim_theorem(sec, d)
+        body.append(text)
         theorems.append("claim")
+        statements.append(("claim", statement))
     section = name
     head = [f"(** Exported from the derivation '{comment_text(d.name)}' (verify.proof).",
             "    Context only, not theorems of this file:",
@@ -146,10 +161,10 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
             HEADER,
             f"Section {section}.", ""]
     text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
-    return CoqUnit(name, text, tuple(theorems), source or d.name), fates
+    return CoqUnit(name, text, tuple(theorems), source or d.name, tuple(statements)), fates
 
 
-def _claim_theorem(sec: _Section, d: Derivation) -> str:
+def _claim_theorem(sec: _Section, d: Derivation) -> tuple[str, str]:
     """The derivation's conclusion, start REL end, chained from its step theorems."""
     rels = {s.relation for s in d.steps} - {"="}
     rel = rels.pop() if rels else "="
@@ -168,11 +183,12 @@ def _claim_theorem(sec: _Section, d: Derivation) -> str:
     using = " ".join(dict.fromkeys(sec.variables + hyps))
     start, end = coq_text(d.start, sec.naming), coq_text(d.current, sec.naming)
     coq_rel = {"=": "=", "<=": "<=", ">=": ">="}[rel]
+    statement = f"{start} {coq_rel} {end}"
     return "\n".join([
         f"(** The derivation's claim: {comment_text(str(d.start))} {rel} "
         f"{comment_text(str(d.current))} *)",
-        f"Theorem claim : {start} {coq_rel} {end}.",
-        f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""])
+        f"Theorem claim : {statement}.",
+        f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""]), statement
 
 
 def _not_exported_reason(step: Step) -> str:
@@ -302,7 +318,10 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
 
 
 # -- steps ----------------------------------------------------------------------------------
-def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) -> str | None:
+def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str,
+                  k: int) -> tuple[str, str] | None:
+    """The theorem of one step (its text and its statement), None when its justification
+    is not exported."""
     naming = sec.naming
     conds = list(d.where) + list(step.where)
     gens = conds
@@ -328,7 +347,7 @@ def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) ->
     using = " ".join(dict.fromkeys(sec.variables + hyps))
     proof = f"Proof using {using}." if using else "Proof."
     return "\n".join([*head, f"Theorem {thm} : {statement}.", proof,
-                      *("  " + line for line in body), "Qed.", ""])
+                      *("  " + line for line in body), "Qed.", ""]), statement
 
 
 def _generators(sec: _Section, atoms: Atoms, conds: list[Condition]) -> list[tuple]:

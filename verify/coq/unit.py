@@ -36,6 +36,10 @@ class CoqUnit:
     text: str
     theorems: tuple[str, ...]
     source: str = ""
+    #: (theorem, statement) of every theorem the unit states, as the exporter wrote
+    #: them: the round trip after writing (:func:`verify.coq.audit.statement_problems`)
+    #: compares the file with these; empty for units not checked that way.
+    statements: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         if not _COQ_IDENT.match(self.name):
