@@ -421,6 +421,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.claims.proofs import search_settings
     from verify.progress import Stages
     from verify.proof import ProofSyntaxError, certificate_store, check
+    from verify.proof.dynamics import tangency_budget
     from verify.proof.isolate import data_text, load_isolated, read_data_file
     from verify.proof.report_lines import result_lines, summary_line
 
@@ -434,13 +435,14 @@ def _cmd_check(args: argparse.Namespace) -> int:
         outputs.folder("--coq", args.coq)
     outputs.folder("--certificates", args.certificates)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
-    if args.file.suffix == ".json":
-        stage(shown(f"reading {args.file} as data"))
-        derivations = read_data_file(args.file)  # data only: nothing of the user runs
-    else:  # the Python front end, in a sandbox (a child in its own namespaces)
-        stage(shown(f"loading {args.file} in a sandboxed process"))
-        derivations = load_isolated(args.file, budget=budget,
-                                    sandboxed=not args.unsandboxed)
+    with tangency_budget(budget):  # declared dynamics re-checked under the step budget
+        if args.file.suffix == ".json":
+            stage(shown(f"reading {args.file} as data"))
+            derivations = read_data_file(args.file)  # data only: nothing of the user runs
+        else:  # the Python front end, in a sandbox (a child in its own namespaces)
+            stage(shown(f"loading {args.file} in a sandboxed process"))
+            derivations = load_isolated(args.file, budget=budget,
+                                        sandboxed=not args.unsandboxed)
     if args.emit:
         outputs.write(args.emit, data_text(derivations))
     context = CheckContext(seed=args.seed, quick=args.quick)
