@@ -99,6 +99,22 @@ def test_a_changed_statement_fails_the_round_trip(tmp_path):
                       unit.theorems, unit.source, unit.statements)
     with pytest.raises(CoqAuditError, match="does not state what was exported"):
         write_development(tmp_path / "coq", [changed])
+    # the recorded text changed with it: the tree built from the step still refuses it
+    statements = tuple((k, v.replace("(2 * v_1_x)", "(3 * v_1_x)"))
+                       for k, v in unit.statements)
+    both = CoqUnit(changed.name, changed.text, changed.theorems, changed.source, statements,
+                   unit.terms)
+    with pytest.raises(CoqAuditError, match="another term"):
+        write_development(tmp_path / "coq", [both])
+    assert not (tmp_path / "coq").exists()
+
+
+def test_statements_read_back_as_the_exported_trees():
+    from verify.coq.reparse import parse_statement
+
+    (unit,), _, _ = _export(_reserved_names())
+    for name, statement in unit.statements:
+        assert parse_statement(statement) == dict(unit.terms)[name]
 
 
 @needs_coqc

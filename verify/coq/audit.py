@@ -150,10 +150,24 @@ def stated_theorems(text: str) -> dict[str, str]:
     return found
 
 
-def statement_problems(name: str, text: str, intended: Mapping[str, str]) -> list[str]:
+def statement_problems(name: str, text: str, intended: Mapping[str, str],
+                       trees: Mapping[str, tuple] | None = None) -> list[str]:
     """The round trip of a unit's statements: the theorems ``text`` states are exactly
-    those of ``intended`` (name -> statement), each with its intended statement."""
-    written = {k: v for k, v in stated_theorems(text).items()}
+    those of ``intended`` (name -> statement), each with its intended statement, and,
+    with ``trees``, each statement read back (:func:`verify.coq.reparse.parse_statement`)
+    is the intended term tree."""
+    from verify.coq.reparse import ReparseError, parse_statement
+
+    written = stated_theorems(text)
+    for k, tree in (trees or {}).items():
+        if k in written:
+            try:
+                ok = parse_statement(written[k]) == tree
+            except ReparseError as exc:
+                return [f"{name}: theorem {k} does not read back ({exc})"]
+            if not ok:
+                return [f"{name}: theorem {k} reads back as another term than the one "
+                        "exported"]
     problems = [f"{name}: theorem {k} is not one the exporter wrote"
                 for k in written if k not in intended]
     for k, statement in intended.items():

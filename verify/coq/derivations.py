@@ -42,6 +42,7 @@ from fractions import Fraction
 from verify.coq.normal import normal_form
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
+from verify.coq.reparse import intended_statement
 from verify.coq.terms import (
     CoqExportError,
     Naming,
@@ -126,6 +127,7 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
     fates: list[StepExport] = []
     theorems: list[str] = []
     statements: list[tuple[str, str]] = []
+    terms: list[tuple[str, tuple]] = []
     body: list[str] = []
     for k, step in enumerate(d.steps, start=1):
         thm = f"step{k}"
@@ -143,6 +145,8 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
         body.append(made[0])
         theorems.append(thm)
         statements.append((thm, made[1]))
+        terms.append((thm, intended_statement(step.lhs, step.relation, step.rhs,
+                                              sec.naming)))
         fates.append(StepExport(d.name, k, f"{name}.{thm}"))
     if not theorems:
         return None, fates
@@ -151,6 +155,8 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
         body.append(text)
         theorems.append("claim")
         statements.append(("claim", statement))
+        terms.append(("claim", intended_statement(d.start, _claim_relation(d), d.current,
+                                                  sec.naming)))
     section = name
     head = [f"(** Exported from the derivation '{comment_text(d.name)}' (verify.proof).",
             "    Context only, not theorems of this file:",
@@ -161,7 +167,8 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
             HEADER,
             f"Section {section}.", ""]
     text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
-    return CoqUnit(name, text, tuple(theorems), source or d.name, tuple(statements)), fates
+    return CoqUnit(name, text, tuple(theorems), source or d.name, tuple(statements),
+                   tuple(terms)), fates
 
 
 #: What exporting one step (or a derivation's declarations) may raise on a file's input:
@@ -208,10 +215,14 @@ def _section(d: Derivation) -> _Section:
     return sec
 
 
+def _claim_relation(d: Derivation) -> str:
+    rels = {s.relation for s in d.steps} - {"="}
+    return rels.pop() if rels else "="
+
+
 def _claim_theorem(sec: _Section, d: Derivation) -> tuple[str, str]:
     """The derivation's conclusion, start REL end, chained from its step theorems."""
-    rels = {s.relation for s in d.steps} - {"="}
-    rel = rels.pop() if rels else "="
+    rel = _claim_relation(d)
     names = {("=", "="): "eq_trans", ("<=", "<="): "Rle_trans", (">=", ">="): "Rge_trans",
              ("=", "<="): "eq_le_trans", ("<=", "="): "le_eq_trans",
              ("=", ">="): "eq_ge_trans", (">=", "="): "ge_eq_trans"}

@@ -95,7 +95,7 @@ def audit_problems(files: Mapping[str, str], units: Sequence[CoqUnit]) -> list[s
     for unit in units:
         if unit.statements:
             problems += statement_problems(f"{unit.name}.v", files.get(f"{unit.name}.v", ""),
-                                           dict(unit.statements))
+                                           dict(unit.statements), dict(unit.terms))
     return problems
 
 

@@ -1,0 +1,133 @@
+"""The round trip of a written statement: the Coq text of a theorem read back into a
+term tree and compared with the tree the exporter meant to state.
+
+:func:`intended` builds the tree from the step's own expressions (the paper's language,
+Section 3) with a table of its own (operation and shape to the prelude's name), not from
+the text the exporter wrote; :func:`parse_statement` reads the text a ``.v`` file holds.
+Both are iterative (no recursion), so a deep expression is no limit. A statement that
+reads back as another tree than intended is refused by the audit
+(:func:`verify.coq.audit.statement_problems`).
+
+Trees are tuples: ``("id", name)``, ``("num", Fraction)``, ``("app", head, args)``,
+``("+", a, b)``, ``("*", a, b)``, ``("-", a)``.
+"""
+
+from __future__ import annotations
+
+import re
+from fractions import Fraction
+
+from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, postorder
+
+#: The prelude's name of each operation on vectors and matrices (``SO3.v``).
+_HEADS = {("add", VECTOR): "vadd", ("add", MATRIX): "madd", ("neg", VECTOR): "vneg",
+          ("neg", MATRIX): "mneg", ("scale", VECTOR): "vscale", ("scale", MATRIX): "mscale",
+          ("matmul", VECTOR): "mvmul", ("matmul", MATRIX): "mmul"}
+_UNARY = {"transpose": "mT", "trace": "tr", "sk": "sk", "sym": "sym", "hat": "hat",
+          "vee": "vee", "cos": "cos", "sin": "sin", "dot": "vdot", "outer": "outer"}
+_ZEROS = {VECTOR: ("id", "vzero"), MATRIX: ("id", "Z3")}
+RELATIONS = ("=", "<=", ">=")
+
+
+class ReparseError(ValueError):
+    """Text that is not a statement the exporter's grammar writes."""
+
+
+def intended(e: Expr, naming, *, use_phi: bool = True) -> tuple:
+    """The tree of ``e`` as the statement means it (``naming``: the section's names)."""
+    from verify.coq.terms import _is_phi
+
+    tree: dict[int, tuple] = {}
+    for node in postorder(e):
+        op, a, shape = node.op, [tree.get(id(x)) for x in node.args], node.shape
+        if op == "var":
+            t: tuple = ("id", naming.variable(node.data))
+        elif op == "const":
+            t = ("num", Fraction(node.data))
+        elif op == "identity":
+            t = ("id", "I3")
+        elif op == "zero":
+            t = _ZEROS.get(shape, ("num", Fraction(0)))
+        elif op == "lambda_min":
+            t = ("id", naming.lambda_atom(node))
+        elif use_phi and (r := _is_phi(node)) is not None:
+            t = ("app", "phi", (tree[id(r)],))
+        elif op in ("add", "scale") and shape == SCALAR:
+            t = ("+" if op == "add" else "*", a[0], a[1])
+        elif op == "neg" and shape == SCALAR:
+            t = ("-", a[0])
+        elif (op, shape) in _HEADS:
+            t = ("app", _HEADS[(op, shape)], tuple(a))
+        elif op in _UNARY:
+            t = ("app", _UNARY[op], tuple(a))
+        else:
+            raise ReparseError(f"no Coq term for the operation {op!r}")
+        tree[id(node)] = t
+    return tree[id(e)]
+
+
+def intended_statement(lhs: Expr, relation: str, rhs: Expr, naming) -> tuple:
+    return (intended(lhs, naming), relation, intended(rhs, naming))
+
+
+_TOKEN = re.compile(r"\s*(?:(<=|>=)|(-?\d+)|([A-Za-z_][A-Za-z0-9_']*)|([()+*/=-]))")
+
+
+def _tokens(text: str) -> list:
+    out: list = []
+    i, n = 0, len(text)
+    while i < n:
+        if text[i:].isspace():
+            break
+        m = _TOKEN.match(text, i)
+        if not m:
+            raise ReparseError(f"unexpected text at {text[i:i + 20]!r}")
+        rel, num, ident, sym = m.groups()
+        if rel or sym:
+            out.append(rel or sym)
+        elif num:
+            out.append(("num", Fraction(int(num))))
+        else:
+            out.append(("id", ident))
+        i = m.end()
+    return out
+
+
+def _close(items: list) -> tuple:
+    """The tree of one parenthesised group of items."""
+    if len(items) == 3 and items[1] == "/" and all(
+            isinstance(x, tuple) and x[0] == "num" for x in (items[0], items[2])):
+        return ("num", items[0][1] / items[2][1])
+    if len(items) == 1 and isinstance(items[0], tuple) and items[0][0] == "num":
+        return items[0]
+    if len(items) == 3 and items[1] in ("+", "*") and all(isinstance(x, tuple)
+                                                          for x in (items[0], items[2])):
+        return (items[1], items[0], items[2])
+    if len(items) == 2 and items[0] == "-" and isinstance(items[1], tuple):
+        return ("-", items[1])
+    if (len(items) >= 2 and isinstance(items[0], tuple) and items[0][0] == "id"
+            and all(isinstance(x, tuple) for x in items[1:])):
+        return ("app", items[0][1], tuple(items[1:]))
+    raise ReparseError("a group the exporter's grammar does not write")
+
+
+def parse_statement(text: str) -> tuple:
+    """``(lhs tree, relation, rhs tree)`` of a statement ``lhs REL rhs`` as written."""
+    stack: list[list] = [[]]
+    for tok in _tokens(text):
+        if tok == "(":
+            stack.append([])
+        elif tok == ")":
+            if len(stack) == 1:
+                raise ReparseError("unbalanced parentheses")
+            group = stack.pop()
+            stack[-1].append(_close(group))
+        else:
+            stack[-1].append(tok)
+    if len(stack) != 1:
+        raise ReparseError("unbalanced parentheses")
+    top = stack[0]
+    if len(top) != 3 or top[1] not in RELATIONS or not all(
+            isinstance(x, tuple) for x in (top[0], top[2])):
+        raise ReparseError("not a statement 'lhs REL rhs'")
+    return (top[0], top[1], top[2])
