@@ -154,7 +154,10 @@ def write_paper_development(certificates_dir: Path) -> str:
         return f"coq: {certificates_dir} does not exist; no Coq development written"
     export = paper_development_units(certificates_dir)
     folder = Path(certificates_dir) / "coq"
-    write_export(folder, export)
+    try:
+        write_export(folder, export)
+    except ValueError as exc:  # the audit refused it, or two units share a name
+        return f"coq: {exc}; nothing written"
     return (f"coq: wrote {folder} ({len(export.units)} unit(s); 'verify coq --check' "
             "compiles it)")
 
