@@ -29,6 +29,7 @@ from verify.proof import (
     positive,
     square,
 )
+from verify.proof.budget import Budget
 from verify.proof.expr import ProofSyntaxError, chart_gap
 from verify.proof.isolate import data_text
 
@@ -195,14 +196,20 @@ def test_a_shared_subterm_squared_forty_times_is_bounded():
     assert "too large" in reason
 
 
-def test_a_sum_nested_991_deep_exports():
+def test_a_sum_nested_991_deep_exports(tmp_path):
     ctx = Context("c")
     x = ctx.scalar("x")
     s = x
     for _ in range(990):
         s = s + x
-    units, _fates, missing = _export(Derivation("deep", s, ctx).equals(991 * x, by_algebra()))
+    d = Derivation("deep", s, ctx).equals(991 * x, by_algebra())
+    units, _, missing = _export(d)
     assert not missing and units[0].theorems == ("step1",)
+    # through a forked process (results pickled) and the audit in this one
+    units, _, missing = export_verified([d], _verified(d), Budget(60, 2 * 2**30))
+    assert not missing
+    write_development(tmp_path / "coq", units)
+    assert (tmp_path / "coq" / f"{units[0].name}.v").exists()
 
 
 def test_a_chart_gap_condition_is_a_step_not_exported():

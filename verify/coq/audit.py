@@ -151,7 +151,7 @@ def stated_theorems(text: str) -> dict[str, str]:
 
 
 def statement_problems(name: str, text: str, intended: Mapping[str, str],
-                       trees: Mapping[str, tuple] | None = None) -> list[str]:
+                       trees: Mapping[str, str] | None = None) -> list[str]:
     """The round trip of a unit's statements: the theorems ``text`` states are exactly
     those of ``intended`` (name -> statement), each with its intended statement, and,
     with ``trees``, each statement read back (:func:`verify.coq.reparse.parse_statement`)

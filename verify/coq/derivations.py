@@ -127,7 +127,7 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
     fates: list[StepExport] = []
     theorems: list[str] = []
     statements: list[tuple[str, str]] = []
-    terms: list[tuple[str, tuple]] = []
+    terms: list[tuple[str, str]] = []
     body: list[str] = []
     for k, step in enumerate(d.steps, start=1):
         thm = f"step{k}"

@@ -8,8 +8,9 @@ Both are iterative (no recursion), so a deep expression is no limit. A statement
 reads back as another tree than intended is refused by the audit
 (:func:`verify.coq.audit.statement_problems`).
 
-Trees are tuples: ``("id", name)``, ``("num", Fraction)``, ``("app", head, args)``,
-``("+", a, b)``, ``("*", a, b)``, ``("-", a)``.
+A tree is written as one flat string in prefix form (``name``, ``#p/q``,
+``head(a,b)``, ``+(a,b)``, ``*(a,b)``, ``-(a)``), so comparing, storing and pickling it
+never recurses, however deep the expression.
 """
 
 from __future__ import annotations
@@ -25,7 +26,7 @@ _HEADS = {("add", VECTOR): "vadd", ("add", MATRIX): "madd", ("neg", VECTOR): "vn
           ("matmul", VECTOR): "mvmul", ("matmul", MATRIX): "mmul"}
 _UNARY = {"transpose": "mT", "trace": "tr", "sk": "sk", "sym": "sym", "hat": "hat",
           "vee": "vee", "cos": "cos", "sin": "sin", "dot": "vdot", "outer": "outer"}
-_ZEROS = {VECTOR: ("id", "vzero"), MATRIX: ("id", "Z3")}
+_ZEROS = {VECTOR: "vzero", MATRIX: "Z3"}
 RELATIONS = ("=", "<=", ">=")
 
 
@@ -33,44 +34,68 @@ class ReparseError(ValueError):
     """Text that is not a statement the exporter's grammar writes."""
 
 
-def intended(e: Expr, naming, *, use_phi: bool = True) -> tuple:
+def _num(c: Fraction) -> str:
+    return f"#{c.numerator}/{c.denominator}"
+
+
+def _app(head: str, args) -> str:
+    return f"{head}({','.join(args)})"
+
+
+def intended(e: Expr, naming, *, use_phi: bool = True) -> str:
     """The tree of ``e`` as the statement means it (``naming``: the section's names)."""
     from verify.coq.terms import _is_phi
 
-    tree: dict[int, tuple] = {}
+    tree: dict[int, str] = {}
     for node in postorder(e):
-        op, a, shape = node.op, [tree.get(id(x)) for x in node.args], node.shape
+        op, a, shape = node.op, [tree.get(id(x), "") for x in node.args], node.shape
         if op == "var":
-            t: tuple = ("id", naming.variable(node.data))
+            t = naming.variable(node.data)
         elif op == "const":
-            t = ("num", Fraction(node.data))
+            t = _num(Fraction(node.data))
         elif op == "identity":
-            t = ("id", "I3")
+            t = "I3"
         elif op == "zero":
-            t = _ZEROS.get(shape, ("num", Fraction(0)))
+            t = _ZEROS.get(shape, _num(Fraction(0)))
         elif op == "lambda_min":
-            t = ("id", naming.lambda_atom(node))
+            t = naming.lambda_atom(node)
         elif use_phi and (r := _is_phi(node)) is not None:
-            t = ("app", "phi", (tree[id(r)],))
+            t = _app("phi", [tree[id(r)]])
         elif op in ("add", "scale") and shape == SCALAR:
-            t = ("+" if op == "add" else "*", a[0], a[1])
+            t = _app("+" if op == "add" else "*", a)
         elif op == "neg" and shape == SCALAR:
-            t = ("-", a[0])
+            t = _app("-", a)
         elif (op, shape) in _HEADS:
-            t = ("app", _HEADS[(op, shape)], tuple(a))
+            t = _app(_HEADS[(op, shape)], a)
         elif op in _UNARY:
-            t = ("app", _UNARY[op], tuple(a))
+            t = _app(_UNARY[op], a)
         else:
             raise ReparseError(f"no Coq term for the operation {op!r}")
         tree[id(node)] = t
     return tree[id(e)]
 
 
-def intended_statement(lhs: Expr, relation: str, rhs: Expr, naming) -> tuple:
-    return (intended(lhs, naming), relation, intended(rhs, naming))
+def intended_statement(lhs: Expr, relation: str, rhs: Expr, naming) -> str:
+    return f"{intended(lhs, naming)} {relation} {intended(rhs, naming)}"
 
 
 _TOKEN = re.compile(r"\s*(?:(<=|>=)|(-?\d+)|([A-Za-z_][A-Za-z0-9_']*)|([()+*/=-]))")
+
+
+class _Term(str):
+    """A parsed term (its flat string), told apart from a symbol token."""
+
+
+class _Num(_Term):
+    """A parsed number, with its value."""
+
+    value: Fraction
+
+
+def _number(value: Fraction) -> _Num:
+    n = _Num(_num(value))
+    n.value = value
+    return n
 
 
 def _tokens(text: str) -> list:
@@ -86,38 +111,39 @@ def _tokens(text: str) -> list:
         if rel or sym:
             out.append(rel or sym)
         elif num:
-            out.append(("num", Fraction(int(num))))
+            out.append(_number(Fraction(int(num))))
         else:
-            out.append(("id", ident))
+            out.append(_Term(ident))
         i = m.end()
     return out
 
 
-def _close(items: list) -> tuple:
-    """The tree of one parenthesised group of items."""
+def _close(items: list) -> _Term:
+    """The term of one parenthesised group of items."""
     if len(items) == 3 and items[1] == "/" and all(
-            isinstance(x, tuple) and x[0] == "num" for x in (items[0], items[2])):
-        return ("num", items[0][1] / items[2][1])
-    if len(items) == 1 and isinstance(items[0], tuple) and items[0][0] == "num":
+            isinstance(x, _Num) for x in (items[0], items[2])):
+        return _number(items[0].value / items[2].value)
+    if len(items) == 1 and isinstance(items[0], _Num):
         return items[0]
-    if len(items) == 3 and items[1] in ("+", "*") and all(isinstance(x, tuple)
+    if len(items) == 3 and items[1] in ("+", "*") and all(isinstance(x, _Term)
                                                           for x in (items[0], items[2])):
-        return (items[1], items[0], items[2])
-    if len(items) == 2 and items[0] == "-" and isinstance(items[1], tuple):
-        return ("-", items[1])
-    if (len(items) >= 2 and isinstance(items[0], tuple) and items[0][0] == "id"
-            and all(isinstance(x, tuple) for x in items[1:])):
-        return ("app", items[0][1], tuple(items[1:]))
+        return _Term(_app(items[1], [items[0], items[2]]))
+    if len(items) == 2 and items[0] == "-" and isinstance(items[1], _Term):
+        return _Term(_app("-", [items[1]]))
+    if (len(items) >= 2 and isinstance(items[0], _Term) and not isinstance(items[0], _Num)
+            and re.match(r"[A-Za-z_]", items[0]) and "(" not in items[0]
+            and all(isinstance(x, _Term) for x in items[1:])):
+        return _Term(_app(items[0], items[1:]))
     raise ReparseError("a group the exporter's grammar does not write")
 
 
-def parse_statement(text: str) -> tuple:
-    """``(lhs tree, relation, rhs tree)`` of a statement ``lhs REL rhs`` as written."""
+def parse_statement(text: str) -> str:
+    """The flat tree ``lhs REL rhs`` of a statement as written."""
     stack: list[list] = [[]]
     for tok in _tokens(text):
-        if tok == "(":
+        if tok == "(" and not isinstance(tok, _Term):
             stack.append([])
-        elif tok == ")":
+        elif tok == ")" and not isinstance(tok, _Term):
             if len(stack) == 1:
                 raise ReparseError("unbalanced parentheses")
             group = stack.pop()
@@ -127,7 +153,7 @@ def parse_statement(text: str) -> tuple:
     if len(stack) != 1:
         raise ReparseError("unbalanced parentheses")
     top = stack[0]
-    if len(top) != 3 or top[1] not in RELATIONS or not all(
-            isinstance(x, tuple) for x in (top[0], top[2])):
+    if (len(top) != 3 or isinstance(top[1], _Term) or top[1] not in RELATIONS
+            or not all(isinstance(x, _Term) for x in (top[0], top[2]))):
         raise ReparseError("not a statement 'lhs REL rhs'")
-    return (top[0], top[1], top[2])
+    return f"{top[0]} {top[1]} {top[2]}"

@@ -43,7 +43,7 @@ class CoqUnit:
     #: (theorem, term tree) of the same theorems, built from the expressions the unit
     #: was exported from (:func:`verify.coq.reparse.intended`): the written statement,
     #: read back, must be this tree.
-    terms: tuple[tuple[str, tuple], ...] = ()
+    terms: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         if not _COQ_IDENT.match(self.name):
