@@ -348,3 +348,36 @@ def test_the_three_overclaiming_comments_are_context_only():
         summary = head.split("the derivation's summary:")[1]
         assert "Context only, not theorems of this file:" in head
         assert "Statement:" not in head and summary.strip()
+
+
+@needs_coqc
+def test_long_shared_subterms_are_written_once_and_compile(prelude_dir):
+    from verify.coq.reparse import parse_statement
+
+    ctx = Context("c")
+    x, k = ctx.scalar("x"), ctx.scalar("k", positive=True)
+    a = x * x + 1
+    for _ in range(8):
+        a = a + a
+    b = (x + 1) * (x + 1)
+    for _ in range(7):
+        b = b + b
+    equal = Derivation("lets.eq", a, ctx).equals(256 * (x * x) + 256, by_algebra())
+    bound = Derivation("lets.le", b + k, ctx).ge(b, by_bound(positive(k)))
+    units, _, missing = _export(equal, bound)
+    assert not missing
+    for unit in units:
+        statement = dict(unit.statements)["step1"]
+        assert statement.startswith("let s_1 := ") and len(statement) < 4000
+        assert parse_statement(statement) == dict(unit.terms)["step1"]
+        assert compiles(prelude_dir, unit.text, unit.name)
+
+
+def test_a_sum_doubled_forty_times_is_refused_not_written():
+    ctx = Context("c")
+    x = ctx.scalar("x")
+    s = x + 1
+    for _ in range(40):
+        s = s + s
+    reason = _not_exported(Derivation("doubled", s, ctx).equals(s, by_algebra()))
+    assert "characters" in reason or "too large" in reason

@@ -44,11 +44,13 @@ from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entr
 from verify.coq.polys import poly_text as _poly_text
 from verify.coq.reparse import intended_statement
 from verify.coq.terms import (
+    LET_STATEMENT_CHARS,
     CoqExportError,
     Naming,
     assumption_hypothesis,
     constant,
     coq_text,
+    let_bindings,
 )
 from verify.coq.text import module_identifier
 from verify.coq.unit import CoqUnit, comment_text
@@ -386,7 +388,12 @@ def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str,
             raise CoqExportError(f"too large for the exporter: {too_large}")
     gens = conds
     hyps = list(sec.basic) + [sec.conditions[id(c)] for c in conds]
-    lhs, rhs = coq_text(step.lhs, naming), coq_text(step.rhs, naming)
+    lets: list[tuple[str, str]] = []
+    lhs, rhs = coq_text(step.lhs, naming), coq_text(step.rhs, naming)  # bounded, or refused
+    if len(lhs) + len(rhs) > LET_STATEMENT_CHARS:  # long shared subterms written once
+        lets, bound = let_bindings([step.lhs, step.rhs], naming)
+        lhs = coq_text(step.lhs, naming, bound=bound)
+        rhs = coq_text(step.rhs, naming, bound=bound)
     note = step.because.describe()
     head = [f"(** Step {k}: {said(step.lhs)} {step.relation} {said(step.rhs)}",
             f"    ({comment_text(note)}) *)"]
@@ -406,6 +413,9 @@ def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str,
         return None
     using = " ".join(dict.fromkeys(sec.variables + hyps))
     proof = f"Proof using {using}." if using else "Proof."
+    if lets:  # the statement names its shared subterms; the proof works on them written out
+        statement = "".join(f"let {n} := {t} in " for n, t in lets) + statement
+        body = ["cbv zeta.", *body]
     return "\n".join([*head, f"Theorem {thm} : {statement}.", proof,
                       *("  " + line for line in body), "Qed.", ""]), statement
 

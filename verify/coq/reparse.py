@@ -79,7 +79,7 @@ def intended_statement(lhs: Expr, relation: str, rhs: Expr, naming) -> str:
     return f"{intended(lhs, naming)} {relation} {intended(rhs, naming)}"
 
 
-_TOKEN = re.compile(r"\s*(?:(<=|>=)|(-?\d+)|([A-Za-z_][A-Za-z0-9_']*)|([()+*/=-]))")
+_TOKEN = re.compile(r"\s*(?:(<=|>=|:=)|(-?\d+)|([A-Za-z_][A-Za-z0-9_']*)|([()+*/=-]))")
 
 
 class _Term(str):
@@ -138,9 +138,22 @@ def _close(items: list) -> _Term:
 
 
 def parse_statement(text: str) -> str:
-    """The flat tree ``lhs REL rhs`` of a statement as written."""
+    """The flat tree ``lhs REL rhs`` of a statement as written, its leading
+    ``let NAME := TERM in`` bindings substituted (each name stands for its term)."""
     stack: list[list] = [[]]
+    env: dict[str, _Term] = {}
     for tok in _tokens(text):
+        if isinstance(tok, _Term) and not isinstance(tok, _Num) and tok in env:
+            tok = env[tok]
+        if len(stack) == 1 and isinstance(tok, _Term) and tok == "in":
+            top = stack[0]
+            if (len(top) != 4 or top[0] != "let" or top[2] != ":="
+                    or not isinstance(top[3], _Term) or top[1] in env
+                    or not re.fullmatch(r"s_[0-9]+", top[1])):
+                raise ReparseError("a let binding the exporter does not write")
+            env[str(top[1])] = top[3]
+            stack[0] = []
+            continue
         if tok == "(" and not isinstance(tok, _Term):
             stack.append([])
         elif tok == ")" and not isinstance(tok, _Term):
