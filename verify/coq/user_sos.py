@@ -33,15 +33,20 @@ def one_step(d, k: int):
     return twin
 
 
-def user_sos_units(derivations: Sequence, certificates: Path
+def user_sos_units(derivations: Sequence, certificates: Path, *,
+                   only: set[tuple[str, int]] | None = None, taken: set[str] | None = None
                    ) -> tuple[list[CoqUnit], dict[tuple[str, int], str]]:
-    """Units of the derivations' SOS steps, and each such step's fate: its theorem
-    (``Module.theorem``) or ``refused: reason``."""
+    """Units of the derivations' SOS steps (those in ``only``, (derivation, step) pairs,
+    when given), and each such step's fate: its theorem (``Module.theorem``) or
+    ``refused: reason``. ``taken`` holds the casefolded module names already used."""
     units: list[CoqUnit] = []
     fates: dict[tuple[str, int], str] = {}
+    taken = set() if taken is None else taken
     for d in derivations:
         for k, s in enumerate(d.steps, start=1):
             if s.because.kind != "sos" or s.relation not in ("<=", ">="):
+                continue
+            if only is not None and (d.name, k) not in only:
                 continue
             step = SosStep(one_step(d, k), d.name, k)
             try:
@@ -54,7 +59,10 @@ def user_sos_units(derivations: Sequence, certificates: Path
                 fates[(d.name, k)] = ("refused: its certificate is not in the certificates "
                                       "folder (run verify check with the same --certificates)")
                 continue
-            module = f"{PREFIX}{len(units) + 1}"
+            index = len(units) + 1
+            while f"{PREFIX}{index}".casefold() in taken:
+                index += 1
+            module = f"{PREFIX}{index}"
             try:
                 data = json.loads(path.read_text(encoding="utf-8"))
                 unit = sos_unit(step, data, file_label=path.name, module=module)
@@ -66,5 +74,6 @@ def user_sos_units(derivations: Sequence, certificates: Path
                 fates[(d.name, k)] = f"refused: malformed SOS certificate ({type(exc).__name__})"
                 continue
             units.append(unit)
+            taken.add(module.casefold())
             fates[(d.name, k)] = f"{unit.name}.{unit.theorems[0]}"
     return units, fates
