@@ -62,7 +62,7 @@ Definition S2 : list (Q * list poly) :=
 
 Lemma H2_psd : mult_psd env H2.
 Proof.
-  apply (mult_psd_3 env H2 (v_1_k_s * (qn q_v_2_R_rl) ^ 1) (fun x1 x2 x3 => qform (msub (sym (sym v_2_R_rl)) (mscale lam1 I3)) (mkV x1 x2 x3))).
+  apply (mult_psd_3 env H2 (v_1_k_s * ((qn q_v_2_R_rl) ^ 1)) (fun x1 x2 x3 => qform (msub (sym (sym v_2_R_rl)) (mscale lam1 I3)) (mkV x1 x2 x3))).
   - reflexivity.
   - exact (Rmult_le_pos _ _ (Rlt_le _ _ v_1_k_s_pos) (Rlt_le _ _ (pow_lt _ 1 (qn_pos q_v_2_R_rl q_v_2_R_rl_nonzero)))).
   - intros x1 x2 x3. exact (lam1_spec (mkV x1 x2 x3)).

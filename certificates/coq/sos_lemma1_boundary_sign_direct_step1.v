@@ -42,7 +42,7 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  apply (mult_psd_3 env H1 (v_1_k_s * (qn q_v_2_R_rl) ^ 1) (fun x1 x2 x3 => qform (sym v_2_R_rl) (mkV x1 x2 x3))).
+  apply (mult_psd_3 env H1 (v_1_k_s * ((qn q_v_2_R_rl) ^ 1)) (fun x1 x2 x3 => qform (sym v_2_R_rl) (mkV x1 x2 x3))).
   - reflexivity.
   - exact (Rmult_le_pos _ _ (Rlt_le _ _ v_1_k_s_pos) (Rlt_le _ _ (pow_lt _ 1 (qn_pos q_v_2_R_rl q_v_2_R_rl_nonzero)))).
   - intros x1 x2 x3. exact ((pd_psd _ assumption1) (mkV x1 x2 x3)).
