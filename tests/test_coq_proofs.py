@@ -198,7 +198,7 @@ def test_check_exports_only_verified_steps(tmp_path):
     write_development(tmp_path / "coq", units)
     project = (tmp_path / "coq" / "_CoqProject").read_text().splitlines()
     assert project == ["-R . VerifyCoq", "SO3.v", "QCert.v", "SOSCert.v", "BandCert.v",
-                       "small_trace.v", "small_bound.v",
+                       "WitnessCert.v", "PoleCert.v", "small_trace.v", "small_bound.v",
                        "small_condition.v", "All.v"]
     # a step the checker did not verify is never exported, and the claim goes with it
     results[1].steps[1].verdict = "inconclusive"
