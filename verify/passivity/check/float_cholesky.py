@@ -1,0 +1,163 @@
+"""Positive definiteness proved by one floating-point Cholesky factorisation (Rump's test).
+
+For an exact rational symmetric X (held as an integer matrix over a common denominator,
+:class:`verify.passivity.check.intmat.ScaledInt`), :func:`verified_pd` returns True only
+when X is positive definite; False means "not proved here" (the caller then decides
+exactly). The test:
+
+1. X is scaled by a power of two (exact) so that its largest entry is near 1.
+2. F is the floating-point matrix with F_ij = fl(X_ij) (correctly rounded) off the
+   diagonal and F_ii the largest double <= X_ii - c on it (exactly rounded down).
+3. c satisfies, in exact rational arithmetic after F is built,
+
+       c >= alpha_n tr F + 6 n (n + max_i F_ii) eta + (n - 1)(u mu + eta),
+
+   with u = 2^-53, eta = 2^-1074, gamma_k = k u / (1 - k u), alpha_n =
+   gamma_(n+1) / (1 - gamma_(n+1)) and mu the largest off-diagonal |F_ij|.
+4. Cholesky of F in IEEE binary64 (round to nearest, gradual underflow) runs to
+   completion: every pivot is positive.
+
+Then X is positive definite. Rump's theorem (S. M. Rump, *Verification of positive
+definiteness*, BIT Numerical Mathematics 46 (2006) 433-452, Section 2; the bound of
+INTLAB's ``isspd``; after J. W. Demmel, *On floating point errors in Cholesky*, LAPACK
+Working Note 14, 1989) gives lambda_min(F) > -(alpha_n tr F + 6 n (n + max F_ii) eta)
+when step 4 succeeds, for any order of evaluation of the inner products. The off-diagonal
+rounding E = X - cI - F - diag(X_ii - c - F_ii) has |E_ij| <= u |F_ij| + eta, so
+||E||_2 <= ||E||_inf <= (n - 1)(u mu + eta), and the diagonal remainder is >= 0; hence
+lambda_min(X) >= c + lambda_min(F) - ||E||_2 > 0. The theorem and its constants are
+stated in ``verify/passivity/TRUSTED.md``.
+
+The factorisation is our own right-looking loop of elementwise numpy operations (one
+correctly rounded IEEE operation each: no BLAS, no fused multiply-add), so the
+hypotheses of the theorem hold for the code as written; the rounding mode and gradual
+underflow are probed before each use (:func:`ieee_nearest`). Floating point cannot
+make this say True for a matrix that is not positive definite; it can only fail to
+prove a matrix that is (a margin below c, a semidefinite or a lossless one).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+
+from verify.passivity.check import intmat
+
+#: unit roundoff of IEEE binary64, round to nearest
+UNIT_ROUNDOFF = Fraction(1, 2**53)
+#: smallest positive (subnormal) binary64: the absolute error unit of gradual underflow
+ETA = Fraction(1, 2**1074)
+
+
+def gamma(k: int) -> Fraction:
+    """gamma_k = k u / (1 - k u), exactly (Higham, *Accuracy and Stability*, Section 3.1)."""
+    ku = k * UNIT_ROUNDOFF
+    if ku >= 1:
+        raise ValueError(f"gamma_{k} is undefined for binary64 (k u >= 1)")
+    return ku / (1 - ku)
+
+
+def alpha(n: int) -> Fraction:
+    """alpha_n = gamma_(n+1) / (1 - gamma_(n+1)): Rump's per-row factor, for dense rows."""
+    g = gamma(n + 1)
+    return g / (1 - g)
+
+
+def required_shift(diagonal: list[float], off_max: float) -> Fraction:
+    """The least c (exact) the theorem asks for, given F's diagonal and largest
+    off-diagonal |F_ij| (module doc, step 3)."""
+    n = len(diagonal)
+    trace = sum((Fraction(x) for x in diagonal), Fraction(0))
+    top = max((Fraction(x) for x in diagonal), default=Fraction(0))
+    return (alpha(n) * trace + 6 * n * (n + top) * ETA
+            + (n - 1) * (UNIT_ROUNDOFF * Fraction(off_max) + ETA))
+
+
+def ieee_nearest() -> bool:
+    """numpy's binary64 arithmetic rounds to nearest and underflows gradually (probes)."""
+    one = np.array([1.0])
+    tiny = np.array([2.0 ** -1073])
+    with np.errstate(all="ignore"):
+        nearest = bool((one + 1e-30)[0] == 1.0 and (one - 1e-30)[0] == 1.0
+                       and (-one - 1e-30)[0] == -1.0 and (-one + 1e-30)[0] == -1.0)
+        gradual = bool((tiny / 2)[0] == 2.0 ** -1074 and (tiny / 2)[0] != 0.0)
+    return nearest and gradual
+
+
+def cholesky_completes(F: np.ndarray) -> bool:
+    """Whether floating-point Cholesky of F runs to completion (every pivot > 0).
+
+    Right-looking: at step k, r_kk = sqrt(a_kk), r_kj = a_kj / r_kk and a_ij -= r_ki r_kj
+    for i, j > k, each a separately rounded elementwise operation, so every r_ij is
+    (a_ij - sum_{k<i} r_ki r_kj) / r_ii with the sum evaluated in one fixed order."""
+    a = np.array(F, dtype=np.float64, copy=True)
+    n = a.shape[0]
+    with np.errstate(all="ignore"):
+        for k in range(n):
+            pivot = a[k, k]
+            if not (pivot > 0.0) or not math.isfinite(pivot):
+                return False
+            r = np.sqrt(pivot)
+            row = np.divide(a[k, k + 1:], r)
+            if not np.all(np.isfinite(row)):
+                return False
+            if k + 1 < n:
+                tail = a[k + 1:, k + 1:]
+                np.subtract(tail, np.multiply.outer(row, row), out=tail)
+    return True
+
+
+def float_matrix(s: intmat.ScaledInt) -> tuple[np.ndarray, list[int], int]:
+    """The nearest floats of 2^k X (k chosen so that the largest entry is near 1), with
+    the integers Z of X = Z / d and the shift k: 2^k X = Z 2^k / d."""
+    Z, d = s.Z, int(s.d)
+    top = max((abs(int(z)) for z in Z.flat), default=0)
+    k = d.bit_length() - top.bit_length() if top else 0
+    num, den = (1 << k, 1) if k >= 0 else (1, 1 << -k)
+    ints = [int(z) for z in Z.flat]
+    denominator = d * den
+    F = np.array([z * num / denominator for z in ints], dtype=float).reshape(Z.shape)
+    return F, ints, k
+
+
+def verified_pd(s: intmat.ScaledInt) -> bool:
+    """True only if X = Z / d is positive definite (module doc); False: not proved."""
+    n = s.shape[0]
+    if n == 0 or s.shape[1] != n or not ieee_nearest():
+        return False
+    F, ints, k = float_matrix(s)
+    if not np.all(np.isfinite(F)):
+        return False
+    off = np.abs(F - np.diag(np.diag(F)))
+    off_max = float(off.max()) if n > 1 else 0.0
+    diag_exact = [Fraction(ints[i * n + i]) * Fraction(2) ** k / int(s.d) for i in range(n)]
+    # a first c from the floats, then the exact check of the theorem's inequality
+    c = required_shift([max(float(x), 0.0) for x in diag_exact], off_max) * 2
+    for _attempt in range(2):
+        diagonal = [_below(x - c) for x in diag_exact]
+        if any(not (x > 0.0) for x in diagonal):
+            return False
+        need = required_shift(diagonal, off_max)
+        if c >= need:
+            break
+        c = need * 2
+    else:
+        return False
+    np.fill_diagonal(F, diagonal)
+    return cholesky_completes(F)
+
+
+def _below(x: Fraction) -> float:
+    """The largest double <= x (x exact; -inf below the range)."""
+    try:
+        f = float(x)  # correctly rounded to nearest
+    except OverflowError:
+        return math.inf if x > 0 else -math.inf
+    if Fraction(f) > x:
+        f = math.nextafter(f, -math.inf)
+    return f
+
+
+__all__ = ["alpha", "cholesky_completes", "gamma", "ieee_nearest", "required_shift",
+           "verified_pd"]
