@@ -18,11 +18,14 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 from gmpy2 import mpq
 
 from verify.passivity.check import exact as ex
+from verify.passivity.check.float_cholesky import verified_pd_rows
+from verify.passivity.check.kyp_int import IntMatrix, int_matrix, negated_kyp_matrix
 from verify.passivity.check.psd import psd_exact
 
 
@@ -50,6 +53,13 @@ class ExactModel:
 
     def to_json(self) -> dict[str, Any]:
         return {k: ex.to_strings(getattr(self, k)) for k in ("A", "B", "C", "D")}
+
+    @cached_property
+    def integer(self) -> tuple[IntMatrix, IntMatrix, IntMatrix, IntMatrix]:
+        """(A, B, C, D), each an integer matrix over its own denominator (exact; kept)."""
+        n, m = self.n, self.m
+        return (int_matrix(self.A, n, n), int_matrix(self.B, n, m),
+                int_matrix(self.C, m, n), int_matrix(self.D, m, m))
 
 
 def exact_model(A, B, C, D) -> ExactModel:
@@ -108,6 +118,9 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
         return KypCheck(False, f"P must be {n} x {n}")
     if n and not ex.is_symmetric(P):
         return KypCheck(False, "P is not symmetric")
+    fast = verified_kyp(model, P) if n else None
+    if fast is not None:
+        return fast
     if n:
         pd = psd_exact(P, strict=True)
         if not pd.ok:
@@ -119,6 +132,31 @@ def check_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck:
     p_part = f"P: {pd.reason}; " if n else ""
     return KypCheck(True, f"P > 0 and the KYP matrix is <= 0 in exact arithmetic ({p_part}"
                     f"-M(P): {nsd.reason})")
+
+
+VERIFIED_REASON = ("P > 0 and the KYP matrix is <= 0: M(P) formed exactly, then P and "
+                   "-M(P) (its exactly zero rows dropped) proved positive definite by a "
+                   "verified floating-point Cholesky (Rump's bound)")
+
+
+def verified_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck | None:
+    """The fast sufficient check: a passing KypCheck when Rump's test proves P > 0 and
+    -M(P) >= 0 (:mod:`verify.passivity.check.float_cholesky`), else None (then the exact
+    routes decide)."""
+    n = model.n
+    if not n or ex.shape(P) != (n, n) or not ex.is_symmetric(P):
+        return None
+    Pi = int_matrix(P, n, n)
+    if not verified_pd_rows([[int(z) for z in row] for row in Pi.Z.tolist()], Pi.d):
+        return None
+    rows, d = negated_kyp_matrix(*model.integer, Pi)
+    keep = [i for i, row in enumerate(rows) if any(row)]
+    if not keep:
+        return KypCheck(True, "P > 0 (verified floating-point Cholesky) and M(P) = 0")
+    reduced = [[rows[i][j] for j in keep] for i in keep]
+    if not verified_pd_rows(reduced, d):
+        return None
+    return KypCheck(True, VERIFIED_REASON)
 
 
 @dataclass(frozen=True)

@@ -108,30 +108,38 @@ def cholesky_completes(F: np.ndarray) -> bool:
     return True
 
 
-def float_matrix(s: intmat.ScaledInt) -> tuple[np.ndarray, list[int], int]:
-    """The nearest floats of 2^k X (k chosen so that the largest entry is near 1), with
-    the integers Z of X = Z / d and the shift k: 2^k X = Z 2^k / d."""
-    Z, d = s.Z, int(s.d)
-    top = max((abs(int(z)) for z in Z.flat), default=0)
+def float_matrix(rows: list[list[int]], d: int) -> tuple[np.ndarray, int]:
+    """The nearest floats of 2^k X, X = rows / d (k chosen so that the largest entry is
+    near 1), and k: 2^k X = rows 2^k / d, each entry correctly rounded (int / int)."""
+    top = max((abs(z) for row in rows for z in row), default=0)
     k = d.bit_length() - top.bit_length() if top else 0
-    num, den = (1 << k, 1) if k >= 0 else (1, 1 << -k)
-    ints = [int(z) for z in Z.flat]
-    denominator = d * den
-    F = np.array([z * num / denominator for z in ints], dtype=float).reshape(Z.shape)
-    return F, ints, k
+    num, den = (1 << k, d) if k >= 0 else (1, d << -k)
+    if num == 1:
+        F = np.array([[z / den for z in row] for row in rows], dtype=float)
+    else:
+        F = np.array([[(z * num) / den for z in row] for row in rows], dtype=float)
+    return F.reshape(len(rows), len(rows[0]) if rows else 0), k
 
 
 def verified_pd(s: intmat.ScaledInt) -> bool:
     """True only if X = Z / d is positive definite (module doc); False: not proved."""
-    n = s.shape[0]
-    if n == 0 or s.shape[1] != n or not ieee_nearest():
+    return verified_pd_rows([[int(z) for z in row] for row in s.Z], int(s.d))
+
+
+def verified_pd_rows(rows: list[list[int]], d: int) -> bool:
+    """True only if X = rows / d (integer rows, d > 0) is positive definite (module doc);
+    False: not proved."""
+    n = len(rows)
+    if n == 0 or any(len(row) != n for row in rows) or d <= 0 or not ieee_nearest():
         return False
-    F, ints, k = float_matrix(s)
+    F, k = float_matrix(rows, d)
     if not np.all(np.isfinite(F)):
         return False
-    off = np.abs(F - np.diag(np.diag(F)))
+    off = np.abs(F)
+    np.fill_diagonal(off, 0.0)
     off_max = float(off.max()) if n > 1 else 0.0
-    diag_exact = [Fraction(ints[i * n + i]) * Fraction(2) ** k / int(s.d) for i in range(n)]
+    scale = Fraction(2) ** k / d
+    diag_exact = [rows[i][i] * scale for i in range(n)]
     # a first c from the floats, then the exact check of the theorem's inequality
     c = required_shift([max(float(x), 0.0) for x in diag_exact], off_max) * 2
     for _attempt in range(2):
@@ -160,4 +168,4 @@ def _below(x: Fraction) -> float:
 
 
 __all__ = ["alpha", "cholesky_completes", "gamma", "ieee_nearest", "required_shift",
-           "verified_pd"]
+           "verified_pd", "verified_pd_rows"]

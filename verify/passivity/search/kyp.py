@@ -32,7 +32,12 @@ from gmpy2 import mpq
 
 from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
-from verify.passivity.check.certificate import ExactModel, check_kyp, kyp_matrix
+from verify.passivity.check.certificate import (
+    ExactModel,
+    check_kyp,
+    kyp_matrix,
+    verified_kyp,
+)
 from verify.passivity.search.reduce import (
     NoCertificate,
     NotReducible,
@@ -261,10 +266,12 @@ def reduced_search(model: ExactModel, scaling: np.ndarray, frugal: bool = False
             break
         for bits in (52, 40):
             P = _unbalance(red.assemble(_symmetric_rounding(Y, bits)), scaling)
-            if not _worth_checking(model, P, frugal):
-                last = "candidate skipped: no clear margin in floating point"
-                continue
-            result = check_kyp(model, P)
+            result = verified_kyp(model, P)
+            if result is None:
+                if not _worth_checking(model, P, frugal):
+                    last = "candidate skipped: no clear margin in floating point"
+                    continue
+                result = check_kyp(model, P)
             if result.ok:
                 margin = lmi_margin(red.Aa, red.Ba, red.Ca, red.Sa, Y)
                 return KypSearch(P, margin, "reduced riccati",
@@ -331,10 +338,12 @@ def find_certificate(model: ExactModel, A, B, C, D, *, frugal: bool = False) -> 
             P = [[(P[i][j] + P[j][i]) / 2 for j in range(n)] for i in range(n)]
             if k:
                 P = _project_equalities(P, G, target)
-            if not _worth_checking(model, P, frugal):
-                last = f"{method}: candidate skipped, no clear margin in floating point"
-                continue
-            result = check_kyp(model, P)
+            result = verified_kyp(model, P)
+            if result is None:
+                if not _worth_checking(model, P, frugal):
+                    last = f"{method}: candidate skipped, no clear margin in floating point"
+                    continue
+                result = check_kyp(model, P)
             if result.ok:
                 return KypSearch(P, margin, status,
                                  f"{result.reason} ({method} candidate, {label} rounding)")

@@ -28,7 +28,6 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from verify.inputs.number_text import exact_text
-from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
 
@@ -68,15 +67,20 @@ class Rescaling:
 
 def _exponent(m: ex.RationalMatrix) -> int | None:
     """About log2 of the largest |entry| (within one), exactly; None for a zero matrix."""
-    es = [_fraction_exponent(fraction(x))
-          for row in m for x in row if x]
+    es = _exponents(m)
     return max(es) if es else None
 
 
 def _smallest_exponent(m: ex.RationalMatrix) -> int | None:
-    es = [_fraction_exponent(fraction(x))
-          for row in m for x in row if x]
+    es = _exponents(m)
     return min(es) if es else None
+
+
+def _exponents(m: ex.RationalMatrix) -> set[int]:
+    """About log2 |x| (within one) of every nonzero entry (exact: bit lengths of the
+    reduced numerator and denominator, as :func:`_fraction_exponent`)."""
+    return {abs(x.numerator).bit_length() - x.denominator.bit_length() + 1
+            for row in m for x in row if x}
 
 
 def _scaled(m: ex.RationalMatrix, e: int) -> ex.RationalMatrix:
