@@ -18,14 +18,16 @@ from __future__ import annotations
 import hashlib
 import json
 from dataclasses import dataclass
+from fractions import Fraction
 from functools import cached_property
 from typing import Any
 
+import numpy as np
 from gmpy2 import mpq
 
 from verify.passivity.check import exact as ex
-from verify.passivity.check.float_cholesky import verified_pd_rows
-from verify.passivity.check.kyp_int import IntMatrix, int_matrix, negated_kyp_matrix
+from verify.passivity.check.float_cholesky import verified_pd_nearest, verified_pd_rows
+from verify.passivity.check.kyp_int import IntMatrix, SplitP, int_matrix, negated_kyp_matrix
 from verify.passivity.check.psd import psd_exact
 
 
@@ -147,9 +149,14 @@ def verified_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck | None:
     if not n or ex.shape(P) != (n, n) or not ex.is_symmetric(P):
         return None
     Pi = int_matrix(P, n, n)
-    if not verified_pd_rows([[int(z) for z in row] for row in Pi.Z.tolist()], Pi.d):
+    if not verified_pd_rows(Pi.rows, Pi.d):
         return None
-    rows, d = negated_kyp_matrix(*model.integer, Pi)
+    return _negated_part(model, P=P, Pi=Pi)
+
+
+def _negated_part(model: ExactModel, **given) -> KypCheck | None:
+    """The -M(P) >= 0 half of :func:`verified_kyp` (P as rationals or split)."""
+    rows, d = negated_kyp_matrix(*model.integer, **given)
     keep = [i for i, row in enumerate(rows) if any(row)]
     if not keep:
         return KypCheck(True, "P > 0 (verified floating-point Cholesky) and M(P) = 0")
@@ -157,6 +164,37 @@ def verified_kyp(model: ExactModel, P: ex.RationalMatrix) -> KypCheck | None:
     if not verified_pd_rows(reduced, d):
         return None
     return KypCheck(True, VERIFIED_REASON)
+
+
+def verified_kyp_split(model: ExactModel, sp: SplitP) -> KypCheck | None:
+    """:func:`verified_kyp` for P = L + H given split (:class:`SplitP`, P symmetric by
+    construction: the caller's): the same two verified float tests, without forming P's
+    long integers everywhere."""
+    n = model.n
+    if not n or sp.light.Z.nrows() != n:
+        return None
+    F, diagonal = _nearest(sp)
+    if not verified_pd_nearest(F, diagonal):
+        return None
+    return _negated_part(model, split=sp)
+
+
+def _nearest(sp: SplitP) -> tuple[np.ndarray, list[Fraction]]:
+    """The nearest doubles of P = L + H and P's exact diagonal (int / int is correctly
+    rounded; H's entries are added exactly first)."""
+    L, dL = sp.light.rows, sp.light.d
+    F = np.array([[z / dL for z in row] for row in L], dtype=float)
+    exact: dict[tuple[int, int], Fraction] = {}
+    for a, i in enumerate(sp.heavy):
+        for j, h in enumerate(sp.rows.rows[a]):
+            exact[i, j] = Fraction(L[i][j], dL) + Fraction(h, sp.rows.d)
+    for b, i in enumerate(sp.others):
+        for a, j in enumerate(sp.heavy):
+            exact[i, j] = Fraction(L[i][j], dL) + Fraction(sp.cols.rows[b][a], sp.cols.d)
+    for (i, j), x in exact.items():
+        F[i, j] = x.numerator / x.denominator
+    diagonal = [exact.get((i, i), Fraction(L[i][i], dL)) for i in range(len(L))]
+    return F, diagonal
 
 
 @dataclass(frozen=True)

@@ -130,30 +130,40 @@ def verified_pd_rows(rows: list[list[int]], d: int) -> bool:
     """True only if X = rows / d (integer rows, d > 0) is positive definite (module doc);
     False: not proved."""
     n = len(rows)
-    if n == 0 or any(len(row) != n for row in rows) or d <= 0 or not ieee_nearest():
+    if n == 0 or any(len(row) != n for row in rows) or d <= 0:
         return False
     F, k = float_matrix(rows, d)
-    if not np.all(np.isfinite(F)):
+    scale = Fraction(2) ** k / d
+    return verified_pd_nearest(F, [rows[i][i] * scale for i in range(n)])
+
+
+def verified_pd_nearest(F: np.ndarray, diagonal: list[Fraction]) -> bool:
+    """True only if the symmetric matrix X with off-diagonal entries whose nearest
+    doubles are F_ij and with the exact diagonal ``diagonal`` is positive definite
+    (module doc, steps 2-4); False: not proved. F is not modified."""
+    n = F.shape[0]
+    if n == 0 or F.shape != (n, n) or len(diagonal) != n or not ieee_nearest():
+        return False
+    if not np.all(np.isfinite(F)) or not np.array_equal(F, F.T):
         return False
     off = np.abs(F)
     np.fill_diagonal(off, 0.0)
     off_max = float(off.max()) if n > 1 else 0.0
-    scale = Fraction(2) ** k / d
-    diag_exact = [rows[i][i] * scale for i in range(n)]
     # a first c from the floats, then the exact check of the theorem's inequality
-    c = required_shift([max(float(x), 0.0) for x in diag_exact], off_max) * 2
+    c = required_shift([max(_below(x), 0.0) for x in diagonal], off_max) * 2
     for _attempt in range(2):
-        diagonal = [_below(x - c) for x in diag_exact]
-        if any(not (x > 0.0) for x in diagonal):
+        shifted = [_below(x - c) for x in diagonal]
+        if any(not (0.0 < x < math.inf) for x in shifted):
             return False
-        need = required_shift(diagonal, off_max)
+        need = required_shift(shifted, off_max)
         if c >= need:
             break
         c = need * 2
     else:
         return False
-    np.fill_diagonal(F, diagonal)
-    return cholesky_completes(F)
+    G = np.array(F, dtype=np.float64, copy=True)
+    np.fill_diagonal(G, shifted)
+    return cholesky_completes(G)
 
 
 def _below(x: Fraction) -> float:
@@ -168,4 +178,4 @@ def _below(x: Fraction) -> float:
 
 
 __all__ = ["alpha", "cholesky_completes", "gamma", "ieee_nearest", "required_shift",
-           "verified_pd", "verified_pd_rows"]
+           "verified_pd", "verified_pd_nearest", "verified_pd_rows"]

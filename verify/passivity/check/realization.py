@@ -510,44 +510,24 @@ _SMALL_PRIME = 67108859
 _SMALL_PRIME_STATES = 2048
 
 
-def _residues(m: ex.RationalMatrix, rows: int, cols: int) -> np.ndarray | None:
-    """An exact rational matrix modulo the small prime (int64), or None when the prime
-    divides a denominator."""
+def _residues(M, rows: int, cols: int) -> np.ndarray | None:
+    """An integer matrix over a denominator (``IntMatrix``) modulo the small prime
+    (int64), or None when the prime divides the denominator."""
     p = _SMALL_PRIME
-    out = np.empty((rows, cols), dtype=np.int64)
-    inverses: dict[int, int] = {}
-    for i, row in enumerate(m):
-        for j, x in enumerate(row):
-            d = int(x.denominator)
-            inv = inverses.get(d)
-            if inv is None:
-                if d % p == 0:
-                    return None
-                inv = inverses[d] = pow(d, -1, p)
-            out[i, j] = int(x.numerator) % p * inv % p
-    return out
+    if M.d % p == 0:
+        return None
+    inv = pow(M.d, -1, p)
+    out = np.array([[z % p for z in row] for row in M.rows], dtype=np.int64)
+    return (out.reshape(rows, cols) * inv) % p
 
 
 def rank_mod_p(M: np.ndarray, p: int = _SMALL_PRIME) -> int:
-    """The rank of an int64 matrix of residues modulo the prime p < 2^26 (Gaussian
-    elimination, exact: every intermediate stays below 2^63)."""
-    M = np.array(M, dtype=np.int64, copy=True) % p
+    """The rank of an integer matrix modulo the prime p (FLINT ``nmod_mat``, exact)."""
     rows, cols = M.shape
-    rank = 0
-    for c in range(cols):
-        if rank == rows:
-            break
-        nonzero = np.flatnonzero(M[rank:, c])
-        if nonzero.size == 0:
-            continue
-        r = rank + int(nonzero[0])
-        if r != rank:
-            M[[rank, r]] = M[[r, rank]]
-        M[rank] = M[rank] * pow(int(M[rank, c]), -1, p) % p
-        below = M[rank + 1:, c].copy()
-        M[rank + 1:] = (M[rank + 1:] - np.multiply.outer(below, M[rank]) % p) % p
-        rank += 1
-    return rank
+    if rows == 0 or cols == 0:
+        return 0
+    return nmod_mat(rows, cols, (np.asarray(M, dtype=np.int64) % p).ravel().tolist(),
+                    p).rank()
 
 
 def _krylov_full_rank_mod_p(A: np.ndarray, B: np.ndarray) -> bool:
@@ -578,8 +558,8 @@ def _minimal_mod_p(model: ExactModel) -> bool:
     n, m = model.n, model.m
     if n > _SMALL_PRIME_STATES:
         return False
-    A, B, C = (_residues(X, r, c) for X, r, c in ((model.A, n, n), (model.B, n, m),
-                                                   (model.C, m, n)))
+    Ai, Bi, Ci, _ = model.integer
+    A, B, C = (_residues(X, r, c) for X, r, c in ((Ai, n, n), (Bi, n, m), (Ci, m, n)))
     return A is not None and B is not None and C is not None and _krylov_full_rank_mod_p(
         A, B) and _krylov_full_rank_mod_p(np.ascontiguousarray(A.T),
                                           np.ascontiguousarray(C.T))
