@@ -107,3 +107,17 @@ def test_fast_check_never_accepts_what_the_exact_check_refuses(certified) -> Non
         if sp is not None:
             assert verified_kyp_split(model, sp) is None or exact
     assert accepted and refused, (accepted, refused)  # both outcomes occur
+
+
+def test_a_split_that_is_not_symmetric_is_refused(certified) -> None:
+    model, P = certified
+    sp = split_rational(P)
+    if sp is None:  # D > 0: no long pivot rows to split on
+        return
+    assert verified_kyp_split(model, sp) is not None
+    rows = [row[:] for row in sp.light.rows]
+    i, j = sp.others[0], sp.others[1]
+    rows[i][j] += 1  # L no longer symmetric, by one unit of its last place
+    bad = SplitP(int_matrix([[mpq(z, sp.light.d) for z in row] for row in rows],
+                            model.n, model.n), sp.heavy, sp.rows, sp.cols)
+    assert verified_kyp_split(model, bad) is None

@@ -171,12 +171,25 @@ def verified_kyp_split(model: ExactModel, sp: SplitP) -> KypCheck | None:
     construction: the caller's): the same two verified float tests, without forming P's
     long integers everywhere."""
     n = model.n
-    if not n or sp.light.Z.nrows() != n:
+    if not n or sp.light.Z.nrows() != n or not _split_symmetric(sp):
         return None
     F, diagonal = _nearest(sp)
     if not verified_pd_nearest(F, diagonal):
         return None
     return _negated_part(model, split=sp)
+
+
+def _split_symmetric(sp: SplitP) -> bool:
+    """P = L + H is exactly symmetric: L is, and H's heavy rows match its columns."""
+    L = sp.light.rows
+    if any(L[i][j] != L[j][i] for i in range(len(L)) for j in range(i)):
+        return False
+    R, d1, Cm, d2 = sp.rows.rows, sp.rows.d, sp.cols.rows, sp.cols.d
+    k = len(sp.heavy)
+    if any(R[a][sp.heavy[b]] != R[b][sp.heavy[a]] for a in range(k) for b in range(a)):
+        return False
+    return all(Fraction(R[a][j], d1) == Fraction(Cm[b][a], d2)
+               for b, j in enumerate(sp.others) for a in range(k))
 
 
 def _nearest(sp: SplitP) -> tuple[np.ndarray, list[Fraction]]:
