@@ -122,11 +122,17 @@ def _at_p(A: IntMatrix, sp: SplitP) -> tuple[flint.fmpz_mat, int]:
     one n x n x n product on short integers, two thin ones on long ones."""
     n = A.Z.nrows()
     heavy, others = sp.heavy, sp.others
-    At_heavy = _fmpz([A.rows[i] for i in heavy], len(heavy), n).transpose()
-    At_others = _fmpz([A.rows[i] for i in others], len(others), n).transpose()
-    T0 = A.Z.transpose() * sp.light.Z  # / (dA dL)
+    k = len(heavy)
+    At = A.Z.transpose()
+    At_heavy = _fmpz([A.rows[i] for i in heavy], k, n).transpose()
+    # H[others, heavy] placed in an n x k matrix (zero on the heavy rows): Aᵀ times it is
+    # Aᵀ[:, others] H[others, heavy] without forming Aᵀ[:, others]
+    placed = [[0] * k for _ in range(n)]
+    for b, i in enumerate(others):
+        placed[i] = sp.cols.rows[b]
+    T0 = At * sp.light.Z  # / (dA dL)
     T1 = At_heavy * sp.rows.Z  # / (dA d1)
-    T2 = At_others * sp.cols.Z  # / (dA d2), in the heavy columns
+    T2 = At * _fmpz(placed, n, k)  # / (dA d2), in the heavy columns
     d = _lcm(sp.light.d, sp.rows.d, sp.cols.d)
     T = T0 * flint.fmpz(d // sp.light.d) + T1 * flint.fmpz(d // sp.rows.d)
     _place_columns(T, T2, list(range(n)), heavy, d // sp.cols.d)
