@@ -6,9 +6,12 @@ symmetric P with
     P > 0   and   M(P) = [[A^T P + P A, P B - C^T], [B^T P - C, -(D + D^T)]] <= 0,
 
 the KYP (positive-real) lemma; x^T P x / 2 is then a storage function of the human
-(Theorem 1's S_h). :func:`check_kyp` decides both conditions in exact rational
-arithmetic (:mod:`verify.passivity.check.psd`): no solver; floating point only proposes the
-factor of a dominance certificate, which is then checked exactly. The JSON form of a
+(Theorem 1's S_h). :func:`check_kyp` decides both conditions with no solver: M(P) is
+formed exactly (:mod:`verify.passivity.check.kyp_int`), and its definiteness is proved
+by a verified floating-point Cholesky with Rump's rounding-error bound
+(:mod:`verify.passivity.check.float_cholesky`, the theorem in
+``verify/passivity/TRUSTED.md``) or, failing that, decided in exact arithmetic
+(:mod:`verify.passivity.check.psd`). The JSON form of a
 certificate, bound to its claim and source file, is in
 :mod:`verify.passivity.io.certificate_files`.
 """

@@ -117,7 +117,7 @@ def _floats(M: ex.RationalMatrix, rows: int, cols: int) -> np.ndarray:
     return np.array([[float(x) for x in row] for row in M]).reshape(rows, cols)
 
 
-def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
+def null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
     """Exact V with V^T B' = 0, as (pivots, free, X): rows ``pivots`` of a well-conditioned
     k x k block B1 of B' hold X = -(B2 B1^-1)^T, the other rows the identity. None if no
     such block is found."""
@@ -135,7 +135,7 @@ def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
     return pivots, free, X
 
 
-def _v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) -> np.ndarray:
+def v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) -> np.ndarray:
     """V in floating point (for the coordinate change only)."""
     V = np.zeros((n, len(free)))
     for a, i in enumerate(pivots):
@@ -206,13 +206,13 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | NotReducible:
                              "P B N = Cᵀ N (it would equal (B N)ᵀ P (B N))")
     if not psd_exact(G0, strict=True).ok:
         return NotReducible("Nᵀ C B N is singular")
-    basis = _null_basis_of_transpose(Bp, n, k)
+    basis = null_basis_of_transpose(Bp, n, k)
     if basis is None:
         return NotReducible("no well-conditioned k x k block of B N")
     pivots, free, X = basis
     K = _inverse(G0)
     # the auxiliary system, in floating point (it only steers the search)
-    T = np.vstack([_floats(Cp, k, n), _v_matrix(n, pivots, free, X).T])
+    T = np.vstack([_floats(Cp, k, n), v_matrix(n, pivots, free, X).T])
     try:
         Ti = np.linalg.inv(T)
     except np.linalg.LinAlgError:
