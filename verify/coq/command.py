@@ -70,6 +70,8 @@ def check_and_audit(files: dict[str, str], jobs: int = 1, *, timeout_seconds: fl
 
 
 def _report_check(result: CompileResult, problems: list[str]) -> bool:
+    if result.prelude:
+        print(f"coq: {result.prelude}")
     for rel, seconds in result.timings:
         failed = rel == result.failed_file
         print(f"{'FAILED' if failed else 'ok    '} {rel} ({seconds:.1f} s)")
@@ -178,13 +180,18 @@ def gate_development(certificate_paths: Sequence[Path], folder: Path) -> bool:
         print(f"coq: {item.file} not exported: {item.reason}")
     for item in export.partly:
         print(f"coq: {item.file} exported in part: {item.reason}")
+    if not export.units:
+        print("coq: no unit, nothing compiled")
+        return True
     if not coqc_available():
         print(f"coq: coqc not found, not compiled ({INSTALL_HINT})")
         return True
     result, problems = check_and_audit(development_files(export))
     if result.ok and not problems:
+        print(f"coq: {result.prelude}")
         total = sum(s for _, s in result.timings)
-        print(f"coq: compiled by coqc, accepted ({total:.1f} s)")
+        files = ", ".join(f"{rel} {s:.1f} s" for rel, s in result.timings)
+        print(f"coq: compiled by coqc, accepted: {files} ({total:.1f} s)")
         return True
     _report_check(result, problems)
     return False

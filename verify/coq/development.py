@@ -188,6 +188,8 @@ class CompileResult:
     output: str
     #: (file, seconds) for every file compiled, in order (the failed one last).
     timings: tuple[tuple[str, float], ...] = ()
+    #: how the prelude was had (compiled here, compiled into the cache, reused from it)
+    prelude: str = ""
 
 
 def coqc_available(coqc: str = "coqc") -> bool:
@@ -222,10 +224,15 @@ def _independent(folder: Path, units: list[str]) -> bool:
 
 
 def compile_development(folder: Path, *, coqc: str = "coqc",
-                        timeout_seconds: float = 600.0, jobs: int = 1) -> CompileResult:
+                        timeout_seconds: float = 600.0, jobs: int = 1,
+                        prelude_cache: bool = True) -> CompileResult:
     """Compile every file of the development with ``coqc``: the prelude in
     ``_CoqProject`` order, then the units (``jobs`` at a time when none requires
-    another), then ``All.v``. Stops at the first file ``coqc`` refuses."""
+    another), then ``All.v``. Stops at the first file ``coqc`` refuses.
+
+    With ``prelude_cache`` the prelude's ``.vo`` files come from the user's cache
+    (:mod:`verify.coq.prelude_cache`: compiled there once per Coq version and prelude
+    text). A development without units compiles nothing."""
     folder = Path(folder)
     project = (folder / "_CoqProject").read_text(encoding="utf-8").splitlines()[1:]
     prelude = [rel for rel in project if rel[:-2] in PRELUDE_ORDER]
@@ -233,6 +240,18 @@ def compile_development(folder: Path, *, coqc: str = "coqc",
     units = [rel for rel in project if rel not in prelude and rel not in last]
     outputs: list[str] = []
     timings: list[tuple[str, float]] = []
+    if not units:
+        return CompileResult(True, None, "", (), "no unit: nothing compiled")
+    how = "prelude compiled beside the development"
+    if prelude_cache and prelude:
+        from verify.coq.prelude_cache import compiled_prelude, install
+
+        names = [rel[:-2] for rel in prelude]
+        sources = {n: (folder / f"{n}.v").read_text(encoding="utf-8") for n in names}
+        cached = compiled_prelude(sources, LOGICAL_ROOT, coqc=coqc,
+                                  timeout_seconds=timeout_seconds, compile_one=_compile_one)
+        if cached is not None and install(cached, names, folder):
+            prelude, how = [], cached.summary()
 
     def run_in_order(files: list[str]) -> str | None:
         for rel in files:
@@ -258,14 +277,15 @@ def compile_development(folder: Path, *, coqc: str = "coqc",
             failed = run_in_order(units)
     if failed is None:
         failed = run_in_order(last)
-    return CompileResult(failed is None, failed, "".join(outputs), tuple(timings))
+    return CompileResult(failed is None, failed, "".join(outputs), tuple(timings), how)
 
 
 def check_files(files: Mapping[str, str], *, coqc: str = "coqc",
-                timeout_seconds: float = 600.0, jobs: int = 1) -> CompileResult:
+                timeout_seconds: float = 600.0, jobs: int = 1,
+                prelude_cache: bool = True) -> CompileResult:
     """Compile rendered files in a temporary folder (leaves no ``.vo`` beside the sources)."""
     with tempfile.TemporaryDirectory(prefix="verify-coq-") as tmp:
         for rel, text in files.items():
             (Path(tmp) / rel).write_text(text, encoding="utf-8")
         return compile_development(Path(tmp), coqc=coqc, timeout_seconds=timeout_seconds,
-                                   jobs=jobs)
+                                   jobs=jobs, prelude_cache=prelude_cache)

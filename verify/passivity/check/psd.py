@@ -1,12 +1,17 @@
 """Exact positive (semi)definiteness of a symmetric rational matrix, fast when there is room.
 
-The test tries a *dominance certificate* first and falls back to exact LDL^T
+The test tries a verified floating-point Cholesky factorisation first, then a
+*dominance certificate*, and falls back to exact LDL^T
 (:func:`verify.passivity.check.exact.psd_ldl`), so its answer is always exact:
 
 1. Rows and columns that are exactly zero are dropped (M is PSD iff the rest is).
-2. If the float copy has a clearly negative eigenvalue, a rounded eigenvector v with
+2. Rump's test (:mod:`verify.passivity.check.float_cholesky`): a floating-point Cholesky
+   of the rounded M - cI that runs to completion, with c a proved bound on every
+   rounding error, proves M > 0 (hence M >= 0). It costs one float factorisation and
+   needs a margin above c (about n^2 unit roundoffs of |M|).
+3. If the float copy has a clearly negative eigenvalue, a rounded eigenvector v with
    v^T M v < 0 (exactly) refutes M >= 0.
-3. A floating-point Cholesky factor of M - delta I (delta half the smallest eigenvalue
+4. A floating-point Cholesky factor of M - delta I (delta half the smallest eigenvalue
    estimate) is rounded to a dyadic matrix L. Then E = M - L L^T is formed *exactly*
    over integers (:mod:`verify.passivity.check.intmat`). If E has a non-negative diagonal that
    dominates each row (E_ii >= sum_{j != i} |E_ij|), E is PSD by Gershgorin's theorem, so
@@ -24,6 +29,7 @@ from gmpy2 import mpz
 
 from verify.passivity.check import exact as ex
 from verify.passivity.check import intmat
+from verify.passivity.check.float_cholesky import verified_pd
 
 _FLOAT_MARGIN = 1e-11  # smallest eigenvalue, relative to |M|, worth a dominance attempt
 
@@ -88,6 +94,8 @@ def psd_exact(m: ex.RationalMatrix, *, strict: bool = False) -> ex.LdlResult:
     reduced = [[m[i][j] for j in keep] for i in keep]
     if not reduced:
         return ex.LdlResult(True, "the matrix is zero")
+    if len(reduced) > 2 and verified_pd(intmat.from_rational(reduced)):
+        return ex.LdlResult(True, "verified floating-point Cholesky (Rump's bound)")
     evidence = _dominance_certificate(reduced, strict) if len(reduced) > 2 else None
     if evidence is True:
         return ex.LdlResult(True, "M - L Lᵀ diagonally dominant, L a rounded Cholesky factor")

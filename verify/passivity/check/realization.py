@@ -48,6 +48,7 @@ from typing import Any
 
 import flint
 import gmpy2
+import numpy as np
 from flint import fmpq, fmpq_mat, fmpq_poly, nmod_mat
 from gmpy2 import mpq
 
@@ -410,7 +411,7 @@ def _fmpq_mod_p(M: fmpq_mat) -> nmod_mat | None:
 def _observable_mod_p(A: fmpq_mat, C: fmpq_mat) -> bool:
     """True proves (A, C) observable; False decides nothing."""
     Ap, Cp = _fmpq_mod_p(A), _fmpq_mod_p(C)
-    return Ap is not None and Cp is not None and _krylov_full_rank_mod_p(
+    return Ap is not None and Cp is not None and _krylov_full_rank_nmod(
         Ap.transpose(), Cp.transpose())
 
 
@@ -479,18 +480,7 @@ def transfer_function_realization(num: Any, den: Any, ctx: str) -> tuple[ExactMo
 _PRIME = 2**61 - 1
 
 
-def _mod_p(M: ex.RationalMatrix, rows: int, cols: int) -> nmod_mat | None:
-    entries = []
-    for row in M:
-        for x in row:
-            d = int(x.denominator) % _PRIME
-            if d == 0:
-                return None
-            entries.append(int(x.numerator) * pow(d, -1, _PRIME) % _PRIME)
-    return nmod_mat(rows, cols, entries, _PRIME)
-
-
-def _krylov_full_rank_mod_p(A: nmod_mat, B: nmod_mat) -> bool:
+def _krylov_full_rank_nmod(A: nmod_mat, B: nmod_mat) -> bool:
     """rank [B, AB, ..., A^(n-1) B] = n modulo p (which proves it over Q).
 
     The first ceil(n/m) blocks can already have rank n (the generic case); more blocks
@@ -513,13 +503,66 @@ def _krylov_full_rank_mod_p(A: nmod_mat, B: nmod_mat) -> bool:
         wanted = min(n, 2 * wanted)
 
 
+#: A prime below 2^26 for the fast modular rank test in numpy int64: products of two
+#: residues stay below 2^52, and sums of up to 2^11 of them below 2^63.
+_SMALL_PRIME = 67108859
+#: up to this many states the int64 Krylov products cannot overflow (n p^2 < 2^63)
+_SMALL_PRIME_STATES = 2048
+
+
+def _residues(M, rows: int, cols: int) -> np.ndarray | None:
+    """An integer matrix over a denominator (``IntMatrix``) modulo the small prime
+    (int64), or None when the prime divides the denominator."""
+    p = _SMALL_PRIME
+    if M.d % p == 0:
+        return None
+    inv = pow(M.d, -1, p)
+    out = np.array([[z % p for z in row] for row in M.rows], dtype=np.int64)
+    return (out.reshape(rows, cols) * inv) % p
+
+
+def rank_mod_p(M: np.ndarray, p: int = _SMALL_PRIME) -> int:
+    """The rank of an integer matrix modulo the prime p (FLINT ``nmod_mat``, exact)."""
+    rows, cols = M.shape
+    if rows == 0 or cols == 0:
+        return 0
+    return nmod_mat(rows, cols, (np.asarray(M, dtype=np.int64) % p).ravel().tolist(),
+                    p).rank()
+
+
+def _krylov_full_rank_mod_p(A: np.ndarray, B: np.ndarray) -> bool:
+    """rank [B, AB, ..., A^(k-1) B] = n modulo p for some k <= n (which proves
+    controllability over Q).
+
+    The first ceil(n/m) blocks can already have rank n (the generic case); more blocks
+    are added, doubling, only when they do not.
+    """
+    p = _SMALL_PRIME
+    n, m = A.shape[0], B.shape[1]
+    if m == 0:
+        return n == 0
+    blocks = [B % p]
+    wanted = -(-n // m)
+    while True:
+        while len(blocks) < wanted:
+            blocks.append(A.dot(blocks[-1]) % p)
+        if rank_mod_p(np.hstack(blocks)) == n:
+            return True
+        if len(blocks) >= n:
+            return False
+        wanted = min(n, 2 * wanted)
+
+
 def _minimal_mod_p(model: ExactModel) -> bool:
     """True proves (A, B) controllable and (A, C) observable; False decides nothing."""
     n, m = model.n, model.m
-    A, B, C = (_mod_p(X, r, c) for X, r, c in ((model.A, n, n), (model.B, n, m),
-                                               (model.C, m, n)))
+    if n > _SMALL_PRIME_STATES:
+        return False
+    Ai, Bi, Ci, _ = model.integer
+    A, B, C = (_residues(X, r, c) for X, r, c in ((Ai, n, n), (Bi, n, m), (Ci, m, n)))
     return A is not None and B is not None and C is not None and _krylov_full_rank_mod_p(
-        A, B) and _krylov_full_rank_mod_p(A.transpose(), C.transpose())
+        A, B) and _krylov_full_rank_mod_p(np.ascontiguousarray(A.T),
+                                          np.ascontiguousarray(C.T))
 
 
 def is_minimal(model: ExactModel) -> bool:

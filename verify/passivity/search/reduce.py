@@ -29,6 +29,7 @@ steers the search; the certificate P is assembled exactly and checked exactly.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.linalg as sla
@@ -47,7 +48,7 @@ class Reduction:
     ``free`` the identity, so V Y V^T has blocks Y, X Y and X Y X^T (cheap, exact).
     """
 
-    P0: ex.RationalMatrix
+    P0_parts: tuple[ex.RationalMatrix, ex.RationalMatrix] | None  # (C', G0^-1); None: 0
     pivots: list[int]
     free: list[int]
     X: ex.RationalMatrix
@@ -55,6 +56,25 @@ class Reduction:
     Ba: np.ndarray
     Ca: np.ndarray
     Sa: np.ndarray
+
+    @cached_property
+    def P0(self) -> ex.RationalMatrix:
+        """P0 = C'ᵀ G0⁻¹ C' (exact; formed on first use)."""
+        n = len(self.pivots) + len(self.free)
+        if self.P0_parts is None:
+            return ex.zeros(n, n)
+        Cp, K = self.P0_parts
+        return ex.matmul(ex.matmul(ex.transpose(Cp), K), Cp)
+
+    @cached_property
+    def P0_float(self) -> np.ndarray:
+        """P0 in floating point (it only steers the search)."""
+        n = len(self.pivots) + len(self.free)
+        if self.P0_parts is None:
+            return np.zeros((n, n))
+        Cp, K = self.P0_parts
+        Cf = _floats(Cp, len(Cp), n)
+        return Cf.T @ _floats(K, len(K), len(K)) @ Cf
 
     def assemble(self, Y: ex.RationalMatrix) -> ex.RationalMatrix:
         """P0 + V Y V^T, exactly (Y symmetric gives P symmetric)."""
@@ -97,7 +117,7 @@ def _floats(M: ex.RationalMatrix, rows: int, cols: int) -> np.ndarray:
     return np.array([[float(x) for x in row] for row in M]).reshape(rows, cols)
 
 
-def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
+def null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
     """Exact V with V^T B' = 0, as (pivots, free, X): rows ``pivots`` of a well-conditioned
     k x k block B1 of B' hold X = -(B2 B1^-1)^T, the other rows the identity. None if no
     such block is found."""
@@ -115,7 +135,7 @@ def _null_basis_of_transpose(Bp: ex.RationalMatrix, n: int, k: int):
     return pivots, free, X
 
 
-def _v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) -> np.ndarray:
+def v_matrix(n: int, pivots: list[int], free: list[int], X: ex.RationalMatrix) -> np.ndarray:
     """V in floating point (for the coordinate change only)."""
     V = np.zeros((n, len(free)))
     for a, i in enumerate(pivots):
@@ -170,11 +190,11 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | NotReducible:
     Rf = _floats(R, m, r) if r else np.zeros((m, 0))
     if k == 0:
         if r == m:  # S > 0: no equality constraint
-            return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf, Cf, Sf)
+            return Reduction(None, [], list(range(n)), [], Af, Bf, Cf, Sf)
         if r == 0:
             return NotReducible("B = 0 on ker(D + Dᵀ) and D + Dᵀ = 0")
         # the kernel directions were all dropped: the problem lives on range S
-        return Reduction(ex.zeros(n, n), [], list(range(n)), [], Af, Bf @ Rf, Rf.T @ Cf,
+        return Reduction(None, [], list(range(n)), [], Af, Bf @ Rf, Rf.T @ Cf,
                          Rf.T @ Sf @ Rf)
     Bp = ex.matmul(model.B, N)
     Cp = ex.matmul(ex.transpose(N), model.C)
@@ -186,14 +206,13 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | NotReducible:
                              "P B N = Cᵀ N (it would equal (B N)ᵀ P (B N))")
     if not psd_exact(G0, strict=True).ok:
         return NotReducible("Nᵀ C B N is singular")
-    basis = _null_basis_of_transpose(Bp, n, k)
+    basis = null_basis_of_transpose(Bp, n, k)
     if basis is None:
         return NotReducible("no well-conditioned k x k block of B N")
     pivots, free, X = basis
     K = _inverse(G0)
-    P0 = ex.matmul(ex.matmul(ex.transpose(Cp), K), Cp)
     # the auxiliary system, in floating point (it only steers the search)
-    T = np.vstack([_floats(Cp, k, n), _v_matrix(n, pivots, free, X).T])
+    T = np.vstack([_floats(Cp, k, n), v_matrix(n, pivots, free, X).T])
     try:
         Ti = np.linalg.inv(T)
     except np.linalg.LinAlgError:
@@ -212,4 +231,4 @@ def reduce_kyp(model: ExactModel) -> Reduction | NoCertificate | NotReducible:
         return NotReducible("the auxiliary problem is singular (Sa is not positive definite)")
     Ba = np.hstack([A21, B2r])
     Ca = np.vstack([-Kf @ A12, C2r])
-    return Reduction(P0, pivots, free, X, A22, Ba, Ca, Sa)
+    return Reduction((Cp, K), pivots, free, X, A22, Ba, Ca, Sa)

@@ -28,7 +28,6 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from verify.inputs.number_text import exact_text
-from verify.inputs.numbers import fraction
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel
 
@@ -66,17 +65,11 @@ class Rescaling:
                 f"α = 2^{self.gain} (states scaled by 2^{self.state})")
 
 
-def _exponent(m: ex.RationalMatrix) -> int | None:
-    """About log2 of the largest |entry| (within one), exactly; None for a zero matrix."""
-    es = [_fraction_exponent(fraction(x))
-          for row in m for x in row if x]
-    return max(es) if es else None
-
-
-def _smallest_exponent(m: ex.RationalMatrix) -> int | None:
-    es = [_fraction_exponent(fraction(x))
-          for row in m for x in row if x]
-    return min(es) if es else None
+def _exponents(m: ex.RationalMatrix) -> set[int]:
+    """About log2 |x| (within one) of every nonzero entry (exact: bit lengths of the
+    reduced numerator and denominator, as :func:`_fraction_exponent`)."""
+    return {abs(x.numerator).bit_length() - x.denominator.bit_length() + 1
+            for row in m for x in row if x}
 
 
 def _scaled(m: ex.RationalMatrix, e: int) -> ex.RationalMatrix:
@@ -99,11 +92,12 @@ def rescale(em: ExactModel, margin: Fraction = Fraction(0)) -> Rescaling | None:
     from verify.passivity.model import LTIModel
 
     A, B, C, D = em.A, em.B, em.C, em.D
-    eA, eB, eC, eD = (_exponent(x) for x in (A, B, C, D))
+    spans = [_exponents(x) for x in (A, B, C, D)]
+    eA, eB, eC, eD = (max(s) if s else None for s in spans)
     eM = _fraction_exponent(Fraction(margin))
     if eM is not None:
         eD = eM if eD is None else max(eD, eM)
-    low = [e for e in (_smallest_exponent(x) for x in (A, B, C, D)) if e is not None]
+    low = [min(s) for s in spans if s]
     tiny = bool(low) and min(low) < -900  # a subnormal-range entry
     freq = eA or 0
     gains = [e for e in (eD, None if eB is None or eC is None else eB + eC - freq)
