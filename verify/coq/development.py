@@ -26,7 +26,8 @@ from verify.coq.unit import CoqUnit
 LOGICAL_ROOT = "VerifyCoq"
 
 # Prelude modules in dependency order (each may Require the ones before it).
-PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert")
+PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "RotSurj", "Traj",
+                                  "Lemma1Inv")
 
 
 def prelude_sources() -> dict[str, str]:
