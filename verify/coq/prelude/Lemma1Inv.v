@@ -241,11 +241,12 @@ Proof.
   { apply (barrier h_of
       (fun s => tr (mmul (mT Rr) (mscale ks (mmul (Rb s) (sk (mmul (mT (Rb s)) (Rl s))))))) T).
     - exact h_derivative.
-    - intros s Hs Hz. destruct (item2 s Hs) as [lam [Hlam Hspec]].
+    - intros s Hs Hz. destruct (item2 s Hs) as [lam Hlam]. decompose [and] Hlam.
       assert (Htr : tr (mmul (mT Rr) (Rb s)) = 1) by (unfold h_of in Hz; lra).
-      pose proof (h_rate_on_boundary Rr (Rb s) (Rl s) ks lam Rr_rot (Rb_rot s Hs)
-                    (Rlt_le _ _ ks_pos) Htr Hspec).
-      pose proof (Rmult_lt_0_compat _ _ ks_pos Hlam). lra.
+      assert (Hrate : 2 * ks * lam
+                      <= tr (mmul (mT Rr) (mscale ks (mmul (Rb s) (sk (mmul (mT (Rb s)) (Rl s)))))))
+        by (apply h_rate_on_boundary; auto; lra).
+      nra.
     - unfold h_of. lra.
     - exact Ht. }
   unfold h_of in B. lra.
