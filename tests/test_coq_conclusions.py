@@ -30,12 +30,13 @@ def mutated(old: str, new: str) -> str:
 def test_prelude_order_lists_the_new_modules_after_their_dependencies():
     order = list(PRELUDE_ORDER)
     assert order.index("SO3") < order.index("RotSurj") < order.index("Traj") \
-        < order.index("Lemma1Inv")
+        < order.index("Lemma1Inv") < order.index("Thm1Energy")
     assert set(order) <= set(prelude_sources())
 
 
 def test_no_forbidden_command_in_the_new_files():
-    files = {f"{n}.v": prelude_sources()[n] for n in ("RotSurj", "Traj", "Lemma1Inv")}
+    files = {f"{n}.v": prelude_sources()[n]
+             for n in ("RotSurj", "Traj", "Lemma1Inv", "Thm1Energy")}
     files["Conclusions.v"] = conclusion_units()[0].text
     assert forbidden_commands(files) == []
 
@@ -83,6 +84,25 @@ def test_conclusions_compile_with_only_standard_axioms(prelude_dir):
 ])
 def test_lemma1_mutations_make_coqc_fail(prelude_dir, old, new):
     assert not compiles(prelude_dir, mutated(old, new), "Lemma1Mutant")
+
+
+SUPPLY = "  dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))."
+
+
+@pytest.mark.parametrize("old,new", [
+    # a human that may supply energy of its own (rate up to the power plus 1)
+    (SUPPLY, SUPPLY[:-1] + " + 1."),
+    # Assumption 1, item 2 weakened to lambda >= 0 (the bound -k_s lam phi must fail)
+    ("Hypothesis lam_pos : 0 < lam.", "Hypothesis lam_pos : 0 <= lam."),
+])
+def test_theorem1_mutations_make_coqc_fail(prelude_dir, old, new):
+    text = prelude_sources()["Thm1Energy"]
+    assert text.count(old) == 1, old
+    assert not compiles(prelude_dir, text.replace(old, new), "Thm1Mutant")
+
+
+def test_theorem1_unmutated_copy_compiles(prelude_dir):
+    assert compiles(prelude_dir, prelude_sources()["Thm1Energy"], "Thm1Copy")
 
 
 def test_lemma1_unmutated_copy_compiles(prelude_dir):

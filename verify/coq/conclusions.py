@@ -1,4 +1,4 @@
-"""The paper's conclusions as Coq theorems along solutions (Section 3, Lemma 1).
+"""The paper's conclusions as Coq theorems along solutions (Section 3, Lemma 1, Theorem 1).
 
 The proofs live in the prelude (``RotSurj.v``: every rotation matrix is ``rot q``;
 ``Traj.v``: derivatives of matrix trajectories; ``Lemma1Inv.v``: Lemma 1's invariance
@@ -22,6 +22,12 @@ THEOREMS: dict[str, str] = {
         "differentiable on [0, T] with eq. (13); Assumption 1, item 2 along the solution "
         "(some λ > 0 below λmin(sym R_rl(t)) at every t)"),
     "lemma1_invariance_on_half_line": "the same premises for every t ≥ 0",
+    "thm1_energy_nonincreasing": (
+        "k_s > 0; R_r a constant rotation; R̄, R_l rotations on [0, T], differentiable "
+        "with eq. (13) and eq. (12b) for any human command ω_h^s(t); the human passive "
+        "with a differentiable storage S_h whose rate is at most <sk(R_lᵀR_r)^∨, ω_h^b> "
+        "(Assumption 1, item 5, in differential form); a uniform λ > 0 below "
+        "λmin(sym R_rl(t)) (item 2); tr(R_rᵀR̄(0)) ≥ 1"),
 }
 
 _TEXT = """\
@@ -30,7 +36,7 @@ _TEXT = """\
 From Coq Require Import Reals.
 Local Set Warnings "-ambiguous-paths".
 From Coquelicot Require Import Coquelicot.
-From VerifyCoq Require Import SO3 RotSurj Traj Lemma1Inv.
+From VerifyCoq Require Import SO3 RotSurj Traj Lemma1Inv Thm1Energy.
 Open Scope R_scope.
 
 (** Every rotation matrix is [rot q] for a quaternion [q] with [qn q <> 0]. *)
@@ -63,10 +69,44 @@ Theorem lemma1_invariance_on_half_line (Rr : M3) (Rb Rl : R -> M3) (ks : R) :
   1 <= tr (mmul (mT Rr) (Rb 0)) ->
   forall t, 0 <= t -> 1 <= tr (mmul (mT Rr) (Rb t)).
 Proof. exact (lemma1_invariance_forever Rr Rb Rl ks). Qed.
+
+(** Theorem 1 on [[0, T]]: with the human passive with a differentiable storage [S_h]
+    (its rate at most the supplied power), V = phi(R_r^T R-bar) + phi(R_r^T R_l) + S_h
+    has [d/dt V <= - k_s lam phi(R_l^T R-bar) <= 0] and does not increase. *)
+Theorem thm1_energy_nonincreasing (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
+    (Sh dSh : R -> R) (ks lam T : R) :
+  0 < ks -> 0 < lam ->
+  is_rot Rr ->
+  (forall t, 0 <= t <= T -> is_rot (Rb t)) ->
+  (forall t, 0 <= t <= T -> is_rot (Rl t)) ->
+  (forall t, 0 <= t <= T ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t <= T ->
+     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                            (mvmul (mT (Rl t)) (ws t)))))) ->
+  (forall t, 0 <= t <= T -> is_derive Sh t (dSh t)) ->
+  (forall t, 0 <= t <= T ->
+     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
+  (forall t, 0 <= t <= T -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  (forall t, 0 <= t <= T ->
+     is_derive (V Rr Rb Rl Sh) t (dV Rr Rb Rl ws dSh ks t)
+     /\\ dV Rr Rb Rl ws dSh ks t <= - (ks * lam) * phi (mmul (mT (Rl t)) (Rb t))) /\\
+  (forall s t, 0 <= s -> s <= t -> t <= T -> V Rr Rb Rl Sh t <= V Rr Rb Rl Sh s).
+Proof.
+  intros. split.
+  - intros t Ht. destruct (V_rate_bound Rr Rb Rl ws Sh dSh ks lam T) with (t := t)
+      as [D [B _]]; auto.
+  - exact (V_nonincreasing Rr Rb Rl ws Sh dSh ks lam T ltac:(assumption) ltac:(assumption)
+             ltac:(assumption) ltac:(assumption) ltac:(assumption) ltac:(assumption)
+             ltac:(assumption) ltac:(assumption) ltac:(assumption) ltac:(assumption)
+             ltac:(assumption)).
+Qed.
 """
 
 
 def conclusion_units() -> list[CoqUnit]:
     """The unit restating the conclusions' top theorems (fixed, deterministic text)."""
     return [CoqUnit(MODULE, _TEXT, tuple(THEOREMS),
-                    source="Lemma 1 along solutions (prelude Lemma1Inv.v)")]
+                    source="Lemma 1 and Theorem 1 along solutions "
+                           "(prelude Lemma1Inv.v, Thm1Energy.v)")]
