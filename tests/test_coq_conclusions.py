@@ -30,13 +30,13 @@ def mutated(old: str, new: str) -> str:
 def test_prelude_order_lists_the_new_modules_after_their_dependencies():
     order = list(PRELUDE_ORDER)
     assert order.index("SO3") < order.index("RotSurj") < order.index("Traj") \
-        < order.index("Lemma1Inv") < order.index("Thm1Energy")
+        < order.index("Lemma1Inv") < order.index("Thm1Energy") < order.index("Barbalat")
     assert set(order) <= set(prelude_sources())
 
 
 def test_no_forbidden_command_in_the_new_files():
     files = {f"{n}.v": prelude_sources()[n]
-             for n in ("RotSurj", "Traj", "Lemma1Inv", "Thm1Energy")}
+             for n in ("RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat")}
     files["Conclusions.v"] = conclusion_units()[0].text
     assert forbidden_commands(files) == []
 
@@ -108,3 +108,16 @@ def test_theorem1_unmutated_copy_compiles(prelude_dir):
 def test_lemma1_unmutated_copy_compiles(prelude_dir):
     # the control of the mutation tests: the same file under another name compiles
     assert compiles(prelude_dir, lemma1_source(), "Lemma1Copy")
+
+
+LIPSCHITZ = ("  Rabs (phi (mmul (mT (Rl t)) (Rb t)) - phi (mmul (mT (Rl s)) (Rb s))) "
+             "<= Lp * Rabs (t - s).")
+
+
+def test_convergence_needs_the_lipschitz_premise(prelude_dir):
+    # a rate bound with slack 1 no longer forces phi(R_l^T R-bar) -> 0 (it may oscillate)
+    text = prelude_sources()["Barbalat"]
+    assert text.count(LIPSCHITZ) == 1
+    assert compiles(prelude_dir, text, "BarbalatCopy")
+    weak = text.replace(LIPSCHITZ, LIPSCHITZ[:-1] + " + 1.")
+    assert not compiles(prelude_dir, weak, "BarbalatMutant")

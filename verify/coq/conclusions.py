@@ -28,6 +28,9 @@ THEOREMS: dict[str, str] = {
         "with a differentiable storage S_h whose rate is at most <sk(R_lᵀR_r)^∨, ω_h^b> "
         "(Assumption 1, item 5, in differential form); a uniform λ > 0 below "
         "λmin(sym R_rl(t)) (item 2); tr(R_rᵀR̄(0)) ≥ 1"),
+    "thm1_phi_sync_converges": (
+        "the premises of thm1_energy_nonincreasing for every t ≥ 0; S_h ≥ 0; "
+        "t ↦ φ(R_lᵀR̄(t)) Lipschitz (a bounded rate, which item 4 gives; not proved)"),
 }
 
 _TEXT = """\
@@ -36,7 +39,7 @@ _TEXT = """\
 From Coq Require Import Reals.
 Local Set Warnings "-ambiguous-paths".
 From Coquelicot Require Import Coquelicot.
-From VerifyCoq Require Import SO3 RotSurj Traj Lemma1Inv Thm1Energy.
+From VerifyCoq Require Import SO3 RotSurj Traj Lemma1Inv Thm1Energy Barbalat.
 Open Scope R_scope.
 
 (** Every rotation matrix is [rot q] for a quaternion [q] with [qn q <> 0]. *)
@@ -102,6 +105,33 @@ Proof.
              ltac:(assumption) ltac:(assumption) ltac:(assumption) ltac:(assumption)
              ltac:(assumption)).
 Qed.
+
+(** Theorem 1, synchronisation (Barbalat's lemma): under the same premises for every
+    t >= 0, a non-negative human storage and a Lipschitz t -> phi(R_l^T R-bar(t)),
+    phi(R_l^T R-bar(t)) -> 0: the leader and the quasi-average synchronise. *)
+Theorem thm1_phi_sync_converges (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
+    (Sh dSh : R -> R) (ks lam Lp : R) :
+  0 < ks -> 0 < lam ->
+  is_rot Rr ->
+  (forall t, 0 <= t -> is_rot (Rb t)) ->
+  (forall t, 0 <= t -> is_rot (Rl t)) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                            (mvmul (mT (Rl t)) (ws t)))))) ->
+  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
+  (forall t, 0 <= t ->
+     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
+  (forall t, 0 <= t -> 0 <= Sh t) ->
+  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  0 < Lp ->
+  (forall s t, 0 <= s -> 0 <= t ->
+     Rabs (phi (mmul (mT (Rl t)) (Rb t)) - phi (mmul (mT (Rl s)) (Rb s))) <= Lp * Rabs (t - s)) ->
+  forall eps, 0 < eps ->
+  exists N, 0 <= N /\\ forall t, N <= t -> phi (mmul (mT (Rl t)) (Rb t)) < eps.
+Proof. exact (phi_sync_converges Rr Rb Rl ws Sh dSh ks lam Lp). Qed.
 """
 
 
