@@ -84,8 +84,10 @@ def test_missing_and_non_python_files_exit_2(tmp_path, capsys):
     assert main(["check", str(other)]) == 2
 
 
-def test_the_readme_example_checks(tmp_path):
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+def test_the_documented_example_checks(tmp_path):
+    """The example of docs/guide/derivations.md (once the README's) checks."""
+    readme = (Path(__file__).resolve().parents[1] / "docs" / "guide" / "derivations.md"
+              ).read_text()
     start = readme.index("```python\nfrom fractions") + len("```python\n")
     path = tmp_path / "readme_example.py"
     path.write_text(readme[start : readme.index("```", start)])

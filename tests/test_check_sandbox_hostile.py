@@ -75,13 +75,16 @@ def test_a_setsid_grandchild_cannot_rewrite_the_outputs_after_the_exit(tmp_path,
               f"    try:\n        open({str(certs / 'forged.json')!r}, 'w').write('x')\n"
               f"    except OSError:\n        pass\n"
               f"    time.sleep(0.05)\n# {marker}\n")
-    body = (f"subprocess.Popen([sys.executable, '-c', {forger!r}], start_new_session=True,\n"
-            "                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)\n"
-            "time.sleep(1)\n" + FALSE)
+    spawn = (f"subprocess.Popen([sys.executable, '-c', {forger!r}], start_new_session=True, "
+             "stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)")
+    body = ("seen = []\n" + attempt("spawn", spawn) + attempt("fork", "os.fork()")
+            + "time.sleep(1)\n" + REPORT.replace("x * x + 1", "x * x"))
     assert run(tmp_path, body) == 1
     written = out.read_text()
     time.sleep(1.5)
     assert out.read_text() == written and '"refuted"' in written
+    # the seccomp filter refuses a new process (verify.proof.syscalls)
+    assert "spawn:PermissionError|fork:PermissionError" in written
     assert not (certs / "forged.json").exists()
     assert survivors(marker) == []
     assert "0 of 1 derivation(s) verified" in capsys.readouterr().out
@@ -103,14 +106,18 @@ def test_no_process_of_the_file_survives_and_their_number_is_bounded(tmp_path, c
 
 
 def test_the_memory_budget_covers_the_file_s_processes_together(tmp_path, capsys):
+    """Three hogs of 400 MB under a 1 GB budget: no process can be started to hold one,
+    and the file's one process (its threads share it) cannot map all three."""
     marker = "verify-attack-marker-memory"
     hog = f"b = bytearray(b'x') * (400 * 2**20)\nimport time\ntime.sleep(60)\n# {marker}\n"
-    body = ("for _ in range(3):\n"
-            f"    subprocess.Popen([sys.executable, '-c', {hog!r}])\n"
-            "time.sleep(60)\n" + FALSE)
-    assert run(tmp_path, body, "--budget-memory", "1", "--budget-seconds", "40") == 2
-    err = capsys.readouterr().err
-    assert len(err.strip().splitlines()) == 1 and "memory budget" in err
+    body = ("seen = []\n"
+            + attempt("spawn", f"subprocess.Popen([sys.executable, '-c', {hog!r}])")
+            + "hogs = []\n"
+            + attempt("hog", "for _ in range(3): hogs.append(bytearray(b'x') * (400 * 2**20))")
+            + "del hogs\n" + REPORT)
+    assert run(tmp_path, body, "--budget-memory", "1", "--budget-seconds", "40") == 0
+    report = (tmp_path / "out.json").read_text()
+    assert "spawn:PermissionError" in report and "hog:MemoryError" in report
     assert survivors(marker) == []
 
 

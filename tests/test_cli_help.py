@@ -31,3 +31,65 @@ def test_all_documents_its_outputs():
         assert flag in text
     assert "appendix.tex" in text and "default: 20261121" in text
     assert "build/run.json" in text and "build/only/reports" in text
+
+
+def _commands(parser: argparse.ArgumentParser, path: tuple[str, ...] = ()):
+    """Every command and nested command (``certificates check``) with its parser."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield (*path, name), sub
+                yield from _commands(sub, (*path, name))
+
+
+def test_every_command_help_ends_with_examples_that_parse():
+    """Each ``verify COMMAND --help`` ends with two or three examples, and each example is
+    a command line the parser accepts (so an example cannot name a flag that is gone)."""
+    import shlex
+
+    parser = _build_parser()
+    commands = list(_commands(parser))
+    assert len(commands) >= 11
+    for path, sub in commands:
+        text = sub.format_help()
+        assert "\nexamples:\n" in text, path
+        tail = text.split("\nexamples:\n", 1)[1]
+        lines = [line.strip() for line in tail.splitlines() if line.startswith("  verify ")]
+        assert 2 <= len(lines) <= 3, (path, lines)
+        for line in lines:
+            words = shlex.split(line.split(" | ")[0])  # a pipe's first command
+            args = parser.parse_args(words[1:])
+            assert args.command == path[0], line
+        # the examples come last: nothing but their lines after the heading
+        assert all(line.startswith("  ") for line in tail.splitlines() if line), path
+
+
+def test_check_help_names_the_json_form():
+    text = _build_parser()._subparsers._group_actions[0].choices["check"].format_help()
+    assert "verify-derivations/1" in " ".join(text.split())
+    assert "--emit" in text
+
+
+def test_version_prints_the_prelude_digest(capsys):
+    """``verify --version``: the version and the SHA-256 of the Coq prelude, which changes
+    with any prelude file's text."""
+    import hashlib
+
+    import pytest
+
+    from verify import __version__
+    from verify.coq import development
+
+    with pytest.raises(SystemExit) as stop:
+        _build_parser().parse_args(["--version"])
+    assert stop.value.code == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[0] == f"verify {__version__}"
+    digest = out[1].removeprefix("Coq prelude sha256 ")
+    assert digest == development.prelude_digest() and len(digest) == 64
+    sources = development.prelude_sources()
+    assert set(sources) >= {"SO3", "QCert", "SOSCert", "BandCert"}
+    expected = hashlib.sha256()
+    for name, text in sources.items():
+        expected.update(f"{name}.v\0{len(text.encode())}\0".encode() + text.encode())
+    assert digest == expected.hexdigest()

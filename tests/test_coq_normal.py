@@ -92,7 +92,7 @@ def test_identities_in_rotations_are_proved_on_free_matrices():
     for unit in (cancel, conj):
         # every rotation generalised: no entry left to field in quaternion parameters
         assert "field" not in unit.text.split("Proof using", 1)[1]
-        assert "generalize (rot q_R_v)" in unit.text  # R is Coq's reals: R_v
+        assert "generalize (rot q_v_1_R)" in unit.text  # generated, never Coq's R
 
 
 @needs_coqc
@@ -101,9 +101,10 @@ def test_normalised_proofs_compile_and_a_changed_statement_fails(tmp_path):
     ok, failed, _ = compile_development(tmp_path / "good", units)
     assert ok, failed
     cancel, conj = units
-    old = "(mmul (mT (mmul (mT R_v) S)) (mmul (mT R_v) A))"
+    old = "(mmul (mT (mmul (mT v_1_R) v_2_S)) (mmul (mT v_1_R) v_3_A))"
     assert old in cancel.text
-    bad = type(cancel)(cancel.name, cancel.text.replace(old, "(mmul (mT S) (mmul R_v A))", 1),
+    new = "(mmul (mT v_2_S) (mmul v_1_R v_3_A))"
+    bad = type(cancel)(cancel.name, cancel.text.replace(old, new, 1),
                        cancel.theorems, cancel.source)
     ok, failed, _ = compile_development(tmp_path / "bad", [bad, conj])
     assert not ok and failed == f"{cancel.name}.v"

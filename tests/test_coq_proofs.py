@@ -61,13 +61,13 @@ def _units(derivations):
 
 def test_statements_use_the_prelude_and_name_every_hypothesis():
     trace, bound, cond = _units(_small())
-    assert "Theorem step1 : (tr (madd (madd I3 (mscale (sin theta) (hat xi)))" in trace.text
-    assert "Hypothesis xi_unit : vdot xi xi = 1." in trace.text
-    assert "Hypothesis k_pos : 0 < k." in bound.text
-    assert "Theorem step1 : " in bound.text and " >= k." in bound.text
+    assert "Theorem step1 : (tr (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi)))" in trace.text
+    assert "Hypothesis v_1_xi_unit : vdot v_1_xi v_1_xi = 1." in trace.text
+    assert "Hypothesis v_2_k_pos : 0 < v_2_k." in bound.text
+    assert "Theorem step1 : " in bound.text and " >= v_2_k." in bound.text
     assert "Theorem claim : " in bound.text and "Rge_trans" in bound.text
     assert bound.theorems == ("step1", "step2", "claim")
-    assert "Hypothesis condition1 : (cos theta) = 0." in cond.text
+    assert "Hypothesis condition1 : (cos v_1_theta) = 0." in cond.text
     assert re.search(r"Proof using .*condition1", cond.text)
 
 
@@ -110,14 +110,15 @@ def test_small_units_compile(tmp_path):
 def test_tampered_units_fail(tmp_path, change):
     trace, bound, cond = _units(_small())
     if change == "swapped statement":
-        unit, old, new = trace, "= (1 + (2 * (cos theta)))", "= (1 + (2 * (sin theta)))"
+        unit, old, new = trace, "= (1 + (2 * (cos v_2_theta)))", "= (1 + (2 * (sin v_2_theta)))"
     elif change == "dropped hypothesis":
-        unit, old, new = cond, "Hypothesis condition1 : (cos theta) = 0.", ""
+        unit, old, new = cond, "Hypothesis condition1 : (cos v_1_theta) = 0.", ""
         # keep the name so only the missing fact can make the proof fail
-        new = "Hypothesis condition1 : (cos theta) = (cos theta)."
+        new = "Hypothesis condition1 : (cos v_1_theta) = (cos v_1_theta)."
     else:
-        unit, old, new = bound, "((k * (1 + (- (cos theta)))) * (1 + (- (cos theta))))", \
-            "((k * (1 + (- (cos theta)))) * (2 + (- (cos theta))))"
+        unit = bound
+        old, new = "((v_2_k * (1 + (- (cos v_1_theta)))) * (1 + (- (cos v_1_theta))))", \
+            "((v_2_k * (1 + (- (cos v_1_theta)))) * (2 + (- (cos v_1_theta))))"
     assert old in unit.text
     tampered = type(unit)(unit.name, unit.text.replace(old, new), unit.theorems, unit.source)
     ok, failed, _ = compile_development(tmp_path, [tampered])
@@ -129,7 +130,7 @@ def test_fractions_print_exactly():
     k = ctx.scalar("k")
     d = Derivation("frac", Fraction(3, 4) * k + Fraction(1, 4) * k, ctx).equals(k, by_algebra())
     (unit,) = _units([d])
-    assert "((3/4) * k)" in unit.text and "((1/4) * k)" in unit.text
+    assert "((3/4) * v_1_k)" in unit.text and "((1/4) * v_1_k)" in unit.text
 
 
 @pytest.mark.slow

@@ -72,9 +72,9 @@ def test_every_stored_paper_sos_certificate_becomes_a_unit(sos_units):
     unit = names["sos_lemma1_boundary_sign_direct_step1"]
     assert unit.theorems == ("step1_by_sos",)
     assert "step 1 of the derivation 'lemma1.boundary-sign-direct'" in unit.text
-    assert ("Theorem step1_by_sos : (k_s * (tr (mmul (sym R_rl) (madd I3 "
-            "(mneg (outer xi xi)))))) >= 0.") in unit.text
-    assert "Hypothesis assumption1 : pd R_rl." in unit.text
+    assert ("Theorem step1_by_sos : (v_1_k_s * (tr (mmul (sym v_2_R_rl) (madd I3 "
+            "(mneg (outer v_3_xi v_3_xi)))))) >= 0.") in unit.text
+    assert "Hypothesis assumption1 : pd v_2_R_rl." in unit.text
     # the committed list of files left out names no SOS certificate any more
     listed = json.loads((CERTS / "coq" / "NOT_EXPORTED.json").read_text())["not_exported"]
     assert not [i for i in listed if i["schema"] == "verify-sos-certificate/1"]

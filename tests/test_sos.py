@@ -251,7 +251,7 @@ path, program = Path(sys.argv[1]), Path(sys.argv[2])
 data, sp = json.loads(path.read_text()), pickle.loads(program.read_bytes())
 assert check_form(data, path) == ""
 result = check_against_program(data, sp, "bound to the given program")
-assert result.ok and result.reason.startswith(sp.statement + ": exact identity"), result
+assert result.ok and result.reason.startswith(sp.claim + ": exact identity"), result
 assert result.reason.endswith("; bound to the given program"), result
 forged = json.loads(path.read_text())
 forged["claim"]["statement"] = "1 >= 0"

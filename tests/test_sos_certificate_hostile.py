@@ -154,17 +154,18 @@ def test_an_edited_label_cannot_change_what_a_certificate_is_reported_as(tmp_pat
                                                                          capsys):
     """The constant 3 of tr(R) <= 3 labelled "2" and the statement edited to match: the
     key (numerator, multipliers) is unchanged, so the certificate is still one of
-    tr(R) <= 3, and it is reported as that, never as tr(R) <= 2."""
+    tr(R) <= 3; its written statement is not that, so it is refused as edited (exit 1),
+    never accepted with a remark."""
     data = json.loads(json.dumps(honest))
     nodes = data["step"]["nodes"]
     k = next(i for i, n in enumerate(nodes) if n["op"] == "const" and n["value"] == ["3", "1"])
     nodes[k]["label"] = "2"
     data["claim"]["statement"] = "tr(R) <= 2"
-    main(["certificates", "check", str(_write(tmp_path, data))])
+    assert main(["certificates", "check", str(_write(tmp_path, data))]) == 1
     out = capsys.readouterr().out
-    ok = [line for line in out.splitlines() if line.startswith("ok")]
-    assert len(ok) == 1 and "tr(R) <= 3" in ok[0].split("(written")[0]
-    assert not any(line.split(":")[1].strip().startswith("tr(R) <= 2") for line in ok)
+    assert not any(line.startswith("ok") for line in out.splitlines())
+    (line,) = [line for line in out.splitlines() if line.startswith("INVALID")]
+    assert "statement edited" in line and "tr(R) <= 3 for all R ∈ SO(3)" in line
 
 
 def test_a_certificate_statement_reaches_the_terminal_escaped(tmp_path, honest, capsys):

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import textwrap
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -33,7 +34,8 @@ def _build_parser() -> argparse.ArgumentParser:
         description="Machine checks of the claims of the SO(3) passivity paper: exact "
         "symbolic proofs, passivity certificates and property-based simulation.",
     )
-    parser.add_argument("--version", action="version", version=f"verify {__version__}")
+    parser.add_argument("--version", action=_VersionAction,
+                        help="print the version and the hash of the Coq prelude, then exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
 
     p_all = sub.add_parser("all", help="run every registered claim check and write reports/ "
@@ -100,7 +102,10 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check = sub.add_parser(
         "check",
         help="check the derivations of a Python file of your own, step by step",
-        description="Exit 0 if every step of every derivation is verified, 1 if some step "
+        description="FILE is either the derivations' JSON form (format "
+        "'verify-derivations/1', read as data: nothing of it runs; write it with --emit) "
+        "or a Python file whose DERIVATIONS make that data, run in a sandbox. Exit 0 if "
+        "every step of every derivation is verified, 1 if some step "
         "is refuted or inconclusive, 2 if the file is malformed, over a budget while it is "
         "read, or a .py file cannot be run in a sandbox (user, PID, mount and network "
         "namespaces) and --unsandboxed was not given.",
@@ -167,7 +172,7 @@ def _build_parser() -> argparse.ArgumentParser:
                         "it is not a terminal")
     p_gate.add_argument("--plot", type=Path, metavar="FILE",
                         help="draw nu(w) and the relative index R(w) with the band, margin "
-                        "and exact witness marked (PNG or PDF by the suffix); with several "
+                        "and exact witness marked (PNG, PDF or SVG by the suffix); with several "
                         "models, one file per model: nu.pdf gives nu-<model stem>.pdf")
     p_gate.add_argument("--coq", type=Path, metavar="DIR",
                         help="also write a Coq development of the models' KYP certificates "
@@ -237,7 +242,11 @@ def _build_parser() -> argparse.ArgumentParser:
         "derived from what it proves, its source model file (looked up relative to the "
         "certificate's folder, never the working directory), and the exact inequalities. "
         "A certificate whose source file is not found is UNBOUND: its name and descriptive "
-        "labels are not checked. Exit 0 if all are valid (or unbound, with "
+        "labels are not checked. Each valid certificate is printed with the claim it "
+        "proves and every premise (an SOS claim: for all its variables, with their kinds "
+        "and declared signs, with its assumptions; names that could be misread are "
+        "quoted); a certificate whose written statement is not that claim's is refused "
+        "as 'statement edited'. Exit 0 if all are valid (or unbound, with "
         "--allow-unbound), 1 if one is refused or unbound or none is found, 2 if a path "
         "does not exist.")
     p_cc.add_argument("paths", nargs="*", type=Path, metavar="DIR_OR_FILE",
@@ -300,7 +309,107 @@ def _build_parser() -> argparse.ArgumentParser:
     p_sim.add_argument("--measurement-noise", type=float, default=0.0, metavar="STD",
                        help="white noise on the logged e and u (default 0)")
     _add_campaign_parser(sub)
+    _add_examples(sub)
     return parser
+
+
+class _VersionAction(argparse.Action):
+    """``verify --version``: the package version and the SHA-256 of the Coq prelude the
+    exported developments are written against (computed only when asked)."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS,
+                 help=None):
+        super().__init__(option_strings, dest=dest, default=default, nargs=0, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from verify.coq.development import prelude_digest
+
+        print(f"verify {__version__}\nCoq prelude sha256 {prelude_digest()}")
+        parser.exit()
+
+
+#: Two or three examples per command, shown at the end of its --help.
+EXAMPLES: dict[str, tuple[tuple[str, str], ...]] = {
+    "all": (("verify all", "every claim on the shipped defaults; writes reports/ and "
+             "certificates/"),
+            ("verify all --only sec2 --no-latex", "Section 2's claims only, into "
+             "build/only/reports/"),
+            ("verify all --strict --jobs 2", "exit 1 unless every claim is verified")),
+    "list": (("verify list", "every claim id with the paper's section or equation (an id "
+              "prefix is what 'verify all --only' takes)"),
+             ("verify list | grep '^lemma1'", "Lemma 1's claims; 'verify all --only "
+              "lemma1' checks them alone")),
+    "network": (("verify network my_formation.toml", "rank of W, stealth residuals"),
+                ("verify network --project measured.toml", "project noisy rotation "
+                 "matrices onto SO(3) first")),
+    "check": (("verify check examples/damped_leader.py --emit damped_leader.json",
+               "run the Python front end in a sandbox; also write the derivations' JSON "
+               "form (verify-derivations/1)"),
+              ("verify check damped_leader.json", "check the JSON form in CI: read as "
+               "data, nothing of the file runs"),
+              ("verify check damped_leader.json --coq build/coq", "also export every step "
+               "to Coq (then coqc on the files of build/coq/_CoqProject)")),
+    "gate": (("verify gate models/*.toml --junit gate.xml", "gate every model; JUnit "
+              "for CI; exit 1 if one is not passive"),
+             ("verify gate operator.toml --band 0:10 --plot nu.svg", "passivity on "
+              "0 <= w <= 10 rad/s, with the nu(w) figure as SVG"),
+             ("verify gate operator.toml --coq build/coq-gate", "also have Coq's kernel "
+              "re-check the KYP certificate")),
+    "coq": (("verify coq --check", "export the paper's development to certificates/coq/ "
+             "and compile it with coqc"),
+            ("verify coq build/certificates --out build/coq", "a development of your own "
+             "gate certificates")),
+    "identify": (("verify identify verify/data/logs/passive_human.npz", "the shipped "
+                  "log: model file, region verdict, figures in build/identified/"),
+                 ("verify identify trials.csv --band 0:5 --junit id.xml", "robust "
+                  "passivity on 0 <= w <= 5 rad/s over the 95 % region, JUnit for CI")),
+    "certificates": (("verify certificates check", "re-check certificates/ and "
+                      "build/certificates/ exactly, no solver"),
+                     ("verify certificates check gate-out/ --allow-unbound",
+                      "certificates whose source model is not beside them")),
+    "certificates check": (("verify certificates check", "re-check certificates/ and "
+                            "build/certificates/ exactly, no solver"),
+                           ("verify certificates check build/certificates/*.json",
+                            "the gate's certificates; exit 1 if one is refused or "
+                            "unbound")),
+    "simulate": (("verify simulate --n 8 --seconds 30 --check", "the closed loop with "
+                  "the VR operator, and the paper's properties on the run"),
+                 ("verify simulate --model operator.toml --log trials.npz", "your H(s) in "
+                  "the loop; the trials as an experiment log for 'verify identify'")),
+    "campaign": (("verify campaign verify/data/campaigns/small.toml --workers 2",
+                  "a small sweep on a LocalCluster of 2 workers"),
+                 ("verify campaign spec.toml --scheduler tcp://10.0.0.5:8786",
+                  "on an existing Dask scheduler"),
+                 ("verify campaign spec.toml --resume --out build/campaigns/spec",
+                  "continue: runs already stored are skipped")),
+}
+
+
+def _add_examples(sub: argparse._SubParsersAction) -> None:
+    """End each command's --help with its :data:`EXAMPLES` (text kept as written)."""
+    for name, examples in EXAMPLES.items():
+        first, *rest = name.split()
+        parser = sub.choices[first]
+        for word in rest:  # a nested command: certificates check
+            (nested,) = [a for a in parser._actions
+                         if isinstance(a, argparse._SubParsersAction)]
+            parser = nested.choices[word]
+        lines = []
+        for command, what in examples:
+            lines.append(f"  {command}")
+            lines += textwrap.wrap(what, 76, initial_indent="      ",
+                                   subsequent_indent="      ")
+        parser.epilog = "examples:\n" + "\n".join(lines)
+        parser.formatter_class = _ExamplesFormatter
+
+
+class _ExamplesFormatter(argparse.HelpFormatter):
+    """argparse's formatter, except that the examples epilog keeps its lines."""
+
+    def _fill_text(self, text, width, indent):
+        if text.startswith("examples:\n"):
+            return "".join(indent + line for line in text.splitlines(keepends=True))
+        return super()._fill_text(text, width, indent)
 
 
 def _add_campaign_parser(sub) -> None:

@@ -2,8 +2,10 @@
 
 Each file is written to a temporary file in the same directory and moved into place
 with ``os.replace``; a set of files is rendered fully in memory before the first move.
-The rename only ever replaces a regular file (or a symbolic link, which it replaces, not
-follows): a device, FIFO, socket or directory at the target is refused, never replaced.
+The rename only ever replaces a regular file: a symbolic link is followed to the file
+it names (:func:`verify.artefacts.links.resolve_output`; the link stays), a path that
+leads into ``/proc`` (``/dev/stdout``, ``/dev/fd/1``) is refused, and a device, FIFO,
+socket or directory at the target is refused, never replaced.
 An operating-system error (a full disk, a read-only or immutable folder, a parent that
 cannot exist) becomes a one-line :class:`OutputError` naming the path; the temporary
 file and any folder created for the write are removed, so nothing half-written and no
@@ -19,6 +21,7 @@ import tempfile
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 
+from verify.artefacts.links import LinkError, resolve_output
 from verify.errors import VerifyInputError
 
 
@@ -96,16 +99,28 @@ def remove_empty(folders: list[Path]) -> None:
             os.rmdir(q)
 
 
+def resolved(path: str | Path) -> Path:
+    """The file ``path`` names, its symbolic links followed; a way through ``/proc``
+    (``/dev/stdout``) or a loop of links is an :class:`OutputError`."""
+    try:
+        return resolve_output(path)
+    except LinkError as exc:
+        raise OutputError(f"{path}: {exc}") from None
+    except OSError as exc:
+        raise OutputError(f"{path}: cannot write ({os_error_text(exc)})") from None
+
+
 def refuse_non_regular(path: Path) -> None:
     """Refuse an existing ``path`` that a rename must not replace: anything but a regular
-    file or a symbolic link (the link itself is replaced, never what it points to)."""
+    file once its symbolic links are followed (a link to a device is the device; a link
+    into ``/proc``, such as ``/dev/stdout``, is refused whatever it names)."""
     try:
-        mode = os.lstat(path).st_mode
+        mode = os.lstat(resolved(path)).st_mode
     except (FileNotFoundError, NotADirectoryError):  # the parents are checked next
         return
     except OSError as exc:
         raise OutputError(f"{path}: cannot write ({os_error_text(exc)})") from None
-    if not (stat.S_ISREG(mode) or stat.S_ISLNK(mode)):
+    if not stat.S_ISREG(mode):
         raise OutputError(f"{path}: is {kind_of(mode)}, not a regular file; it is not "
                           "replaced: give the path of a file")
 
@@ -113,11 +128,13 @@ def refuse_non_regular(path: Path) -> None:
 def write_atomic(path: Path, data: bytes | str) -> None:
     """Write ``data`` to ``path`` atomically (temporary file + rename).
 
-    The file gets the mode an ordinary ``open(path, "w")`` would give (0666 less the
+    A symbolic link is followed to the file it names, as ``open(path, "w")`` would
+    (``/dev/stdout`` and other ways into ``/proc`` are refused). The file gets the mode an
+    ordinary ``open(path, "w")`` would give (0666 less the
     umask), not the private 0600 of a temporary file. Missing parent folders are created
     (and removed again if the write fails); a failure is an :class:`OutputError`.
     """
-    path = Path(path)
+    path = resolved(path)  # through its symbolic links: the link itself is never replaced
     payload = data.encode("utf-8") if isinstance(data, str) else data
     refuse_non_regular(path)
     created = make_parents(path.parent)

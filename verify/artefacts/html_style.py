@@ -26,4 +26,6 @@ details{margin:.3em 0}pre{white-space:pre-wrap;overflow-wrap:anywhere;max-height
 overflow:auto;background:#fafafa;padding:.4em}img{max-width:100%;height:auto}
 dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
 table.summary td:first-child,table.summary td:last-child{white-space:nowrap}
+table.evidence{width:auto;font-size:.9em;margin:.3em 0}table.evidence th{font-weight:normal;
+background:#f3f5f8;text-align:left;vertical-align:top}.approx,.exact,.more{color:#555}
 """

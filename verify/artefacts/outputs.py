@@ -9,7 +9,9 @@ unwritable after minutes of computation. Refused are:
   hard link or a symbolic link to the input is caught too), or the same file as another
   output of the call;
 * a directory where a file is expected, and a device, FIFO or socket (the atomic rename
-  would replace it); ``-`` names standard output instead where the command allows a
+  would replace it), also through a symbolic link; a path that leads into ``/proc``
+  (``/dev/stdout``, ``/dev/fd/1``: whatever a process has open; the rename would replace
+  the link itself, as root); ``-`` names standard output instead where the command allows a
   stream (``stream=True``);
 * a folder output that exists as a file, and a folder ``replaced`` whole that holds an
   input of the call;
@@ -45,6 +47,7 @@ from verify.artefacts.atomic import (
     os_error_text,
     write_atomic,
 )
+from verify.artefacts.links import LinkError, resolve_output
 
 #: The path that names standard output for an output that allows a stream.
 STREAM = "-"
@@ -132,6 +135,13 @@ class OutputPlan:
             return
         path = Path(path)
         label = f"{flag} {path}" if flag else str(path)
+        try:
+            resolve_output(path)
+        except LinkError as exc:
+            hint = "; use - for standard output" if stream else ""
+            raise OutputError(f"{label}: {exc}{hint}") from None
+        except OSError:
+            pass  # the stat and the probe below say what is wrong
         try:
             info = os.stat(path)
         except (FileNotFoundError, NotADirectoryError):  # the probe says what is wrong

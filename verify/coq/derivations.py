@@ -45,11 +45,11 @@ from verify.coq.polys import poly_text as _poly_text
 from verify.coq.terms import (
     CoqExportError,
     Naming,
-    ascii_identifier,
     assumption_hypothesis,
     constant,
     coq_text,
 )
+from verify.coq.text import module_identifier
 from verify.coq.unit import CoqUnit, comment_text
 from verify.proof.derivation import Derivation, Step
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, nodes, variables_of
@@ -92,7 +92,9 @@ class _Section:
 
 
 def module_name(derivation_name: str) -> str:
-    return ascii_identifier(derivation_name)
+    """The module of a derivation exported alone (:func:`verify.coq.text.module_identifier`:
+    never a prelude module, ``All`` or a keyword)."""
+    return module_identifier(derivation_name, set())
 
 
 def theorem_name(derivation_name: str, step: int) -> str:
@@ -134,10 +136,14 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
     if len(theorems) == len(d.steps) > 1:
         body.append(_claim_theorem(sec, d))
         theorems.append("claim")
-    section = ascii_identifier(d.name)
-    head = [f"(** Exported from the derivation {d.name!r} (verify.proof).",
-            f"    Statement: {comment_text(d.statement)}",
-            f"    Paper: {comment_text(d.cite)} *)", "", HEADER,
+    section = name
+    head = [f"(** Exported from the derivation '{comment_text(d.name)}' (verify.proof).",
+            "    Context only, not theorems of this file:",
+            f"    the derivation's summary: {comment_text(d.statement)}",
+            f"    its place in the paper: {comment_text(d.cite)}",
+            "    Each theorem below is one step, exactly as the comment above it writes it,",
+            "    under the hypotheses its Proof using line names. *)", "",
+            HEADER,
             f"Section {section}.", ""]
     text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
     return CoqUnit(name, text, tuple(theorems), source or d.name), fates

@@ -43,6 +43,18 @@ def prelude_sources() -> dict[str, str]:
     return {name: found[name] for name in ordered}
 
 
+def prelude_digest() -> str:
+    """SHA-256 (hex) of the prelude: each module's name and text in :data:`PRELUDE_ORDER`,
+    so two installations that print the same digest export against the same definitions."""
+    import hashlib
+
+    digest = hashlib.sha256()
+    for name, text in prelude_sources().items():
+        digest.update(f"{name}.v\0{len(text.encode())}\0".encode())
+        digest.update(text.encode())
+    return digest.hexdigest()
+
+
 def render_development(units: Sequence[CoqUnit], *,
                        extra: Mapping[str, str] | None = None) -> dict[str, str]:
     """Every file of the development by relative path (no I/O; bytes depend only on units).

@@ -10,7 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from verify.coq.derivations import StepExport, derivation_unit, module_name
+from verify.coq.derivations import StepExport, derivation_unit
+from verify.coq.text import module_identifier
 from verify.coq.unit import CoqUnit
 from verify.proof.derivation import Derivation
 
@@ -27,11 +28,7 @@ def derivation_exports(derivations: Sequence[Derivation], *,
     fates: list[StepExport] = []
     taken: set[str] = set()
     for d in derivations:
-        base = prefix + module_name(d.name)
-        name, k = base, 2
-        while name in taken:
-            name, k = f"{base}_{k}", k + 1
-        taken.add(name)
+        name = module_identifier(d.name, taken, prefix=prefix)
         unit, steps = derivation_unit(d, module=name)
         fates += steps
         if unit is not None:

@@ -555,6 +555,21 @@ def certificate_for(step: SosStep, folder: Path) -> Path:
     return Path(folder) / file_name(claim_key(sp))
 
 
+def _statement_edited(step: SosStep, data: dict) -> str:
+    """Why the certificate's written statement is not the step's (the paper's labels are
+    the package's own, so it is written with them), or ""."""
+    import dataclasses
+
+    from verify.proof.checker import step_problem
+    from verify.proof.sos_step import step_program
+    from verify.sos.certificate import statement_edited
+
+    d = step.derivation
+    (st,) = d.steps
+    sp = step_program(step_problem(d, st), st.because)
+    return statement_edited(data, dataclasses.replace(sp, statement=sp.labelled))
+
+
 def paper_sos_units(folder: Path) -> tuple[list[CoqUnit], dict[str, str]]:
     """Units of the paper's SOS certificates found in ``folder``, and every such file by
     name: its unit's theorem (``Module.theorem``), or why it was refused (a certificate
@@ -567,6 +582,10 @@ def paper_sos_units(folder: Path) -> tuple[list[CoqUnit], dict[str, str]]:
             continue
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
+            edited = _statement_edited(step, data)
+            if edited:
+                outcome[path.name] = f"refused: {edited}"
+                continue
             unit = sos_unit(step, data, file_label=path.name)
         except CoqExportError as exc:
             outcome[path.name] = f"refused: {exc}"

@@ -13,6 +13,7 @@ from __future__ import annotations
 import unicodedata
 from fractions import Fraction
 
+from verify.coq.text import generated_identifier
 from verify.coq.unit import CoqExportError, comment_text
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, Variable, structural_key
 
@@ -70,8 +71,12 @@ class Naming:
         return candidate
 
     def variable(self, v: Variable) -> str:
+        """``v_<n>_<hint>`` (:func:`verify.coq.text.generated_identifier`): the n-th
+        variable named, never the file's name itself."""
         if v.uid not in self.names:
-            self.names[v.uid] = self.fresh(ascii_identifier(v.name))
+            name = generated_identifier("v", len(self.names) + 1, v.name)
+            self.used.add(name)
+            self.names[v.uid] = name
         return self.names[v.uid]
 
     def lambda_atom(self, node: Expr) -> str:

@@ -6,6 +6,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from verify.coq.text import inert_comment
+
 _COQ_IDENT = re.compile(r"[A-Za-z][A-Za-z0-9_]*\Z")
 
 
@@ -15,8 +17,8 @@ class CoqExportError(ValueError):
 
 
 def comment_text(text: str) -> str:
-    """Text safe inside a Coq comment (no nested comment markers)."""
-    return text.replace("(*", "( *").replace("*)", "* )")
+    """Text inert inside a Coq comment: :func:`verify.coq.text.inert_comment`."""
+    return inert_comment(text)
 
 
 @dataclass(frozen=True)

@@ -76,22 +76,28 @@ OUT_OF_REACH = {
 def program_for_key(key: str, statement: str | None = None):
     """The re-derived SOS program of the paper's by_sos step with this claim key, or None.
 
-    ``statement`` (the certificate's text of the step) only narrows which steps are
-    rebuilt; the match is on the key of the re-derived program.
+    ``statement`` (the certificate's text of the step) only says which steps to rebuild
+    first; the match is on the key of the re-derived program, so a certificate whose
+    statement was edited is still bound to its step (and then refused as edited).
     """
     from verify.proof.checker import step_problem
     from verify.proof.sos_step import step_program
     from verify.sos.certificate import claim_key
 
-    for r in sos_reproofs():
+    reproofs = sos_reproofs()
+
+    def written(r: SosReproof) -> bool:
+        step = r.derivation.steps[0]
+        return f"{step.lhs} {step.relation} {step.rhs}" == statement
+
+    # the steps whose text is the certificate's first: one is usually the match
+    for r in sorted(reproofs, key=lambda r: not written(r)):
         d = r.derivation
         step = d.steps[0]
-        if statement is not None and f"{step.lhs} {step.relation} {step.rhs}" != statement:
-            continue
         sp = step_program(step_problem(d, step), step.because)
         if claim_key(sp) == key:
-            # the paper's labels are this package's own: reported as written
-            return dataclasses.replace(sp, plain="")
+            # the paper's labels are this package's own: written and reported with them
+            return dataclasses.replace(sp, statement=sp.labelled)
     return None
 
 

@@ -20,8 +20,9 @@ values near 1) is drawn on a symmetric-log axis so it stays visible.
 
 The figure is rendered in memory with no date or version stamp
 (:func:`verify.artefacts.figure_bytes.figure_bytes`) and written with a temporary file
-and a rename (:func:`verify.artefacts.atomic.write_atomic`); PNG or PDF by the file's
-suffix. :func:`passivity_figure_bytes` is the reusable part (a report can embed it).
+and a rename (:func:`verify.artefacts.atomic.write_atomic`); PNG, PDF or SVG (vector, as
+the HTML report's figures) by the file's suffix. :func:`passivity_figure_bytes` is the
+reusable part (a report can embed it).
 """
 
 from __future__ import annotations
@@ -40,7 +41,7 @@ from verify.inputs.number_text import short_text
 from verify.inputs.numbers import to_float
 
 #: Suffixes ``--plot`` accepts, and the format each is written in.
-FORMATS = {".png": "png", ".pdf": "pdf"}
+FORMATS = {".png": "png", ".pdf": "pdf", ".svg": "svg"}
 #: How a verdict line names a witness that is not a frequency.
 WITNESS_WORDS = {
     "infinity": r"$D + D^{\mathsf{T}}$ is not PSD, so $\nu(\omega) < 0$ as $\omega \to \infty$",
@@ -57,11 +58,12 @@ RESOLVED = 1e-9
 
 
 def figure_format(path: Path, flag: str = "--plot") -> str:
-    """``png`` or ``pdf`` from the file's suffix; a one-line error for anything else."""
+    """``png``, ``pdf`` or ``svg`` from the file's suffix; a one-line error for anything
+    else."""
     fmt = FORMATS.get(Path(path).suffix.lower())
     if fmt is None:
-        raise VerifyInputError(f"{flag} {str(path)!r}: the file name must end in .png or .pdf "
-                               "(the format is chosen by the suffix), e.g. nu.pdf")
+        raise VerifyInputError(f"{flag} {str(path)!r}: the file name must end in .png, .pdf "
+                               "or .svg (the format is chosen by the suffix), e.g. nu.svg")
     return fmt
 
 
@@ -167,7 +169,9 @@ def _verdict_line(decision: Any, witness: Fraction | None) -> str:
 
 def passivity_figure_bytes(decision: Any, fmt: str = "png") -> bytes:
     """The figure of a :class:`~verify.passivity.decision.Decision` or
-    :class:`~verify.passivity.band.BandDecision` as PNG or PDF bytes (module docstring)."""
+    :class:`~verify.passivity.band.BandDecision` as PNG, PDF or
+    SVG bytes (module docstring); SVG is vector like the report's figures (text as paths,
+    fixed ids)."""
     import warnings
 
     import matplotlib
@@ -177,6 +181,9 @@ def passivity_figure_bytes(decision: Any, fmt: str = "png") -> bytes:
         fig = passivity_figure(decision)
         if fmt == "png":
             return figure_bytes(fig, fmt, dpi=150)
+        if fmt == "svg":
+            with matplotlib.rc_context({"svg.fonttype": "path"}):
+                return figure_bytes(fig, fmt)
         with matplotlib.rc_context({"pdf.fonttype": 42}):  # TrueType, not Type 3 fonts
             return figure_bytes(fig, fmt)
 
@@ -279,7 +286,7 @@ def passivity_figure(decision: Any) -> Any:
 
 
 def write_passivity_figure(decision: Any, path: Path) -> Path:
-    """Write the decision's figure to ``path`` (PNG or PDF by suffix), atomically."""
+    """Write the decision's figure to ``path`` (PNG, PDF or SVG by suffix), atomically."""
     path = Path(path)
     write_atomic(path, passivity_figure_bytes(decision, figure_format(path)))
     return path
@@ -294,7 +301,7 @@ def figure_paths(target: Path, sources: list[Path]) -> list[Path]:
     figure_format(target)
     if target.is_dir():
         raise VerifyInputError(f"--plot {str(target)!r} is a directory; give a file name "
-                               "ending in .png or .pdf")
+                               "ending in .png, .pdf or .svg")
     if len(sources) == 1:
         paths = [target]
     else:

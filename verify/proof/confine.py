@@ -6,18 +6,23 @@ user, PID, mount, IPC and network namespaces (:mod:`verify.proof.sandbox`). That
 is root of its own user namespace until :func:`confine` ends: it remounts every mount it
 inherited read-only (so the project, the checker's modules and every output path stay as
 they are), mounts empty private file systems on ``/tmp``, ``/var/tmp``, ``/dev/shm``,
-``/dev/pts`` and ``/run`` (no scratch, socket or terminal shared with the checker), and
-then drops every capability for good (bounding set emptied, no new privileges), so the
-file cannot undo any of it. See ``verify/proof/TRUSTED.md``; the proof language this
+``/dev/pts`` and ``/run`` (no scratch, socket or terminal shared with the checker; 20 MB
+together), hides ``/proc/keys``, joins a fresh session keyring, drops every capability
+for good (bounding set emptied, no new privileges) and installs a seccomp filter
+(:mod:`verify.proof.syscalls`: no sockets, no new process, no memfd or shared memory, no
+keys), so the file cannot undo any of it. See ``verify/proof/TRUSTED.md``; the proof language this
 serves is the paper's Section 3.
 """
 
 from __future__ import annotations
 
 import ctypes
+import errno
 import os
 import resource
 import sys
+
+from verify.proof import syscalls
 
 _MS_RDONLY = 1
 _MS_NOSUID = 2
@@ -37,9 +42,16 @@ _PR_CAPBSET_DROP = 24
 _LINUX_CAPABILITY_VERSION_3 = 0x20080522
 #: Empty file systems laid over shared scratch, socket and terminal folders.
 PRIVATE = ("/tmp", "/var/tmp", "/dev/shm", "/dev/pts", "/run")
+#: Their sizes: memory outside the file's address space, so kept small (20 MB together).
+PRIVATE_BYTES = {"/tmp": 16 * 2**20, "/var/tmp": 2**20, "/dev/shm": 2**20,
+                 "/dev/pts": 2**20, "/run": 2**20}
+PRIVATE_INODES = 1024
+#: Files of /proc the file sees empty (keyrings are not namespaced).
+MASKED = ("/proc/keys", "/proc/key-users")
 #: The only devices the file sees (in a fresh read-only /dev).
 DEVICES = ("null", "zero", "full", "random", "urandom")
 _MNT_DETACH = 2
+_KEYCTL_JOIN_SESSION_KEYRING = 1
 
 
 class ConfineError(Exception):
@@ -87,8 +99,9 @@ def _remount_read_only(libc: ctypes.CDLL, point: str) -> None:
 def _private(libc: ctypes.CDLL, point: str) -> None:
     if not os.path.isdir(point):
         return
-    if libc.mount(b"none", point.encode(), b"tmpfs", _MS_NOSUID | _MS_NODEV,
-                  b"size=64m,mode=1777") != 0:
+    size = PRIVATE_BYTES[point]
+    options = f"size={size},nr_inodes={PRIVATE_INODES},mode=1777".encode()
+    if libc.mount(b"none", point.encode(), b"tmpfs", _MS_NOSUID | _MS_NODEV, options) != 0:
         err = ctypes.get_errno()
         raise ConfineError(f"could not mount a private {point} ({os.strerror(err)})")
 
@@ -190,6 +203,9 @@ def confine(max_processes: int) -> None:
         _remount_read_only(libc, point)
     _private(libc, "/tmp")
     _minimal_dev(libc)
+    for path in MASKED:  # the descriptions of the keys its user may view
+        if os.path.exists(path):
+            _mount(libc, "/dev/null", path, None, _MS_BIND, None, f"hide {path}")
     _remount_read_only(libc, "/dev")  # shm and pts below get their own tmpfs
     for point in PRIVATE:
         if point != "/tmp":
@@ -204,8 +220,31 @@ def confine(max_processes: int) -> None:
         except OSError:
             continue
     resource.setrlimit(resource.RLIMIT_NPROC, (max_processes, max_processes))
+    fresh_session_keyring()
     _drop_capabilities(libc)
     os.chdir("/tmp")
+    try:
+        syscalls.install()  # last: it refuses mount, keyctl and execve from here on
+    except syscalls.SyscallFilterError as exc:
+        raise ConfineError(str(exc)) from None
 
 
-__all__ = ["PRIVATE", "ConfineError", "confine", "mount_points"]
+def fresh_session_keyring() -> None:
+    """Join a new anonymous session keyring (``keyctl join_session_keyring``): keyrings
+    are not namespaced, and the caller's session keyring (a token an agent or a CI put
+    there) would otherwise be this process's too. A kernel without keys (ENOSYS) or an
+    outer seccomp filter that refuses ``keyctl`` (EPERM, as container runtimes do) leaves
+    no key to reach, since that filter binds the file too; any other failure is a
+    ConfineError."""
+    number = syscalls.syscall_number("keyctl")
+    libc = _libc()
+    libc.syscall.restype = ctypes.c_long
+    serial = libc.syscall(ctypes.c_long(number), ctypes.c_long(_KEYCTL_JOIN_SESSION_KEYRING),
+                          ctypes.c_void_p(None))
+    if serial < 0:
+        err = ctypes.get_errno()
+        if err not in (errno.ENOSYS, errno.EPERM):
+            raise ConfineError(f"could not join a fresh session keyring ({os.strerror(err)})")
+
+
+__all__ = ["PRIVATE", "ConfineError", "confine", "fresh_session_keyring", "mount_points"]

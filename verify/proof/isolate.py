@@ -50,9 +50,16 @@ def _limits(budget: Budget):
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
         written = 2 * LIMITS["bytes"]  # no file the child writes grows past this
         resource.setrlimit(resource.RLIMIT_FSIZE, (written, written))
+        # pipe buffers are kernel memory outside the address space (64 KB each)
+        hard = resource.getrlimit(resource.RLIMIT_NOFILE)[1]
+        files = MAX_OPEN_FILES if hard == resource.RLIM_INFINITY else min(hard, MAX_OPEN_FILES)
+        resource.setrlimit(resource.RLIMIT_NOFILE, (files, files))
 
     return apply
 
+
+#: Files the child may have open at once (hard limit).
+MAX_OPEN_FILES = 256
 
 #: Bytes of a derivation file's own text the checker reads and hands to the child.
 MAX_SOURCE_BYTES = 16 * 2**20

@@ -6,12 +6,22 @@ a subexpression whose text would exceed :data:`MAX_TEXT` characters is shown as
 times) prints in linear time. Integers too long for a decimal string are shown by
 their size (``⟨integer of 5001 digits⟩``), never converted.
 
+Printed as the tree says (``labels=False``, what a checked certificate is reported as),
+a variable's name is shown as it is only when it cannot be read as anything else
+(:func:`is_plain_name`): ASCII or Greek letters that look like no other, digits,
+subscript digits, ``_``, primes and a few accents, not the printer's own words (``I``,
+``tr``, ``π``, ...); any other name is quoted (:func:`name_text`), so a rotation named
+``R)+tr(R`` prints as ``tr("R)+tr(R") <= 3``, never ``tr(R)+tr(R) <= 3``.
+
 The printer reads a tree's fields only (``op``, ``args``, ``data``, ``label``) and
 imports nothing of :mod:`verify.proof.expr`, which uses it for ``str`` and ``repr``.
 """
 
 from __future__ import annotations
 
+import json
+import unicodedata
+from collections.abc import Callable, Mapping
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
@@ -35,12 +45,55 @@ _FUNCS = {
 }
 
 
-def to_text(e: Expr, labels: bool = True) -> str:
+def to_text(e: Expr, labels: bool = True, names: Mapping[int, str] | None = None) -> str:
     """The expression as text; with ``labels=False`` every author's label is ignored and
-    the tree itself is printed (variables by their names), so the text says what is
-    evaluated. Labels and names are user text: shown escaped
+    the tree itself is printed (variables by their names, quoted by :func:`name_text`
+    when they could be misread, or as ``names`` maps their ``uid``), so the text says
+    what is evaluated. Labels and names are user text: shown escaped
     (:func:`verify.artefacts.text.shown`)."""
-    return _Printer(labels).text(e, 0)
+    return _Printer(labels, names).text(e, 0)
+
+
+def tree_text(names: Mapping[int, str] | None = None) -> Callable[[Expr], str]:
+    """``to_text(e, labels=False, names=names)`` for many expressions with one memo, so
+    shared subtrees are printed once over all of them (linear in the nodes)."""
+    printer = _Printer(False, names)
+    return lambda e: printer.text(e, 0)
+
+
+#: Words of the printed language a bare name must not be (functions, constants, gaps).
+RESERVED = frozenset({*_FUNCS.values(), "I", "π", "gap"})
+#: Letters a bare name may hold: ASCII, and the Greek letters that do not look like a
+#: Latin one (omicron and the capitals Α, Β, Ε, ... are quoted, so ``Α`` and ``A``
+#: never print alike).
+_LETTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                     "αβγδεζηθικλμνξπρςστυφχψω" "ΓΔΘΛΞΠΣΦΨΩ")
+#: After the first letter, also: digits, subscript digits, ``_``, primes, and a few
+#: combining accents (bar, hat, tilde, dot, vector arrow; not the overline, which looks
+#: like the bar).
+_FOLLOWING = frozenset("0123456789₀₁₂₃₄₅₆₇₈₉_′'"
+                       "\u0300\u0301\u0302\u0303\u0304\u0306\u0307\u0308\u030c\u20d7")
+
+
+def is_plain_name(name: str) -> bool:
+    """True when ``name`` prints bare without being misread: a letter (ASCII, or Greek
+    unlike any Latin one) or ``_``, then letters, digits, subscript digits, ``_``,
+    primes or a few combining accents; in NFC (so no two spellings of one look), and
+    not a word of the printed language (``tr``, ``I``, ``λmin``, ``π``, ...)."""
+    if not name or name in RESERVED or unicodedata.normalize("NFC", name) != name:
+        return False
+    first, rest = name[0], name[1:]
+    return ((first in _LETTERS or first == "_")
+            and all(ch in _LETTERS or ch in _FOLLOWING for ch in rest))
+
+
+def name_text(name: str) -> str:
+    """A variable's name as printed in a claim: bare when :func:`is_plain_name`, else
+    in double quotes with ``"`` and ``\\`` escaped (JSON string syntax), which the
+    printer never uses otherwise; control and bidi characters shown escaped."""
+    if is_plain_name(name):
+        return name
+    return shown(json.dumps(name, ensure_ascii=False))
 
 
 _CHART_GAPS = {"angle": "π", "unit_vector": "(0, 0, 1)"}
@@ -68,9 +121,10 @@ def _wrap(s: str, inner: int, outer: int) -> str:
 
 
 class _Printer:
-    def __init__(self, labels: bool = True) -> None:
+    def __init__(self, labels: bool = True, names: Mapping[int, str] | None = None) -> None:
         self.memo: dict[tuple[int, int], str] = {}
         self.labels = labels
+        self.names = names or {}
 
     def text(self, e: Expr, prec: int) -> str:
         key = (id(e), prec)
@@ -85,7 +139,8 @@ class _Printer:
         op, t = e.op, self.text
         if not self.labels:  # the tree, whatever its labels say
             if op == "var":
-                return shown(e.data.name)
+                given = self.names.get(e.data.uid)
+                return given if given is not None else name_text(e.data.name)
             if op == "identity":
                 return "I"
             if op == "chart_gap":

@@ -11,12 +11,15 @@ user namespace, which the child leaves without capabilities. In its PID namespac
 file cannot name, signal or ptrace the checker; when the namespace's first process
 ends, the kernel kills every other process in it, so nothing the file starts outlives
 the check. Inside, the child confines itself before the file runs
-(:mod:`verify.proof.confine`).
+(:mod:`verify.proof.confine`), last with a seccomp filter
+(:mod:`verify.proof.syscalls`: no sockets, no new process, no memfd or shared memory,
+no keys); where that filter cannot be installed the sandbox counts as unavailable.
 
-The checker watches the tree from outside: :func:`tree` lists the namespace's processes
-(through the ``children`` lists of ``/proc``), :func:`resident_bytes` adds up their
-memory, and the caller kills the namespace when the total passes the budget (a
-per-process address-space limit alone lets many processes each take the budget).
+The checker also watches the tree from outside: :func:`tree` lists the namespace's
+processes (through the ``children`` lists of ``/proc``), :func:`resident_bytes` adds up
+their memory, and the caller kills the namespace when the total passes the budget. This
+is a second line: the filter allows the file one process, whose hard address-space limit
+is the budget, so no burst passes between two looks.
 """
 
 from __future__ import annotations
@@ -29,6 +32,7 @@ import sys
 from pathlib import Path
 
 import verify
+from verify.proof import syscalls
 from verify.stopping import child_processes
 
 #: The file's processes at most (its first process included).
@@ -69,6 +73,9 @@ def _mode() -> tuple[str, str]:
     for tool in ("unshare", *(("setpriv",) if os.geteuid() == 0 else ())):
         if shutil.which(tool) is None:
             return "", f"the util-linux tool {tool!r} is not installed"
+    why = syscalls.unavailable()
+    if why:
+        return "", f"no seccomp filter can be installed here: {why}"
     unshare = [shutil.which("unshare") or "unshare", *_NAMESPACES, "--"]
     child = Path(verify.__file__).resolve().parent / "proof" / "child.py"
     # the interpreter runs, and the package and the libraries it needs can be read

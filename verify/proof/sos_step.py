@@ -42,12 +42,13 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
+import dataclasses
 import itertools
 from pathlib import Path
 
+from verify.proof.claim_text import claim_text
 from verify.proof.expr import ProofSyntaxError, sym, variables_of
 from verify.proof.justify import BySos
-from verify.proof.printing import to_text
 from verify.proof.problem import StepProblem
 from verify.sos import poly as pl
 from verify.sos.program import Multiplier, SosProgram, StepProgram, scalar_multiplier
@@ -149,11 +150,11 @@ def step_program(problem: StepProblem, because: BySos) -> StepProgram:
             if max(pl.degree(e) for row in scaled for e in row) <= top:
                 mults.append(Multiplier(f"{prod.grounds} × {mat.grounds}", scaled))
     program = SosProgram(names, target, tuple(mults))
-    statement = f"{problem.lhs} {problem.relation} {problem.rhs}"
-    plain = f"{to_text(problem.lhs, labels=False)} {problem.relation} " \
-            f"{to_text(problem.rhs, labels=False)}"
-    return StepProgram(program, groups, pl.from_ring(slack.num), factors, statement,
-                       plain)
+    claim = claim_text(problem)
+    return StepProgram(program, groups, pl.from_ring(slack.num), factors, claim.inequality,
+                       labelled=f"{problem.lhs} {problem.relation} {problem.rhs}",
+                       declarations=claim.declarations, assumptions=claim.assumptions,
+                       definitions=claim.definitions)
 
 
 def _names(space) -> tuple[str, ...]:
@@ -207,24 +208,22 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
         return False, f"no SOS program for this step ({type(exc).__name__}: {exc})"
     key = cert.claim_key(sp)
     store, source = _STORE.get()
+    if source == cert.PAPER:  # the paper's certificates are written with its own labels
+        sp = dataclasses.replace(sp, statement=sp.labelled)
     if store is not None:
         stored = cert.lookup(store, key)
         if stored is not None:
             result = cert.check_bound(stored, sp)
             if result.ok:
-                if "step" not in stored and source != cert.PAPER:
-                    # written before certificates carried their step: renew it, so that
-                    # `verify certificates check` can bind it again
-                    step_data = _step_data(step, problem)
-                    if step_data is not None:
-                        with contextlib.suppress(OSError):
-                            cert.write(store, {**stored, "step": step_data})
+                _renew(store, stored, sp, source, step, problem)
                 return True, f"{result.reason}; certificate {cert.file_name(key)}"
     found = find_certificate(sp.program, sp.groups, max_degree=step.because.degree)
     if not found.check.ok:
         return False, f"no SOS certificate: {found.check.reason}"
+    # the paper's certificates are bound to the paper's step by their key, with its
+    # labels; any other carries its step, to be bound to it again
     data = cert.to_data(sp, found.blocks, found.grams, key, source,
-                        step=_step_data(step, problem))
+                        step=None if source == cert.PAPER else _step_data(step, problem))
     result = cert.check_bound(data, sp)  # the same trusted check a stored file gets
     if not result.ok:
         return False, f"SOS certificate rejected: {result.reason}"
@@ -236,6 +235,26 @@ def exact_check(step, problem: StepProblem) -> tuple[bool, str]:
             where = f" (not written: {exc.strerror or exc})"
     # the same text whether the certificate was found now or read back (reproducible)
     return True, f"{result.reason}; certificate {cert.file_name(key)}{where}"
+
+
+def _renew(store: Path, stored: dict, sp, source: str, step, problem: StepProblem) -> None:
+    """Rewrite a stored certificate that re-checks but was written before certificates
+    carried their step, or with another statement than its step's tree (its labelled
+    text, as earlier versions wrote it, or an edited one), so that ``verify certificates
+    check`` binds it again and does not refuse it as edited."""
+    from verify.sos import certificate as cert
+
+    renewed = dict(stored)
+    claim = stored.get("claim")
+    if isinstance(claim, dict) and claim.get("statement") != sp.statement:
+        renewed["claim"] = {**claim, "statement": sp.statement}
+    if "step" not in stored and source != cert.PAPER:
+        step_data = _step_data(step, problem)
+        if step_data is not None:
+            renewed["step"] = step_data
+    if renewed != stored:
+        with contextlib.suppress(OSError):
+            cert.write(store, renewed)
 
 
 def _step_data(step, problem: StepProblem) -> dict | None:

@@ -24,6 +24,7 @@ from verify.artefacts.html_style import REPORT_CSS
 from verify.claims.model import ClaimResult, EvidenceKind, Verdict
 from verify.claims.runner import RunResult
 from verify.report.canonical import canonical_data
+from verify.report.evidence_html import value_html
 from verify.report.mathml import markdown_prose, mathml, prose_html
 from verify.report.mathtex import normalise, prose_to_latex
 from verify.report.steps import (
@@ -343,11 +344,21 @@ def _evidence_html(e) -> str:
         f"{'pass' if e.passed else 'FAIL'}] {prose_html(prose_to_latex(e.summary))}"
         + (f" (<code>{esc(e.path)}</code>)" if e.path and not href else "")
         + (f"<br><img src='{esc(href)}' alt='{esc(normalise(e.summary))}'>" if href else "")
-        + (f"<details><summary>data</summary><pre>"
-           f"{esc(json.dumps(_evidence_data(e), indent=1, ensure_ascii=False))}</pre>"
-           "</details>" if e.data else "")
+        + (f"<details><summary>data</summary>{_evidence_table(e)}</details>"
+           if e.data else "")
         + "</li>"
     )
+
+
+def _evidence_table(e) -> str:
+    """The evidence's data as tables; a derivation's steps are the step table above, so
+    here only its other fields (the steps' full record is in report.json)."""
+    data = _evidence_data(e)
+    if e.kind is EvidenceKind.DERIVATION and isinstance(data, dict) and "steps" in data:
+        steps = len(data["steps"])
+        data = {k: v for k, v in data.items() if k != "steps"}
+        data["steps"] = f"{steps}, in the table above (each in full in report.json)"
+    return value_html(data)
 
 
 def _claim_html(r: ClaimResult) -> str:

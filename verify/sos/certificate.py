@@ -302,28 +302,43 @@ def check_against_program(data: dict, sp: StepProgram, bound: str) -> SosCheck:
 
     ``sp`` is the claim's program re-derived by the caller (from the step the certificate
     carries, or from the paper's proofs) and ``bound`` says how, for the reason. The
-    certificate's key must be the program's key and its statement the program's, then
-    :func:`check_bound` decides it.
+    certificate's key must be the program's key and its written statement the program's
+    (else it is refused as *statement edited*: a certificate of ``tr(R) <= 3`` that
+    says ``tr(R) <= 2`` is not accepted with a remark), then :func:`check_bound`
+    decides it. A valid one is reported as :func:`printed_statement` says.
     """
     key = data["claim"]["key"]
     if claim_key(sp) != key:
         return SosCheck(False, "the claim key is not the key of the step it carries")
-    if sp.statement != data["claim"]["statement"]:
-        return SosCheck(False, f"the statement is not the step's ({sp.statement})")
+    edited = statement_edited(data, sp)
+    if edited:
+        return SosCheck(False, edited)
     result = check_bound(data, sp)
     if not result.ok:
         return result
     return SosCheck(True, f"{printed_statement(sp)}: {result.reason}; {bound}")
 
 
+def statement_edited(data: dict, sp: StepProgram) -> str:
+    """Why the certificate's written statement is not its program's (``statement
+    edited: ...``), or "" when it is."""
+    claim = data.get("claim")
+    written = claim.get("statement") if isinstance(claim, dict) else None
+    if written == sp.statement:
+        return ""
+    return (f"statement edited: the certificate says {written!r}, but what it proves is "
+            f"{sp.claim}")
+
+
 def printed_statement(sp: StepProgram) -> str:
-    """What a checked certificate is reported as: the claim as its tree says (labels
-    are the author's and bind nothing), and the labelled text beside it if it reads
-    otherwise."""
-    if not sp.plain or sp.plain == sp.statement:
-        return sp.statement
-    return f"{sp.plain} (written {sp.statement!r})"
+    """What a checked certificate is reported as: its statement (as the step's tree
+    says, names quoted where they could be misread) for all its variables, each with
+    its kind or declared sign, with every assumption the step allows
+    (:attr:`~verify.sos.program.StepProgram.claim`), e.g.
+    ``c (1 + tr(R)) >= 0 for all R ∈ SO(3), c ∈ ℝ with c >= 0``."""
+    return sp.claim
 
 
 __all__ = ["PAPER", "SCHEMA", "check_against_program", "check_bound", "check_form", "claim_key",
-           "file_name", "lookup", "printed_statement", "to_data", "write"]
+           "file_name", "lookup", "printed_statement", "statement_edited", "to_data",
+           "write"]

@@ -103,9 +103,16 @@ class StepProgram:
 
     ``numerator`` is the slack's numerator, ``factors`` the known non-negative factors
     divided out of it (numerator = prod f^k * ``program.target``), ``groups`` the
-    parameters of each variable (for the search's bases), ``statement`` the claim as
-    text. :mod:`verify.proof.sos_step` derives it from a proof step;
-    :mod:`verify.sos.certificate` checks a certificate against it.
+    parameters of each variable (for the search's bases). :mod:`verify.proof.sos_step`
+    derives it from a proof step; :mod:`verify.sos.certificate` checks a certificate
+    against it.
+
+    ``statement`` is the inequality as a certificate of this program writes it and must
+    carry: printed from the step's tree with every label ignored (a label is only the
+    author's word), or, for a step of the paper's proofs, with the package's own labels.
+    ``declarations`` and ``assumptions`` are the premises it rests on, printed from
+    their trees (``R ∈ SO(3)``, ``k > 0``; ``c >= 0``), and :attr:`claim` the sentence
+    a checked certificate is reported as.
     """
 
     program: SosProgram
@@ -113,6 +120,23 @@ class StepProgram:
     numerator: pl.Poly
     factors: list[tuple[pl.Poly, int]]
     statement: str
-    #: the statement with every label replaced by the tree it names ("" if not known):
-    #: what a certificate is printed as, since a label is only the author's word
-    plain: str = ""
+    #: the statement with the author's labels ("" if not known)
+    labelled: str = ""
+    declarations: tuple[str, ...] = ()
+    assumptions: tuple[str, ...] = ()
+    #: ``label = tree`` for each label of the step that reads otherwise than its tree
+    definitions: tuple[str, ...] = ()
+
+    @property
+    def claim(self) -> str:
+        """``statement for all declarations with assumptions``: what is proved; a
+        statement written with labels (the paper's) also says what each label stands
+        for (``writing label = tree; ...``)."""
+        text = self.statement
+        if self.declarations:
+            text += " for all " + ", ".join(self.declarations)
+        if self.assumptions:
+            text += " with " + " and ".join(self.assumptions)
+        if self.definitions and self.statement == self.labelled:
+            text += ", writing " + "; ".join(self.definitions)
+        return text

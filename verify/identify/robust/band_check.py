@@ -127,7 +127,7 @@ def check_claim(data: dict[str, Any], path: Path) -> tuple[rb.Shape, Region,
         return shape, region, band, ("file name does not match the content (expected "
                                      f"{file_name(name, band, fp)})")
     if data["statement"] != statement(structure_text, region.level, band):
-        return shape, region, band, "statement is not the one derived from the claim"
+        return shape, region, band, "statement edited: not the one derived from the claim"
     return shape, region, band, None
 
 

@@ -90,7 +90,7 @@ def check_claim(data: dict[str, Any], path: Path
         return refuse(f"file name does not match the content (expected "
                       f"{file_name(name, w, fp)})")
     if data["statement"] != statement(structure_text, region.level, band, w, v):
-        return refuse("statement is not the one derived from the claim")
+        return refuse("statement edited: not the one derived from the claim")
     return shape, region, band, w, v, None
 
 

@@ -376,7 +376,8 @@ def check_band_fd_data(data: Any) -> tuple[KypCheck, ExactModel | None, tuple | 
     if data["fingerprint"] != model.fingerprint():
         return KypCheck(False, "fingerprint does not match the model data"), None, None
     if data["statement"] != statement(band, margin):
-        return KypCheck(False, "the statement is not the one this certificate proves"), \
+        return KypCheck(False, "statement edited: the statement is not the one this "
+                               "certificate proves"), \
             None, None
     polys = band_polynomials(model)
     if data["route"] != polys.route:

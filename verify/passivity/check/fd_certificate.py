@@ -133,7 +133,8 @@ def check_pr_certificate_data(data: Any, path: Path | None = None) -> KypCheck:
     if data["fingerprint"] != model.fingerprint():
         return KypCheck(False, "fingerprint does not match the model data")
     if data["statement"] != STATEMENT:
-        return KypCheck(False, "the statement is not the one this certificate proves")
+        return KypCheck(False, "statement edited: the statement is not the one this "
+                               "certificate proves")
     an = analyse(model, certify=False)
     if an.verdict != PASSIVE:
         return KypCheck(False, f"the stored model is not positive real: {an.reason}")

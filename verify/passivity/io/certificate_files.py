@@ -281,7 +281,8 @@ def check_binding(cert: StoredCertificate, path: Path) -> tuple[str | None, str]
     if Path(path).name != expected:
         return f"file name does not match the content (expected {expected})", ""
     if cert.statement != _derived_statement(cert):
-        return ("statement is not the one derived from what the certificate proves "
+        return ("statement edited: the statement is not the one derived from what the "
+                "certificate proves "
                 f"(margin {cert.claim.margin}"
                 + ("" if cert.claim.band is None else
                    f", band [{cert.claim.band[0]}, {cert.claim.band[1]}]")
