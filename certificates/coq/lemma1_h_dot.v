@@ -1,6 +1,9 @@
 (** Exported from the derivation 'lemma1.h-dot' (verify.proof).
-    Statement: ḣ = (k_s/2) tr(R_rl - R_rlᵀ R̄_r²) along eq. (13)
-    Paper: Lemma 1 proof, eq. (15) *)
+    Context only, not theorems of this file:
+    the derivation's summary: ḣ = (k_s/2) tr(R_rl - R_rlᵀ R̄_r²) along eq. (13)
+    its place in the paper: Lemma 1 proof, eq. (15)
+    Each theorem below is one step, exactly as the comment above it writes it,
+    under the hypotheses its Proof using line names. *)
 
 From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -9,72 +12,72 @@ Open Scope R_scope.
 Section lemma1_h_dot.
 
 (** R_r: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_r : quat.
-Hypothesis q_R_r_nonzero : qn q_R_r <> 0.
-Local Notation R_r := (rot q_R_r).
+Variable q_v_1_R_r : quat.
+Hypothesis q_v_1_R_r_nonzero : qn q_v_1_R_r <> 0.
+Local Notation v_1_R_r := (rot q_v_1_R_r).
 
 (** R̄: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_Rbar : quat.
-Hypothesis q_Rbar_nonzero : qn q_Rbar <> 0.
-Local Notation Rbar := (rot q_Rbar).
+Variable q_v_2_Rbar : quat.
+Hypothesis q_v_2_Rbar_nonzero : qn q_v_2_Rbar <> 0.
+Local Notation v_2_Rbar := (rot q_v_2_Rbar).
 
 (** R_l: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_l : quat.
-Hypothesis q_R_l_nonzero : qn q_R_l <> 0.
-Local Notation R_l := (rot q_R_l).
+Variable q_v_3_R_l : quat.
+Hypothesis q_v_3_R_l_nonzero : qn q_v_3_R_l <> 0.
+Local Notation v_3_R_l := (rot q_v_3_R_l).
 
 (** k_s: a scalar *)
-Variable k_s : R.
-Hypothesis k_s_pos : 0 < k_s.
+Variable v_4_k_s : R.
+Hypothesis v_4_k_s_pos : 0 < v_4_k_s.
 
 
 (** Step 1: ḣ = tr((d/dt R̄_r))
     (algebra (h = tr(R̄_r) - 1, R_r constant)) *)
-Theorem step1 : (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))) = (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))).
-Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+Theorem step1 : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 2: tr((d/dt R̄_r)) = k_s tr(R_rᵀ R̄ sk(R̄ᵀ R_l))
     (algebra (eq. (13))) *)
-Theorem step2 : (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))) = (k_s * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT Rbar) R_l))))).
-Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+Theorem step2 : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 3: k_s tr(R_rᵀ R̄ sk(R̄ᵀ R_l)) = k_s tr(R̄_r sk(R̄_rᵀ R_rl))
     (algebra (R̄ᵀR_l = R̄_rᵀR_rl)) *)
-Theorem step3 : (k_s * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT Rbar) R_l))))) = (k_s * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)))))).
-Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+Theorem step3 : (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 4: k_s tr(R̄_r sk(R̄_rᵀ R_rl)) = (1/2) k_s tr(R_rl - R_rlᵀ R̄_r R̄_r)
     (algebra (cyclic trace)) *)
-Theorem step4 : (k_s * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)))))) = (((1/2) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)) (mmul (mT R_r) Rbar)))))).
-Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+Theorem step4 : (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))) = (((1/2) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_2_Rbar)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** The derivation's claim: ḣ = (1/2) k_s tr(R_rl - R_rlᵀ R̄_r R̄_r) *)
-Theorem claim : (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))) = (((1/2) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)) (mmul (mT R_r) Rbar)))))).
-Proof using q_R_r q_Rbar q_R_l k_s q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos.
+Theorem claim : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (((1/2) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_2_Rbar)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
   exact (eq_trans (eq_trans (eq_trans step1 step2) step3) step4).
 Qed.
 

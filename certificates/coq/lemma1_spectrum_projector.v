@@ -1,6 +1,9 @@
 (** Exported from the derivation 'lemma1.spectrum-projector' (verify.proof).
-    Statement: ξξᵀ is an orthogonal projector of rank tr(ξξᵀ) = 1
-    Paper: Lemma 1 proof, eigenvalues *)
+    Context only, not theorems of this file:
+    the derivation's summary: ξξᵀ is an orthogonal projector of rank tr(ξξᵀ) = 1
+    its place in the paper: Lemma 1 proof, eigenvalues
+    Each theorem below is one step, exactly as the comment above it writes it,
+    under the hypotheses its Proof using line names. *)
 
 From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -9,24 +12,24 @@ Open Scope R_scope.
 Section lemma1_spectrum_projector.
 
 (** ξ: a unit vector *)
-Variable xi : V3.
-Hypothesis xi_unit : vdot xi xi = 1.
+Variable v_1_xi : V3.
+Hypothesis v_1_xi_unit : vdot v_1_xi v_1_xi = 1.
 
 
 (** Step 1: ξξᵀ ξξᵀ = ξξᵀ
     (algebra (|ξ| = 1)) *)
-Theorem step1 : (mmul (outer xi xi) (outer xi xi)) = (outer xi xi).
-Proof using xi xi_unit.
+Theorem step1 : (mmul (outer v_1_xi v_1_xi) (outer v_1_xi v_1_xi)) = (outer v_1_xi v_1_xi).
+Proof using v_1_xi v_1_xi_unit.
   so3_split.
-  - apply (eq_by_sum _ _ ((((v1 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v2 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v2 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v1 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v2 xi) * (v3 xi)) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
-  - apply (eq_by_sum _ _ ((((v3 xi) ^ 2) * (1) / (1)) * (vdot xi xi - 1))); [rewrite (Rminus_diag_eq _ _ xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 v_1_xi) ^ 2) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 v_1_xi) * (v2 v_1_xi)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 v_1_xi) * (v3 v_1_xi)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 v_1_xi) * (v2 v_1_xi)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 v_1_xi) ^ 2) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 v_1_xi) * (v3 v_1_xi)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v1 v_1_xi) * (v3 v_1_xi)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v2 v_1_xi) * (v3 v_1_xi)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
+  - apply (eq_by_sum _ _ ((((v3 v_1_xi) ^ 2) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
 Qed.
 
 End lemma1_spectrum_projector.

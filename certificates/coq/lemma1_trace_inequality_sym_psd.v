@@ -1,6 +1,9 @@
 (** Exported from the derivation 'lemma1.trace-inequality-sym-psd' (verify.proof).
-    Statement: B need not be symmetric: sym(B) ⪰ 0 suffices (tr(A hat v) = 0)
-    Paper: repair of the quoted inequality *)
+    Context only, not theorems of this file:
+    the derivation's summary: B need not be symmetric: sym(B) ⪰ 0 suffices (tr(A hat v) = 0)
+    its place in the paper: repair of the quoted inequality
+    Each theorem below is one step, exactly as the comment above it writes it,
+    under the hypotheses its Proof using line names. *)
 
 From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -9,30 +12,30 @@ Open Scope R_scope.
 Section lemma1_trace_inequality_sym_psd.
 
 (** A: a symmetric matrix, by its six entries *)
-Variables A_11 A_22 A_33 A_12 A_13 A_23 : R.
-Local Notation A := (symm A_11 A_22 A_33 A_12 A_13 A_23).
+Variables v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23 : R.
+Local Notation v_1_A := (symm v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23).
 
 (** G: a matrix *)
-Variable G : M3.
+Variable v_2_G : M3.
 
 (** v: a vector *)
-Variable v : V3.
+Variable v_3_v : V3.
 
 (** lambda_min(A) *)
 Variable lam1 : R.
-Hypothesis lam1_spec : lam_min_spec A lam1.
+Hypothesis lam1_spec : lam_min_spec v_1_A lam1.
 
 
 (** Step 1: tr(A (GᵀG + hat v)) >= λmin(A) tr((GᵀG + hat v))
     (trace inequality tr(AB) >= lambda_min(A) tr(B), A = A, B = (GᵀG + hat v)) *)
-Theorem step1 : (tr (mmul A (madd (mmul (mT G) G) (hat v)))) >= (lam1 * (tr (madd (mmul (mT G) G) (hat v)))).
-Proof using A_11 A_22 A_33 A_12 A_13 A_23 G v lam1 lam1_spec.
-  assert (P1 : (mT A) = A).
+Theorem step1 : (tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) >= (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))).
+Proof using v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23 v_2_G v_3_v lam1 lam1_spec.
+  assert (P1 : (mT v_1_A) = v_1_A).
   { so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
-  assert (P2 : (sym (madd (mmul (mT G) G) (hat v))) = (mscale 1 (mmul (mT G) G))).
+  assert (P2 : (sym (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v))) = (mscale 1 (mmul (mT v_2_G) v_2_G))).
   { so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
-  assert (T1 : 0 <= ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + (- (lam1 * (tr (madd (mmul (mT G) G) (hat v))))))) by exact (trace_lower_bound A (madd (mmul (mT G) G) (hat v)) G 1 lam1 P1 P2 ltac:(lra) lam1_spec).
-  assert (E : ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + (- (lam1 * (tr (madd (mmul (mT G) G) (hat v)))))) = ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + (- (lam1 * (tr (madd (mmul (mT G) G) (hat v))))))).
+  assert (T1 : 0 <= ((tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) + (- (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v))))))) by exact (trace_lower_bound v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)) v_2_G 1 lam1 P1 P2 ltac:(lra) lam1_spec).
+  assert (E : ((tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) + (- (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))))) = ((tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) + (- (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v))))))).
   { so3_poly. }
   exact (ge_by_slack _ _ _ E T1).
 Qed.

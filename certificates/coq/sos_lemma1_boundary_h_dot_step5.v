@@ -11,33 +11,33 @@ Open Scope R_scope.
 Section Sos_lemma1_boundary_h_dot_5.
 
 (** k_s: a scalar *)
-Variable k_s : R.
-Hypothesis k_s_pos : 0 < k_s.
+Variable v_1_k_s : R.
+Hypothesis v_1_k_s_pos : 0 < v_1_k_s.
 
 (** R_rl: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_rl : quat.
-Hypothesis q_R_rl_nonzero : qn q_R_rl <> 0.
-Local Notation R_rl := (rot q_R_rl).
+Variable q_v_2_R_rl : quat.
+Hypothesis q_v_2_R_rl_nonzero : qn q_v_2_R_rl <> 0.
+Local Notation v_2_R_rl := (rot q_v_2_R_rl).
 
 (** ξ: a unit vector in the stereographic chart (every unit vector but the pole (0, 0, 1)) *)
-Variable xi : V3.
-Variables a_xi b_xi : R.
-Hypothesis xi_chart : xi = stereo a_xi b_xi.
+Variable v_3_xi : V3.
+Variables a_v_3_xi b_v_3_xi : R.
+Hypothesis v_3_xi_chart : v_3_xi = stereo a_v_3_xi b_v_3_xi.
 
-(** θ: an angle with tan(θ/2) = t_theta (every angle but pi) *)
-Variable theta : R.
-Variable t_theta : R.
-Hypothesis theta_cos : cos theta = (1 - t_theta * t_theta) / (1 + t_theta * t_theta).
-Hypothesis theta_sin : sin theta = 2 * t_theta / (1 + t_theta * t_theta).
+(** θ: an angle with tan(θ/2) = t_v_4_theta (every angle but pi) *)
+Variable v_4_theta : R.
+Variable t_v_4_theta : R.
+Hypothesis v_4_theta_cos : cos v_4_theta = (1 - t_v_4_theta * t_v_4_theta) / (1 + t_v_4_theta * t_v_4_theta).
+Hypothesis v_4_theta_sin : sin v_4_theta = 2 * t_v_4_theta / (1 + t_v_4_theta * t_v_4_theta).
 
 (** lambda_min(sym(R_rl)): a lower bound suffices *)
 Variable lam1 : R.
-Hypothesis lam1_spec : lam_min_spec (sym R_rl) lam1.
+Hypothesis lam1_spec : lam_min_spec (sym v_2_R_rl) lam1.
 
 (** assumption: λmin(sym(R_rl)) > 0 (Assumption 1, item 2) *)
 Hypothesis assumption1 : 0 < lam1.
 
-Let env : list R := [k_s; (qw q_R_rl); (qx q_R_rl); (qy q_R_rl); (qz q_R_rl); a_xi; b_xi; t_theta; lam1].
+Let env : list R := [v_1_k_s; (qw q_v_2_R_rl); (qx q_v_2_R_rl); (qy q_v_2_R_rl); (qz q_v_2_R_rl); a_v_3_xi; b_v_3_xi; t_v_4_theta; lam1].
 
 Definition target : poly := [([1;0;0;0;0;0;0;0;1]%nat, 2%Q)].
 
@@ -50,8 +50,8 @@ Lemma H1_psd : mult_psd env H1.
 Proof.
   unfold H1. apply mult_psd_scalar.
   rewrite zeval_peval by (vm_compute; reflexivity).
-  match goal with |- 0 <= ?g => replace g with (k_s * lam1) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; rewrite ?xi_chart; unfold stereo; rewrite ?theta_cos, ?theta_sin; so3_unfold; field; sos_nonzero) end.
-  exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rlt_le _ _ assumption1)).
+  match goal with |- 0 <= ?g => replace g with (v_1_k_s * lam1) by (cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]; rewrite ?v_3_xi_chart; unfold stereo; rewrite ?v_4_theta_cos, ?v_4_theta_sin; so3_unfold; field; sos_nonzero) end.
+  exact (Rmult_le_pos _ _ (Rlt_le _ _ v_1_k_s_pos) (Rlt_le _ _ assumption1)).
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
@@ -63,16 +63,16 @@ Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
 (** The link: the slack of the statement times 1 is the target polynomial at the parameters (times the factors divided out of it), by field. *)
-Lemma link : exists D F, 0 < D /\ 0 <= F /\ (((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) + - 0) * D = F * peval env target.
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ (((v_1_k_s * lam1) * (tr (madd I3 (mneg (outer v_3_xi v_3_xi))))) + - 0) * D = F * peval env target.
 Proof.
   exists 1, 1. split; [exact Rlt_0_1|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
-  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; rewrite ?theta_cos, ?theta_sin; so3_unfold. field; sos_nonzero.
+  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?v_3_xi_chart; unfold stereo; rewrite ?v_4_theta_cos, ?v_4_theta_sin; so3_unfold. field; sos_nonzero.
 Qed.
 
-Theorem step5_by_sos : ((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) >= 0.
+Theorem step5_by_sos : ((v_1_k_s * lam1) * (tr (madd I3 (mneg (outer v_3_xi v_3_xi))))) >= 0.
 Proof.
-  apply (ge_by_slack _ _ (((k_s * lam1) * (tr (madd I3 (mneg (outer xi xi))))) + - 0)); [reflexivity|].
+  apply (ge_by_slack _ _ (((v_1_k_s * lam1) * (tr (madd I3 (mneg (outer v_3_xi v_3_xi))))) + - 0)); [reflexivity|].
   destruct link as (D & F & HD & HF & E).
   exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.

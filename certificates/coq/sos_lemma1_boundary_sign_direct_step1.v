@@ -11,23 +11,23 @@ Open Scope R_scope.
 Section Sos_lemma1_boundary_sign_direct_1.
 
 (** k_s: a scalar *)
-Variable k_s : R.
-Hypothesis k_s_pos : 0 < k_s.
+Variable v_1_k_s : R.
+Hypothesis v_1_k_s_pos : 0 < v_1_k_s.
 
 (** R_rl: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_rl : quat.
-Hypothesis q_R_rl_nonzero : qn q_R_rl <> 0.
-Local Notation R_rl := (rot q_R_rl).
+Variable q_v_2_R_rl : quat.
+Hypothesis q_v_2_R_rl_nonzero : qn q_v_2_R_rl <> 0.
+Local Notation v_2_R_rl := (rot q_v_2_R_rl).
 
 (** ξ: a unit vector in the stereographic chart (every unit vector but the pole (0, 0, 1)) *)
-Variable xi : V3.
-Variables a_xi b_xi : R.
-Hypothesis xi_chart : xi = stereo a_xi b_xi.
+Variable v_3_xi : V3.
+Variables a_v_3_xi b_v_3_xi : R.
+Hypothesis v_3_xi_chart : v_3_xi = stereo a_v_3_xi b_v_3_xi.
 
 (** assumption: sym(R_rl) ≻ 0 (Assumption 1, item 2) *)
-Hypothesis assumption1 : pd R_rl.
+Hypothesis assumption1 : pd v_2_R_rl.
 
-Let env : list R := [k_s; (qw q_R_rl); (qx q_R_rl); (qy q_R_rl); (qz q_R_rl); a_xi; b_xi].
+Let env : list R := [v_1_k_s; (qw q_v_2_R_rl); (qx q_v_2_R_rl); (qy q_v_2_R_rl); (qz q_v_2_R_rl); a_v_3_xi; b_v_3_xi].
 
 Definition target : poly := [([1;0;0;0;2;0;0]%nat, (-2)%Q); ([1;0;0;0;2;0;2]%nat, 4%Q); ([1;0;0;0;2;0;4]%nat, (-2)%Q); ([1;0;0;0;2;2;0]%nat, 4%Q); ([1;0;0;0;2;2;2]%nat, (-4)%Q); ([1;0;0;0;2;4;0]%nat, (-2)%Q); ([1;0;0;1;1;0;1]%nat, 8%Q); ([1;0;0;1;1;0;3]%nat, (-8)%Q); ([1;0;0;1;1;2;1]%nat, (-8)%Q); ([1;0;0;2;0;0;2]%nat, (-8)%Q); ([1;0;1;0;1;1;0]%nat, 8%Q); ([1;0;1;0;1;1;2]%nat, (-8)%Q); ([1;0;1;0;1;3;0]%nat, (-8)%Q); ([1;0;1;1;0;1;1]%nat, (-16)%Q); ([1;0;2;0;0;2;0]%nat, (-8)%Q); ([1;2;0;0;0;0;0]%nat, 2%Q); ([1;2;0;0;0;0;2]%nat, 4%Q); ([1;2;0;0;0;0;4]%nat, 2%Q); ([1;2;0;0;0;2;0]%nat, 4%Q); ([1;2;0;0;0;2;2]%nat, 4%Q); ([1;2;0;0;0;4;0]%nat, 2%Q)].
 
@@ -42,11 +42,11 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  apply (mult_psd_3 env H1 (k_s * (qn q_R_rl) ^ 1) (fun x1 x2 x3 => qform (sym R_rl) (mkV x1 x2 x3))).
+  apply (mult_psd_3 env H1 (v_1_k_s * (qn q_v_2_R_rl) ^ 1) (fun x1 x2 x3 => qform (sym v_2_R_rl) (mkV x1 x2 x3))).
   - reflexivity.
-  - exact (Rmult_le_pos _ _ (Rlt_le _ _ k_s_pos) (Rlt_le _ _ (pow_lt _ 1 (qn_pos q_R_rl q_R_rl_nonzero)))).
+  - exact (Rmult_le_pos _ _ (Rlt_le _ _ v_1_k_s_pos) (Rlt_le _ _ (pow_lt _ 1 (qn_pos q_v_2_R_rl q_v_2_R_rl_nonzero)))).
   - intros x1 x2 x3. exact ((pd_psd _ assumption1) (mkV x1 x2 x3)).
-  - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
+  - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?v_3_xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
@@ -57,17 +57,17 @@ Proof. vm_compute. reflexivity. Qed.
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link: the slack of the statement times ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1) is the target polynomial at the parameters (times the factors divided out of it), by field. *)
-Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0) * D = F * peval env target.
+(** The link: the slack of the statement times ((1 + a_v_3_xi * a_v_3_xi + b_v_3_xi * b_v_3_xi) ^ 2 * (qn q_v_2_R_rl) ^ 1) is the target polynomial at the parameters (times the factors divided out of it), by field. *)
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((v_1_k_s * (tr (mmul (sym v_2_R_rl) (madd I3 (mneg (outer v_3_xi v_3_xi)))))) + - 0) * D = F * peval env target.
 Proof.
-  exists ((1 + a_xi * a_xi + b_xi * b_xi) ^ 2 * (qn q_R_rl) ^ 1), 1. split; [exact (Rmult_lt_0_compat _ _ (pow_lt _ 2 (chart_den_pos a_xi b_xi)) (pow_lt _ 1 (qn_pos q_R_rl q_R_rl_nonzero)))|]. split; [exact Rle_0_1|].
+  exists ((1 + a_v_3_xi * a_v_3_xi + b_v_3_xi * b_v_3_xi) ^ 2 * (qn q_v_2_R_rl) ^ 1), 1. split; [exact (Rmult_lt_0_compat _ _ (pow_lt _ 2 (chart_den_pos a_v_3_xi b_v_3_xi)) (pow_lt _ 1 (qn_pos q_v_2_R_rl q_v_2_R_rl_nonzero)))|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
-  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
+  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. rewrite ?v_3_xi_chart; unfold stereo; so3_unfold. field; sos_nonzero.
 Qed.
 
-Theorem step1_by_sos : (k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) >= 0.
+Theorem step1_by_sos : (v_1_k_s * (tr (mmul (sym v_2_R_rl) (madd I3 (mneg (outer v_3_xi v_3_xi)))))) >= 0.
 Proof.
-  apply (ge_by_slack _ _ ((k_s * (tr (mmul (sym R_rl) (madd I3 (mneg (outer xi xi)))))) + - 0)); [reflexivity|].
+  apply (ge_by_slack _ _ ((v_1_k_s * (tr (mmul (sym v_2_R_rl) (madd I3 (mneg (outer v_3_xi v_3_xi)))))) + - 0)); [reflexivity|].
   destruct link as (D & F & HD & HF & E).
   exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.

@@ -10,20 +10,20 @@ Open Scope R_scope.
 Section Sos_lemma1_trace_inequality_sym_psd_1.
 
 (** A: a symmetric matrix, by its six entries *)
-Variables A_11 A_22 A_33 A_12 A_13 A_23 : R.
-Local Notation A := (symm A_11 A_22 A_33 A_12 A_13 A_23).
+Variables v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23 : R.
+Local Notation v_1_A := (symm v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23).
 
 (** G: a matrix *)
-Variable G : M3.
+Variable v_2_G : M3.
 
 (** v: a vector *)
-Variable v : V3.
+Variable v_3_v : V3.
 
 (** lambda_min(A): a lower bound suffices *)
 Variable lam1 : R.
-Hypothesis lam1_spec : lam_min_spec A lam1.
+Hypothesis lam1_spec : lam_min_spec v_1_A lam1.
 
-Let env : list R := [A_11; A_22; A_33; A_12; A_13; A_23; (m11 G); (m12 G); (m13 G); (m21 G); (m22 G); (m23 G); (m31 G); (m32 G); (m33 G); (v1 v); (v2 v); (v3 v); lam1].
+Let env : list R := [v_1_A_11; v_1_A_22; v_1_A_33; v_1_A_12; v_1_A_13; v_1_A_23; (m11 v_2_G); (m12 v_2_G); (m13 v_2_G); (m21 v_2_G); (m22 v_2_G); (m23 v_2_G); (m31 v_2_G); (m32 v_2_G); (m33 v_2_G); (v1 v_3_v); (v2 v_3_v); (v3 v_3_v); lam1].
 
 Definition target : poly := [([0;0;0;0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0;0;0;1]%nat, (-1)%Q); ([0;0;0;0;0;1;0;0;0;0;0;0;0;1;1;0;0;0;0]%nat, 2%Q); ([0;0;0;0;0;1;0;0;0;0;1;1;0;0;0;0;0;0;0]%nat, 2%Q); ([0;0;0;0;0;1;0;1;1;0;0;0;0;0;0;0;0;0;0]%nat, 2%Q); ([0;0;0;0;1;0;0;0;0;0;0;0;1;0;1;0;0;0;0]%nat, 2%Q); ([0;0;0;0;1;0;0;0;0;1;0;1;0;0;0;0;0;0;0]%nat, 2%Q); ([0;0;0;0;1;0;1;0;1;0;0;0;0;0;0;0;0;0;0]%nat, 2%Q); ([0;0;0;1;0;0;0;0;0;0;0;0;1;1;0;0;0;0;0]%nat, 2%Q); ([0;0;0;1;0;0;0;0;0;1;1;0;0;0;0;0;0;0;0]%nat, 2%Q); ([0;0;0;1;0;0;1;1;0;0;0;0;0;0;0;0;0;0;0]%nat, 2%Q); ([0;0;1;0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;0]%nat, 1%Q); ([0;0;1;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;0]%nat, 1%Q); ([0;0;1;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0;0]%nat, 1%Q); ([0;1;0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;0;0]%nat, 1%Q); ([0;1;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;0;0]%nat, 1%Q); ([0;1;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0;0;0]%nat, 1%Q); ([1;0;0;0;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0]%nat, 1%Q); ([1;0;0;0;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0]%nat, 1%Q); ([1;0;0;0;0;0;2;0;0;0;0;0;0;0;0;0;0;0;0]%nat, 1%Q)].
 
@@ -36,7 +36,7 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  apply (mult_psd_3 env H1 (1 * 1) (fun x1 x2 x3 => qform (msub (sym A) (mscale lam1 I3)) (mkV x1 x2 x3))).
+  apply (mult_psd_3 env H1 (1 * 1) (fun x1 x2 x3 => qform (msub (sym v_1_A) (mscale lam1 I3)) (mkV x1 x2 x3))).
   - reflexivity.
   - exact (Rmult_le_pos _ _ Rle_0_1 Rle_0_1).
   - intros x1 x2 x3. exact (lam1_spec (mkV x1 x2 x3)).
@@ -52,16 +52,16 @@ Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
 (** The link: the slack of the statement times 1 is the target polynomial at the parameters (times the factors divided out of it), by field. *)
-Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + - (lam1 * (tr (madd (mmul (mT G) G) (hat v))))) * D = F * peval env target.
+Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) + - (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v))))) * D = F * peval env target.
 Proof.
   exists 1, 1. split; [exact Rlt_0_1|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
   unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
 Qed.
 
-Theorem step1_by_sos : (tr (mmul A (madd (mmul (mT G) G) (hat v)))) >= (lam1 * (tr (madd (mmul (mT G) G) (hat v)))).
+Theorem step1_by_sos : (tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) >= (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))).
 Proof.
-  apply (ge_by_slack _ _ ((tr (mmul A (madd (mmul (mT G) G) (hat v)))) + - (lam1 * (tr (madd (mmul (mT G) G) (hat v)))))); [reflexivity|].
+  apply (ge_by_slack _ _ ((tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) + - (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))))); [reflexivity|].
   destruct link as (D & F & HD & HF & E).
   exact (slack_nonneg _ D F _ E HD HF (sos_nonneg env target blocks cert_checked grounds)).
 Qed.

@@ -1,6 +1,9 @@
 (** Exported from the derivation 'thm1.S_r-dot' (verify.proof).
-    Statement: Ṡ_r ≤ -(k_s/2) λmin(R̄_r + R̄_rᵀ) φ(R̄ᵀR_l) - k_s φ(R̄_r) + k_s φ(R_rl)
-    Paper: Theorem 1 proof, Ṡ_r chain *)
+    Context only, not theorems of this file:
+    the derivation's summary: Ṡ_r ≤ -(k_s/2) λmin(R̄_r + R̄_rᵀ) φ(R̄ᵀR_l) - k_s φ(R̄_r) + k_s φ(R_rl)
+    its place in the paper: Theorem 1 proof, Ṡ_r chain
+    Each theorem below is one step, exactly as the comment above it writes it,
+    under the hypotheses its Proof using line names. *)
 
 From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -9,115 +12,115 @@ Open Scope R_scope.
 Section thm1_S_r_dot.
 
 (** R_r: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_r : quat.
-Hypothesis q_R_r_nonzero : qn q_R_r <> 0.
-Local Notation R_r := (rot q_R_r).
+Variable q_v_1_R_r : quat.
+Hypothesis q_v_1_R_r_nonzero : qn q_v_1_R_r <> 0.
+Local Notation v_1_R_r := (rot q_v_1_R_r).
 
 (** R̄: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_Rbar : quat.
-Hypothesis q_Rbar_nonzero : qn q_Rbar <> 0.
-Local Notation Rbar := (rot q_Rbar).
+Variable q_v_2_Rbar : quat.
+Hypothesis q_v_2_Rbar_nonzero : qn q_v_2_Rbar <> 0.
+Local Notation v_2_Rbar := (rot q_v_2_Rbar).
 
 (** R_l: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_l : quat.
-Hypothesis q_R_l_nonzero : qn q_R_l <> 0.
-Local Notation R_l := (rot q_R_l).
+Variable q_v_3_R_l : quat.
+Hypothesis q_v_3_R_l_nonzero : qn q_v_3_R_l <> 0.
+Local Notation v_3_R_l := (rot q_v_3_R_l).
 
 (** k_s: a scalar *)
-Variable k_s : R.
-Hypothesis k_s_pos : 0 < k_s.
+Variable v_4_k_s : R.
+Hypothesis v_4_k_s_pos : 0 < v_4_k_s.
 
 (** lambda_min((R̄_r + R̄_rᵀ)) *)
 Variable lam1 : R.
-Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) lam1.
+Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) lam1.
 
 
 (** Step 1: Ṡ_r = (-1/2) tr((d/dt R̄_r))
     (algebra (φ(R) = tr(I - R)/2)) *)
-Theorem step1 : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))))) = ((-1/2) * (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l)))))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step1 : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) = ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 2: (-1/2) tr((d/dt R̄_r)) = (-1/2) k_s tr(R̄_r sk(R̄_rᵀ R_rl))
     (algebra (eq. (13))) *)
-Theorem step2 : ((-1/2) * (tr (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l)))))) = (((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)))))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step2 : ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l)))))) = (((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 3: (-1/2) k_s tr(R̄_r sk(R̄_rᵀ R_rl)) = (-1/4) k_s tr(R̄_r (R̄_rᵀ R_rl - R_rlᵀ R̄_r))
     (algebra (sk definition)) *)
-Theorem step3 : (((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (sk (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)))))) = (((-1/4) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (madd (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)) (mneg (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar))))))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step3 : (((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))) = (((-1/4) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (madd (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)) (mneg (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar))))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 4: (-1/4) k_s tr(R̄_r (R̄_rᵀ R_rl - R_rlᵀ R̄_r)) = (-1/4) k_s tr(R_rl - R̄_r R_rlᵀ R̄_r)
     (algebra (R̄_r R̄_rᵀ = I)) *)
-Theorem step4 : (((-1/4) * k_s) * (tr (mmul (mmul (mT R_r) Rbar) (madd (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l)) (mneg (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar))))))) = (((-1/4) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) R_l))) (mmul (mT R_r) Rbar)))))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step4 : (((-1/4) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (madd (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)) (mneg (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar))))))) = (((-1/4) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_3_R_l))) (mmul (mT v_1_R_r) v_2_Rbar)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 5: (-1/4) k_s tr(R_rl - R̄_r R_rlᵀ R̄_r) = (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄_rᵀ R_rl)) + (1/2) k_s tr(R̄_r) - (1/2) k_s tr(R_rl)
     (algebra (add and subtract)) *)
-Theorem step5 : (((-1/4) * k_s) * (tr (madd (mmul (mT R_r) R_l) (mneg (mmul (mmul (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) R_l))) (mmul (mT R_r) Rbar)))))) = (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l))))))) + (((1/2) * k_s) * (tr (mmul (mT R_r) Rbar)))) + (- (((1/2) * k_s) * (tr (mmul (mT R_r) R_l))))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step5 : (((-1/4) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_3_R_l))) (mmul (mT v_1_R_r) v_2_Rbar)))))) = (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l))))))) + (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_3_R_l))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   so3_poly.
 Qed.
 
 (** Step 6: (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄_rᵀ R_rl)) + (1/2) k_s tr(R̄_r) - (1/2) k_s tr(R_rl) = (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl)
     (algebra (R̄_rᵀR_rl = R̄ᵀR_l)) *)
-Theorem step6 : (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT R_r) Rbar)) (mmul (mT R_r) R_l))))))) + (((1/2) * k_s) * (tr (mmul (mT R_r) Rbar)))) + (- (((1/2) * k_s) * (tr (mmul (mT R_r) R_l))))) = (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step6 : (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l))))))) + (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_3_R_l))))) = (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   so3_poly.
 Qed.
 
 (** Step 7: (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl) <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl)
     (trace inequality, sym(I - R̄ᵀR_l) = ½(I - R̄ᵀR_l)ᵀ(I - R̄ᵀR_l) ⪰ 0: (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R̄_r + R̄_rᵀ), B = I - R̄ᵀ R_l)) *)
-Theorem step7 : (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))) <= ((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
-  assert (T1 : 0 <= k_s) by exact (Rlt_le _ _ k_s_pos).
-  assert (T2 : 0 <= ((1/4) * k_s)) by exact (Rmult_le_pos (1/4) k_s ltac:(lra) T1).
-  assert (P1 : (mT (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar)))) = (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar)))).
-  { generalize (rot q_R_r) as G_R_r; intro G_R_r. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
-  assert (P2 : (sym (madd I3 (mneg (mmul (mT Rbar) R_l)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT Rbar) R_l)))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))).
-  { so3_norm. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. generalize (rot q_R_l) as G_R_l; intro G_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
-  assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT Rbar) R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))) (madd I3 (mneg (mmul (mT Rbar) R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
-  assert (T4 : 0 <= (((1/4) * k_s) * ((tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT Rbar) R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
-  assert (E : (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))) + (- (((((-1/4) * k_s) * (tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l)))))) + (- (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) Rbar))))))) + (((1/2) * k_s) * (tr (madd I3 (mneg (mmul (mT R_r) R_l)))))))) = (((1/4) * k_s) * ((tr (mmul (madd (mmul (mT R_r) Rbar) (mT (mmul (mT R_r) Rbar))) (madd I3 (mneg (mmul (mT Rbar) R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT Rbar) R_l))))))))).
-  { so3_norm. generalize (rot q_R_r) as G_R_r; intro G_R_r. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. generalize (rot q_R_l) as G_R_l; intro G_R_l. so3_poly. }
+Theorem step7 : (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))) <= ((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
+  assert (T1 : 0 <= v_4_k_s) by exact (Rlt_le _ _ v_4_k_s_pos).
+  assert (T2 : 0 <= ((1/4) * v_4_k_s)) by exact (Rmult_le_pos (1/4) v_4_k_s ltac:(lra) T1).
+  assert (P1 : (mT (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))) = (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))).
+  { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  assert (P2 : (sym (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))).
+  { so3_norm. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
+  assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
+  assert (E : (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))) + (- (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))))) = (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))).
+  { so3_norm. generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_poly. }
   exact (le_by_slack _ _ _ E T4).
 Qed.
 
 (** The derivation's claim: Ṡ_r <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl) *)
-Theorem claim : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul (mscale k_s Rbar) (sk (mmul (mT Rbar) R_l))))))) <= ((((((-1/2) * k_s) * lam1) * (phi (mmul (mT Rbar) R_l))) + (- (k_s * (phi (mmul (mT R_r) Rbar))))) + (k_s * (phi (mmul (mT R_r) R_l)))).
-Proof using q_R_r q_Rbar q_R_l k_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem claim : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) <= ((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   exact (eq_le_trans _ _ _ (eq_trans (eq_trans (eq_trans (eq_trans (eq_trans step1 step2) step3) step4) step5) step6) step7).
 Qed.
 

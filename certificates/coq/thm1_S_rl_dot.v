@@ -1,6 +1,9 @@
 (** Exported from the derivation 'thm1.S_rl-dot' (verify.proof).
-    Statement: Ṡ_rl ≤ -(k_s/2) λmin(R_rl + R_rlᵀ) φ(R_lᵀR̄) + k_s φ(R̄_r) - k_s φ(R_rl) + <sk(R_rl)^∨, ω_h^b>
-    Paper: Theorem 1 proof, Ṡ_rl chain *)
+    Context only, not theorems of this file:
+    the derivation's summary: Ṡ_rl ≤ -(k_s/2) λmin(R_rl + R_rlᵀ) φ(R_lᵀR̄) + k_s φ(R̄_r) - k_s φ(R_rl) + <sk(R_rl)^∨, ω_h^b>
+    its place in the paper: Theorem 1 proof, Ṡ_rl chain
+    Each theorem below is one step, exactly as the comment above it writes it,
+    under the hypotheses its Proof using line names. *)
 
 From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -9,85 +12,85 @@ Open Scope R_scope.
 Section thm1_S_rl_dot.
 
 (** R_r: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_r : quat.
-Hypothesis q_R_r_nonzero : qn q_R_r <> 0.
-Local Notation R_r := (rot q_R_r).
+Variable q_v_1_R_r : quat.
+Hypothesis q_v_1_R_r_nonzero : qn q_v_1_R_r <> 0.
+Local Notation v_1_R_r := (rot q_v_1_R_r).
 
 (** R̄: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_Rbar : quat.
-Hypothesis q_Rbar_nonzero : qn q_Rbar <> 0.
-Local Notation Rbar := (rot q_Rbar).
+Variable q_v_2_Rbar : quat.
+Hypothesis q_v_2_Rbar_nonzero : qn q_v_2_Rbar <> 0.
+Local Notation v_2_Rbar := (rot q_v_2_Rbar).
 
 (** R_l: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_l : quat.
-Hypothesis q_R_l_nonzero : qn q_R_l <> 0.
-Local Notation R_l := (rot q_R_l).
+Variable q_v_3_R_l : quat.
+Hypothesis q_v_3_R_l_nonzero : qn q_v_3_R_l <> 0.
+Local Notation v_3_R_l := (rot q_v_3_R_l).
 
 (** k_s: a scalar *)
-Variable k_s : R.
-Hypothesis k_s_pos : 0 < k_s.
+Variable v_4_k_s : R.
+Hypothesis v_4_k_s_pos : 0 < v_4_k_s.
 
 (** ω_h^s: a vector *)
-Variable omega_h_s : V3.
+Variable v_5_omega_h_s : V3.
 
 (** lambda_min((R_rl + R_rlᵀ)) *)
 Variable lam1 : R.
-Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l))) lam1.
+Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) lam1.
 
 
 (** Step 1: Ṡ_rl = (-1/2) tr((d/dt R_rl))
     (algebra (φ(R) = tr(I - R)/2)) *)
-Theorem step1 : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) Rbar)))) (mvmul (mT R_l) omega_h_s)))))))) = ((-1/2) * (tr (mmul (mT R_r) (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) Rbar)))) (mvmul (mT R_l) omega_h_s))))))).
-Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step1 : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s)))))))) = ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm_hat.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   so3_poly.
 Qed.
 
 (** Step 2: (-1/2) tr((d/dt R_rl)) = (-1/2) tr(R_rl (k_s sk(R_rlᵀ R̄_r) + hat(ω_h^b)))
     (algebra (eq. (12b), R_lᵀR̄ = R_rlᵀR̄_r)) *)
-Theorem step2 : ((-1/2) * (tr (mmul (mT R_r) (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) Rbar)))) (mvmul (mT R_l) omega_h_s))))))) = ((-1/2) * (tr (mmul (mmul (mT R_r) R_l) (madd (mscale k_s (sk (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)))) (hat (mvmul (mT R_l) omega_h_s)))))).
-Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step2 : ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))) = ((-1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (madd (mscale v_4_k_s (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s)))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm_hat.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   so3_poly.
 Qed.
 
 (** Step 3: (-1/2) tr(R_rl (k_s sk(R_rlᵀ R̄_r) + hat(ω_h^b))) = (-1/2) k_s tr(R_rl sk(R_rlᵀ R̄_r)) - (1/2) tr(R_rl hat(ω_h^b))
     (algebra (linearity)) *)
-Theorem step3 : ((-1/2) * (tr (mmul (mmul (mT R_r) R_l) (madd (mscale k_s (sk (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)))) (hat (mvmul (mT R_l) omega_h_s)))))) = ((((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) R_l) (sk (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT R_r) R_l) (hat (mvmul (mT R_l) omega_h_s))))))).
-Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem step3 : ((-1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (madd (mscale v_4_k_s (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s)))))) = ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   so3_norm_hat.
-  generalize (rot q_R_r) as G_R_r; intro G_R_r.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
-  generalize (rot q_Rbar) as G_Rbar; intro G_Rbar.
+  generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
+  generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
+  generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   so3_poly.
 Qed.
 
 (** Step 4: (-1/2) k_s tr(R_rl sk(R_rlᵀ R̄_r)) - (1/2) tr(R_rl hat(ω_h^b)) <= (-1/2) k_s λmin((R_rl + R_rlᵀ)) φ(R_lᵀR̄) + k_s φ(R̄_r) - k_s φ(R_rl) + <vee(sk(R_rl)), ω_h^b>
     (as for Ṡ_r, and tr(R hat ω) = -2<sk(R)^∨, ω>: (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R_rl + R_rlᵀ), B = I - R_lᵀR̄)) *)
-Theorem step4 : ((((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) R_l) (sk (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT R_r) R_l) (hat (mvmul (mT R_l) omega_h_s))))))) <= (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT R_l) Rbar))) + (k_s * (phi (mmul (mT R_r) Rbar)))) + (- (k_s * (phi (mmul (mT R_r) R_l))))) + (vdot (vee (sk (mmul (mT R_r) R_l))) (mvmul (mT R_l) omega_h_s))).
-Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
-  assert (T1 : 0 <= k_s) by exact (Rlt_le _ _ k_s_pos).
-  assert (T2 : 0 <= ((1/4) * k_s)) by exact (Rmult_le_pos (1/4) k_s ltac:(lra) T1).
-  assert (P1 : (mT (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l)))) = (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l)))).
-  { generalize (rot q_R_r) as G_R_r; intro G_R_r. generalize (rot q_R_l) as G_R_l; intro G_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
-  assert (P2 : (sym (madd I3 (mneg (mmul (mT R_l) Rbar)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT R_l) Rbar)))) (madd I3 (mneg (mmul (mT R_l) Rbar)))))).
-  { so3_norm. generalize (rot q_R_l) as G_R_l; intro G_R_l. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
-  assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l))) (madd I3 (mneg (mmul (mT R_l) Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT R_l) Rbar)))))))) by exact (trace_lower_bound (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l))) (madd I3 (mneg (mmul (mT R_l) Rbar))) (madd I3 (mneg (mmul (mT R_l) Rbar))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
-  assert (T4 : 0 <= (((1/4) * k_s) * ((tr (mmul (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l))) (madd I3 (mneg (mmul (mT R_l) Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT R_l) Rbar))))))))) by exact (Rmult_le_pos _ _ T2 T3).
-  assert (E : ((((((((-1/2) * k_s) * lam1) * (phi (mmul (mT R_l) Rbar))) + (k_s * (phi (mmul (mT R_r) Rbar)))) + (- (k_s * (phi (mmul (mT R_r) R_l))))) + (vdot (vee (sk (mmul (mT R_r) R_l))) (mvmul (mT R_l) omega_h_s))) + (- ((((-1/2) * k_s) * (tr (mmul (mmul (mT R_r) R_l) (sk (mmul (mT (mmul (mT R_r) R_l)) (mmul (mT R_r) Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT R_r) R_l) (hat (mvmul (mT R_l) omega_h_s))))))))) = (((1/4) * k_s) * ((tr (mmul (madd (mmul (mT R_r) R_l) (mT (mmul (mT R_r) R_l))) (madd I3 (mneg (mmul (mT R_l) Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT R_l) Rbar))))))))).
-  { so3_norm. generalize (rot q_R_r) as G_R_r; intro G_R_r. generalize (rot q_R_l) as G_R_l; intro G_R_l. generalize (rot q_Rbar) as G_Rbar; intro G_Rbar. so3_poly. }
+Theorem step4 : ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))) <= (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_1_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
+  assert (T1 : 0 <= v_4_k_s) by exact (Rlt_le _ _ v_4_k_s_pos).
+  assert (T2 : 0 <= ((1/4) * v_4_k_s)) by exact (Rmult_le_pos (1/4) v_4_k_s ltac:(lra) T1).
+  assert (P1 : (mT (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))) = (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))).
+  { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  assert (P2 : (sym (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))).
+  { so3_norm. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
+  assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))) by exact (Rmult_le_pos _ _ T2 T3).
+  assert (E : ((((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_1_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))) + (- ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))))) = (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))).
+  { so3_norm. generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_poly. }
   exact (le_by_slack _ _ _ E T4).
 Qed.
 
 (** The derivation's claim: Ṡ_rl <= (-1/2) k_s λmin((R_rl + R_rlᵀ)) φ(R_lᵀR̄) + k_s φ(R̄_r) - k_s φ(R_rl) + <vee(sk(R_rl)), ω_h^b> *)
-Theorem claim : ((1/2) * (tr (mneg (mmul (mT R_r) (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) Rbar)))) (mvmul (mT R_l) omega_h_s)))))))) <= (((((((-1/2) * k_s) * lam1) * (phi (mmul (mT R_l) Rbar))) + (k_s * (phi (mmul (mT R_r) Rbar)))) + (- (k_s * (phi (mmul (mT R_r) R_l))))) + (vdot (vee (sk (mmul (mT R_r) R_l))) (mvmul (mT R_l) omega_h_s))).
-Proof using q_R_r q_Rbar q_R_l k_s omega_h_s lam1 q_R_r_nonzero q_Rbar_nonzero q_R_l_nonzero k_s_pos lam1_spec.
+Theorem claim : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s)))))))) <= (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_1_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))).
+Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   exact (eq_le_trans _ _ _ (eq_trans (eq_trans step1 step2) step3) step4).
 Qed.
 

@@ -1,6 +1,9 @@
 (** Exported from the derivation 'thm1.lasalle-derivative' (verify.proof).
-    Statement: on R_l = R̄: d/dt(R_lᵀR̄) = -R_lᵀ hat(ω_h^s) R_l = -hat(R_lᵀ ω_h^s)
-    Paper: Theorem 1 proof, LaSalle step *)
+    Context only, not theorems of this file:
+    the derivation's summary: on R_l = R̄: d/dt(R_lᵀR̄) = -R_lᵀ hat(ω_h^s) R_l = -hat(R_lᵀ ω_h^s)
+    its place in the paper: Theorem 1 proof, LaSalle step
+    Each theorem below is one step, exactly as the comment above it writes it,
+    under the hypotheses its Proof using line names. *)
 
 From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -9,24 +12,24 @@ Open Scope R_scope.
 Section thm1_lasalle_derivative.
 
 (** R_l: a rotation, rot q with |q|^2 <> 0 *)
-Variable q_R_l : quat.
-Hypothesis q_R_l_nonzero : qn q_R_l <> 0.
-Local Notation R_l := (rot q_R_l).
+Variable q_v_1_R_l : quat.
+Hypothesis q_v_1_R_l_nonzero : qn q_v_1_R_l <> 0.
+Local Notation v_1_R_l := (rot q_v_1_R_l).
 
 (** k_s: a scalar *)
-Variable k_s : R.
-Hypothesis k_s_pos : 0 < k_s.
+Variable v_2_k_s : R.
+Hypothesis v_2_k_s_pos : 0 < v_2_k_s.
 
 (** ω_h^s: a vector *)
-Variable omega_h_s : V3.
+Variable v_3_omega_h_s : V3.
 
 
 (** Step 1: d/dt(R_lᵀR̄) at R̄ = R_l = -R_lᵀ hat(ω_h^s) R_l
     (algebra (sk(I) = 0)) *)
-Theorem step1 : (madd (mmul (mT (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) R_l)))) (mvmul (mT R_l) omega_h_s))))) R_l) (mmul (mT R_l) (mmul (mscale k_s R_l) (sk (mmul (mT R_l) R_l))))) = (mneg (mmul (mmul (mT R_l) (hat omega_h_s)) R_l)).
-Proof using q_R_l k_s omega_h_s q_R_l_nonzero k_s_pos.
+Theorem step1 : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) v_1_R_l)))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) v_1_R_l) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s v_1_R_l) (sk (mmul (mT v_1_R_l) v_1_R_l))))) = (mneg (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l)).
+Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
   so3_norm_hat.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l.
   so3_split.
   - so3_poly.
   - so3_poly.
@@ -41,10 +44,10 @@ Qed.
 
 (** Step 2: -R_lᵀ hat(ω_h^s) R_l = -hat(R_lᵀ ω_h^s)
     (algebra (Rᵀ hat(ω) R = hat(Rᵀω))) *)
-Theorem step2 : (mneg (mmul (mmul (mT R_l) (hat omega_h_s)) R_l)) = (mneg (hat (mvmul (mT R_l) omega_h_s))).
-Proof using q_R_l k_s omega_h_s q_R_l_nonzero k_s_pos.
+Theorem step2 : (mneg (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l)) = (mneg (hat (mvmul (mT v_1_R_l) v_3_omega_h_s))).
+Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
   so3_norm_hat.
-  generalize (rot q_R_l) as G_R_l; intro G_R_l.
+  generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l.
   so3_split.
   - so3_poly.
   - so3_poly.
@@ -58,8 +61,8 @@ Proof using q_R_l k_s omega_h_s q_R_l_nonzero k_s_pos.
 Qed.
 
 (** The derivation's claim: d/dt(R_lᵀR̄) at R̄ = R_l = -hat(R_lᵀ ω_h^s) *)
-Theorem claim : (madd (mmul (mT (mmul R_l (hat (vadd (vscale k_s (vee (sk (mmul (mT R_l) R_l)))) (mvmul (mT R_l) omega_h_s))))) R_l) (mmul (mT R_l) (mmul (mscale k_s R_l) (sk (mmul (mT R_l) R_l))))) = (mneg (hat (mvmul (mT R_l) omega_h_s))).
-Proof using q_R_l k_s omega_h_s q_R_l_nonzero k_s_pos.
+Theorem claim : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) v_1_R_l)))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) v_1_R_l) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s v_1_R_l) (sk (mmul (mT v_1_R_l) v_1_R_l))))) = (mneg (hat (mvmul (mT v_1_R_l) v_3_omega_h_s))).
+Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
   exact (eq_trans step1 step2).
 Qed.
 
