@@ -250,8 +250,21 @@ def nagumo_gradient(context: CheckContext) -> Outcome:
     ),
 )
 def invariance(context: CheckContext) -> Outcome:
+    from verify.claims.coq_conclusions import lemma1_kernel_evidence
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
 
+    kernel = lemma1_kernel_evidence()
+    if kernel is None or not kernel.passed:
+        return cross_checked(Outcome(
+            Verdict.ASSUMPTION,
+            "The conclusion is proved in Coq along every solution (a last-exit argument "
+            "with item 2's strict boundary bound), but Coq "
+            + ("is not installed here" if kernel is None else "did not accept the proof")
+            + ", so it is not re-checked in this run. Premises: the solution exists and is "
+            "differentiable on [0, T] and stays on SO(3); item 2 holds along it.",
+            (argument("Uses lemma1.boundary; Coq: Conclusions.lemma1_invariance_on_interval "
+                      "(certificates/coq/)."), *(() if kernel is None else (kernel,))),
+        ), trajectory_evidence(context, "lemma1"))
     return cross_checked(Outcome(
         Verdict.REPAIRED,
         "The conclusion holds for every solution, proved in Coq without Nagumo's general "
@@ -266,7 +279,7 @@ def invariance(context: CheckContext) -> Outcome:
         "not needed.",
         (argument("Coq: Conclusions.lemma1_invariance_on_interval, "
                   "Conclusions.lemma1_invariance_on_half_line (certificates/coq/, "
-                  "prelude Lemma1Inv.v); uses lemma1.h-dot and lemma1.boundary."),),
+                  "prelude Lemma1Inv.v); uses lemma1.h-dot and lemma1.boundary."), kernel),
         repaired_statement="The argument: a last-exit argument with the strict boundary "
         "bound ḣ ≥ 2 k_s λ > 0 of item 2 replaces Nagumo's theorem with ḣ ≥ 0.",
     ), trajectory_evidence(context, "lemma1"))
