@@ -183,13 +183,26 @@ def test_identity_entries_are_split_per_entry():
     assert unit.text.count("\n  - ") == 9
 
 
-def test_check_writes_a_development(tmp_path, capsys):
-    from verify.cli import _write_coq
+def test_check_exports_only_verified_steps(tmp_path):
+    from verify.coq.check_export import NOT_VERIFIED, export_verified
+    from verify.coq.development import write_development
+    from verify.proof import check
+    from verify.proof.falsify import SearchSettings
 
-    _write_coq(tmp_path / "coq", _small())
-    out = capsys.readouterr().out
-    assert "4 of 4 steps as theorems" in out
+    derivations = _small()
+    quick = SearchSettings(samples=32, hypothesis_examples=5, ipopt_starts=1, seed=1)
+    results = [check(d, quick) for d in derivations]
+    assert all(r.verdict == "verified" for r in results)
+    units, fates, missing = export_verified(derivations, results, None)
+    assert not missing and all(f.theorem for f in fates) and len(fates) == 4
+    write_development(tmp_path / "coq", units)
     project = (tmp_path / "coq" / "_CoqProject").read_text().splitlines()
     assert project == ["-R . VerifyCoq", "SO3.v", "QCert.v", "SOSCert.v", "BandCert.v",
                        "small_trace.v", "small_bound.v",
                        "small_condition.v", "All.v"]
+    # a step the checker did not verify is never exported, and the claim goes with it
+    results[1].steps[1].verdict = "inconclusive"
+    units, fates, missing = export_verified(derivations, results, None)
+    bound = next(u for u in units if u.name == "small_bound")
+    assert bound.theorems == ("step1",) and not missing
+    assert [f.reason for f in fates if f.theorem is None] == [NOT_VERIFIED]

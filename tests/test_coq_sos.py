@@ -221,9 +221,9 @@ def test_coqc_rejects_the_certificate_of_another_step(prelude_dir):
 @needs_coqc
 def test_coqc_rejects_a_changed_statement(prelude_dir):
     text = _unit_text(SIGN)
-    old = "(mneg (outer xi xi)))))) >= 0."
+    old = "(mneg (outer v_3_xi v_3_xi)))))) >= 0."
     assert text.count(old) == 1
-    assert not compiles(prelude_dir, text.replace(old, "(mneg (outer xi xi)))))) >= 1."))
+    assert not compiles(prelude_dir, text.replace(old, old.replace(">= 0.", ">= 1.")))
 
 
 @needs_coqc
@@ -231,9 +231,10 @@ def test_coqc_rejects_a_weakened_hypothesis(prelude_dir):
     """The multiplier's ground replaced by a hypothesis that does not give it (psd of
     the transpose's negation): the grounds lemma no longer holds."""
     text = _unit_text(SIGN)
-    old = "Hypothesis assumption1 : pd R_rl."
+    old = "Hypothesis assumption1 : pd v_2_R_rl."
     assert old in text
-    assert not compiles(prelude_dir, text.replace(old, "Hypothesis assumption1 : pd (mneg R_rl)."))
+    assert not compiles(prelude_dir,
+                        text.replace(old, "Hypothesis assumption1 : pd (mneg v_2_R_rl)."))
 
 
 def test_the_report_names_each_sos_step_by_its_exported_theorem(sos_units):

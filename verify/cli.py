@@ -106,7 +106,8 @@ def _build_parser() -> argparse.ArgumentParser:
         "'verify-derivations/1', read as data: nothing of it runs; write it with --emit) "
         "or a Python file whose DERIVATIONS make that data, run in a sandbox. Exit 0 if "
         "every step of every derivation is verified, 1 if some step "
-        "is refuted or inconclusive, 2 if the file is malformed, over a budget while it is "
+        "is refuted or inconclusive (or, with --coq, a verified step is not in Coq or coqc "
+        "refuses it), 2 if the file is malformed, over a budget while it is "
         "read, or a .py file cannot be run in a sandbox (user, PID, mount and network "
         "namespaces) and --unsandboxed was not given.",
     )
@@ -123,8 +124,12 @@ def _build_parser() -> argparse.ArgumentParser:
     p_check.add_argument("--seed", type=int, default=20261121, help="seed of the searches")
     p_check.add_argument("--json", type=Path, metavar="OUT", help="also write results as JSON")
     p_check.add_argument("--coq", type=Path, metavar="DIR",
-                         help="also write the derivations as a Coq development (one theorem "
-                         "per step; `coqc` on its files in _CoqProject order re-checks them)")
+                         help="also write the verified steps as a Coq development (one "
+                         "theorem per step), audit it and compile it with coqc; exit 1 "
+                         "unless every verified step is in Coq and coqc accepts it")
+    p_check.add_argument("--allow-partial", action="store_true",
+                         help="with --coq: exit 0 when coqc accepts the steps exported even "
+                         "if some verified step could not be exported (each is named)")
     p_check.add_argument("--certificates", type=Path, default=GATE_CERTIFICATES,
                          metavar="DIR", help="where by_sos steps reuse and write their SOS "
                          f"certificates (default {GATE_CERTIFICATES}, git-ignored)")
@@ -525,6 +530,7 @@ def _cmd_check(args: argparse.Namespace) -> int:
     from verify.claims.proofs import search_settings
     from verify.progress import Stages
     from verify.proof import ProofSyntaxError, certificate_store, check
+    from verify.proof.dynamics import tangency_budget
     from verify.proof.isolate import data_text, load_isolated, read_data_file
     from verify.proof.report_lines import result_lines, summary_line
 
@@ -538,13 +544,14 @@ def _cmd_check(args: argparse.Namespace) -> int:
         outputs.folder("--coq", args.coq)
     outputs.folder("--certificates", args.certificates)
     deadline = time.monotonic() + budget.seconds  # the whole file: loading and every step
-    if args.file.suffix == ".json":
-        stage(shown(f"reading {args.file} as data"))
-        derivations = read_data_file(args.file)  # data only: nothing of the user runs
-    else:  # the Python front end, in a sandbox (a child in its own namespaces)
-        stage(shown(f"loading {args.file} in a sandboxed process"))
-        derivations = load_isolated(args.file, budget=budget,
-                                    sandboxed=not args.unsandboxed)
+    with tangency_budget(budget):  # declared dynamics re-checked under the step budget
+        if args.file.suffix == ".json":
+            stage(shown(f"reading {args.file} as data"))
+            derivations = read_data_file(args.file)  # data only: nothing of the user runs
+        else:  # the Python front end, in a sandbox (a child in its own namespaces)
+            stage(shown(f"loading {args.file} in a sandboxed process"))
+            derivations = load_isolated(args.file, budget=budget,
+                                        sandboxed=not args.unsandboxed)
     if args.emit:
         outputs.write(args.emit, data_text(derivations))
     context = CheckContext(seed=args.seed, quick=args.quick)
@@ -564,24 +571,22 @@ def _cmd_check(args: argparse.Namespace) -> int:
     if args.json:
         outputs.write(args.json, json.dumps(to_jsonable([r.to_json() for r in results]),
                                             indent=2, ensure_ascii=True) + "\n")
+    coq_ok = True
     if args.coq:
-        _write_coq(args.coq, derivations)
-    return 0 if all(r.verdict == "verified" for r in results) else 1
+        stage(shown(f"writing the verified steps to {args.coq} and compiling them"))
+        coq_ok = _write_coq(args.coq, derivations, results, budget=budget,
+                            allow_partial=args.allow_partial)
+    return 0 if coq_ok and all(r.verdict == "verified" for r in results) else 1
 
 
-def _write_coq(folder: Path, derivations) -> None:
-    """``verify check --coq DIR``: export every step Coq can state and prove."""
-    from verify.coq.development import write_development
-    from verify.coq.paper import derivation_exports
+def _write_coq(folder: Path, derivations, results, *, budget=None,
+               allow_partial: bool = False) -> bool:
+    """``verify check --coq DIR``: the verified steps as a Coq development, audited and
+    compiled (:mod:`verify.coq.check_export`); True when the exit status may be 0."""
+    from verify.coq.check_export import write_and_compile
 
-    units, fates = derivation_exports(derivations)
-    write_development(folder, units)
-    done = [f for f in fates if f.theorem]
-    for f in fates:
-        if not f.theorem:
-            print(shown(f"  Coq: {f.derivation} step {f.step} not exported: {f.reason}"))
-    print(shown(f"Coq development: {folder} ({len(done)} of {len(fates)} steps as theorems; "
-                "check with coqc on the files of _CoqProject in order)"))
+    return write_and_compile(folder, derivations, results, budget=budget,
+                             allow_partial=allow_partial, say=lambda s: print(shown(s)))
 
 
 def _cmd_gate(args: argparse.Namespace) -> int:

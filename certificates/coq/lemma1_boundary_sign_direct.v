@@ -28,7 +28,7 @@ Hypothesis v_3_k_s_pos : 0 < v_3_k_s.
 Hypothesis assumption1 : pd v_2_R_rl.
 
 
-(** Step 1: k_s tr(sym(R_rl) (I - ξξᵀ)) >= 0
+(** Step 1: k_s tr(sym(R_rl) (I - ξ ξᵀ)) >= 0
     (tr of a product of PSD matrices: (k_s > 0 (declared)) * (trace of a product of PSD matrices, A = sym(R_rl), B = I - ξξᵀ)) *)
 Theorem step1 : (v_3_k_s * (tr (mmul (sym v_2_R_rl) (madd I3 (mneg (outer v_1_xi v_1_xi)))))) >= 0.
 Proof using v_1_xi q_v_2_R_rl v_3_k_s v_1_xi_unit q_v_2_R_rl_nonzero v_3_k_s_pos assumption1.

@@ -22,7 +22,7 @@ Variable v_2_theta : R.
 Hypothesis condition1 : (cos v_2_theta) = 0.
 
 
-(** Step 1: R̄_r R̄_r = I + 2 sin(θ) cos(θ) hat(ξ) + (1 - (cos(θ) cos(θ) - sin(θ) sin(θ))) hat(ξ) hat(ξ)
+(** Step 1: (I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ)) (I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ)) = I + 2 sin(θ) cos(θ) hat(ξ) + (1 - (cos(θ) cos(θ) - sin(θ) sin(θ))) hat(ξ) hat(ξ)
     (algebra (R̄_r² = exp(2θ ξ^), double-angle formulas)) *)
 Theorem step1 : (mmul (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi)))) (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi))))) = (madd (madd I3 (mscale ((2 * (sin v_2_theta)) * (cos v_2_theta)) (hat v_1_xi))) (mscale (1 + (- (((cos v_2_theta) * (cos v_2_theta)) + (- ((sin v_2_theta) * (sin v_2_theta)))))) (mmul (hat v_1_xi) (hat v_1_xi)))).
 Proof using v_1_xi v_2_theta v_1_xi_unit.
@@ -54,7 +54,7 @@ Proof using v_1_xi v_2_theta v_1_xi_unit condition1.
   - apply (eq_by_sum _ _ ((((cos v_2_theta) ^ 2 + (-1) * (sin v_2_theta) ^ 2 + 1) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1) + (((v3 v_1_xi) ^ 2 + (-1)) * (1) / (1)) * (cos v_2_theta * cos v_2_theta + sin v_2_theta * sin v_2_theta - 1) + (((-2) * (v3 v_1_xi) ^ 2 * (cos v_2_theta) + 2 * (cos v_2_theta)) * (1) / (1)) * ((cos v_2_theta) - 0))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit), (circle v_2_theta), (Rminus_diag_eq _ _ condition1); ring | so3_poly].
 Qed.
 
-(** Step 3: I + 2 hat(ξ) hat(ξ) = 2 ξξᵀ - I
+(** Step 3: I + 2 hat(ξ) hat(ξ) = 2 ξ ξᵀ - I
     (algebra (ξ^² = ξξᵀ - I for |ξ| = 1)) *)
 Theorem step3 : (madd I3 (mscale 2 (mmul (hat v_1_xi) (hat v_1_xi)))) = (madd (mscale 2 (outer v_1_xi v_1_xi)) (mneg I3)).
 Proof using v_1_xi v_2_theta v_1_xi_unit.
@@ -70,7 +70,7 @@ Proof using v_1_xi v_2_theta v_1_xi_unit.
   - apply (eq_by_sum _ _ ((((-2)) * (1) / (1)) * (vdot v_1_xi v_1_xi - 1))); [rewrite (Rminus_diag_eq _ _ v_1_xi_unit); ring | so3_poly].
 Qed.
 
-(** The derivation's claim: R̄_r R̄_r = 2 ξξᵀ - I *)
+(** The derivation's claim: (I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ)) (I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ)) = 2 ξ ξᵀ - I *)
 Theorem claim : (mmul (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi)))) (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi))))) = (madd (mscale 2 (outer v_1_xi v_1_xi)) (mneg I3)).
 Proof using v_1_xi v_2_theta v_1_xi_unit condition1.
   exact (eq_trans (eq_trans step1 step2) step3).

@@ -20,7 +20,7 @@ Local Notation v_1_Rbar_r := (rot q_v_1_Rbar_r).
 Variable v_2_omega : V3.
 
 
-(** Step 1: tr(R̄_r hat(ω)) = <grad h, ω>
+(** Step 1: tr(R̄_r hat(ω)) = <(-2) vee(R̄_r), ω>
     (algebra (tr(A hat ω) = -2 <sk(A)^∨, ω>)) *)
 Theorem step1 : (tr (mmul v_1_Rbar_r (hat v_2_omega))) = (vdot (vscale (-2) (vee v_1_Rbar_r)) v_2_omega).
 Proof using q_v_1_Rbar_r v_2_omega q_v_1_Rbar_r_nonzero.

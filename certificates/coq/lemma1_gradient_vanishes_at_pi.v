@@ -20,7 +20,7 @@ Local Notation v_1_Rbar_r := (rot q_v_1_Rbar_r).
 Hypothesis condition1 : (tr v_1_Rbar_r) = (-1).
 
 
-(** Step 1: <grad h, grad h> = (3 - tr(R̄_r)) (1 + tr(R̄_r))
+(** Step 1: <(-2) vee(R̄_r), (-2) vee(R̄_r)> = (3 - tr(R̄_r)) (1 + tr(R̄_r))
     (algebra (|sk(R)^∨|² = sin²θ)) *)
 Theorem step1 : (vdot (vscale (-2) (vee v_1_Rbar_r)) (vscale (-2) (vee v_1_Rbar_r))) = ((3 + (- (tr v_1_Rbar_r))) * (1 + (tr v_1_Rbar_r))).
 Proof using q_v_1_Rbar_r q_v_1_Rbar_r_nonzero.
@@ -34,7 +34,7 @@ Proof using q_v_1_Rbar_r q_v_1_Rbar_r_nonzero condition1.
   apply (eq_by_sum _ _ (((4 * (qx q_v_1_Rbar_r) ^ 2 + 4 * (qy q_v_1_Rbar_r) ^ 2 + 4 * (qz q_v_1_Rbar_r) ^ 2) * ((qn q_v_1_Rbar_r)) / ((qn q_v_1_Rbar_r) ^ 2)) * ((tr v_1_Rbar_r) - (-1)))); [rewrite (Rminus_diag_eq _ _ condition1); ring | so3_unfold; field; so3_nonzero].
 Qed.
 
-(** The derivation's claim: <grad h, grad h> = 0 *)
+(** The derivation's claim: <(-2) vee(R̄_r), (-2) vee(R̄_r)> = 0 *)
 Theorem claim : (vdot (vscale (-2) (vee v_1_Rbar_r)) (vscale (-2) (vee v_1_Rbar_r))) = 0.
 Proof using q_v_1_Rbar_r q_v_1_Rbar_r_nonzero condition1.
   exact (eq_trans step1 step2).

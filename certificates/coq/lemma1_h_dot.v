@@ -31,7 +31,7 @@ Variable v_4_k_s : R.
 Hypothesis v_4_k_s_pos : 0 < v_4_k_s.
 
 
-(** Step 1: ḣ = tr((d/dt R̄_r))
+(** Step 1: tr(R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) = tr(R_rᵀ k_s R̄ sk(R̄ᵀ R_l))
     (algebra (h = tr(R̄_r) - 1, R_r constant)) *)
 Theorem step1 : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
@@ -42,7 +42,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_
   so3_poly.
 Qed.
 
-(** Step 2: tr((d/dt R̄_r)) = k_s tr(R_rᵀ R̄ sk(R̄ᵀ R_l))
+(** Step 2: tr(R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) = k_s tr(R_rᵀ R̄ sk(R̄ᵀ R_l))
     (algebra (eq. (13))) *)
 Theorem step2 : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
@@ -53,7 +53,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_
   so3_poly.
 Qed.
 
-(** Step 3: k_s tr(R_rᵀ R̄ sk(R̄ᵀ R_l)) = k_s tr(R̄_r sk(R̄_rᵀ R_rl))
+(** Step 3: k_s tr(R_rᵀ R̄ sk(R̄ᵀ R_l)) = k_s tr(R_rᵀ R̄ sk((R_rᵀ R̄)ᵀ R_rᵀ R_l))
     (algebra (R̄ᵀR_l = R̄_rᵀR_rl)) *)
 Theorem step3 : (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
@@ -64,7 +64,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_
   so3_poly.
 Qed.
 
-(** Step 4: k_s tr(R̄_r sk(R̄_rᵀ R_rl)) = (1/2) k_s tr(R_rl - R_rlᵀ R̄_r R̄_r)
+(** Step 4: k_s tr(R_rᵀ R̄ sk((R_rᵀ R̄)ᵀ R_rᵀ R_l)) = (1/2) k_s tr(R_rᵀ R_l - (R_rᵀ R_l)ᵀ R_rᵀ R̄ R_rᵀ R̄)
     (algebra (cyclic trace)) *)
 Theorem step4 : (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))) = (((1/2) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_2_Rbar)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
@@ -75,7 +75,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_
   so3_poly.
 Qed.
 
-(** The derivation's claim: ḣ = (1/2) k_s tr(R_rl - R_rlᵀ R̄_r R̄_r) *)
+(** The derivation's claim: tr(R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) = (1/2) k_s tr(R_rᵀ R_l - (R_rᵀ R_l)ᵀ R_rᵀ R̄ R_rᵀ R̄) *)
 Theorem claim : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (((1/2) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_2_Rbar)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
   exact (eq_trans (eq_trans (eq_trans step1 step2) step3) step4).

@@ -19,7 +19,7 @@ Hypothesis v_1_xi_unit : vdot v_1_xi v_1_xi = 1.
 Variable v_2_theta : R.
 
 
-(** Step 1: R̄_r + R̄_rᵀ = 2 ξξᵀ + 2 cos(θ) (I - ξξᵀ)
+(** Step 1: I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ) + (I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ))ᵀ = 2 ξ ξᵀ + 2 cos(θ) (I - ξ ξᵀ)
     (algebra (Rodrigues, |ξ| = 1)) *)
 Theorem step1 : (madd (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi)))) (mT (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi)))))) = (madd (mscale 2 (outer v_1_xi v_1_xi)) (mscale (2 * (cos v_2_theta)) (madd I3 (mneg (outer v_1_xi v_1_xi))))).
 Proof using v_1_xi v_2_theta v_1_xi_unit.

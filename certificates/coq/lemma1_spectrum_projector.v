@@ -16,7 +16,7 @@ Variable v_1_xi : V3.
 Hypothesis v_1_xi_unit : vdot v_1_xi v_1_xi = 1.
 
 
-(** Step 1: ξξᵀ ξξᵀ = ξξᵀ
+(** Step 1: ξ ξᵀ ξ ξᵀ = ξ ξᵀ
     (algebra (|ξ| = 1)) *)
 Theorem step1 : (mmul (outer v_1_xi v_1_xi) (outer v_1_xi v_1_xi)) = (outer v_1_xi v_1_xi).
 Proof using v_1_xi v_1_xi_unit.

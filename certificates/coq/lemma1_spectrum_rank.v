@@ -16,7 +16,7 @@ Variable v_1_xi : V3.
 Hypothesis v_1_xi_unit : vdot v_1_xi v_1_xi = 1.
 
 
-(** Step 1: tr(ξξᵀ) = 1
+(** Step 1: tr(ξ ξᵀ) = 1
     (algebra (|ξ| = 1)) *)
 Theorem step1 : (tr (outer v_1_xi v_1_xi)) = 1.
 Proof using v_1_xi v_1_xi_unit.

@@ -19,7 +19,7 @@ Hypothesis v_1_xi_unit : vdot v_1_xi v_1_xi = 1.
 Variable v_2_theta : R.
 
 
-(** Step 1: tr(R̄_r) = 1 + 2 cos(θ)
+(** Step 1: tr(I + sin(θ) hat(ξ) + (1 - cos(θ)) hat(ξ) hat(ξ)) = 1 + 2 cos(θ)
     (algebra (Rodrigues)) *)
 Theorem step1 : (tr (madd (madd I3 (mscale (sin v_2_theta) (hat v_1_xi))) (mscale (1 + (- (cos v_2_theta))) (mmul (hat v_1_xi) (hat v_1_xi))))) = (1 + (2 * (cos v_2_theta))).
 Proof using v_1_xi v_2_theta v_1_xi_unit.

@@ -23,7 +23,7 @@ Variable lam1 : R.
 Hypothesis lam1_spec : lam_min_spec v_1_A lam1.
 
 
-(** Step 1: tr(A GᵀG) >= λmin(A) tr(GᵀG)
+(** Step 1: tr(A Gᵀ G) >= λmin(A) tr(Gᵀ G)
     (trace inequality tr(AB) >= lambda_min(A) tr(B), A = A, B = GᵀG) *)
 Theorem step1 : (tr (mmul v_1_A (mmul (mT v_2_G) v_2_G))) >= (lam1 * (tr (mmul (mT v_2_G) v_2_G))).
 Proof using v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23 v_2_G lam1 lam1_spec.

@@ -26,7 +26,7 @@ Variable lam1 : R.
 Hypothesis lam1_spec : lam_min_spec v_1_A lam1.
 
 
-(** Step 1: tr(A (GᵀG + hat v)) >= λmin(A) tr((GᵀG + hat v))
+(** Step 1: tr(A (Gᵀ G + hat(v))) >= λmin(A) tr(Gᵀ G + hat(v))
     (trace inequality tr(AB) >= lambda_min(A) tr(B), A = A, B = (GᵀG + hat v)) *)
 Theorem step1 : (tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) >= (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))).
 Proof using v_1_A_11 v_1_A_22 v_1_A_33 v_1_A_12 v_1_A_13 v_1_A_23 v_2_G v_3_v lam1 lam1_spec.

@@ -26,7 +26,7 @@ Variable v_3_k_s : R.
 Hypothesis v_3_k_s_pos : 0 < v_3_k_s.
 
 
-(** Step 1: hat(ω̃_h^s) R̄ = k_s R̄ sk(R̄ᵀ R_l)
+(** Step 1: hat(k_s R̄ vee(sk(R̄ᵀ R_l))) R̄ = k_s R̄ sk(R̄ᵀ R_l)
     (algebra (hat(R v) = R hat(v) Rᵀ)) *)
 Theorem step1 : (mmul (hat (mvmul (mscale v_3_k_s v_1_Rbar) (vee (sk (mmul (mT v_1_Rbar) v_2_R_l))))) v_1_Rbar) = (mmul (mscale v_3_k_s v_1_Rbar) (sk (mmul (mT v_1_Rbar) v_2_R_l))).
 Proof using q_v_1_Rbar q_v_2_R_l v_3_k_s q_v_1_Rbar_nonzero q_v_2_R_l_nonzero v_3_k_s_pos.

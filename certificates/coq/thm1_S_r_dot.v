@@ -30,12 +30,12 @@ Local Notation v_3_R_l := (rot q_v_3_R_l).
 Variable v_4_k_s : R.
 Hypothesis v_4_k_s_pos : 0 < v_4_k_s.
 
-(** lambda_min((R̄_r + R̄_rᵀ)) *)
+(** lambda_min(R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) *)
 Variable lam1 : R.
 Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) lam1.
 
 
-(** Step 1: Ṡ_r = (-1/2) tr((d/dt R̄_r))
+(** Step 1: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) = (-1/2) tr(R_rᵀ k_s R̄ sk(R̄ᵀ R_l))
     (algebra (φ(R) = tr(I - R)/2)) *)
 Theorem step1 : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) = ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -46,7 +46,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   so3_poly.
 Qed.
 
-(** Step 2: (-1/2) tr((d/dt R̄_r)) = (-1/2) k_s tr(R̄_r sk(R̄_rᵀ R_rl))
+(** Step 2: (-1/2) tr(R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) = (-1/2) k_s tr(R_rᵀ R̄ sk((R_rᵀ R̄)ᵀ R_rᵀ R_l))
     (algebra (eq. (13))) *)
 Theorem step2 : ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l)))))) = (((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -57,7 +57,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   so3_poly.
 Qed.
 
-(** Step 3: (-1/2) k_s tr(R̄_r sk(R̄_rᵀ R_rl)) = (-1/4) k_s tr(R̄_r (R̄_rᵀ R_rl - R_rlᵀ R̄_r))
+(** Step 3: (-1/2) k_s tr(R_rᵀ R̄ sk((R_rᵀ R̄)ᵀ R_rᵀ R_l)) = (-1/4) k_s tr(R_rᵀ R̄ ((R_rᵀ R̄)ᵀ R_rᵀ R_l - (R_rᵀ R_l)ᵀ R_rᵀ R̄))
     (algebra (sk definition)) *)
 Theorem step3 : (((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))) = (((-1/4) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (madd (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)) (mneg (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -68,7 +68,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   so3_poly.
 Qed.
 
-(** Step 4: (-1/4) k_s tr(R̄_r (R̄_rᵀ R_rl - R_rlᵀ R̄_r)) = (-1/4) k_s tr(R_rl - R̄_r R_rlᵀ R̄_r)
+(** Step 4: (-1/4) k_s tr(R_rᵀ R̄ ((R_rᵀ R̄)ᵀ R_rᵀ R_l - (R_rᵀ R_l)ᵀ R_rᵀ R̄)) = (-1/4) k_s tr(R_rᵀ R_l - R_rᵀ R̄ (R_rᵀ R_l)ᵀ R_rᵀ R̄)
     (algebra (R̄_r R̄_rᵀ = I)) *)
 Theorem step4 : (((-1/4) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (madd (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)) (mneg (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar))))))) = (((-1/4) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_3_R_l))) (mmul (mT v_1_R_r) v_2_Rbar)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -79,7 +79,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   so3_poly.
 Qed.
 
-(** Step 5: (-1/4) k_s tr(R_rl - R̄_r R_rlᵀ R̄_r) = (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄_rᵀ R_rl)) + (1/2) k_s tr(R̄_r) - (1/2) k_s tr(R_rl)
+(** Step 5: (-1/4) k_s tr(R_rᵀ R_l - R_rᵀ R̄ (R_rᵀ R_l)ᵀ R_rᵀ R̄) = (-1/4) k_s tr((R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (I - (R_rᵀ R̄)ᵀ R_rᵀ R_l)) + (1/2) k_s tr(R_rᵀ R̄) - (1/2) k_s tr(R_rᵀ R_l)
     (algebra (add and subtract)) *)
 Theorem step5 : (((-1/4) * v_4_k_s) * (tr (madd (mmul (mT v_1_R_r) v_3_R_l) (mneg (mmul (mmul (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_3_R_l))) (mmul (mT v_1_R_r) v_2_Rbar)))))) = (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l))))))) + (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_3_R_l))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -90,7 +90,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   so3_poly.
 Qed.
 
-(** Step 6: (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄_rᵀ R_rl)) + (1/2) k_s tr(R̄_r) - (1/2) k_s tr(R_rl) = (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl)
+(** Step 6: (-1/4) k_s tr((R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (I - (R_rᵀ R̄)ᵀ R_rᵀ R_l)) + (1/2) k_s tr(R_rᵀ R̄) - (1/2) k_s tr(R_rᵀ R_l) = (-1/4) k_s tr((R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R_rᵀ R̄) + (1/2) k_s tr(I - R_rᵀ R_l)
     (algebra (R̄_rᵀR_rl = R̄ᵀR_l)) *)
 Theorem step6 : (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l))))))) + (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (((1/2) * v_4_k_s) * (tr (mmul (mT v_1_R_r) v_3_R_l))))) = (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -101,7 +101,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   so3_poly.
 Qed.
 
-(** Step 7: (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl) <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl)
+(** Step 7: (-1/4) k_s tr((R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R_rᵀ R̄) + (1/2) k_s tr(I - R_rᵀ R_l) <= (-1/2) k_s λmin(R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (1/2) tr(I - R̄ᵀ R_l) - k_s (1/2) tr(I - R_rᵀ R̄) + k_s (1/2) tr(I - R_rᵀ R_l)
     (trace inequality, sym(I - R̄ᵀR_l) = ½(I - R̄ᵀR_l)ᵀ(I - R̄ᵀR_l) ⪰ 0: (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R̄_r + R̄_rᵀ), B = I - R̄ᵀ R_l)) *)
 Theorem step7 : (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))) <= ((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -118,7 +118,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   exact (le_by_slack _ _ _ E T4).
 Qed.
 
-(** The derivation's claim: Ṡ_r <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl) *)
+(** The derivation's claim: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) <= (-1/2) k_s λmin(R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (1/2) tr(I - R̄ᵀ R_l) - k_s (1/2) tr(I - R_rᵀ R̄) + k_s (1/2) tr(I - R_rᵀ R_l) *)
 Theorem claim : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) <= ((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   exact (eq_le_trans _ _ _ (eq_trans (eq_trans (eq_trans (eq_trans (eq_trans step1 step2) step3) step4) step5) step6) step7).

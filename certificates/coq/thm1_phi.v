@@ -17,7 +17,7 @@ Hypothesis q_v_1_R_nonzero : qn q_v_1_R <> 0.
 Local Notation v_1_R := (rot q_v_1_R).
 
 
-(** Step 1: φ(R) = (1/4) tr((I - R)ᵀ (I - R))
+(** Step 1: (1/2) tr(I - R) = (1/4) tr((I - R)ᵀ (I - R))
     (algebra (RᵀR = I)) *)
 Theorem step1 : (phi v_1_R) = ((1/4) * (tr (mmul (mT (madd I3 (mneg v_1_R))) (madd I3 (mneg v_1_R))))).
 Proof using q_v_1_R q_v_1_R_nonzero.

@@ -85,3 +85,98 @@ def audit_assumptions(output: str, allowed: Iterable[str] = ALLOWED_AXIOMS) -> A
     allowed_set = set(allowed)
     bad = tuple(n for n in names if n not in allowed_set)
     return AssumptionAudit(not bad, names, bad)
+
+
+#: The first words of the top-level commands the exporters' templates write (a command
+#: between ``Proof`` and ``Qed`` is a tactic, and only ``Qed`` may end it); ``Local`` only
+#: as ``Local Notation`` or ``Local Open``, ``Print`` only as ``Print Assumptions``
+#: (``All.v``).
+TEMPLATE_COMMANDS: frozenset[str] = frozenset({
+    "From", "Require", "Import", "Open", "Section", "End", "Variable", "Variables",
+    "Hypothesis", "Hypotheses", "Local", "Let", "Definition", "Theorem", "Lemma", "Proof",
+    "Print",
+})
+_TWO_WORDS = {"Local": ("Notation", "Open"), "Print": ("Assumptions",)}
+
+
+def sentences(text: str) -> list[str]:
+    """The sentences of Coq source (comments and strings removed; each ends at a ``.``
+    followed by white space or the end), stripped, empty ones left out."""
+    parts = re.split(r"\.(?=\s|\Z)", strip_comments(text))
+    return [p.strip() for p in parts if p.strip()]
+
+
+def template_problems(files: Mapping[str, str], skip: Iterable[str] = ()) -> list[str]:
+    """``file: problem`` for every top-level command of the ``.v`` files (those not in
+    ``skip``: the prelude) that is not one of the templates' (:data:`TEMPLATE_COMMANDS`),
+    every proof not ended by ``Qed`` and any text after the last sentence."""
+    skipped = set(skip)
+    found: list[str] = []
+    for name, text in sorted(files.items()):
+        if not name.endswith(".v") or name in skipped:
+            continue
+        stripped = strip_comments(text).rstrip()
+        if stripped and not stripped.endswith("."):
+            found.append(f"{name}: text after the last command")
+        in_proof = False
+        for sentence in sentences(text):
+            words = sentence.split()
+            head = words[0]
+            if in_proof:
+                if head in ("Qed", "Defined", "Admitted", "Abort", "Save"):
+                    in_proof = False
+                    if head != "Qed" or len(words) > 1:
+                        found.append(f"{name}: a proof ends with {sentence[:40]!r}, not Qed")
+                continue
+            if head not in TEMPLATE_COMMANDS or (
+                    head in _TWO_WORDS and (len(words) < 2 or words[1] not in _TWO_WORDS[head])):
+                found.append(f"{name}: command outside the template: {sentence[:60]!r}")
+            in_proof = head == "Proof"
+        if in_proof:
+            found.append(f"{name}: a proof is not closed")
+    return found
+
+
+_THEOREM = re.compile(r"(Theorem|Lemma)\s+([A-Za-z_][A-Za-z0-9_']*)\s*:\s*(.*)\Z", re.S)
+
+
+def stated_theorems(text: str) -> dict[str, str]:
+    """Theorem (and lemma) name -> statement as written in Coq source (white space
+    collapsed); a name stated twice keeps its first statement and is listed as ``name#2``."""
+    found: dict[str, str] = {}
+    for sentence in sentences(text):
+        m = _THEOREM.match(sentence)
+        if m:
+            name = m.group(2)
+            while name in found:
+                name += "#2"
+            found[name] = " ".join(m.group(3).split())
+    return found
+
+
+def statement_problems(name: str, text: str, intended: Mapping[str, str],
+                       trees: Mapping[str, str] | None = None) -> list[str]:
+    """The round trip of a unit's statements: the theorems ``text`` states are exactly
+    those of ``intended`` (name -> statement), each with its intended statement, and,
+    with ``trees``, each statement read back (:func:`verify.coq.reparse.parse_statement`)
+    is the intended term tree."""
+    from verify.coq.reparse import ReparseError, parse_statement
+
+    written = stated_theorems(text)
+    for k, tree in (trees or {}).items():
+        if k in written:
+            try:
+                ok = parse_statement(written[k]) == tree
+            except ReparseError as exc:
+                return [f"{name}: theorem {k} does not read back ({exc})"]
+            if not ok:
+                return [f"{name}: theorem {k} reads back as another term than the one "
+                        "exported"]
+    problems = [f"{name}: theorem {k} is not one the exporter wrote"
+                for k in written if k not in intended]
+    for k, statement in intended.items():
+        if k not in written:
+            problems.append(f"{name}: theorem {k} is missing")
+        elif written[k] != " ".join(statement.split()):
+            problems.append(f"{name}: theorem {k} does not state what was exported")
+    return problems

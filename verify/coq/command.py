@@ -13,11 +13,12 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from verify.coq.audit import audit_assumptions, forbidden_commands
+from verify.coq.audit import audit_assumptions, forbidden_commands, template_problems
 from verify.coq.development import (
     CompileResult,
     check_files,
     coqc_available,
+    prelude_sources,
     render_development,
     write_development,
 )
@@ -48,12 +49,20 @@ def write_export(folder: Path, export: Export) -> None:
                                                                 export.partly)})
 
 
-def check_and_audit(files: dict[str, str], jobs: int = 1
+def development_files_of(units) -> dict[str, str]:
+    """Every file of a development of ``units`` alone (no list of files left out)."""
+    return render_development(units)
+
+
+def check_and_audit(files: dict[str, str], jobs: int = 1, *, timeout_seconds: float = 600.0
                     ) -> tuple[CompileResult, list[str]]:
     """Compile the files with coqc (``jobs`` units at a time); the audit's problems
-    (empty when all is well)."""
-    result = check_files(files, jobs=jobs)
+    (empty when all is well): forbidden commands, commands outside the templates, and
+    axioms beyond Coq's real numbers."""
+    result = check_files(files, jobs=jobs, timeout_seconds=timeout_seconds)
+    prelude = [f"{name}.v" for name in prelude_sources()]
     problems = [f"forbidden command {f}" for f in forbidden_commands(files)]
+    problems += template_problems(files, skip=prelude)
     if result.ok:
         audit = audit_assumptions(result.output)
         problems += [f"axiom not allowed: {a}" for a in audit.disallowed]
@@ -117,12 +126,15 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
             return 2
         export = paper_development_units(certificates_dir)
         folder = out or certificates_dir / "coq"
-    files = development_files(export)
     try:
+        files = development_files(export)
         write_export(folder, export)
     except OSError as exc:
         print(f"verify: cannot write {folder}: {exc.strerror or exc}", file=sys.stderr)
         return 2
+    except ValueError as exc:  # the audit refused it, or two units share a name
+        print(f"verify: {exc}; nothing written", file=sys.stderr)
+        return 1
     print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
           f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
     refused = [i for i in export.not_exported if i.schema in EXPORTED_SCHEMAS]
@@ -142,7 +154,10 @@ def write_paper_development(certificates_dir: Path) -> str:
         return f"coq: {certificates_dir} does not exist; no Coq development written"
     export = paper_development_units(certificates_dir)
     folder = Path(certificates_dir) / "coq"
-    write_export(folder, export)
+    try:
+        write_export(folder, export)
+    except ValueError as exc:  # the audit refused it, or two units share a name
+        return f"coq: {exc}; nothing written"
     return (f"coq: wrote {folder} ({len(export.units)} unit(s); 'verify coq --check' "
             "compiles it)")
 
@@ -155,6 +170,9 @@ def gate_development(certificate_paths: Sequence[Path], folder: Path) -> bool:
         write_export(folder, export)
     except OSError as exc:
         raise VerifyInputError(f"cannot write {folder}: {exc.strerror or exc}") from None
+    except ValueError as exc:  # the audit refused it, or two units share a name
+        print(f"coq: {exc}; nothing written")
+        return False
     print(f"coq: wrote {folder} ({len(export.units)} unit(s))")
     for item in export.not_exported:
         print(f"coq: {item.file} not exported: {item.reason}")

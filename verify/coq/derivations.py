@@ -42,12 +42,15 @@ from fractions import Fraction
 from verify.coq.normal import normal_form
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
+from verify.coq.reparse import intended_statement
 from verify.coq.terms import (
+    LET_STATEMENT_CHARS,
     CoqExportError,
     Naming,
     assumption_hypothesis,
     constant,
     coq_text,
+    let_bindings,
 )
 from verify.coq.text import module_identifier
 from verify.coq.unit import CoqUnit, comment_text
@@ -55,6 +58,8 @@ from verify.proof.derivation import Derivation, Step
 from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, nodes, variables_of
 from verify.proof.hypotheses import Assumption, Condition
 from verify.proof.justify import ByAlgebra, ByBound, Nonneg, recipe
+from verify.proof.printing import to_text
+from verify.proof.size import over_limits, over_term_limit
 
 HEADER = """From Coq Require Import Reals Lra.
 From VerifyCoq Require Import SO3.
@@ -102,40 +107,58 @@ def theorem_name(derivation_name: str, step: int) -> str:
     return f"{module_name(derivation_name)}.step{step}"
 
 
-def derivation_unit(d: Derivation, *, module: str | None = None,
-                    source: str = "") -> tuple[CoqUnit | None, list[StepExport]]:
-    """The Coq unit of ``d`` (None if no step could be exported) and each step's fate."""
+def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "",
+                    exportable: frozenset[int] | None = None, claim: bool = True,
+                    exportable_reason: str = "not verified: not exported"
+                    ) -> tuple[CoqUnit | None, list[StepExport]]:
+    """The Coq unit of ``d`` (None if no step could be exported) and each step's fate.
+
+    ``exportable``: the (1-based) steps that may be exported (the checker verified them);
+    the others are left out with ``exportable_reason``. ``claim``: state the derivation's
+    claim when every step is exported (False when the checker did not verify the
+    derivation as a whole, e.g. its premises cannot hold together).
+    """
     name = module or module_name(d.name)
-    exprs, lambda_nodes = _expressions(d)
-    naming = Naming()
-    variables = [v for v in d.context.variables
-                 if v.uid in {w.uid for w in variables_of(*exprs)}]
-    atoms = atoms_for(variables, lambda_nodes, naming)
-    sec = _Section(naming, atoms, gatoms=atoms_for(variables, lambda_nodes, naming,
-                                                   generic=True),
-                   variables_list=variables, lambda_nodes=lambda_nodes)
-    _declare(sec, d, variables, lambda_nodes)
+    try:
+        sec = _section(d)
+    except _EXPORT_FAILURES as exc:
+        why = f"the derivation's declarations cannot be exported: {_failure(exc)}"
+        return None, [StepExport(d.name, k, None, why if exportable is None or k in exportable
+                                 else exportable_reason)
+                      for k in range(1, len(d.steps) + 1)]
     fates: list[StepExport] = []
     theorems: list[str] = []
+    statements: list[tuple[str, str]] = []
+    terms: list[tuple[str, str]] = []
     body: list[str] = []
     for k, step in enumerate(d.steps, start=1):
         thm = f"step{k}"
-        try:
-            text = _step_theorem(sec, d, step, thm, k)
-        except CoqExportError as exc:
-            fates.append(StepExport(d.name, k, None, str(exc)))
+        if exportable is not None and k not in exportable:
+            fates.append(StepExport(d.name, k, None, exportable_reason))
             continue
-        if text is None:
+        try:
+            made = _step_theorem(sec, d, step, thm, k)
+        except _EXPORT_FAILURES as exc:
+            fates.append(StepExport(d.name, k, None, _failure(exc)))
+            continue
+        if made is None:
             fates.append(StepExport(d.name, k, None, _not_exported_reason(step)))
             continue
-        body.append(text)
+        body.append(made[0])
         theorems.append(thm)
+        statements.append((thm, made[1]))
+        terms.append((thm, intended_statement(step.lhs, step.relation, step.rhs,
+                                              sec.naming)))
         fates.append(StepExport(d.name, k, f"{name}.{thm}"))
     if not theorems:
         return None, fates
-    if len(theorems) == len(d.steps) > 1:
-        body.append(_claim_theorem(sec, d))
+    if len(theorems) == len(d.steps) > 1 and claim:
+        text, statement = _claim_theorem(sec, d)
+        body.append(text)
         theorems.append("claim")
+        statements.append(("claim", statement))
+        terms.append(("claim", intended_statement(d.start, _claim_relation(d), d.current,
+                                                  sec.naming)))
     section = name
     head = [f"(** Exported from the derivation '{comment_text(d.name)}' (verify.proof).",
             "    Context only, not theorems of this file:",
@@ -146,13 +169,62 @@ def derivation_unit(d: Derivation, *, module: str | None = None,
             HEADER,
             f"Section {section}.", ""]
     text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
-    return CoqUnit(name, text, tuple(theorems), source or d.name), fates
+    return CoqUnit(name, text, tuple(theorems), source or d.name, tuple(statements),
+                   tuple(terms)), fates
 
 
-def _claim_theorem(sec: _Section, d: Derivation) -> str:
-    """The derivation's conclusion, start REL end, chained from its step theorems."""
+#: What exporting one step (or a derivation's declarations) may raise on a file's input:
+#: each is that step not exported, with the reason, never a crash.
+_EXPORT_FAILURES = (CoqExportError, ValueError, ArithmeticError, RecursionError, KeyError,
+                    MemoryError)
+
+
+def said(e: Expr) -> str:
+    """``e`` as a comment says it: the tree itself (no author's label, which could name
+    another term), made inert (:func:`verify.coq.text.inert_comment`)."""
+    return comment_text(to_text(e, labels=False))
+
+
+def _failure(exc: BaseException) -> str:
+    if isinstance(exc, CoqExportError):
+        return str(exc)
+    if isinstance(exc, RecursionError):
+        return "an expression too deep for the exporter"
+    if isinstance(exc, MemoryError):
+        return "out of memory in the exporter"
+    return f"the exporter failed on it ({type(exc).__name__}: {str(exc)[:120]})"
+
+
+def _section(d: Derivation) -> _Section:
+    """Names, atoms and declarations of ``d``'s section (every variable of its context)."""
+    exprs, lambda_nodes = _expressions(d)
+    too_large = over_limits(*exprs)
+    if too_large:
+        raise CoqExportError(f"too large for the exporter: {too_large}")
+    own = {v.uid for v in d.context.variables}
+    used = variables_of(*exprs)
+    foreign = [v for v in used if v.uid not in own]
+    if foreign:
+        raise CoqExportError(f"the variable {comment_text(foreign[0].name)!r} is not of the "
+                             "derivation's context")
+    naming = Naming()
+    variables = [v for v in d.context.variables if v.uid in {w.uid for w in used}]
+    atoms = atoms_for(variables, lambda_nodes, naming)
+    sec = _Section(naming, atoms, gatoms=atoms_for(variables, lambda_nodes, naming,
+                                                   generic=True),
+                   variables_list=variables, lambda_nodes=lambda_nodes)
+    _declare(sec, d, variables, lambda_nodes)
+    return sec
+
+
+def _claim_relation(d: Derivation) -> str:
     rels = {s.relation for s in d.steps} - {"="}
-    rel = rels.pop() if rels else "="
+    return rels.pop() if rels else "="
+
+
+def _claim_theorem(sec: _Section, d: Derivation) -> tuple[str, str]:
+    """The derivation's conclusion, start REL end, chained from its step theorems."""
+    rel = _claim_relation(d)
     names = {("=", "="): "eq_trans", ("<=", "<="): "Rle_trans", (">=", ">="): "Rge_trans",
              ("=", "<="): "eq_le_trans", ("<=", "="): "le_eq_trans",
              ("=", ">="): "eq_ge_trans", (">=", "="): "ge_eq_trans"}
@@ -168,11 +240,11 @@ def _claim_theorem(sec: _Section, d: Derivation) -> str:
     using = " ".join(dict.fromkeys(sec.variables + hyps))
     start, end = coq_text(d.start, sec.naming), coq_text(d.current, sec.naming)
     coq_rel = {"=": "=", "<=": "<=", ">=": ">="}[rel]
+    statement = f"{start} {coq_rel} {end}"
     return "\n".join([
-        f"(** The derivation's claim: {comment_text(str(d.start))} {rel} "
-        f"{comment_text(str(d.current))} *)",
-        f"Theorem claim : {start} {coq_rel} {end}.",
-        f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""])
+        f"(** The derivation's claim: {said(d.start)} {rel} {said(d.current)} *)",
+        f"Theorem claim : {statement}.",
+        f"Proof using {using}.", f"  exact {proof}.", "Qed.", ""]), statement
 
 
 def _not_exported_reason(step: Step) -> str:
@@ -272,7 +344,7 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
             continue
         seen.add(lam)
         arg = coq_text(node.args[0], naming)
-        out += [f"(** lambda_min({comment_text(str(node.args[0]))}) *)", f"Variable {lam} : R.",
+        out += [f"(** lambda_min({said(node.args[0])}) *)", f"Variable {lam} : R.",
                 f"Hypothesis {lam}_spec : lam_min_spec {arg} {lam}.", ""]
         sec.variables.append(lam)
         sec.basic.append(f"{lam}_spec")
@@ -302,15 +374,29 @@ def _declare(sec: _Section, d: Derivation, variables, lambda_nodes) -> None:
 
 
 # -- steps ----------------------------------------------------------------------------------
-def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) -> str | None:
+def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str,
+                  k: int) -> tuple[str, str] | None:
+    """The theorem of one step (its text and its statement), None when its justification
+    is not exported. The step's size is bounded before anything is expanded
+    (:func:`verify.proof.size.over_term_limit`)."""
     naming = sec.naming
     conds = list(d.where) + list(step.where)
+    if isinstance(step.because, ByAlgebra | ByBound):
+        too_large = over_term_limit(step.lhs, step.rhs,
+                                    *[x for c in conds for x in (c.lhs, c.rhs)])
+        if too_large:
+            raise CoqExportError(f"too large for the exporter: {too_large}")
     gens = conds
     hyps = list(sec.basic) + [sec.conditions[id(c)] for c in conds]
-    lhs, rhs = coq_text(step.lhs, naming), coq_text(step.rhs, naming)
+    lets: list[tuple[str, str]] = []
+    lhs, rhs = coq_text(step.lhs, naming), coq_text(step.rhs, naming)  # bounded, or refused
+    if len(lhs) + len(rhs) > LET_STATEMENT_CHARS:  # long shared subterms written once
+        lets, bound = let_bindings([step.lhs, step.rhs], naming)
+        lhs = coq_text(step.lhs, naming, bound=bound)
+        rhs = coq_text(step.rhs, naming, bound=bound)
     note = step.because.describe()
-    head = [f"(** Step {k}: {comment_text(str(step.lhs))} {step.relation} "
-            f"{comment_text(str(step.rhs))}", f"    ({comment_text(note)}) *)"]
+    head = [f"(** Step {k}: {said(step.lhs)} {step.relation} {said(step.rhs)}",
+            f"    ({comment_text(note)}) *)"]
     if isinstance(step.because, ByAlgebra):
         if step.relation != "=":
             raise CoqExportError("an algebra step must be an equality")
@@ -327,8 +413,11 @@ def _step_theorem(sec: _Section, d: Derivation, step: Step, thm: str, k: int) ->
         return None
     using = " ".join(dict.fromkeys(sec.variables + hyps))
     proof = f"Proof using {using}." if using else "Proof."
+    if lets:  # the statement names its shared subterms; the proof works on them written out
+        statement = "".join(f"let {n} := {t} in " for n, t in lets) + statement
+        body = ["cbv zeta.", *body]
     return "\n".join([*head, f"Theorem {thm} : {statement}.", proof,
-                      *("  " + line for line in body), "Qed.", ""])
+                      *("  " + line for line in body), "Qed.", ""]), statement
 
 
 def _generators(sec: _Section, atoms: Atoms, conds: list[Condition]) -> list[tuple]:
@@ -421,12 +510,24 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
     raise failure
 
 
+#: Rotations a step may have for the attempts with some of them free (:func:`_mixed_attempts`).
+MIXED_ROTATIONS = 3
+
+
 def _mixed_attempts(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]) -> list:
-    """Attempts keeping one rotation (then two) as a quaternion, the others free."""
+    """Attempts keeping one rotation (then two) as a quaternion, the others free.
+
+    Only for a step with at most :data:`MIXED_ROTATIONS` rotations (at most six
+    attempts; the paper's steps have three): a step with more takes the attempts with
+    orthogonality cofactors and then all rotations in quaternion parameters
+    (:func:`_equality_script`), so the number of attempts never grows with the subsets
+    of its rotations."""
     import itertools
 
     rots = [v for v in variables_of(lhs, rhs) if v.kind == "rotation"]
-    out = []
+    out: list = []
+    if len(rots) > MIXED_ROTATIONS:
+        return out
     for size in range(1, len(rots)):
         for kept in itertools.combinations(rots, size):
             free_rots = frozenset(v.uid for v in sec.variables_list

@@ -9,6 +9,7 @@ on the files in order is the whole check.
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import subprocess
@@ -21,7 +22,8 @@ from importlib import resources
 from pathlib import Path
 
 from verify.artefacts.atomic import write_all_atomic
-from verify.coq.unit import CoqUnit
+from verify.coq.audit import forbidden_commands, statement_problems, template_problems
+from verify.coq.unit import CoqExportError, CoqUnit
 
 LOGICAL_ROOT = "VerifyCoq"
 
@@ -92,19 +94,76 @@ def render_development(units: Sequence[CoqUnit], *,
     return files
 
 
+class CoqAuditError(CoqExportError):
+    """A development the audit refuses (a command outside the templates, a forbidden
+    command, a statement that is not the one exported): nothing is written."""
+
+
+def audit_problems(files: Mapping[str, str], units: Sequence[CoqUnit]) -> list[str]:
+    """What the audit refuses in rendered (or re-read) files: forbidden commands,
+    commands outside the templates (units and ``All.v``; the prelude is ours), and
+    statements that differ from those the exporter made (the round trip)."""
+    prelude = [f"{name}.v" for name in prelude_sources()]
+    problems = forbidden_commands(files) + template_problems(files, skip=prelude)
+    for unit in units:
+        if unit.statements:
+            problems += statement_problems(f"{unit.name}.v", files.get(f"{unit.name}.v", ""),
+                                           dict(unit.statements), dict(unit.terms))
+    return problems
+
+
+def _refuse(problems: list[str]) -> None:
+    if problems:
+        more = f" (and {len(problems) - 1} more)" if len(problems) > 1 else ""
+        raise CoqAuditError(f"Coq audit refused the development: {problems[0]}{more}")
+
+
+def _read_back(folder: Path, files: Mapping[str, str]) -> dict[str, str]:
+    """The files as read from ``folder`` (the round trip reads what was written)."""
+    return {rel: (folder / rel).read_text(encoding="utf-8") for rel in files}
+
+
 def write_development(folder: Path, units: Sequence[CoqUnit], *,
                       extra: Mapping[str, str] | None = None) -> list[Path]:
     """Write the development into ``folder``; return the ``.v`` files in compile order.
 
-    Files an earlier development listed in its ``_CoqProject`` and this one does not are
-    removed, so the folder is exactly the development (nothing else is touched).
+    The files are rendered and audited (:func:`audit_problems`) before anything is
+    written, written to a temporary folder beside ``folder``, read back and audited
+    again (the round trip), then moved into place: a new folder by one rename; in an
+    existing one, each file atomically, and files an earlier development listed in its
+    ``_CoqProject`` and this one does not are removed (nothing else is touched). A
+    refusal raises :class:`CoqAuditError` with nothing written.
     """
     files = render_development(units, extra=extra)
+    _refuse(audit_problems(files, units))
+    for rel, text in files.items():
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:
+            raise CoqAuditError(f"Coq development: {rel} is not writable as UTF-8") from None
     folder = Path(folder)
-    stale = [rel for rel in _listed(folder) if rel not in files]
-    write_all_atomic({folder / rel: text for rel, text in files.items()})
-    for rel in stale:
-        (folder / rel).unlink(missing_ok=True)
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=f".{folder.name}.partial-", dir=folder.parent))
+    try:
+        for rel, text in files.items():
+            (stage / rel).write_text(text, encoding="utf-8")
+        back = _read_back(stage, files)
+        if back != dict(files):
+            raise CoqAuditError("Coq development: a file read back differs from the one "
+                                "written")
+        _refuse(audit_problems(back, units))
+        if not os.path.lexists(folder):
+            os.rename(stage, folder)
+        else:
+            stale = [rel for rel in _listed(folder) if rel not in files]
+            write_all_atomic({folder / rel: text for rel, text in files.items()})
+            for rel in stale:
+                (folder / rel).unlink(missing_ok=True)
+            if _read_back(folder, files) != dict(files):
+                raise CoqAuditError(f"Coq development: a file read back from {folder} "
+                                    "differs from the one written")
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
     order = files["_CoqProject"].splitlines()[1:]
     return [folder / rel for rel in order]
 

@@ -21,15 +21,25 @@ def derivation_units(derivations: Sequence[Derivation], *, prefix: str = "") -> 
     return derivation_exports(derivations, prefix=prefix)[0]
 
 
-def derivation_exports(derivations: Sequence[Derivation], *,
-                       prefix: str = "") -> tuple[list[CoqUnit], list[StepExport]]:
-    """One unit per derivation with an exportable step, and every step's fate."""
+def derivation_exports(derivations: Sequence[Derivation], *, prefix: str = "",
+                       exportable: Sequence[tuple[frozenset[int], bool]] | None = None
+                       ) -> tuple[list[CoqUnit], list[StepExport]]:
+    """One unit per derivation with an exportable step, and every step's fate.
+
+    ``exportable``: per derivation, the steps the checker verified and whether the
+    derivation as a whole was verified (its claim is stated only then); None exports
+    every step (the paper's own derivations).
+    """
     units: list[CoqUnit] = []
     fates: list[StepExport] = []
     taken: set[str] = set()
-    for d in derivations:
+    for i, d in enumerate(derivations):
         name = module_identifier(d.name, taken, prefix=prefix)
-        unit, steps = derivation_unit(d, module=name)
+        steps_ok, whole = exportable[i] if exportable is not None else (None, True)
+        unit, steps = derivation_unit(
+            d, module=name, exportable=steps_ok, claim=whole,
+            exportable_reason="not verified by the checker (refuted, inconclusive or "
+            "with premises that cannot hold): never exported")
         fates += steps
         if unit is not None:
             units.append(unit)

@@ -15,7 +15,15 @@ from fractions import Fraction
 
 from verify.coq.text import generated_identifier
 from verify.coq.unit import CoqExportError, comment_text
-from verify.proof.expr import MATRIX, SCALAR, VECTOR, Expr, Variable, structural_key
+from verify.proof.expr import (
+    MATRIX,
+    SCALAR,
+    VECTOR,
+    Expr,
+    Variable,
+    postorder,
+    structural_key,
+)
 
 # Names the prelude or Coq's standard library already use.
 RESERVED = frozenset("""
@@ -86,7 +94,17 @@ class Naming:
         return self.lambdas[key][0]
 
 
+#: Bits of a constant's numerator or denominator the exporter writes (as the checker's
+#: size limits, :data:`verify.proof.size.MAX_CONSTANT_BITS`).
+MAX_CONSTANT_BITS = 8192
+#: Characters of one Coq term the exporter writes (shared subtrees counted each time).
+MAX_TERM_CHARS = 400_000
+
+
 def constant(c: Fraction) -> str:
+    if max(c.numerator.bit_length(), c.denominator.bit_length()) > MAX_CONSTANT_BITS:
+        raise CoqExportError(f"a constant has more than {MAX_CONSTANT_BITS} bits: too long "
+                             "for the exporter")
     if c.denominator == 1:
         return str(c.numerator) if c >= 0 else f"({c.numerator})"
     return f"({c.numerator}/{c.denominator})"
@@ -102,18 +120,58 @@ def _is_phi(e: Expr) -> Expr | None:
     return None
 
 
-def coq_text(e: Expr, naming: Naming, *, use_phi: bool = True) -> str:
-    """The Coq term of ``e`` (shared subtrees printed once per occurrence)."""
+def coq_text(e: Expr, naming: Naming, *, use_phi: bool = True,
+             bound: dict[int, str] | None = None) -> str:
+    """The Coq term of ``e``, built children first without recursion (so depth is not
+    limited by Python's stack); refused (:class:`CoqExportError`) when the written term
+    would exceed :data:`MAX_TERM_CHARS` characters (a shared subtree is written once per
+    occurrence, so its length is counted once per occurrence, before any text is made).
+
+    ``bound``: subtrees (by ``id``) written as the ``let`` names given
+    (:func:`let_bindings`)."""
+    bound = bound or {}
+    length: dict[int, int] = {}
+    order = postorder(e)
+    for node in order:
+        length[id(node)] = (len(bound[id(node)]) if id(node) in bound and node is not e
+                            else 16 + sum(length[id(a)] for a in node.args))
+        if length[id(node)] > MAX_TERM_CHARS:
+            raise CoqExportError(f"a term would be more than {MAX_TERM_CHARS} characters "
+                                 "of Coq (shared subterms written out)")
     memo: dict[int, str] = {}
+    for node in order:
+        if id(node) in bound and node is not e:
+            memo[id(node)] = bound[id(node)]
+        else:
+            memo[id(node)] = _node(node, lambda x: memo[id(x)], naming, use_phi)
+    return memo[id(e)]
 
-    def go(node: Expr) -> str:
-        key = id(node)
-        if key in memo:
-            return memo[key]
-        memo[key] = text = _node(node, go, naming, use_phi)
-        return text
 
-    return go(e)
+#: A statement longer than this (characters) names its long shared subterms with ``let``.
+LET_STATEMENT_CHARS = 4000
+#: A shared subterm is let-bound when its own text is at least this long.
+LET_MIN_CHARS = 120
+
+
+def let_bindings(exprs: list[Expr], naming: Naming) -> tuple[list[tuple[str, str]],
+                                                             dict[int, str]]:
+    """``let`` names for the shared subterms of ``exprs`` (non-leaf nodes used more than
+    once whose text is at least :data:`LET_MIN_CHARS`), each written once: the
+    definitions in order (each uses only earlier names) and the map ``id -> name``."""
+    uses: dict[int, int] = {}
+    for node in postorder(*exprs):
+        for a in node.args:
+            uses[id(a)] = uses.get(id(a), 0) + 1
+    bound: dict[int, str] = {}
+    lets: list[tuple[str, str]] = []
+    for node in postorder(*exprs):
+        if node.args and uses.get(id(node), 0) > 1:
+            text = coq_text(node, naming, bound=bound)
+            if len(text) >= LET_MIN_CHARS:
+                name = f"s_{len(lets) + 1}"
+                lets.append((name, text))
+                bound[id(node)] = name
+    return lets, bound
 
 
 def _node(e: Expr, go, naming: Naming, use_phi: bool) -> str:

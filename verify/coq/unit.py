@@ -36,6 +36,14 @@ class CoqUnit:
     text: str
     theorems: tuple[str, ...]
     source: str = ""
+    #: (theorem, statement) of every theorem the unit states, as the exporter wrote
+    #: them: the round trip after writing (:func:`verify.coq.audit.statement_problems`)
+    #: compares the file with these; empty for units not checked that way.
+    statements: tuple[tuple[str, str], ...] = ()
+    #: (theorem, term tree) of the same theorems, built from the expressions the unit
+    #: was exported from (:func:`verify.coq.reparse.intended`): the written statement,
+    #: read back, must be this tree.
+    terms: tuple[tuple[str, str], ...] = ()
 
     def __post_init__(self) -> None:
         if not _COQ_IDENT.match(self.name):
