@@ -1,7 +1,6 @@
 (** The paper's conclusions along solutions: the statements in full, proved in the
     prelude ([RotSurj.v], [Traj.v], [Lemma1Inv.v]). *)
 From Coq Require Import Reals.
-Local Set Warnings "-ambiguous-paths".
 From Coquelicot Require Import Coquelicot.
 From VerifyCoq Require Import SO3 RotSurj Traj Lemma1Inv Thm1Energy Barbalat.
 Open Scope R_scope.

@@ -38,7 +38,7 @@ Variable lam1 : R.
 Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) lam1.
 
 
-(** Step 1: (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s)) = (-1/2) tr(R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s))
+(** Step 1: (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) = (-1/2) tr(R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s'))
     (algebra (φ(R) = tr(I - R)/2)) *)
 Theorem step1 : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s)))))))) = ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -49,7 +49,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_
   so3_poly.
 Qed.
 
-(** Step 2: (-1/2) tr(R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s)) = (-1/2) tr(R_rᵀ R_l (k_s sk((R_rᵀ R_l)ᵀ R_rᵀ R̄) + hat(R_lᵀ ω_h^s)))
+(** Step 2: (-1/2) tr(R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) = (-1/2) tr(R_rᵀ R_l (k_s sk((R_rᵀ R_l)ᵀ R_rᵀ R̄) + hat(R_lᵀ 'ω_h^s')))
     (algebra (eq. (12b), R_lᵀR̄ = R_rlᵀR̄_r)) *)
 Theorem step2 : ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))) = ((-1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (madd (mscale v_4_k_s (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -60,7 +60,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_
   so3_poly.
 Qed.
 
-(** Step 3: (-1/2) tr(R_rᵀ R_l (k_s sk((R_rᵀ R_l)ᵀ R_rᵀ R̄) + hat(R_lᵀ ω_h^s))) = (-1/2) k_s tr(R_rᵀ R_l sk((R_rᵀ R_l)ᵀ R_rᵀ R̄)) - (1/2) tr(R_rᵀ R_l hat(R_lᵀ ω_h^s))
+(** Step 3: (-1/2) tr(R_rᵀ R_l (k_s sk((R_rᵀ R_l)ᵀ R_rᵀ R̄) + hat(R_lᵀ 'ω_h^s'))) = (-1/2) k_s tr(R_rᵀ R_l sk((R_rᵀ R_l)ᵀ R_rᵀ R̄)) - (1/2) tr(R_rᵀ R_l hat(R_lᵀ 'ω_h^s'))
     (algebra (linearity)) *)
 Theorem step3 : ((-1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (madd (mscale v_4_k_s (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s)))))) = ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -71,7 +71,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_
   so3_poly.
 Qed.
 
-(** Step 4: (-1/2) k_s tr(R_rᵀ R_l sk((R_rᵀ R_l)ᵀ R_rᵀ R̄)) - (1/2) tr(R_rᵀ R_l hat(R_lᵀ ω_h^s)) <= (-1/2) k_s λmin(R_rᵀ R_l + (R_rᵀ R_l)ᵀ) (1/2) tr(I - R_lᵀ R̄) + k_s (1/2) tr(I - R_rᵀ R̄) - k_s (1/2) tr(I - R_rᵀ R_l) + <vee(sk(R_rᵀ R_l)), R_lᵀ ω_h^s>
+(** Step 4: (-1/2) k_s tr(R_rᵀ R_l sk((R_rᵀ R_l)ᵀ R_rᵀ R̄)) - (1/2) tr(R_rᵀ R_l hat(R_lᵀ 'ω_h^s')) <= (-1/2) k_s λmin(R_rᵀ R_l + (R_rᵀ R_l)ᵀ) (1/2) tr(I - R_lᵀ R̄) + k_s (1/2) tr(I - R_rᵀ R̄) - k_s (1/2) tr(I - R_rᵀ R_l) + <vee(sk(R_rᵀ R_l)), R_lᵀ 'ω_h^s'>
     (as for Ṡ_r, and tr(R hat ω) = -2<sk(R)^∨, ω>: (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R_rl + R_rlᵀ), B = I - R_lᵀR̄)) *)
 Theorem step4 : ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))) <= (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_1_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
@@ -88,7 +88,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_
   exact (le_by_slack _ _ _ E T4).
 Qed.
 
-(** The derivation's claim: (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s)) <= (-1/2) k_s λmin(R_rᵀ R_l + (R_rᵀ R_l)ᵀ) (1/2) tr(I - R_lᵀ R̄) + k_s (1/2) tr(I - R_rᵀ R̄) - k_s (1/2) tr(I - R_rᵀ R_l) + <vee(sk(R_rᵀ R_l)), R_lᵀ ω_h^s> *)
+(** The derivation's claim: (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) <= (-1/2) k_s λmin(R_rᵀ R_l + (R_rᵀ R_l)ᵀ) (1/2) tr(I - R_lᵀ R̄) + k_s (1/2) tr(I - R_rᵀ R̄) - k_s (1/2) tr(I - R_rᵀ R_l) + <vee(sk(R_rᵀ R_l)), R_lᵀ 'ω_h^s'> *)
 Theorem claim : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s)))))))) <= (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_1_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
   exact (eq_le_trans _ _ _ (eq_trans (eq_trans step1 step2) step3) step4).

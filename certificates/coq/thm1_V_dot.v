@@ -48,7 +48,7 @@ Hypothesis assumption1 : 0 <= lam1.
 Hypothesis assumption2 : 0 < lam2.
 
 
-(** Step 1: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) + (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s)) - <vee(R_rᵀ R_l), R_lᵀ ω_h^s> = (-1/4) k_s (tr((R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (I - R̄ᵀ R_l)) + tr((R_rᵀ R_l + (R_rᵀ R_l)ᵀ) (I - R_lᵀ R̄)))
+(** Step 1: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) + (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) - <vee(R_rᵀ R_l), R_lᵀ 'ω_h^s'> = (-1/4) k_s (tr((R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) (I - R̄ᵀ R_l)) + tr((R_rᵀ R_l + (R_rᵀ R_l)ᵀ) (I - R_lᵀ R̄)))
     (algebra (Ṡ_r + Ṡ_rl + Ṡ_h; the human terms cancel)) *)
 Theorem step1 : ((((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) + ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))))) + (- (vdot (vee (mmul (mT v_1_R_r) v_3_R_l)) (mvmul (mT v_3_R_l) v_5_omega_h_s)))) = (((-1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec lam2_spec.
@@ -102,7 +102,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1
   exact (le_by_slack _ _ _ E T9).
 Qed.
 
-(** The derivation's claim: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) + (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s)) - <vee(R_rᵀ R_l), R_lᵀ ω_h^s> <= 0 *)
+(** The derivation's claim: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) + (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) - <vee(R_rᵀ R_l), R_lᵀ 'ω_h^s'> <= 0 *)
 Theorem claim : ((((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) + ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))))) + (- (vdot (vee (mmul (mT v_1_R_r) v_3_R_l)) (mvmul (mT v_3_R_l) v_5_omega_h_s)))) <= 0.
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec lam2_spec assumption1 assumption2.
   exact (Rle_trans _ _ _ (eq_le_trans _ _ _ step1 step2) step3).

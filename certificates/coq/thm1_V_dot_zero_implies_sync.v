@@ -42,7 +42,7 @@ Variable lam2 : R.
 Hypothesis lam2_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) lam2.
 
 
-(** Step 1: (1/8) k_s (λmin(R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) + λmin(R_rᵀ R_l + (R_rᵀ R_l)ᵀ)) tr((I - R_lᵀ R̄)ᵀ (I - R_lᵀ R̄)) <= -((1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) + (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ ω_h^s)) - <vee(R_rᵀ R_l), R_lᵀ ω_h^s>)
+(** Step 1: (1/8) k_s (λmin(R_rᵀ R̄ + (R_rᵀ R̄)ᵀ) + λmin(R_rᵀ R_l + (R_rᵀ R_l)ᵀ)) tr((I - R_lᵀ R̄)ᵀ (I - R_lᵀ R̄)) <= -((1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) + (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) - <vee(R_rᵀ R_l), R_lᵀ 'ω_h^s'>)
     (the bound of eq. (17) with φ(Q) = ‖I - Q‖²/4: (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R̄_r + R̄_rᵀ), B = I - R̄ᵀ R_l); (1/4 * (k_s > 0 (declared))) * (trace inequality tr(AB) >= lambda_min(A) tr(B), A = (R_rl + R_rlᵀ), B = I - R_lᵀR̄)) *)
 Theorem step1 : ((((1/8) * v_4_k_s) * (lam1 + lam2)) * (tr (mmul (mT (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))) <= (- ((((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) + ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))))) + (- (vdot (vee (mmul (mT v_1_R_r) v_3_R_l)) (mvmul (mT v_3_R_l) v_5_omega_h_s))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec lam2_spec.

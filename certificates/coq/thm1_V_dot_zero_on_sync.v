@@ -29,7 +29,7 @@ Hypothesis v_3_k_s_pos : 0 < v_3_k_s.
 Variable v_4_omega_h_s : V3.
 
 
-(** Step 1: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R̄)) + (1/2) tr(-R_rᵀ R̄ hat(k_s vee(sk(R̄ᵀ R̄)) + R̄ᵀ ω_h^s)) - <vee(R_rᵀ R̄), R̄ᵀ ω_h^s> = 0
+(** Step 1: (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R̄)) + (1/2) tr(-R_rᵀ R̄ hat(k_s vee(sk(R̄ᵀ R̄)) + R̄ᵀ 'ω_h^s')) - <vee(R_rᵀ R̄), R̄ᵀ 'ω_h^s'> = 0
     (algebra (R_l = R̄)) *)
 Theorem step1 : ((((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_3_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_2_Rbar))))))) + ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_2_Rbar (hat (vadd (vscale v_3_k_s (vee (sk (mmul (mT v_2_Rbar) v_2_Rbar)))) (mvmul (mT v_2_Rbar) v_4_omega_h_s))))))))) + (- (vdot (vee (mmul (mT v_1_R_r) v_2_Rbar)) (mvmul (mT v_2_Rbar) v_4_omega_h_s)))) = 0.
 Proof using q_v_1_R_r q_v_2_Rbar v_3_k_s v_4_omega_h_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero v_3_k_s_pos.

@@ -24,7 +24,7 @@ Hypothesis v_2_k_s_pos : 0 < v_2_k_s.
 Variable v_3_omega_h_s : V3.
 
 
-(** Step 1: (R_l hat(k_s vee(sk(R_lᵀ R_l)) + R_lᵀ ω_h^s))ᵀ R_l + R_lᵀ k_s R_l sk(R_lᵀ R_l) = -R_lᵀ hat(ω_h^s) R_l
+(** Step 1: (R_l hat(k_s vee(sk(R_lᵀ R_l)) + R_lᵀ 'ω_h^s'))ᵀ R_l + R_lᵀ k_s R_l sk(R_lᵀ R_l) = -R_lᵀ hat('ω_h^s') R_l
     (algebra (sk(I) = 0)) *)
 Theorem step1 : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) v_1_R_l)))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) v_1_R_l) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s v_1_R_l) (sk (mmul (mT v_1_R_l) v_1_R_l))))) = (mneg (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l)).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
@@ -42,7 +42,7 @@ Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
   - so3_poly.
 Qed.
 
-(** Step 2: -R_lᵀ hat(ω_h^s) R_l = -hat(R_lᵀ ω_h^s)
+(** Step 2: -R_lᵀ hat('ω_h^s') R_l = -hat(R_lᵀ 'ω_h^s')
     (algebra (Rᵀ hat(ω) R = hat(Rᵀω))) *)
 Theorem step2 : (mneg (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l)) = (mneg (hat (mvmul (mT v_1_R_l) v_3_omega_h_s))).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
@@ -60,7 +60,7 @@ Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
   - so3_poly.
 Qed.
 
-(** The derivation's claim: (R_l hat(k_s vee(sk(R_lᵀ R_l)) + R_lᵀ ω_h^s))ᵀ R_l + R_lᵀ k_s R_l sk(R_lᵀ R_l) = -hat(R_lᵀ ω_h^s) *)
+(** The derivation's claim: (R_l hat(k_s vee(sk(R_lᵀ R_l)) + R_lᵀ 'ω_h^s'))ᵀ R_l + R_lᵀ k_s R_l sk(R_lᵀ R_l) = -hat(R_lᵀ 'ω_h^s') *)
 Theorem claim : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) v_1_R_l)))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) v_1_R_l) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s v_1_R_l) (sk (mmul (mT v_1_R_l) v_1_R_l))))) = (mneg (hat (mvmul (mT v_1_R_l) v_3_omega_h_s))).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
   exact (eq_trans step1 step2).

@@ -28,7 +28,7 @@ Variable v_4_xi : V3.
 Hypothesis v_4_xi_unit : vdot v_4_xi v_4_xi = 1.
 
 
-(** Step 1: (R_l hat(k_s vee(sk(R_lᵀ R_l (2 ξ ξᵀ - I))) + R_lᵀ ω_h^s))ᵀ R_l (2 ξ ξᵀ - I) + R_lᵀ k_s R_l (2 ξ ξᵀ - I) sk((R_l (2 ξ ξᵀ - I))ᵀ R_l) = -R_lᵀ hat(ω_h^s) R_l (2 ξ ξᵀ - I)
+(** Step 1: (R_l hat(k_s vee(sk(R_lᵀ R_l (2 ξ ξᵀ - I))) + R_lᵀ 'ω_h^s'))ᵀ R_l (2 ξ ξᵀ - I) + R_lᵀ k_s R_l (2 ξ ξᵀ - I) sk((R_l (2 ξ ξᵀ - I))ᵀ R_l) = -R_lᵀ hat('ω_h^s') R_l (2 ξ ξᵀ - I)
     (algebra (sk(2ξξᵀ - I) = 0)) *)
 Theorem step1 : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3))))))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))) (sk (mmul (mT (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))) v_1_R_l))))) = (mneg (mmul (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l) (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s v_4_xi q_v_1_R_l_nonzero v_2_k_s_pos v_4_xi_unit.
