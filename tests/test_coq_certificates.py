@@ -147,16 +147,16 @@ PRINTED = """Axioms:
 ClassicalDedekindReals.sig_forall_dec
   : forall P : nat -> Prop,
     (forall n : nat, {P n} + {~ P n}) -> {n : nat | ~ P n} + {forall n : nat, P n}
-Classical_Prop.classic : forall P : Prop, P \\/ ~ P
+ProofIrrelevance.proof_irrelevance : forall (P : Prop) (p1 p2 : P), p1 = p2
 Closed under the global context
 """
 
 
 def test_print_assumptions_output_is_read_and_foreign_axioms_refused():
     assert printed_axioms(PRINTED) == ["ClassicalDedekindReals.sig_forall_dec",
-                                       "Classical_Prop.classic"]
+                                       "ProofIrrelevance.proof_irrelevance"]
     audit = audit_assumptions(PRINTED)
-    assert not audit.ok and audit.disallowed == ("Classical_Prop.classic",)
+    assert not audit.ok and audit.disallowed == ("ProofIrrelevance.proof_irrelevance",)
     assert audit_assumptions("Closed under the global context\n").ok
 
 

@@ -5,6 +5,7 @@ import sympy as sp
 from verify.claims import CheckContext, Evidence, EvidenceKind, Outcome, Verdict, run_claims
 from verify.claims.catalog import REGISTRY
 from verify.claims.registry import ClaimRegistry
+from verify.coq.development import coqc_available
 from verify.symbolic import algebra as alg
 from verify.symbolic.rational_network import RationalNetwork, nearly_antipodal_pair
 
@@ -25,7 +26,8 @@ EXPECTED = {
     "lemma1.boundary": Verdict.VERIFIED,
     "lemma1.trace-inequality": Verdict.REFUTED,
     "lemma1.nagumo-gradient": Verdict.REPAIRED,
-    "lemma1.invariance": Verdict.ASSUMPTION,
+    # proved in Coq along every solution; re-checked only where coqc is installed
+    "lemma1.invariance": Verdict.REPAIRED if coqc_available() else Verdict.ASSUMPTION,
     "thm1.phi": Verdict.VERIFIED,
     "thm1.storage-derivatives": Verdict.VERIFIED,
     "thm1.v-dot": Verdict.VERIFIED,

@@ -82,7 +82,7 @@ def _report_check(result: CompileResult, problems: list[str]) -> bool:
         print(f"audit: {p}")
     if result.ok and not problems:
         print("coqc accepted every file; no Admitted/admit/Axiom; Print Assumptions lists "
-              "only Coq's real-number axioms")
+              "only Coq's real-number axioms and excluded middle")
     return result.ok and not problems
 
 

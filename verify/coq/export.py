@@ -156,6 +156,7 @@ def derivation_units() -> list[CoqUnit]:
 def paper_development_units(certificates_dir: Path) -> Export:
     """The paper's development: derivation units, the SOS certificates of the paper's
     ``by_sos`` steps (:mod:`verify.coq.sos`), then the other certificates' units."""
+    from verify.coq.conclusions import conclusion_units
     from verify.coq.sos import paper_sos_units
 
     certs = export_certificates([certificates_dir])
@@ -169,5 +170,6 @@ def paper_development_units(certificates_dir: Path) -> Export:
             left.append(NotExported(item.file, item.schema,
                                     "SOS certificate of a paper's step, not exported: "
                                     + fate.removeprefix("refused: ")))
-    return Export((*derivation_units(), *sos_units, *certs.units), tuple(left),
+    return Export((*derivation_units(), *sos_units, *certs.units, *conclusion_units()),
+                  tuple(left),
                   certs.partly)

@@ -35,6 +35,7 @@ RESERVED_MODULES = frozenset(name.casefold() for name in (
     "Init", "Logic", "Datatypes", "Specif", "Peano", "Rdefinitions", "Raxioms", "Rbase",
     "Rfunctions", "Rtrigo", "Rtrigo_def", "Interval", "Coquelicot", "Bignums", "VerifyCoq",
     "Top", "Scratch", "Arith", "ZArith", "QArith", "Psatz", "Ring", "Field", "Lia", "Nsatz",
+    "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat", "Conclusions",
 ))
 
 _GREEK = {"ω": "omega", "ξ": "xi", "θ": "theta", "λ": "lambda", "φ": "phi", "ψ": "psi",

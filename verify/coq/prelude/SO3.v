@@ -17,12 +17,12 @@
     so an identity between expressions in rotations is a rational-function identity
     that [field] decides by itself, with the one hypothesis [|q|^2 <> 0].  With
     orthogonality hypotheses every identity would need an ideal-membership
-    certificate in nine entries per rotation.  The price is one classical fact that is
-    stated here, not proved in Coq: every rotation matrix is [rot q] for some unit
-    quaternion [q] (Euler-Rodrigues; the angle pi included: [q = (0, 1, 0, 0)] gives
-    [diag(1, -1, -1)]).  So "for all q with |q|^2 <> 0, P(rot q)" is "for all
-    rotations R, P(R)".  [rot_orthogonal] below proves the converse direction: every
-    [rot q] is a rotation ([R^T R = I] and [det R = 1]).
+    certificate in nine entries per rotation.  Nothing is lost: [RotSurj.v] proves
+    that every rotation matrix is [rot q] for some [q] with [qn q <> 0]
+    ([rot_surjective], Shepperd's case split; the angle pi included:
+    [q = (0, 1, 0, 0)] gives [diag(1, -1, -1)]).  So "for all q with |q|^2 <> 0,
+    P(rot q)" is "for all rotations R, P(R)".  [rot_orthogonal] below proves the
+    converse direction: every [rot q] is a rotation ([R^T R = I] and [det R = 1]).
 
     Unit vectors are vectors with the hypothesis [vdot u u = 1]; angles are reals
     and [cos], [sin] are the standard library's functions; lambda_min(A) is a real

@@ -1,0 +1,97 @@
+(** The paper's conclusions along solutions: the statements in full, proved in the
+    prelude ([RotSurj.v], [Traj.v], [Lemma1Inv.v]). *)
+From Coq Require Import Reals.
+From Coquelicot Require Import Coquelicot.
+From VerifyCoq Require Import SO3 RotSurj Traj Lemma1Inv Thm1Energy Barbalat.
+Open Scope R_scope.
+
+(** Every rotation matrix is [rot q] for a quaternion [q] with [qn q <> 0]. *)
+Theorem every_rotation_is_rot_q (M : M3) :
+  mmul (mT M) M = I3 -> det M = 1 -> exists q : quat, qn q <> 0 /\ rot q = M.
+Proof. intros H1 H2. exact (rot_surjective M (conj H1 H2)). Qed.
+
+(** Lemma 1 on [[0, T]]: for every solution of eq. (13) with R_r constant and
+    Assumption 1, item 2 along it, tr(R_r^T R-bar(0)) >= 1 implies
+    tr(R_r^T R-bar(t)) >= 1 for every t in [[0, T]]. *)
+Theorem lemma1_invariance_on_interval (Rr : M3) (Rb Rl : R -> M3) (ks T : R) :
+  0 < ks ->
+  is_rot Rr ->
+  (forall t, 0 <= t <= T -> is_rot (Rb t)) ->
+  (forall t, 0 <= t <= T ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t <= T -> exists lam, 0 < lam /\ lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  forall t, 0 <= t <= T -> 1 <= tr (mmul (mT Rr) (Rb t)).
+Proof. exact (lemma1_invariance Rr Rb Rl ks T). Qed.
+
+(** Lemma 1 on [[0, oo)]. *)
+Theorem lemma1_invariance_on_half_line (Rr : M3) (Rb Rl : R -> M3) (ks : R) :
+  0 < ks ->
+  is_rot Rr ->
+  (forall t, 0 <= t -> is_rot (Rb t)) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t -> exists lam, 0 < lam /\ lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  forall t, 0 <= t -> 1 <= tr (mmul (mT Rr) (Rb t)).
+Proof. exact (lemma1_invariance_forever Rr Rb Rl ks). Qed.
+
+(** Theorem 1 on [[0, T]]: with the human passive with a differentiable storage [S_h]
+    (its rate at most the supplied power), V = phi(R_r^T R-bar) + phi(R_r^T R_l) + S_h
+    has [d/dt V <= - k_s lam phi(R_l^T R-bar) <= 0] and does not increase. *)
+Theorem thm1_energy_nonincreasing (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
+    (Sh dSh : R -> R) (ks lam T : R) :
+  0 < ks -> 0 < lam ->
+  is_rot Rr ->
+  (forall t, 0 <= t <= T -> is_rot (Rb t)) ->
+  (forall t, 0 <= t <= T -> is_rot (Rl t)) ->
+  (forall t, 0 <= t <= T ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t <= T ->
+     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                            (mvmul (mT (Rl t)) (ws t)))))) ->
+  (forall t, 0 <= t <= T -> is_derive Sh t (dSh t)) ->
+  (forall t, 0 <= t <= T ->
+     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
+  (forall t, 0 <= t <= T -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  (forall t, 0 <= t <= T ->
+     is_derive (V Rr Rb Rl Sh) t (dV Rr Rb Rl ws dSh ks t)
+     /\ dV Rr Rb Rl ws dSh ks t <= - (ks * lam) * phi (mmul (mT (Rl t)) (Rb t))) /\
+  (forall s t, 0 <= s -> s <= t -> t <= T -> V Rr Rb Rl Sh t <= V Rr Rb Rl Sh s).
+Proof.
+  intros. split.
+  - intros t Ht. destruct (V_rate_bound Rr Rb Rl ws Sh dSh ks lam T) with (t := t)
+      as [D [B _]]; auto.
+  - exact (V_nonincreasing Rr Rb Rl ws Sh dSh ks lam T ltac:(assumption) ltac:(assumption)
+             ltac:(assumption) ltac:(assumption) ltac:(assumption) ltac:(assumption)
+             ltac:(assumption) ltac:(assumption) ltac:(assumption) ltac:(assumption)
+             ltac:(assumption)).
+Qed.
+
+(** Theorem 1, synchronisation (Barbalat's lemma): under the same premises for every
+    t >= 0, a non-negative human storage and a Lipschitz t -> phi(R_l^T R-bar(t)),
+    phi(R_l^T R-bar(t)) -> 0: the leader and the quasi-average synchronise. *)
+Theorem thm1_phi_sync_converges (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
+    (Sh dSh : R -> R) (ks lam Lp : R) :
+  0 < ks -> 0 < lam ->
+  is_rot Rr ->
+  (forall t, 0 <= t -> is_rot (Rb t)) ->
+  (forall t, 0 <= t -> is_rot (Rl t)) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                            (mvmul (mT (Rl t)) (ws t)))))) ->
+  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
+  (forall t, 0 <= t ->
+     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
+  (forall t, 0 <= t -> 0 <= Sh t) ->
+  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  0 < Lp ->
+  (forall s t, 0 <= s -> 0 <= t ->
+     Rabs (phi (mmul (mT (Rl t)) (Rb t)) - phi (mmul (mT (Rl s)) (Rb s))) <= Lp * Rabs (t - s)) ->
+  forall eps, 0 < eps ->
+  exists N, 0 <= N /\ forall t, N <= t -> phi (mmul (mT (Rl t)) (Rb t)) < eps.
+Proof. exact (phi_sync_converges Rr Rb Rl ws Sh dSh ks lam Lp). Qed.
