@@ -148,6 +148,10 @@ def _compile_one(folder: Path, rel: str, coqc: str,
         proc.communicate()
         return False, f"coqc: {rel} not done within {timeout_seconds:g} s\n", \
             time.perf_counter() - start
+    except BaseException:  # a stop: coqc ends with the compilation, not after it
+        proc.kill()
+        proc.wait()
+        raise
     finally:
         with _RUNNING_LOCK:
             _RUNNING.discard(proc)
