@@ -156,7 +156,7 @@ def test_identify_stops_everything(tmp_path, sig):
 @pytest.mark.slow
 @pytest.mark.parametrize("after", [1.0, 4.0])
 def test_gate_stops_everything(tmp_path, after):
-    from tests.test_signals import _gate_model
+    from test_signals import _gate_model
 
     model = _gate_model(tmp_path)
     out = tmp_path / "certs"

@@ -376,8 +376,9 @@ def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identifi
         residual_tests(on_val), [np.asarray(t.t) for t in prepared.validation],
         [np.asarray(t.u) for t in prepared.validation], list(p_val), second=second)
     stage("checking identifiability")
-    gate = identifiability.check(estimate, quality.decision_fit, joined,
-                                 1.0 / prepared.rate)
+    gate = identifiability.check(
+        estimate, quality.decision_fit, joined, 1.0 / prepared.rate,
+        basis="" if second is None else "the second figure's basis: the estimator's")
     if gate.identifiable:
         stage("testing the model class against a larger one")
     model_class = (model_class_test(estimate, prepared.identification) if gate.identifiable
