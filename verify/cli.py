@@ -19,7 +19,7 @@ from verify import __version__
 from verify.artefacts.text import shown
 from verify.errors import VerifyInputError
 from verify.process_tree import CallProcesses, adopt_orphans
-from verify.stopping import StopSignals, deferred_stop
+from verify.stopping import StopSignals, deferred_stop, forget_caught_interrupt
 
 #: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
 #: git-ignored build/; ``verify all`` writes the paper's into certificates/).
@@ -799,6 +799,7 @@ def _run_and_end(handler, args: argparse.Namespace, stop: StopSignals,
             with deferred_stop():  # a signal now is held, the tree ended, then raised
                 processes.end()
     except KeyboardInterrupt:
+        forget_caught_interrupt()  # handled here: the exit code is 128 + the signal
         print(f"verify: {stop.name()}: stopped; files written before it are whole, "
               "nothing was written after it", file=sys.stderr)
         return stop.exit_code()

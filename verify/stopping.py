@@ -93,6 +93,22 @@ def deferred_stop() -> Iterator[None]:
 
 
 
+def forget_caught_interrupt() -> None:
+    """Clear CPython's record of an unhandled ``KeyboardInterrupt`` once the command has
+    handled it.
+
+    CPython 3.11 sets ``_Py_UnhandledKeyboardInterrupt`` when the interrupt passes
+    through C code that runs Python code (an extension module being imported, for
+    instance) even when Python code then catches it, and at exit the interpreter then
+    kills itself with SIGINT: the caller would see "killed by SIGINT" instead of the exit
+    code 128 + the signal the stop message promised. Nothing is done on interpreters
+    without that variable."""
+    import ctypes
+
+    with contextlib.suppress(AttributeError, ValueError, OSError):
+        ctypes.c_int.in_dll(ctypes.pythonapi, "_Py_UnhandledKeyboardInterrupt").value = 0
+
+
 def child_processes(pid: int | None) -> list[int]:
     """The processes whose parent is ``pid``: the kernel's children list of each of its
     threads (``/proc/PID/task/TID/children``), or, on a kernel without those lists, a
@@ -127,4 +143,5 @@ def _children_by_scan(pid: int) -> list[int]:
     return found
 
 
-__all__ = ["STOP_SIGNALS", "StopSignals", "child_processes", "deferred_stop"]
+__all__ = ["STOP_SIGNALS", "StopSignals", "child_processes", "deferred_stop",
+           "forget_caught_interrupt"]
