@@ -780,24 +780,29 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
                 "identify": _cmd_identify, "campaign": _cmd_campaign, "coq": _cmd_coq}
-    if argv is None:  # the top process of the call: its orphans come back to it
+    # The top process of a call (the `verify` command) is the subreaper of its
+    # descendants and ends them all; a library caller of main(argv) keeps its processes
+    # (multiprocessing's forkserver and resource tracker, reused by its next call).
+    processes = None
+    if argv is None:
         adopt_orphans()
-    processes = CallProcesses()
+        processes = CallProcesses()
     stop = StopSignals()
     with stop:
         return _run_and_end(handlers[args.command], args, stop, processes)
 
 
 def _run_and_end(handler, args: argparse.Namespace, stop: StopSignals,
-                 processes: CallProcesses) -> int:
+                 processes: CallProcesses | None) -> int:
     """Run a command's handler; whatever its end, end every process it started before a
     last word is printed (so a stop message is true when it appears)."""
     try:
         try:
             return handler(args)
         finally:
-            with deferred_stop():  # a signal now is held, the tree ended, then raised
-                processes.end()
+            if processes is not None:
+                with deferred_stop():  # a signal now is held, the tree ended, then raised
+                    processes.end()
     except KeyboardInterrupt:
         forget_caught_interrupt()  # handled here: the exit code is 128 + the signal
         print(f"verify: {stop.name()}: stopped; files written before it are whole, "
