@@ -120,6 +120,35 @@ def test_end_tree_ends_children_and_grandchildren():
 
 
 @pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_during_an_import_is_not_swallowed(tmp_path, sig):
+    """A module whose import swallows KeyboardInterrupt with a bare ``except:`` (as
+    mpmath's guard around importing gmpy2 does) gets the signal while it is imported:
+    the stop comes once the import is done, instead of being lost."""
+    (tmp_path / "swallowing.py").write_text(
+        "import os, signal, time\n"
+        "try:\n"
+        f"    os.kill(os.getpid(), {int(sig)})\n"
+        "    time.sleep(0.5)\n"
+        "except:  # noqa: E722\n"
+        "    pass\n")
+    code = (f"import sys, time\nsys.path.insert(0, {str(tmp_path)!r})\n"
+            "from verify.stopping import StopSignals\n"
+            "stop = StopSignals()\n"
+            "try:\n"
+            "    with stop:\n"
+            "        import swallowing\n"
+            "        time.sleep(10)\n"
+            "        print('ran on')\n"
+            "except KeyboardInterrupt:\n"
+            "    print('stopped', stop.name())\n")
+    start = time.monotonic()
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=60)
+    assert done.stdout.strip() == f"stopped {sig.name}", (done.stdout, done.stderr)
+    assert time.monotonic() - start < 8
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
 def test_all_stops_its_pool_workers_and_helpers(tmp_path, sig):
     """Once the pool's forkserver, resource tracker and workers run (5 processes), a
     signal to the top process ends them all before the stop message."""
