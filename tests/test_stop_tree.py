@@ -188,10 +188,13 @@ def test_identify_stops_everything(tmp_path, sig):
 def test_gate_stops_everything(tmp_path, after):
     from test_signals import _gate_model
 
-    model = _gate_model(tmp_path)
+    model = _gate_model(tmp_path)  # four copies: a few seconds each
+    copies = [tmp_path / f"m{k}.toml" for k in range(4)]
+    for k, copy in enumerate(copies):
+        copy.write_text(model.read_text().replace('"m60"', f'"m60-{k}"'))
     out = tmp_path / "certs"
-    _check(["gate", str(model), "--certificates", str(out)], tmp_path, signal.SIGTERM, out,
-           after=after)
+    _check(["gate", *map(str, copies), "--certificates", str(out)], tmp_path,
+           signal.SIGTERM, out, after=after)
 
 
 @pytest.mark.slow
