@@ -202,3 +202,6 @@ def test_a_validation_fit_below_the_minimum_cannot_identify(loop):
     assert not any("validation input fits" in r for r in ok.reasons)
     negative = gate.check(est, [-3.0, 55.0], trials, 1 / 120)
     assert any("no better than predicting" in r for r in negative.reasons)
+    labelled = gate.check(est, [2.8, 55.0], trials, 1 / 120, basis="the estimator's")
+    assert any("validation input (the estimator's) fits 2.80 %" in r
+               for r in labelled.reasons)

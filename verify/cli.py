@@ -19,7 +19,8 @@ from pathlib import Path
 from verify import __version__
 from verify.artefacts.text import shown
 from verify.errors import VerifyInputError
-from verify.stopping import StopSignals
+from verify.process_tree import CallProcesses, adopt_orphans
+from verify.stopping import StopSignals, deferred_stop, forget_caught_interrupt
 
 #: Where ``verify gate`` and ``verify check`` write certificates unless told (under the
 #: git-ignored build/; ``verify all`` writes the paper's into certificates/).
@@ -442,6 +443,9 @@ def _add_campaign_parser(sub) -> None:
     p.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     p.add_argument("--progress", action="store_true",
                    help="show progress on stderr even when it is not a terminal")
+    p.add_argument("--no-wait", dest="wait", action="store_false",
+                   help="when another campaign is writing DIR's store, exit 2 naming it "
+                   "(PID, host, start time) instead of waiting for it to finish")
 
 
 def _all_paths(args: argparse.Namespace) -> tuple[Path, Path, Path]:
@@ -815,7 +819,7 @@ def _cmd_campaign(args: argparse.Namespace) -> int:
 
     return run_campaign_command(CampaignSettings(
         spec=args.spec, out=args.out, scheduler=args.scheduler, workers=args.workers,
-        resume=args.resume, quiet=args.quiet, progress=args.progress))
+        resume=args.resume, quiet=args.quiet, progress=args.progress, wait=args.wait))
 
 
 def _cmd_list(_: argparse.Namespace) -> int:
@@ -924,11 +928,31 @@ def main(argv: Sequence[str] | None = None) -> int:
                 "network": _cmd_network, "gate": _cmd_gate,
                 "certificates": _cmd_certificates, "simulate": _cmd_simulate,
                 "identify": _cmd_identify, "campaign": _cmd_campaign, "coq": _cmd_coq}
+    # The top process of a call (the `verify` command) is the subreaper of its
+    # descendants and ends them all; a library caller of main(argv) keeps its processes
+    # (multiprocessing's forkserver and resource tracker, reused by its next call).
+    processes = None
+    if argv is None:
+        adopt_orphans()
+        processes = CallProcesses()
     stop = StopSignals()
+    with stop:
+        return _run_and_end(handlers[args.command], args, stop, processes)
+
+
+def _run_and_end(handler, args: argparse.Namespace, stop: StopSignals,
+                 processes: CallProcesses | None) -> int:
+    """Run a command's handler; whatever its end, end every process it started before a
+    last word is printed (so a stop message is true when it appears)."""
     try:
-        with stop:
-            return handlers[args.command](args)
+        try:
+            return handler(args)
+        finally:
+            if processes is not None:
+                with deferred_stop():  # a signal now is held, the tree ended, then raised
+                    processes.end()
     except KeyboardInterrupt:
+        forget_caught_interrupt()  # handled here: the exit code is 128 + the signal
         print(f"verify: {stop.name()}: stopped; files written before it are whole, "
               "nothing was written after it", file=sys.stderr)
         return stop.exit_code()

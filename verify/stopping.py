@@ -9,7 +9,11 @@ Every file is written through a temporary file and a rename
 
 A step that must not be cut in two (starting a Dask cluster, whose half-built state
 cannot be closed) runs inside :func:`deferred_stop`: a signal there is held and raised
-as soon as the step is done.
+as soon as the step is done. An import in progress is such a step too, without being
+marked: a ``KeyboardInterrupt`` raised inside one leaves a half-initialised module, and
+libraries guard optional imports with a bare ``except:`` (mpmath's import of gmpy2)
+that would swallow the stop and let the command run on. A signal that finds the main
+thread importing is delivered again 20 ms later, until the import is done.
 """
 
 from __future__ import annotations
@@ -27,6 +31,28 @@ STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
 _deferring = 0
 _pending: list[int] = []
+_retry_scheduled = False
+#: How long a signal that found an import in progress waits before it is tried again.
+RETRY_SECONDS = 0.02
+
+
+def _importing(frame: Any) -> bool:
+    """True when ``frame`` (the main thread's, as a signal handler gets it) runs inside an
+    import: a frame of :mod:`importlib`'s bootstrap is on its stack."""
+    while frame is not None:
+        if frame.f_code.co_filename.startswith("<frozen importlib._bootstrap"):
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _retry(signum: int) -> None:
+    """Send ``signum`` again, to the main thread itself (so that a blocking call there,
+    a sleep or a wait, is interrupted as by the first)."""
+    global _retry_scheduled
+    _retry_scheduled = False
+    with contextlib.suppress(Exception):  # (the process may be ending: nothing to do)
+        signal.pthread_kill(threading.main_thread().ident, signum)
 
 
 class StopSignals:
@@ -39,12 +65,20 @@ class StopSignals:
         self.fired = False
         self._previous: dict[int, Any] = {}
 
-    def _handler(self, signum: int, frame: object) -> None:
+    def _handler(self, signum: int, frame: Any) -> None:
+        global _retry_scheduled
         if self.fired:
             return
         if _deferring:
             if not _pending:
                 _pending.append(signum)
+            return
+        if _importing(frame):  # not inside an import: try again once it is done
+            if not _retry_scheduled:
+                _retry_scheduled = True
+                timer = threading.Timer(RETRY_SECONDS, _retry, (signum,))
+                timer.daemon = True
+                timer.start()
             return
         self.fired, self.signum = True, signum
         raise KeyboardInterrupt
@@ -93,6 +127,22 @@ def deferred_stop() -> Iterator[None]:
 
 
 
+def forget_caught_interrupt() -> None:
+    """Clear CPython's record of an unhandled ``KeyboardInterrupt`` once the command has
+    handled it.
+
+    CPython 3.11 sets ``_Py_UnhandledKeyboardInterrupt`` when the interrupt passes
+    through C code that runs Python code (an extension module being imported, for
+    instance) even when Python code then catches it, and at exit the interpreter then
+    kills itself with SIGINT: the caller would see "killed by SIGINT" instead of the exit
+    code 128 + the signal the stop message promised. Nothing is done on interpreters
+    without that variable."""
+    import ctypes
+
+    with contextlib.suppress(AttributeError, ValueError, OSError):
+        ctypes.c_int.in_dll(ctypes.pythonapi, "_Py_UnhandledKeyboardInterrupt").value = 0
+
+
 def child_processes(pid: int | None) -> list[int]:
     """The processes whose parent is ``pid``: the kernel's children list of each of its
     threads (``/proc/PID/task/TID/children``), or, on a kernel without those lists, a
@@ -127,4 +177,5 @@ def _children_by_scan(pid: int) -> list[int]:
     return found
 
 
-__all__ = ["STOP_SIGNALS", "StopSignals", "child_processes", "deferred_stop"]
+__all__ = ["STOP_SIGNALS", "StopSignals", "child_processes", "deferred_stop",
+           "forget_caught_interrupt"]

@@ -1,10 +1,12 @@
 """``verify campaign SPEC.toml``: validate, expand, run on Dask, store, report.
 
 Everything the spec names is checked before the first run starts (bad input: one line,
-exit 2). The output folder holds ``results/`` (the Parquet store), ``humans/`` (model
-files of drawn family members), ``campaign.md``, ``campaign.html``, ``figures/`` and
-``commands.txt``. Exit 0 when every run has a row and none raised; 1 when a run raised
-or was lost (its row is missing: ``--resume`` runs it again); 2 on bad input.
+exit 2). One campaign at a time writes a store (:mod:`verify.campaign.lock`): a second
+waits for the first, or with ``--no-wait`` exits 2 naming the holder. The output folder
+holds ``results/`` (the Parquet store), ``humans/`` (model files of drawn family
+members), ``campaign.md``, ``campaign.html``, ``figures/`` and ``commands.txt``. Exit 0
+when every run has a row and none raised; 1 when a run raised or was lost (its row is
+missing: ``--resume`` runs it again); 2 on bad input.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ class CampaignSettings:
     resume: bool = False
     quiet: bool = False
     progress: bool = False  # progress on stderr even when it is not a terminal
+    wait: bool = True  # for another campaign writing the same store (else exit 2)
 
 
 def default_workers() -> int:
@@ -95,7 +98,15 @@ def run_campaign_command(s: CampaignSettings) -> int:
     fresh = [p for p in (out, *(out / name for name in _FOLDERS))
              if not os.path.lexists(p)]
     try:
-        return _run(s, spec, out, scheduler, workers)
+        from verify.campaign.lock import StoreLock
+
+        # one writer per store: the lock is held from before the stored keys are read
+        # until the last row is appended and the report written
+        with StoreLock(out / "results", wait=s.wait) as lock:
+            if lock.taken_over:
+                print(f"verify campaign: took over the store's lock from {lock.taken_over}, "
+                      "which ended without releasing it", file=sys.stderr, flush=True)
+            return _run(s, spec, out, scheduler, workers)
     except BaseException:  # no empty folder left by a run that failed or was stopped
         remove_empty(fresh)
         raise

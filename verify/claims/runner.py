@@ -27,6 +27,7 @@ from verify.claims.model import (
     Verdict,
 )
 from verify.claims.registry import REGISTRY
+from verify.process_tree import die_with_parent
 from verify.stopping import child_processes
 
 
@@ -116,7 +117,9 @@ def run_claims(
     # fork keeps locks of native thread pools (clarabel's rayon pool once a solver ran
     # here) whose threads it does not copy, and the worker's first solve then waits forever
     start_method = multiprocessing.get_context("forkserver")
-    pool = ProcessPoolExecutor(max_workers=min(jobs, len(claims)), mp_context=start_method)
+    # each worker dies with its parent (the forkserver, which ends with this process)
+    pool = ProcessPoolExecutor(max_workers=min(jobs, len(claims)), mp_context=start_method,
+                               initializer=die_with_parent)
     try:
         futures = [pool.submit(_run_by_id, c.id, context) for c in claims]
         for claim, future in zip(claims, futures, strict=True):

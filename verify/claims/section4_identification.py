@@ -154,11 +154,17 @@ def identification(context: CheckContext) -> Outcome:
     nonpassive = _run(context, "nonpassive_human", REFUTE_BAND)
     for name, o in (("passive_human", passive_all), ("nonpassive_human", nonpassive)):
         q = o.identified.quality
+        second = q.second
         evidence.append(numeric(
-            f"{name}: fit ratios identification "
-            + ", ".join(f"{x:.2f} %" for x in q.fit_identification) + "; validation "
-            + ", ".join(f"{x:.2f} %" for x in q.fit_validation), True,
-            fit_identification=q.fit_identification, fit_validation=q.fit_validation))
+            f"{name}: fit ratios on the paper's basis (simulated from rest, no offset) "
+            "identification " + ", ".join(f"{x:.2f} %" for x in q.fit_identification)
+            + "; validation " + ", ".join(f"{x:.2f} %" for x in q.fit_validation)
+            + ("" if second is None else
+               f"; second figure ({second.basis}): identification "
+               + ", ".join(f"{x:.2f} %" for x in second.identification) + "; validation "
+               + ", ".join(f"{x:.2f} %" for x in second.validation)), True,
+            fit_identification=q.fit_identification, fit_validation=q.fit_validation,
+            fit_basis=q.basis, fit_second=None if second is None else second.to_json()))
         region = o.ident.region()
         truth = _truth(name)
         distance = rb.quadratic_form(rb.inverse(region.covariance), region.center, truth)

@@ -9,11 +9,13 @@ on the files in order is the whole check.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import shutil
 import subprocess
 import tempfile
+import threading
 import time
 from collections.abc import Mapping, Sequence
 from concurrent.futures import ThreadPoolExecutor
@@ -24,6 +26,7 @@ from pathlib import Path
 from verify.artefacts.atomic import write_all_atomic
 from verify.coq.audit import forbidden_commands, statement_problems, template_problems
 from verify.coq.unit import CoqExportError, CoqUnit
+from verify.process_tree import die_with_parent
 
 LOGICAL_ROOT = "VerifyCoq"
 
@@ -198,18 +201,45 @@ def coqc_available(coqc: str = "coqc") -> bool:
     return shutil.which(coqc) is not None
 
 
+#: ``coqc`` processes running now (from any thread), ended at once by a stop.
+_RUNNING: set[subprocess.Popen] = set()
+_RUNNING_LOCK = threading.Lock()
+
+
 def _compile_one(folder: Path, rel: str, coqc: str,
                  timeout_seconds: float) -> tuple[bool, str, float]:
     start = time.perf_counter()
+    # coqc dies with the thread that started it (and so with this process)
+    with _RUNNING_LOCK:
+        proc = subprocess.Popen([coqc, "-R", ".", LOGICAL_ROOT, rel], cwd=folder,
+                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True,
+                                preexec_fn=die_with_parent)
+        _RUNNING.add(proc)
     try:
-        done = subprocess.run(
-            [coqc, "-R", ".", LOGICAL_ROOT, rel], cwd=folder, capture_output=True,
-            text=True, timeout=timeout_seconds, check=False,
-        )
+        out, err = proc.communicate(timeout=timeout_seconds)
     except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
         return False, f"coqc: {rel} not done within {timeout_seconds:g} s\n", \
             time.perf_counter() - start
-    return done.returncode == 0, done.stdout + done.stderr, time.perf_counter() - start
+    except BaseException:  # a stop: coqc ends with the compilation, not after it
+        proc.kill()
+        proc.wait()
+        raise
+    finally:
+        with _RUNNING_LOCK:
+            _RUNNING.discard(proc)
+    return proc.returncode == 0, out + err, time.perf_counter() - start
+
+
+def _stop_running() -> None:
+    """Kill every ``coqc`` still running (a stop, or an error, ends the compilation)."""
+    with _RUNNING_LOCK:
+        running = list(_RUNNING)
+    for proc in running:
+        with contextlib.suppress(OSError):
+            proc.kill()
 
 
 def _independent(folder: Path, units: list[str]) -> bool:
@@ -266,9 +296,16 @@ def compile_development(folder: Path, *, coqc: str = "coqc",
     failed = run_in_order(prelude)
     if failed is None and units:
         if jobs > 1 and _independent(folder, units):
-            with ThreadPoolExecutor(max_workers=jobs) as pool:
+            pool = ThreadPoolExecutor(max_workers=jobs)
+            try:
                 done = list(pool.map(
                     lambda rel: _compile_one(folder, rel, coqc, timeout_seconds), units))
+            except BaseException:  # a stop: no thread waits for its coqc to finish
+                pool.shutdown(wait=False, cancel_futures=True)
+                _stop_running()
+                pool.shutdown(wait=True)
+                raise
+            pool.shutdown(wait=True)
             for rel, (ok, text, seconds) in zip(units, done, strict=True):
                 outputs.append(text)
                 timings.append((rel, seconds))

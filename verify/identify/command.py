@@ -47,6 +47,7 @@ from verify.identify.model.model_writer import (
     read_identified,
     structure_text,
 )
+from verify.identify.quality.fits import PAPER_BASIS, trial_ranges
 from verify.identify.quality.identifiability import Identifiability
 from verify.identify.robust import band_certificate as rc
 from verify.identify.robust.verdict import BandSearch, RobustResult, largest_band, robust_verdict
@@ -175,12 +176,29 @@ def validate(settings: IdentifySettings) -> Plan:
 # ------------------------------------------------------------------ data -> estimate
 
 
+@dataclass(frozen=True)
+class SecondFit:
+    """The fit on the estimator's basis (offsets added, or initial states estimated),
+    reported beside the paper's and labelled with its ``basis``
+    (:func:`verify.identify.quality.fits.second_basis`)."""
+
+    basis: str
+    identification: list[float]
+    validation: list[float]
+
+    def to_json(self) -> dict[str, Any]:
+        return {"basis": self.basis,
+                "identification": [canonical(x) for x in self.identification],
+                "validation": [canonical(x) for x in self.validation]}
+
+
 @dataclass
 class Quality:
-    """Fit ratios (%) per output on identification and validation data (Section 4's fit
-    of the model simulated on the logged input, :func:`verify.identify.quality.fits.honest_fits`:
-    first trial from rest, state carried across trials that follow on), residual tests
-    (diagnostics only)."""
+    """Fit ratios (%) per output on identification and validation data: the paper's
+    (Section 4, :func:`verify.identify.quality.fits.paper_fits`: each data set simulated
+    on its logged input from rest, no offset), and, when the estimate uses offsets or
+    estimated initial states, the fit on that basis as a labelled ``second`` figure;
+    residual tests (diagnostics only, on the estimator's basis)."""
 
     fit_identification: list[float]
     fit_validation: list[float]
@@ -188,8 +206,46 @@ class Quality:
     validation_times: list[np.ndarray] = field(default_factory=list)
     validation_measured: list[np.ndarray] = field(default_factory=list)
     validation_predicted: list[np.ndarray] = field(default_factory=list)
-    initial: str = ("simulated on the logged input e, first trial from rest, each later "
-                    "trial from the state the model left the previous one in")
+    basis: str = PAPER_BASIS
+    second: SecondFit | None = None
+
+    @property
+    def decision_fit(self) -> list[float]:
+        """The validation fit the identifiability gate uses: on the estimator's basis
+        (an uncalibrated stick's offset does not make a model unidentifiable)."""
+        return self.second.validation if self.second is not None else self.fit_validation
+
+    def text(self) -> str:
+        """The fit line(s) the command prints."""
+        def both(ident: list[float], val: list[float]) -> str:
+            return ("identification " + ", ".join(f"{x:.2f}" for x in ident)
+                    + "; validation " + ", ".join(f"{x:.2f}" for x in val))
+
+        out = f"fit (%, {self.basis}): " + both(self.fit_identification, self.fit_validation)
+        if self.second is not None:
+            out += (f"\n  second fit (%, not the paper's basis; {self.second.basis}): "
+                    + both(self.second.identification, self.second.validation))
+        return out
+
+    def to_json(self) -> dict[str, Any]:
+        return {"identification": [canonical(x) for x in self.fit_identification],
+                "validation": [canonical(x) for x in self.fit_validation],
+                "basis": self.basis,
+                "second": None if self.second is None else self.second.to_json()}
+
+    def table(self) -> dict[str, Any]:
+        """The fit entries of the model file's [identification] table."""
+        out: dict[str, Any] = {
+            "fit_identification": [canonical(x) for x in self.fit_identification],
+            "fit_validation": [canonical(x) for x in self.fit_validation],
+            "fit_basis": self.basis}
+        if self.second is not None:
+            out.update({
+                "fit_second_identification": [canonical(x)
+                                              for x in self.second.identification],
+                "fit_second_validation": [canonical(x) for x in self.second.validation],
+                "fit_second_basis": self.second.basis})
+        return out
 
 
 @dataclass
@@ -219,6 +275,7 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
     (:func:`verify.identify.estimate.trial_data.fresh_starts`)."""
     from verify.identify.estimate.trial_data import (
         MAX_CARRY_GAP,
+        START_WINDOW,
         dead_time_gaps,
         fresh_starts,
         mid_response,
@@ -249,15 +306,20 @@ def trial_joins(trials: Sequence[Any]) -> tuple[str, ...]:
         out.append(f"trial(s) {', '.join(str(t) for t in rest)} start independently from "
                    "rest (same trial id as the previous segment, or the clock does not "
                    "move forward)")
-    for tr, is_fresh in zip(trials, fresh, strict=True):
-        if is_fresh:
-            share = 100 * mid_response(tr, level)
-            out.append(f"warning: trial {tr.trial} (from t = {float(tr.t[0]):.4g} s) begins "
-                       f"mid-response (u over its first 0.25 s, from the rest level, at "
-                       f"{share:.0f} % of its largest value): logging started during a "
-                       "response, so its initial state is estimated, not taken as rest "
-                       "(in closed loop that estimate is biased; log from before the "
-                       "response where possible)")
+    late = [tr for tr, is_fresh in zip(trials, fresh, strict=True) if is_fresh]
+    if late:  # one line for all of them, however many
+        shares = [100 * mid_response(tr, level) for tr in late]
+        span = (f"{min(shares):.0f} %" if round(min(shares)) == round(max(shares))
+                else f"{min(shares):.0f}–{max(shares):.0f} %")
+        ids = sorted({tr.trial for tr in late})
+        noun, verb, its = (("trial", "begins", "its initial state is") if len(ids) == 1
+                           else ("trials", "begin", "their initial states are"))
+        out.append(f"warning: {noun} {trial_ranges(ids)} {verb} mid-response (u at {span} "
+                   f"of its largest value over its first {START_WINDOW:g} s, from the rest "
+                   f"level): {its} estimated for the estimator and the second fit figure; "
+                   "the paper's fit starts them from rest (logging started during a "
+                   "response: in closed loop that estimate is biased; log from before the "
+                   "response where possible)")
     return tuple(out)
 
 
@@ -268,7 +330,13 @@ def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identifi
     from verify.identify.estimate.estimation import estimate_model
     from verify.identify.estimate.result import CannotIdentifyError
     from verify.identify.quality import identifiability
-    from verify.identify.quality.fits import assess, honest_fits
+    from verify.identify.quality.fits import (
+        assess,
+        fit_ratios,
+        honest_fits,
+        paper_fits,
+        second_basis,
+    )
     from verify.identify.quality.model_class import model_class_test
     from verify.inputs.experiment_log import read_logs
 
@@ -296,16 +364,21 @@ def identify_logs(plan: Plan, stage: Callable[[str], None] = silent) -> Identifi
         gate = identifiability.Identifiability(False, (str(exc),), figures)
         return Identified(None, None, prepared.rate, (ids, vals), prepared.notes, gate, joins)
     stage(f"simulating the fits on {len(ids)} + {len(vals)} trial(s)")
+    p_id, p_val = paper_fits(estimate, prepared.identification, prepared.validation)
     y_id, y_val = honest_fits(estimate, prepared.identification, prepared.validation)
-    on_id = assess(estimate, prepared.identification, yhat=y_id)
-    on_val = assess(estimate, prepared.validation, yhat=y_val)
+    on_val = assess(estimate, prepared.validation, yhat=y_val)  # residuals: the estimator's
+    basis = second_basis(estimate, prepared.identification, prepared.validation)
+    second = None if basis is None else SecondFit(
+        basis, fit_ratios(prepared.identification, y_id),
+        [float(x) for x in on_val.fit])
     quality = Quality(
-        [float(x) for x in on_id.fit], [float(x) for x in on_val.fit], residual_tests(on_val),
-        [np.asarray(t.t) for t in prepared.validation],
-        [np.asarray(t.u) for t in prepared.validation], list(y_val))
+        fit_ratios(prepared.identification, p_id), fit_ratios(prepared.validation, p_val),
+        residual_tests(on_val), [np.asarray(t.t) for t in prepared.validation],
+        [np.asarray(t.u) for t in prepared.validation], list(p_val), second=second)
     stage("checking identifiability")
-    gate = identifiability.check(estimate, quality.fit_validation, joined,
-                                 1.0 / prepared.rate)
+    gate = identifiability.check(
+        estimate, quality.decision_fit, joined, 1.0 / prepared.rate,
+        basis="" if second is None else "the second figure's basis: the estimator's")
     if gate.identifiable:
         stage("testing the model class against a larger one")
     model_class = (model_class_test(estimate, prepared.identification) if gate.identifiable
@@ -455,9 +528,7 @@ def decide_identified(plan: Plan, identified: Identified, *, band_steps: int = 7
         "samples": int(est.samples),
         "noise_std": [canonical(x) for x in est.noise_std],
         **_offset_table(est),
-        "fit_identification": [canonical(x) for x in q.fit_identification],
-        "fit_validation": [canonical(x) for x in q.fit_validation],
-        "fit_initial_condition": q.initial,
+        **q.table(),
         "trial_joins": list(identified.joins),
         **{k: v for k, v in q.tests.items()},
         "logs": [p.name for p in plan.logs],
@@ -563,9 +634,7 @@ def summary_json(o: Outcome) -> dict[str, Any]:
                                          for v in np.diag(est.covariance)],
                      "offsets": _offset_values(est),
                      "offset_standard_errors": [canonical(x) for x in est.offset_errors]},
-        "fit": {"identification": [canonical(x) for x in q.fit_identification],
-                "validation": [canonical(x) for x in q.fit_validation],
-                "initial_condition": q.initial},
+        "fit": q.to_json(),
         "trial_joins": list(o.identified.joins),
         "protocol": list(o.identified.notes),
         "identifiability": o.identified.gate.to_json() if o.identified.gate else None,
@@ -667,10 +736,7 @@ def lines(o: Outcome) -> list[str]:
     out = [f"identified {o.plan.name}: structure {structure_text(est.structure)}, "
            f"{est.method}, {o.identified.rate:g} Hz, trials {o.identified.trials[0]} "
            f"(identification) / {o.identified.trials[1]} (validation)"]
-    out.append("  fit (%, model simulated on the logged input, state carried across "
-               "trials): identification " + ", ".join(f"{x:.2f}" for x in
-                                                      q.fit_identification)
-               + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
+    out.append("  " + q.text())
     out.append("  trials joined: " + "; ".join(o.identified.joins))
     out.append("  protocol: " + "; ".join(o.identified.notes))
     se = np.sqrt(np.clip(np.diag(est.covariance), 0, None))
@@ -836,10 +902,7 @@ def refusal_lines(plan: Plan, identified: Identified) -> list[str]:
     out += [f"  - {r}" for r in identified.gate.reasons]
     q, est = identified.quality, identified.estimate
     if q is not None:
-        out.append("  fit (%, model simulated on the logged input, state carried across "
-                   "trials): identification " + ", ".join(f"{x:.2f}" for x in
-                                                          q.fit_identification)
-                   + "; validation " + ", ".join(f"{x:.2f}" for x in q.fit_validation))
+        out.append("  " + q.text())
     if est is not None:
         out.append("  estimate (not certified): " + ", ".join(
             f"{n} = {float(x):.4g}" for n, x in zip(est.names, est.theta, strict=True)))
@@ -862,11 +925,7 @@ def refusal_json(plan: Plan, identified: Identified) -> dict[str, Any]:
         "estimate": None if est is None else {
             "method": est.method, "names": list(est.names),
             "theta": [canonical(x, 6) for x in est.theta]},
-        "fit": None if q is None else {"identification": [canonical(x) for x in
-                                                          q.fit_identification],
-                                       "validation": [canonical(x) for x in
-                                                      q.fit_validation],
-                                       "initial_condition": q.initial},
+        "fit": None if q is None else q.to_json(),
         "residual_tests": None if q is None else q.tests,
         "trial_joins": list(identified.joins),
         "protocol": list(identified.notes),

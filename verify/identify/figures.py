@@ -54,13 +54,15 @@ def validation_figure(times: Sequence[np.ndarray], measured: Sequence[np.ndarray
         tt = np.asarray(t) - t[0] + offset
         for i, ax in enumerate(axes):
             ax.plot(tt, y[:, i], color="0.3", lw=0.8, label="data" if k == 0 else None)
-            ax.plot(tt, yhat[:, i], color="C1", lw=1.0, label="model" if k == 0 else None)
+            ax.plot(tt, yhat[:, i], color="C1", lw=1.0,
+                    label="model (from rest, no offset)" if k == 0 else None)
         offset = tt[-1] + (t[1] - t[0])
         for ax in axes:
             ax.axvline(offset, color="0.85", lw=0.5)
     for i, ax in enumerate(axes):
         ax.set_ylabel(rf"$u_{{h,{i + 1}}}$ [rad/s]")
-        ax.set_title(f"output {i + 1}: validation fit {fits[i]:.2f} %", fontsize=9)
+        ax.set_title(f"output {i + 1}: validation fit {fits[i]:.2f} % (the paper's basis)",
+                     fontsize=9)
         ax.legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel(r"time over the validation trials, $t$ [s]")
     fig.tight_layout()

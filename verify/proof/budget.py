@@ -27,6 +27,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from verify.process_tree import die_with_parent
+
 
 @dataclass(frozen=True)
 class Budget:
@@ -75,6 +77,7 @@ def run_bounded(work: Callable[[], Any], budget: Budget) -> Any:
     if pid == 0:  # the child: compute, hand the result over, exit without cleanup
         status = 0
         try:
+            die_with_parent()  # no work outlives the checker that asked for it
             os.close(r)
             faulthandler.disable()  # a crash here is reported by the parent, in one line
             null = os.open(os.devnull, os.O_WRONLY)
@@ -113,6 +116,9 @@ def run_bounded(work: Callable[[], Any], budget: Budget) -> Any:
             if not chunk:
                 break
             chunks.append(chunk)
+    except BaseException:  # a stop (KeyboardInterrupt): the work is not waited for
+        timed_out = True
+        raise
     finally:
         os.close(r)
         if timed_out:

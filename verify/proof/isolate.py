@@ -44,6 +44,10 @@ def _limits(budget: Budget):
     def apply() -> None:
         import resource
 
+        from verify.process_tree import die_with_parent
+
+        die_with_parent()  # a checker that ends takes the file's processes with it
+
         cpu = max(1, int(budget.seconds + 0.999))
         resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 5))
         resource.setrlimit(resource.RLIMIT_AS, (budget.memory, budget.memory))

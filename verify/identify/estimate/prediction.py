@@ -188,17 +188,20 @@ def element_parameters(structure: Structure, theta: Sequence[float], i: int
 
 
 def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
-                   initial: str = "estimate", offset: float = 0.0) -> np.ndarray:
+                   initial: str = "estimate", offset: float = 0.0,
+                   fresh: bool = True) -> np.ndarray:
     """The model's output i over all trials (concatenated) from the measured inputs.
 
     ``initial``: "estimate" (each trial's initial state by least squares), "carry" or
     "zero" (module docstring); ``offset``: the constant added to the output (an
-    estimated offset of the logged output, not refitted here).
+    estimated offset of the logged output, not refitted here); ``fresh`` False: with
+    "carry", a trial that begins mid-response starts from rest too (Section 4's fit
+    ratio as the paper defines it), its initial state not fitted.
     """
     if initial not in INITIAL_STATES:
         raise ValueError(f"initial must be one of {', '.join(INITIAL_STATES)}, got {initial!r}")
     zeros = len(b) - 1
-    data = replace(data, initial=initial, offset=False)
+    data = replace(data, initial=initial, offset=False, free=data.free if fresh else ())
     X = design(a, data, zeros)
     forced = X[:, : zeros + 1] @ np.asarray(b, float) + c * X[:, zeros + 1] + float(offset)
     n = len(a)
@@ -214,15 +217,18 @@ def predict_output(b: np.ndarray, a: np.ndarray, c: float, data: OutputData, *,
 
 
 def predict(structure: Structure, theta: Sequence[float], trials: Sequence[Trial], *,
-            initial: str = "estimate", offsets: Sequence[float] = ()) -> list[np.ndarray]:
+            initial: str = "estimate", offsets: Sequence[float] = (),
+            fresh: bool = True) -> list[np.ndarray]:
     """The model's (N, 2) output per trial, simulated from the trials' measured inputs,
-    plus ``offsets`` (one constant per output, :attr:`Estimate.offsets`; none: zero)."""
+    plus ``offsets`` (one constant per output, :attr:`Estimate.offsets`; none: zero);
+    ``fresh`` as :func:`predict_output`."""
     h = check_trials(trials, structure, what="the simulation of a model")
     sizes = [np.asarray(tr.t).shape[0] for tr in trials]
     columns = []
     for i in (0, 1):
         b, a, c = element_parameters(structure, theta, i)
         columns.append(predict_output(b, a, c, output_data(trials, i, h), initial=initial,
-                                      offset=float(offsets[i]) if len(offsets) else 0.0))
+                                      offset=float(offsets[i]) if len(offsets) else 0.0,
+                                      fresh=fresh))
     both = np.column_stack(columns)
     return np.split(both, np.cumsum(sizes)[:-1])

@@ -115,7 +115,9 @@ def run_study(theta_true: Sequence[float], seeds: Sequence[int], *,
     if jobs > 1:
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(jobs) as pool:
+        from verify.process_tree import die_with_parent
+
+        with ProcessPoolExecutor(jobs, initializer=die_with_parent) as pool:
             futures = [pool.submit(repetition, theta_true, seed, **settings) for seed in seeds]
             for future in futures:
                 rep = future.result()

@@ -189,16 +189,18 @@ def roughness(trials: Sequence[Trial], signal: str) -> np.ndarray:
 
 
 def check(estimate: Estimate, fit_validation: Sequence[float], trials: Sequence[Trial],
-          h: float) -> Identifiability:
+          h: float, *, basis: str = "") -> Identifiability:
     """The five questions of the module docstring, on the estimate, its honest validation
-    fit (per output) and the prepared trials (identification and validation)."""
+    fit (per output; ``basis``, when given, names the basis of that figure in the
+    reason) and the prepared trials (identification and validation)."""
     reasons = []
+    on = f" ({basis})" if basis else ""
     fits = [float(x) for x in fit_validation]
     for i, fit in enumerate(fits):
         if not fit >= MIN_FIT:
             worse = " (no better than predicting the output's mean or zero)" if fit <= 0 else ""
-            reasons.append(f"output {i + 1}: the model simulated on the validation input fits "
-                           f"{fit:.2f} %{worse}, below the {MIN_FIT:g} % a model must explain "
+            reasons.append(f"output {i + 1}: the model simulated on the validation input{on} "
+                           f"fits {fit:.2f} %{worse}, below the {MIN_FIT:g} % a model must explain "
                            "of the operator's output; the response is buried in noise: log "
                            "longer or less noisy trials")
     reasons += interior(estimate, h)
