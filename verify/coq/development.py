@@ -1,6 +1,7 @@
 """Writing a Coq development to a folder and compiling it with ``coqc``.
 
-A development is the prelude (``verify/coq/prelude/*.v``, copied as is), one file per
+A development is the prelude modules its units need (``verify/coq/prelude/*.v``, copied
+as is: those a unit ``Require``s, and what they ``Require`` in turn), one file per
 :class:`~verify.coq.unit.CoqUnit`, a ``_CoqProject`` mapping the folder to the logical
 root :data:`LOGICAL_ROOT`, and ``All.v`` that ``Require``s every unit, names every top
 theorem in one tuple and prints its assumptions (those of all the theorems). ``coqc``
@@ -49,6 +50,26 @@ def prelude_sources() -> dict[str, str]:
     return {name: found[name] for name in ordered}
 
 
+_REQUIRE = re.compile(
+    rf"From\s+{LOGICAL_ROOT}\s+Require(?:\s+(?:Import|Export))?\s+([^.]*)\.")
+
+
+def required_prelude(prelude: Mapping[str, str], texts: Sequence[str]) -> dict[str, str]:
+    """The prelude modules ``texts`` require, directly or through another prelude module,
+    in the prelude's order: a gate's or a user's development does not carry (or
+    compile) the trajectory files only the paper's conclusions need."""
+    needed: set[str] = set()
+    pending = [name for text in texts for match in _REQUIRE.finditer(text)
+               for name in match.group(1).split()]
+    while pending:
+        name = pending.pop()
+        if name in prelude and name not in needed:
+            needed.add(name)
+            pending += [dep for match in _REQUIRE.finditer(prelude[name])
+                        for dep in match.group(1).split()]
+    return {name: text for name, text in prelude.items() if name in needed}
+
+
 def prelude_digest() -> str:
     """SHA-256 (hex) of the prelude: each module's name and text in :data:`PRELUDE_ORDER`,
     so two installations that print the same digest export against the same definitions."""
@@ -74,6 +95,8 @@ def render_development(units: Sequence[CoqUnit], *,
     clash = set(names) & set(prelude) | ({"All"} & set(names))
     if clash:
         raise ValueError(f"Coq unit names clash with the prelude: {sorted(clash)}")
+    if units:
+        prelude = required_prelude(prelude, [unit.text for unit in units])
     files: dict[str, str] = {f"{name}.v": text for name, text in prelude.items()}
     files.update({f"{unit.name}.v": unit.text for unit in units})
     order = [*prelude, *names]
