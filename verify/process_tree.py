@@ -165,6 +165,28 @@ def end_tree(grace: float = 3.0, *, keep: tuple[int, ...] = ()) -> list[int]:
         time.sleep(0.02)
 
 
+def stop_helper(owner, pid_name: str, fd_name: str, grace: float) -> None:
+    """Stop a multiprocessing helper (forkserver, resource tracker) as its own ``_stop``
+    does, by closing the descriptor whose end it waits for, but without waiting for it
+    forever: after ``grace`` seconds it is killed."""
+    pid, fd = getattr(owner, pid_name, None), getattr(owner, fd_name, None)
+    if pid is None:
+        return
+    if fd is not None:
+        with contextlib.suppress(OSError):
+            os.close(fd)
+        setattr(owner, fd_name, None)
+    deadline = time.monotonic() + grace
+    with contextlib.suppress(ChildProcessError, OSError):
+        while os.waitpid(pid, os.WNOHANG) == (0, 0):
+            if time.monotonic() > deadline:
+                os.kill(pid, signal.SIGKILL)
+                os.waitpid(pid, 0)
+                break
+            time.sleep(0.02)
+    setattr(owner, pid_name, None)
+
+
 def stop_resource_tracker(grace: float = 2.0) -> None:
     """End multiprocessing's resource tracker of this process, after the finalizers that
     release the resources it tracks have run (so it has nothing to report)."""
@@ -178,20 +200,7 @@ def stop_resource_tracker(grace: float = 2.0) -> None:
         return
     with contextlib.suppress(Exception):
         util._run_finalizers(0)
-    fd = getattr(tracker, "_fd", None)
-    if fd is not None:
-        with contextlib.suppress(OSError):
-            os.close(fd)
-        tracker._fd = None
-    deadline = time.monotonic() + grace
-    with contextlib.suppress(ChildProcessError, OSError):
-        while os.waitpid(pid, os.WNOHANG) == (0, 0):
-            if time.monotonic() > deadline:
-                os.kill(pid, signal.SIGKILL)
-                os.waitpid(pid, 0)
-                break
-            time.sleep(0.02)
-    tracker._pid = None
+    stop_helper(tracker, "_pid", "_fd", grace)
 
 
 def tracker_pid() -> int | None:

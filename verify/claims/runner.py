@@ -27,7 +27,7 @@ from verify.claims.model import (
     Verdict,
 )
 from verify.claims.registry import REGISTRY
-from verify.process_tree import die_with_parent
+from verify.process_tree import die_with_parent, stop_helper
 from verify.stopping import child_processes
 
 
@@ -158,30 +158,10 @@ def stop_pool(pool, grace: float = 2.0) -> None:
     for child in child_processes(getattr(forkserver._forkserver, "_forkserver_pid", None)):
         with contextlib.suppress(OSError):  # a worker still being started
             os.kill(child, signal.SIGKILL)
-    _stop_helper(forkserver._forkserver, "_forkserver_pid", "_forkserver_alive_fd", grace)
+    stop_helper(forkserver._forkserver, "_forkserver_pid", "_forkserver_alive_fd", grace)
     # The resource tracker is left to end by itself: this process is now the only holder
     # of its pipe, so it ends as this process exits, after the pool's semaphores are
     # released here (stopped earlier, it would release them first, and each release at
     # exit would print a traceback).
 
 
-def _stop_helper(owner, pid_name: str, fd_name: str, grace: float) -> None:
-    """Stop a multiprocessing helper (forkserver, resource tracker) as its own ``_stop``
-    does, by closing the descriptor whose end it waits for, but without waiting for it
-    forever: after ``grace`` seconds it is killed."""
-    pid, fd = getattr(owner, pid_name, None), getattr(owner, fd_name, None)
-    if pid is None:
-        return
-    if fd is not None:
-        with contextlib.suppress(OSError):
-            os.close(fd)
-        setattr(owner, fd_name, None)
-    deadline = time.monotonic() + grace
-    with contextlib.suppress(ChildProcessError, OSError):
-        while os.waitpid(pid, os.WNOHANG) == (0, 0):
-            if time.monotonic() > deadline:
-                os.kill(pid, signal.SIGKILL)
-                os.waitpid(pid, 0)
-                break
-            time.sleep(0.02)
-    setattr(owner, pid_name, None)

@@ -13,7 +13,7 @@ from __future__ import annotations
 import unicodedata
 from fractions import Fraction
 
-from verify.coq.text import generated_identifier
+from verify.coq.text import LETTER_NAMES, generated_identifier
 from verify.coq.unit import CoqExportError, comment_text
 from verify.proof.expr import (
     MATRIX,
@@ -34,12 +34,6 @@ PI Set Prop Type fun forall exists let in match end with as Theorem Lemma Proof 
 Section End Variable Variables Hypothesis Let Definition Notation Local step
 """.split())
 
-_LETTERS = {"ω": "omega", "ξ": "xi", "θ": "theta", "λ": "lambda", "φ": "phi", "ψ": "psi",
-            "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "eps", "η": "eta",
-            "μ": "mu", "ν": "nu", "π": "pi", "ρ": "rho", "σ": "sigma", "τ": "tau",
-            "Ω": "Omega", "Θ": "Theta", "Φ": "Phi", "Σ": "Sigma", "Δ": "Delta",
-            "\u0304": "bar", "\u0303": "tilde", "\u0307": "dot", "ᵀ": "T", "^": "_",
-            "'": "p", "-": "_"}
 
 
 def ascii_identifier(text: str) -> str:
@@ -48,8 +42,8 @@ def ascii_identifier(text: str) -> str:
     for ch in unicodedata.normalize("NFD", text):
         if ch.isascii() and (ch.isalnum() or ch == "_"):
             out.append(ch)
-        elif ch in _LETTERS:
-            out.append(_LETTERS[ch])
+        elif ch in LETTER_NAMES:
+            out.append(LETTER_NAMES[ch])
         else:
             out.append("_")
     name = "".join(out).strip("_")

@@ -38,7 +38,8 @@ RESERVED_MODULES = frozenset(name.casefold() for name in (
     "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat", "Conclusions",
 ))
 
-_GREEK = {"ω": "omega", "ξ": "xi", "θ": "theta", "λ": "lambda", "φ": "phi", "ψ": "psi",
+#: ASCII names of the Greek letters and marks an identifier hint spells out.
+LETTER_NAMES = {"ω": "omega", "ξ": "xi", "θ": "theta", "λ": "lambda", "φ": "phi", "ψ": "psi",
           "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "eps", "η": "eta",
           "μ": "mu", "ν": "nu", "π": "pi", "ρ": "rho", "σ": "sigma", "τ": "tau",
           "Ω": "Omega", "Θ": "Theta", "Φ": "Phi", "Σ": "Sigma", "Δ": "Delta",
@@ -89,8 +90,8 @@ def ascii_hint(text: str, *, limit: int = MAX_HINT_CHARS) -> str:
     for ch in unicodedata.normalize("NFD", str(text)[: 4 * limit]):
         if ch.isascii() and (ch.isalnum() or ch == "_"):
             out.append(ch)
-        elif ch in _GREEK:
-            out.append(_GREEK[ch])
+        elif ch in LETTER_NAMES:
+            out.append(LETTER_NAMES[ch])
         else:
             out.append("_")
     hint = re.sub(r"_+", "_", "".join(out)).strip("_")
