@@ -248,6 +248,24 @@ def test_verify_coq_refuses_an_edited_paper_statement(tmp_path):
     assert outcome[name].startswith("refused: statement edited")
 
 
+def test_verify_coq_exits_1_on_an_edited_paper_certificate(tmp_path):
+    """`verify coq` over a certificates folder where one of the paper's SOS certificates
+    carries an edited statement writes the rest, names the refusal and exits 1."""
+    import shutil
+
+    certificates = tmp_path / "certificates"
+    shutil.copytree(SHIPPED, certificates, ignore=shutil.ignore_patterns("coq"))
+    name = "sos-ca4209e02297c7d04166.json"
+    data = json.loads((certificates / name).read_text(encoding="utf-8"))
+    data["claim"]["statement"] = "k_s >= 0"
+    (certificates / name).write_text(json.dumps(data), encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "verify.cli", "coq", "--out",
+                           str(tmp_path / "coq")], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "statement edited" in done.stdout
+
+
 def test_verify_check_renews_a_stored_statement_that_is_not_the_steps(tmp_path, trace):
     """A certificate written with another statement (an earlier version's labelled text,
     or an edit) is reused by `verify check` and rewritten with its step's statement."""

@@ -24,6 +24,7 @@ from verify.coq.development import (
 )
 from verify.coq.export import (
     EXPORTED_SCHEMAS,
+    PAPER_SOS_REFUSED,
     Export,
     export_certificates,
     not_exported_json,
@@ -139,7 +140,8 @@ def run_coq(inputs: Sequence[Path], out: Path | None, check: bool,
         return 1
     print(f"wrote {folder}: {len(export.units)} unit(s), {len(export.not_exported)} file(s) "
           f"not exported (reasons in {folder / NOT_EXPORTED_FILE})")
-    refused = [i for i in export.not_exported if i.schema in EXPORTED_SCHEMAS]
+    refused = [i for i in export.not_exported
+               if i.schema in EXPORTED_SCHEMAS or i.reason.startswith(PAPER_SOS_REFUSED)]
     for item in refused:
         print(f"not exported: {item.reason}")
     ok = not refused

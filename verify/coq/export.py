@@ -32,6 +32,10 @@ PR_SCHEMAS = ("verify-pr-certificate/1",)
 #: kinds that is not exported was refused, with the reason).
 EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS, *PR_SCHEMAS)
 
+#: Reason prefix of a paper's SOS certificate that was refused (edited statement, not
+#: PSD, malformed): a failure of ``verify coq``, not a kind left out by design.
+PAPER_SOS_REFUSED = "SOS certificate of a paper's step, not exported: "
+
 #: Kinds exported in part: what their unit does not state, left to the Python checker.
 PARTLY_EXPORTED: dict[str, str] = {"verify-pr-certificate/1": NOT_KERNEL_CHECKED}
 
@@ -168,8 +172,7 @@ def paper_development_units(certificates_dir: Path) -> Export:
             left.append(item)
         elif fate.startswith("refused: "):
             left.append(NotExported(item.file, item.schema,
-                                    "SOS certificate of a paper's step, not exported: "
-                                    + fate.removeprefix("refused: ")))
+                                    PAPER_SOS_REFUSED + fate.removeprefix("refused: ")))
     return Export((*derivation_units(), *sos_units, *certs.units, *conclusion_units()),
                   tuple(left),
                   certs.partly)
