@@ -262,7 +262,8 @@ def test_a_full_file_system_during_a_campaign_leaves_no_empty_folder(tmp_path, c
     import verify.campaign.command as command
 
     def fails(s, spec, out, *rest):
-        (out / "results").mkdir(parents=True)
+        # the store's folder exists already: the campaign holds its lock in it
+        (out / "results").mkdir(parents=True, exist_ok=True)
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(out / "results"))
 
     monkeypatch.setattr(command, "_run", fails)
