@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 
-from verify.cli import _build_parser
+from verify.cli import _build_parser, command_parsers
 
 
 def _actions(parser: argparse.ArgumentParser, path: tuple[str, ...] = ()):
@@ -33,22 +33,13 @@ def test_all_documents_its_outputs():
     assert "build/run.json" in text and "build/only/reports" in text
 
 
-def _commands(parser: argparse.ArgumentParser, path: tuple[str, ...] = ()):
-    """Every command and nested command (``certificates check``) with its parser."""
-    for action in parser._actions:
-        if isinstance(action, argparse._SubParsersAction):
-            for name, sub in action.choices.items():
-                yield (*path, name), sub
-                yield from _commands(sub, (*path, name))
-
-
 def test_every_command_help_ends_with_examples_that_parse():
     """Each ``verify COMMAND --help`` ends with two or three examples, and each example is
     a command line the parser accepts (so an example cannot name a flag that is gone)."""
     import shlex
 
     parser = _build_parser()
-    commands = list(_commands(parser))
+    commands = list(command_parsers(parser))
     assert len(commands) >= 11
     for path, sub in commands:
         text = sub.format_help()

@@ -29,6 +29,16 @@ GATE_CERTIFICATES = Path("build") / "certificates"
 ONLY_OUT = Path("build") / "only"
 
 
+def command_parsers(parser: argparse.ArgumentParser, path: tuple[str, ...] = ()):
+    """Every command and nested command (``certificates check``) of ``parser``, as
+    (words after ``verify``, its parser), depth first."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield (*path, name), sub
+                yield from command_parsers(sub, (*path, name))
+
+
 def _build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="verify",

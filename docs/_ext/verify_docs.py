@@ -13,7 +13,6 @@ parses a docstring.
 
 from __future__ import annotations
 
-import argparse
 import os
 import re
 from pathlib import Path
@@ -23,17 +22,9 @@ from sphinx.application import Sphinx
 from sphinx.util.docutils import SphinxDirective
 
 
-def _commands(parser: argparse.ArgumentParser, path: tuple[str, ...] = ()):
-    for action in parser._actions:
-        if isinstance(action, argparse._SubParsersAction):
-            for name, sub in action.choices.items():
-                yield (*path, name), sub
-                yield from _commands(sub, (*path, name))
-
-
 def help_texts() -> list[tuple[str, str]]:
     """(command line, its --help text) for ``verify`` and every (nested) command."""
-    from verify.cli import _build_parser
+    from verify.cli import _build_parser, command_parsers
 
     saved = os.environ.get("COLUMNS")
     os.environ["COLUMNS"] = "80"  # argparse wraps to the terminal: fix it for the build
@@ -41,7 +32,7 @@ def help_texts() -> list[tuple[str, str]]:
         parser = _build_parser()
         out = [("verify", parser.format_help())]
         out += [(" ".join(("verify", *path)), sub.format_help())
-                for path, sub in _commands(parser)]
+                for path, sub in command_parsers(parser)]
     finally:
         if saved is None:
             del os.environ["COLUMNS"]

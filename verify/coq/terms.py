@@ -10,10 +10,9 @@ that stands for it (its hypothesis ``lam_min_spec A lam`` is declared by the sec
 
 from __future__ import annotations
 
-import unicodedata
 from fractions import Fraction
 
-from verify.coq.text import LETTER_NAMES, generated_identifier
+from verify.coq.text import ascii_spelling, generated_identifier
 from verify.coq.unit import CoqExportError, comment_text
 from verify.proof.expr import (
     MATRIX,
@@ -38,17 +37,7 @@ Section End Variable Variables Hypothesis Let Definition Notation Local step
 
 def ascii_identifier(text: str) -> str:
     """A Coq identifier spelling ``text`` in ASCII (Greek letters by name, R̄ as Rbar)."""
-    out = []
-    for ch in unicodedata.normalize("NFD", text):
-        if ch.isascii() and (ch.isalnum() or ch == "_"):
-            out.append(ch)
-        elif ch in LETTER_NAMES:
-            out.append(LETTER_NAMES[ch])
-        else:
-            out.append("_")
-    name = "".join(out).strip("_")
-    while "__" in name:
-        name = name.replace("__", "_")
+    name = ascii_spelling(text)
     if not name or not name[0].isalpha():
         name = "x" + name
     return name

@@ -83,19 +83,24 @@ def inert_comment(text: str, *, limit: int = MAX_COMMENT_CHARS) -> str:
     return result
 
 
-def ascii_hint(text: str, *, limit: int = MAX_HINT_CHARS) -> str:
-    """A bounded ASCII spelling of ``text`` for a reader (letters, digits, ``_``; Greek
-    letters by name, R̄ as Rbar); may be empty. Never used alone as an identifier."""
+def ascii_spelling(text: str) -> str:
+    """``text`` spelled in ASCII letters, digits and single ``_`` (Greek letters by name,
+    R̄ as Rbar, anything else as ``_``), with no ``_`` at either end; may be empty."""
     out: list[str] = []
-    for ch in unicodedata.normalize("NFD", str(text)[: 4 * limit]):
+    for ch in unicodedata.normalize("NFD", str(text)):
         if ch.isascii() and (ch.isalnum() or ch == "_"):
             out.append(ch)
         elif ch in LETTER_NAMES:
             out.append(LETTER_NAMES[ch])
         else:
             out.append("_")
-    hint = re.sub(r"_+", "_", "".join(out)).strip("_")
-    return hint[:limit].rstrip("_")
+    return re.sub(r"_+", "_", "".join(out)).strip("_")
+
+
+def ascii_hint(text: str, *, limit: int = MAX_HINT_CHARS) -> str:
+    """A bounded ASCII spelling of ``text`` for a reader (:func:`ascii_spelling` of its
+    first characters); may be empty. Never used alone as an identifier."""
+    return ascii_spelling(str(text)[: 4 * limit])[:limit].rstrip("_")
 
 
 def generated_identifier(prefix: str, index: int, hint: str = "") -> str:
