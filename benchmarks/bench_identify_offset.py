@@ -17,7 +17,7 @@ error of the parameters relative to the truth (mean over parameters) and the lar
 |z| = |estimate - truth| / se; for the estimated offsets their coverage too. BLAS
 threads are pinned to 1 unless set.
 
-Measured results are in the README ("Offsets").
+Measured results are in docs/guide/identify.md ("Offsets").
 """
 
 from __future__ import annotations

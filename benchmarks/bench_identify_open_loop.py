@@ -19,7 +19,7 @@ the number of rejections at the test's level (5e-4 per output) with the exact bi
 95 % interval of the false-rejection rate per experiment (the test rejects when either
 output does, nominal rate 1e-3). BLAS threads are pinned to 1 unless set.
 
-Measured results are in the README ("Is the operator in the class at all?").
+Measured results are in docs/guide/identify.md ("Is the operator in the class at all?").
 """
 
 from __future__ import annotations
