@@ -118,7 +118,7 @@ def thm1_unit(cert_module: str, n: int, m: int, *, label: str, origin: str) -> C
         f"(** Theorem 1 with the human of {comment_text(origin)}: exported by verify; "
         "checked by coqc.",
         f"    Model: {comment_text(label)} ({n} states, {m} ports).",
-        f"    The human's realisation (A, B, C, D) and storage x^T P x / 2 are those of the",
+        "    The human's realisation (A, B, C, D) and storage x^T P x / 2 are those of the",
         f"    certificate unit {cert_module} (its theorem passive: kyp_certified); the loop",
         "    and the embedding of the model's ports are those of the prelude Thm1LTI.v. *)",
         "",
