@@ -8,8 +8,8 @@ prelude's ``LTIHuman.v`` (the storage xᵀPx/2 and its dissipation inequality) a
 ω_h^s = R_l ω_h^b and the human's state equation, with item 2 along it,
 
 - ``thm1_energy``: V = φ(R_rᵀR̄) + φ(R_rᵀR_l) + xᵀPx/2 has V̇ ≤ -k_s λ φ(R_lᵀR̄), does
-  not increase, V(t) + ∫₀ᵗ k_s λ φ(R_lᵀR̄) ≤ V(0), and xᵀPx ≤ 2 V(0) (the human's state
-  stays in a sublevel set of its storage);
+  not increase, V(t) + ∫₀ᵗ k_s λ φ(R_lᵀR̄) ≤ V(0), xᵀPx ≤ 2 V(0), and c |x|² ≤ 2 V(0) for
+  some c > 0 (the human's state is bounded: Assumption 1, item 4, proved for it);
 - ``thm1_sync``: on [0, ∞), with t ↦ φ(R_lᵀR̄(t)) Lipschitz (a named premise),
   φ(R_lᵀR̄(t)) → 0.
 
@@ -75,7 +75,9 @@ forall (Rr : M3) (Rb Rl : R -> M3) (x : R -> nat -> R) (ks lam T : R),
      V Rr Rb Rl (S_h {n} P x) t + RInt (fun s => ks * lam * phi (mmul (mT (Rl s)) (Rb s))) 0 t
        <= V Rr Rb Rl (S_h {n} P x) 0) /\\
   (forall t, 0 <= t <= T ->
-     0 <= S_h {n} P x t /\\ QCert.qform {n} P (x t) <= 2 * V Rr Rb Rl (S_h {n} P x) 0)"""
+     0 <= S_h {n} P x t /\\ QCert.qform {n} P (x t) <= 2 * V Rr Rb Rl (S_h {n} P x) 0) /\\
+  (exists c, 0 < c /\\
+     forall t, 0 <= t <= T -> c * LTIHuman.normsq {n} (x t) <= 2 * V Rr Rb Rl (S_h {n} P x) 0)"""
 
 _SYNC = """\
 forall (Rr : M3) (Rb Rl : R -> M3) (x : R -> nat -> R) (ks lam Lp : R),
@@ -133,7 +135,8 @@ def thm1_unit(cert_module: str, n: int, m: int, *, label: str, origin: str) -> C
         "",
         "(** Along every solution on [0, T]: V does not increase, its rate is at most",
         "    - k_s lam phi(R_l^T R-bar), the dissipation inequality in integral form, and the",
-        "    human's state stays in the sublevel set x^T P x <= 2 V(0). *)",
+        "    human's state stays in the sublevel set x^T P x <= 2 V(0), so it is bounded:",
+        "    c |x|^2 <= 2 V(0) for some c > 0 (P > 0). *)",
         f"Theorem thm1_energy :\n  {stated['thm1_energy']}.",
         "Proof.",
         "  intros Rr Rb Rl x ks lam T.",

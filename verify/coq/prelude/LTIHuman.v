@@ -9,14 +9,17 @@
     if [kyp_certified n m A B C D P] then [S = x^T P x / 2] is differentiable with
     [S' = (P x) . (A x + B u)], and
     [S' - u . y = (1/2) [x; u]^T M(P) [x; u] <= 0] ([storage_supply_identity],
-    [storage_dissipation]), and [S >= 0] ([storage_nonneg]).
+    [storage_dissipation]), [S >= 0] ([storage_nonneg]), and [c |x|^2 <= 2 S] for some
+    [c > 0] ([storage_coercive]: a positive definite form is coercive, [pd_coercive], by
+    induction on the dimension with the Schur complement), so a bounded storage bounds
+    the state.
 
     Only the statements of [QCert.v] are used ([kyp_certified], [kyp] and the matrix
     operations it is written with, [qform], [pos_def], [neg_semidef], [symmetric]), and
     the meaning of its matrix operations over the reals, proved here entry by entry
     from their definitions ([entry_mmul], [entry_tr], [entry_madd], [entry_block]). *)
 
-From Coq Require Import QArith Qreals Reals List Lra Lia.
+From Coq Require Import QArith Qreals Reals List Lra Lia Psatz.
 Import ListNotations.
 Local Set Warnings "-ambiguous-paths -notation-overridden".
 From Coquelicot Require Import Coquelicot.
@@ -396,6 +399,195 @@ Proof.
     intros j Hj. rewrite (Z i Hi). ring.
 Qed.
 
+(** ** A positive definite form is bounded below by a positive multiple of |x|^2 *)
+
+Definition qf (n : nat) (M : nat -> nat -> R) (x : nat -> R) : R :=
+  sumR n (fun i => sumR n (fun j => M i j * (x i * x j))).
+Definition normsq (n : nat) (x : nat -> R) : R := sumR n (fun i => x i * x i).
+
+Lemma sq_nonneg' n x : 0 <= normsq n x.
+Proof. apply sumR_nonneg. intros. apply Rle_0_sqr. Qed.
+
+Lemma sum_sq_bound n (z : nat -> R) : sumR n z * sumR n z <= 2 ^ n * normsq n z.
+Proof.
+  unfold normsq. induction n; simpl; [lra|].
+  set (s := sumR n z). set (Q := sumR n (fun i => z i * z i)). set (p := 2 ^ n).
+  assert (1 <= p) by (apply pow_R1_Rle; lra).
+  pose proof (Rle_0_sqr (s - z n)). pose proof (Rle_0_sqr (z n)).
+  assert (A1 : z n * z n <= p * (z n * z n)).
+  { rewrite <- (Rmult_1_l (z n * z n)) at 1. apply Rmult_le_compat_r; [apply Rle_0_sqr | lra]. }
+  assert (A2 : (s + z n) * (s + z n) <= 2 * (s * s) + 2 * (z n * z n)).
+  { unfold Rsqr in *. nra. }
+  assert (A3 : 2 * p * (Q + z n * z n) = 2 * (p * Q) + 2 * (p * (z n * z n))) by ring.
+  rewrite A3. fold s Q p in IHn. lra.
+Qed.
+
+Lemma term_le_sum n f i : (forall j, (j < n)%nat -> 0 <= f j) -> (i < n)%nat -> f i <= sumR n f.
+Proof.
+  intros H Hi. rewrite (sumR_split n i f Hi).
+  assert (0 <= sumR n (fun j => offd i j (f j))).
+  { apply sumR_nonneg. intros j Hj. unfold offd. destruct (Nat.eqb i j); [lra | apply H, Hj]. }
+  lra.
+Qed.
+
+Lemma sumR_minus n f g : sumR n (fun j => f j - g j) = sumR n f - sumR n g.
+Proof. unfold Rminus. rewrite sumR_plus, sumR_opp. reflexivity. Qed.
+
+(** Peeling the last coordinate: with [a = M n n > 0] and the Schur complement
+    [S i j = M i j - M i n M n j / a], [x^T M x = x'^T S x' + a (x_n + beta)^2]. *)
+Lemma qf_schur n M x :
+  (forall i j, M i j = M j i) -> M n n <> 0 ->
+  qf (S n) M x = qf n (fun i j => M i j - M i n * M n j / M n n) x
+                 + M n n * (x n + sumR n (fun i => M n i * x i) / M n n)
+                          * (x n + sumR n (fun i => M n i * x i) / M n n).
+Proof.
+  intros Hs Ha. unfold qf. cbn [sumR].
+  rewrite sumR_plus.
+  set (s := sumR n (fun i => M n i * x i)).
+  assert (E1 : sumR n (fun i => M i n * (x i * x n)) = s * x n).
+  { unfold s. rewrite <- sumR_scal_r. apply sumR_ext. intros i _. rewrite (Hs i n). ring. }
+  assert (E2 : sumR n (fun j => M n j * (x n * x j)) = s * x n).
+  { unfold s. rewrite <- sumR_scal_r. apply sumR_ext. intros j _. ring. }
+  assert (E3 : sumR n (fun i => sumR n (fun j => (M i j - M i n * M n j / M n n) * (x i * x j)))
+               = sumR n (fun i => sumR n (fun j => M i j * (x i * x j))) - s * (s / M n n)).
+  { rewrite (sumR_ext n _ (fun i => sumR n (fun j => M i j * (x i * x j))
+                                    - (M n i * x i) * (s / M n n))).
+    - rewrite sumR_minus, sumR_scal_r. reflexivity.
+    - intros i _.
+      assert (F : (M n i * x i) * (s / M n n)
+                  = sumR n (fun j => (M n i * x i / M n n) * (M n j * x j))).
+      { rewrite sumR_scal. unfold s. field. exact Ha. }
+      rewrite F, <- sumR_minus. apply sumR_ext. intros j _. rewrite (Hs i n). field. exact Ha. }
+  rewrite E1, E2, E3. field. exact Ha.
+Qed.
+
+Lemma qf_last_unit n M :
+  qf (S n) M (fun i => if Nat.eqb i n then 1 else 0) = M n n.
+Proof.
+  set (e := fun i => if Nat.eqb i n then 1 else 0).
+  assert (Z : forall i, (i < n)%nat -> e i = 0).
+  { intros i Hi. unfold e. destruct (Nat.eqb_spec i n); [lia | reflexivity]. }
+  assert (En : e n = 1) by (unfold e; rewrite Nat.eqb_refl; reflexivity).
+  unfold qf. cbn [sumR].
+  rewrite (sumR_ext n _ (fun _ => 0)).
+  - rewrite sumR_zero, (sumR_ext n (fun j => M n j * (e n * e j)) (fun _ => 0)).
+    + rewrite sumR_zero, En. ring.
+    + intros j Hj. rewrite (Z j Hj). ring.
+  - intros i Hi. rewrite (sumR_ext n _ (fun _ => 0)).
+    + rewrite sumR_zero, (Z i Hi). ring.
+    + intros j _. rewrite (Z i Hi). ring.
+Qed.
+
+Lemma sq_weighted n (b x : nat -> R) :
+  normsq n (fun i => b i * x i) <= normsq n b * normsq n x.
+Proof.
+  unfold normsq. rewrite <- sumR_scal. apply sumR_le. intros i Hi.
+  assert (b i * b i <= sumR n (fun j => b j * b j)).
+  { apply (term_le_sum n (fun j => b j * b j)); [intros; apply Rle_0_sqr | exact Hi]. }
+  pose proof (Rle_0_sqr (x i)). unfold Rsqr in *. nra.
+Qed.
+
+Lemma step_aux (mn K S2 X Y : R) :
+  0 < mn -> 0 <= K -> 0 <= S2 -> 0 <= Y -> X <= 2 * Y + 2 * (K * S2) ->
+  mn / (3 + 2 * K) * (S2 + X) <= mn * S2 + mn * Y.
+Proof.
+  intros Hm HK HS HY HX.
+  assert (Hd : 0 < 3 + 2 * K) by lra.
+  apply (Rmult_le_reg_l (3 + 2 * K)); [exact Hd |].
+  replace ((3 + 2 * K) * (mn / (3 + 2 * K) * (S2 + X))) with (mn * (S2 + X)) by (field; lra).
+  assert (mn * X <= mn * (2 * Y + 2 * (K * S2))) by (apply Rmult_le_compat_l; lra).
+  assert (0 <= mn * Y) by (apply Rmult_le_pos; lra).
+  assert (0 <= mn * (K * Y)) by (apply Rmult_le_pos; [lra | apply Rmult_le_pos; lra]).
+  nra.
+Qed.
+
+(** A positive definite (symmetric) form is coercive: [x^T M x >= c |x|^2] for some
+    [c > 0] (by induction on the dimension, with the Schur complement). *)
+Theorem pd_coercive n (M : nat -> nat -> R) :
+  (forall i j, M i j = M j i) ->
+  (forall x, nonzero n x -> 0 < qf n M x) ->
+  exists c, 0 < c /\ forall x, c * normsq n x <= qf n M x.
+Proof.
+  revert M. induction n as [|n IH]; intros M Hs Hpd.
+  - exists 1. split; [lra|]. intros x. unfold normsq, qf; simpl. lra.
+  - set (a := M n n).
+    assert (Ha : 0 < a).
+    { unfold a. rewrite <- qf_last_unit. apply Hpd. exists n.
+      rewrite Nat.eqb_refl. split; [lia | lra]. }
+    set (Sc := fun i j => M i j - M i n * M n j / a).
+    assert (HsS : forall i j, Sc i j = Sc j i).
+    { intros i j. unfold Sc. rewrite (Hs i j), (Hs i n), (Hs n j), (Rmult_comm (M n i) (M j n)). reflexivity. }
+    assert (HpdS : forall x, nonzero n x -> 0 < qf n Sc x).
+    { intros x [k [Hk Hx]].
+      set (b := sumR n (fun i => M n i * x i) / a).
+      set (y := fun i => if Nat.ltb i n then x i else - b).
+      assert (Ey : forall i, (i < n)%nat -> y i = x i).
+      { intros i Hi. unfold y. destruct (Nat.ltb_spec i n); [reflexivity | lia]. }
+      assert (Pos : 0 < qf (S n) M y).
+      { apply Hpd. exists k. split; [lia|]. rewrite Ey by exact Hk. exact Hx. }
+      rewrite (qf_schur n M y Hs ltac:(unfold a in Ha; lra)) in Pos.
+      assert (Eb : sumR n (fun i => M n i * y i) / M n n = b).
+      { unfold b, a. f_equal. apply sumR_ext. intros i Hi. rewrite Ey by exact Hi. reflexivity. }
+      assert (Yn : y n = - b) by (unfold y; destruct (Nat.ltb_spec n n); [lia | reflexivity]).
+      rewrite Eb, Yn in Pos.
+      assert (Eq : qf n (fun i j => M i j - M i n * M n j / M n n) y = qf n Sc x).
+      { unfold qf, Sc, a. apply sumR_ext. intros i Hi. apply sumR_ext. intros j Hj.
+        rewrite !Ey by assumption. reflexivity. }
+      rewrite Eq in Pos. lra. }
+    destruct (IH Sc HsS HpdS) as [c' [Hc' Hb]].
+    set (K := 2 ^ n * normsq n (fun i => M n i) / (a * a)).
+    assert (HK : 0 <= K).
+    { unfold K. apply Rmult_le_pos; [apply Rmult_le_pos; [apply pow_le; lra | apply sq_nonneg'] |].
+      apply Rlt_le, Rinv_0_lt_compat, Rmult_lt_0_compat; exact Ha. }
+    set (mn := Rmin c' a).
+    assert (Hmn : 0 < mn) by (unfold mn; apply Rmin_pos; assumption).
+    exists (mn / (3 + 2 * K)). split; [apply Rdiv_lt_0_compat; lra |]. intros x.
+    set (s := sumR n (fun i => M n i * x i)).
+    set (yy := x n + s / a).
+    rewrite (qf_schur n M x Hs ltac:(unfold a in Ha; lra)). fold a s yy.
+    assert (Q1 : c' * normsq n x <= qf n Sc x) by apply Hb.
+    assert (Bs : s / a * (s / a) <= K * normsq n x).
+    { unfold K. pose proof (sum_sq_bound n (fun i => M n i * x i)) as C1. fold s in C1.
+      pose proof (sq_weighted n (fun i => M n i) x) as C2.
+      assert (P2 : 0 <= 2 ^ n) by (apply pow_le; lra).
+      assert (C3 : s * s <= 2 ^ n * (normsq n (fun i => M n i) * normsq n x)).
+      { eapply Rle_trans; [exact C1 |]. apply Rmult_le_compat_l; [exact P2 | exact C2]. }
+      replace (s / a * (s / a)) with (s * s / (a * a)) by (field; lra).
+      replace (2 ^ n * normsq n (fun i => M n i) / (a * a) * normsq n x)
+        with (2 ^ n * (normsq n (fun i => M n i) * normsq n x) / (a * a)) by (field; lra).
+      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat, Rmult_lt_0_compat; exact Ha |].
+      exact C3. }
+    assert (Xn : x n * x n <= 2 * (yy * yy) + 2 * (K * normsq n x)).
+    { replace (x n) with (yy - s / a) by (unfold yy; ring).
+      pose proof (Rle_0_sqr (yy + s / a)). unfold Rsqr in *. nra. }
+    assert (Sq : normsq (S n) x = normsq n x + x n * x n) by reflexivity.
+    rewrite Sq.
+    assert (Mc : mn <= c') by apply Rmin_l.
+    assert (Ma : mn <= a) by apply Rmin_r.
+    pose proof (sq_nonneg' n x) as Sx. pose proof (Rle_0_sqr yy) as Y2. unfold Rsqr in Y2.
+    pose proof (step_aux mn K (normsq n x) (x n * x n) (yy * yy) Hmn HK Sx Y2 Xn) as Step.
+    assert (mn * normsq n x <= c' * normsq n x) by (apply Rmult_le_compat_r; assumption).
+    assert (mn * (yy * yy) <= a * (yy * yy)) by (apply Rmult_le_compat_r; assumption).
+    assert (E : qf n (fun i j => M i j - M i n * M n j / a) x = qf n Sc x) by reflexivity.
+    rewrite E. clearbody Sc K mn s yy a. lra.
+Qed.
+
+(** [P > 0] over the first [n] coordinates: [x^T P x >= c |x|^2] for some [c > 0]. *)
+Theorem pos_def_coercive n P : symmetric n P -> pos_def n P ->
+  exists c, 0 < c /\ forall x, c * normsq n x <= qform n P x.
+Proof.
+  intros HS Hpd.
+  set (M := fun i j => if Nat.ltb i n && Nat.ltb j n then mR P i j else 0).
+  assert (E : forall x, qf n M x = qform n P x).
+  { intros x. unfold qf, qform, M. apply sumR_ext. intros i Hi. apply sumR_ext. intros j Hj.
+    destruct (Nat.ltb_spec i n); [|lia]. destruct (Nat.ltb_spec j n); [|lia]. reflexivity. }
+  destruct (pd_coercive n M) as [c [Hc B]].
+  - intros i j. unfold M. destruct (Nat.ltb_spec i n), (Nat.ltb_spec j n); simpl; try reflexivity.
+    unfold mR. apply Qeq_eqR, HS; assumption.
+  - intros x Hx. rewrite E. apply Hpd, Hx.
+  - exists c. split; [exact Hc|]. intros x. rewrite <- E. apply B.
+Qed.
+
 Section Storage.
 (** The human: [n] states, [m] ports, a realisation with a KYP certificate [P]. *)
 Variables (n m : nat) (A B C D P : matQ).
@@ -460,6 +652,14 @@ Theorem storage_nonneg (t : R) : 0 <= storage t.
 Proof.
   destruct cert as [_ [_ [_ [_ [_ [_ [Hpd _]]]]]]].
   unfold storage. pose proof (pos_def_nonneg n P (x t) Hpd). lra.
+Qed.
+
+(** The state is bounded by its storage: [c |x|^2 <= 2 S] for a [c > 0] from [P > 0]. *)
+Theorem storage_coercive : exists c, 0 < c /\ forall t, c * normsq n (x t) <= 2 * storage t.
+Proof.
+  destruct cert as [_ [_ [_ [_ [_ [HS [Hpd _]]]]]]].
+  destruct (pos_def_coercive n P HS Hpd) as [c [Hc Low]].
+  exists c. split; [exact Hc|]. intros t. unfold storage. pose proof (Low (x t)). lra.
 Qed.
 
 End Storage.

@@ -16,7 +16,9 @@
     [V = phi(R_r^T R-bar) + phi(R_r^T R_l) + x^T P x / 2] does not increase, its rate
     is at most [- k_s lam phi(R_l^T R-bar)], and
     [V(t) + int_0^t k_s lam phi(R_l^T R-bar) <= V(0)] ([thm1_lti_energy]); the state
-    stays in the sublevel set [x^T P x <= 2 V(0)]; on [[0, oo)] with a Lipschitz
+    stays in the sublevel set [x^T P x <= 2 V(0)], hence bounded:
+    [c |x(t)|^2 <= 2 V(0)] for a [c > 0] that [P > 0] gives (Assumption 1, item 4, for
+    the human's state, proved rather than assumed); on [[0, oo)] with a Lipschitz
     [t -> phi(R_l^T R-bar(t))], [phi(R_l^T R-bar) -> 0] ([thm1_lti_sync]). *)
 
 From Coq Require Import Reals Lra Lia Psatz.
@@ -151,7 +153,9 @@ Theorem thm1_lti_energy :
      ex_RInt (fun s => ks * lam * phi (mmul (mT (Rl s)) (Rb s))) 0 t /\
      V Rr Rb Rl S_h t + RInt (fun s => ks * lam * phi (mmul (mT (Rl s)) (Rb s))) 0 t
        <= V Rr Rb Rl S_h 0) /\
-  (forall t, 0 <= t <= T -> 0 <= S_h t /\ QCert.qform n P (x t) <= 2 * V Rr Rb Rl S_h 0).
+  (forall t, 0 <= t <= T -> 0 <= S_h t /\ QCert.qform n P (x t) <= 2 * V Rr Rb Rl S_h 0) /\
+  (exists c, 0 < c /\
+     forall t, 0 <= t <= T -> c * LTIHuman.normsq n (x t) <= 2 * V Rr Rb Rl S_h 0).
 Proof.
   assert (R : forall t, 0 <= t <= T ->
             is_derive (V Rr Rb Rl S_h) t (dV Rr Rb Rl w_s dS_h ks t)
@@ -170,16 +174,22 @@ Proof.
     + intros t Ht. apply (R t Ht).
     + exact sync_continuous.
     + intros t Ht. destruct (R t Ht) as [_ [Bv _]]. lra.
-  - intros t Ht. pose proof (LTIHuman.storage_nonneg n m A B C D P cert x t) as Hs.
-    split; [ exact Hs | ].
-    pose proof (Dec 0 t ltac:(lra) ltac:(lra) ltac:(lra)) as Hd.
-    assert (P1 : 0 <= phi (mmul (mT Rr) (Rb t))).
-    { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rb_rot t Ht))) as [q [Hq E]].
-      rewrite <- E. apply phi_rot_nonneg. exact Hq. }
-    assert (P2 : 0 <= phi (mmul (mT Rr) (Rl t))).
-    { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rl_rot t Ht))) as [q [Hq E]].
-      rewrite <- E. apply phi_rot_nonneg. exact Hq. }
-    unfold V, S_h, LTIHuman.storage in *. lra.
+  - assert (Sub : forall t, 0 <= t <= T ->
+              0 <= S_h t /\ QCert.qform n P (x t) <= 2 * V Rr Rb Rl S_h 0).
+    { intros t Ht. pose proof (LTIHuman.storage_nonneg n m A B C D P cert x t) as Hs.
+      split; [ exact Hs | ].
+      pose proof (Dec 0 t ltac:(lra) ltac:(lra) ltac:(lra)) as Hd.
+      assert (P1 : 0 <= phi (mmul (mT Rr) (Rb t))).
+      { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rb_rot t Ht))) as [q [Hq E]].
+        rewrite <- E. apply phi_rot_nonneg. exact Hq. }
+      assert (P2 : 0 <= phi (mmul (mT Rr) (Rl t))).
+      { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rl_rot t Ht))) as [q [Hq E]].
+        rewrite <- E. apply phi_rot_nonneg. exact Hq. }
+      unfold V, S_h, LTIHuman.storage in *. lra. }
+    split; [ exact Sub | ].
+    destruct (LTIHuman.storage_coercive n m A B C D P cert x) as [c [Hc Low]].
+    exists c. split; [ exact Hc | ]. intros t Ht. pose proof (Low t) as L.
+    destruct (Sub t Ht) as [_ Q]. unfold S_h, LTIHuman.storage in *. lra.
 Qed.
 
 End LTILoop.
