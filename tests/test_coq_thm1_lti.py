@@ -234,3 +234,23 @@ def test_margin_certificates_get_no_theorem1_unit(tmp_path):
     [path] = list(tmp_path.glob("*.json"))
     units = kyp_units_from_file(path)
     assert [u.name.startswith("Cert_") for u in units] == [True]
+
+
+@pytest.mark.slow  # compiles two small developments (the prelude from the cache)
+@needs_coquelicot
+def test_a_refused_theorem1_unit_leaves_lemma1_evidence_standing(monkeypatch):
+    from dataclasses import replace
+
+    from verify.claims import coq_conclusions as cc
+
+    cert, thm1 = ks3_units()
+    broken = replace(thm1, text=thm1.text.replace(ITEM2, "", 1))
+    monkeypatch.setattr(cc, "ks3_units", lambda: (cert, broken))
+    cc._compiled.cache_clear()
+    try:
+        assert cc.lemma1_kernel_evidence().passed
+        evidence, tops = cc.thm1_kernel_evidence()
+        assert not evidence.passed and "Thm1_" in evidence.summary
+        assert tops == tuple(f"{thm1.name}.{t}" for t in thm1.theorems)
+    finally:
+        cc._compiled.cache_clear()

@@ -1,21 +1,21 @@
 """Kernel evidence for the paper's conclusions along solutions (Section 3, Lemma 1 and
 Theorem 1).
 
-:func:`lemma1_kernel_evidence` compiles, in a temporary folder, the prelude modules the
-``Conclusions`` unit needs and the unit itself (:mod:`verify.coq.conclusions`), prints
-the assumptions of its top theorems and audits them (only Coq's and the standard
-library's axioms). :func:`thm1_kernel_evidence` then compiles, in the same folder, the
-prelude's LTI human (``QCert.v``, ``LTIHuman.v``, ``Thm1LTI.v``), the KYP certificate
-unit of the shipped k_s = 3.0 reconstruction (Section 4) and the unit of Theorem 1 with
-that human in the loop (:mod:`verify.coq.thm1_lti`), and audits its top theorems. Each
-result is a certificate evidence that passed only when ``coqc`` accepted everything;
-without ``coqc`` it is ``None`` and the claim keeps its verdict of *assumption*.
-Compiled once per process.
+:func:`lemma1_kernel_evidence` compiles, in a temporary folder, the development of the
+``Conclusions`` unit (:mod:`verify.coq.conclusions`), prints the assumptions of its top
+theorems and audits them (only Coq's and the standard library's axioms).
+:func:`thm1_kernel_evidence` does the same for the KYP certificate unit of the shipped
+k_s = 3.0 reconstruction (Section 4) and the unit of Theorem 1 with that human in the
+loop (:mod:`verify.coq.thm1_lti`; prelude ``LTIHuman.v``, ``Thm1LTI.v``). Each result is
+a certificate evidence that passed only when ``coqc`` accepted everything; without
+``coqc`` it is ``None`` and the claim keeps its verdict of *assumption*. Compiled once
+per process; the prelude's ``.vo`` files come from the prelude cache
+(:mod:`verify.coq.prelude_cache`: compiled by this ``coqc`` once per prelude text), so
+a run, or a worker process of a parallel run, compiles only the units.
 """
 
 from __future__ import annotations
 
-import subprocess
 import tempfile
 from functools import lru_cache
 from pathlib import Path
@@ -23,40 +23,26 @@ from pathlib import Path
 from verify.claims.evidence import certificate
 from verify.claims.model import Evidence
 from verify.coq.audit import audit_assumptions
-from verify.coq.conclusions import MODULE, conclusion_units
-from verify.coq.development import LOGICAL_ROOT, coqc_available, prelude_sources
+from verify.coq.conclusions import conclusion_units
+from verify.coq.development import coqc_available
 from verify.coq.unit import CoqUnit
 
-#: The prelude modules the Conclusions unit requires, in dependency order.
-NEEDED = ("SO3", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat")
-#: The further prelude modules of Theorem 1 with a certified LTI human.
-NEEDED_LTI = ("QCert", "LTIHuman", "Thm1LTI")
 #: The shipped reconstruction whose certified human enters Theorem 1 (Section 4).
 KS3_MODEL = "reconstructed_ks3p0.toml"
 
 
-def _coqc(folder: Path, rel: str) -> subprocess.CompletedProcess:
-    return subprocess.run(["coqc", "-R", ".", LOGICAL_ROOT, rel], cwd=folder,
-                          capture_output=True, text=True, timeout=900, check=False)
+def _check(units: list[CoqUnit], top: CoqUnit) -> tuple[bool, str, tuple[str, ...]]:
+    """Compile the development of ``units`` (the prelude from the cache) and audit it:
+    (accepted, one-line reason, the top theorems of ``top``)."""
+    from verify.coq.command import check_and_audit, development_files_of
 
-
-def _compile_and_audit(folder: Path, files: list[tuple[str, str]], tops: list[str],
-                       probe: str) -> tuple[bool, str]:
-    """Compile ``files`` in order in ``folder``, then print the assumptions of ``tops``."""
-    modules = sorted({name.split(".")[0] for name in tops})
-    files = [*files, (f"{probe}.v",
-                      "".join(f"From {LOGICAL_ROOT} Require {m}.\n" for m in modules)
-                      + f"Definition tops := ({', '.join(tops)}).\nPrint Assumptions tops.\n")]
-    done = None
-    for rel, text in files:
-        (folder / rel).write_text(text, encoding="utf-8")
-        done = _coqc(folder, rel)
-        if done.returncode != 0:
-            return False, f"coqc refused {rel}"
-    audit = audit_assumptions(done.stdout if done else "")
-    if not audit.ok:
-        return False, "axioms beyond the allowed ones: " + ", ".join(audit.disallowed)
-    return True, "axioms: " + ", ".join(audit.axioms)
+    tops = _check_tops(top)
+    result, problems = check_and_audit(development_files_of(units))
+    if not result.ok:
+        return False, f"coqc refused {result.failed_file}", tops
+    if problems:
+        return False, "audit: " + "; ".join(problems), tops
+    return True, "axioms: " + ", ".join(audit_assumptions(result.output).axioms), tops
 
 
 def ks3_units() -> tuple[CoqUnit, ...]:
@@ -85,29 +71,23 @@ def ks3_units() -> tuple[CoqUnit, ...]:
 
 @lru_cache(maxsize=1)
 def _compiled() -> dict[str, tuple[bool, str, tuple[str, ...]]]:
-    """For ``lemma1`` and ``thm1``: (accepted, one-line reason, top theorems)."""
+    """For ``lemma1`` and ``thm1``: (accepted, one-line reason, top theorems). One
+    development of the three units first (one prelude, one cache entry); when Coq or the
+    audit refuses it, each part alone, to say which."""
     unit = conclusion_units()[0]
-    sources = prelude_sources()
-    out: dict[str, tuple[bool, str, tuple[str, ...]]] = {}
-    with tempfile.TemporaryDirectory(prefix="verify-conclusions-") as tmp:
-        folder = Path(tmp)
-        files = [(f"{name}.v", sources[name]) for name in NEEDED]
-        files.append((f"{MODULE}.v", unit.text))
-        tops = [f"{MODULE}.{name}" for name in unit.theorems]
-        ok, detail = _compile_and_audit(folder, files, tops, "Audit")
-        out["lemma1"] = (ok, detail, tuple(tops))
-        units = ks3_units()
-        if not units:
-            out["thm1"] = (False, "the gate did not certify the k_s = 3.0 model with a KYP "
-                           "certificate", ())
-            return out
-        cert, thm1 = units
-        tops = [f"{thm1.name}.{name}" for name in thm1.theorems]
-        files = [(f"{name}.v", sources[name]) for name in NEEDED_LTI]
-        files += [(f"{cert.name}.v", cert.text), (f"{thm1.name}.v", thm1.text)]
-        ok, detail = _compile_and_audit(folder, files, tops, "AuditThm1")
-        out["thm1"] = (ok, detail, tuple(tops))
-    return out
+    units = ks3_units()
+    if units:
+        both = _check([unit, *units], unit)
+        if both[0]:
+            return {"lemma1": both, "thm1": (True, both[1], _check_tops(units[-1]))}
+    return {"lemma1": _check([unit], unit),
+            "thm1": (_check(list(units), units[-1]) if units else
+                     (False, "the gate did not certify the k_s = 3.0 model with a KYP "
+                      "certificate", ()))}
+
+
+def _check_tops(top: CoqUnit) -> tuple[str, ...]:
+    return tuple(f"{top.name}.{name}" for name in top.theorems)
 
 
 def lemma1_kernel_evidence() -> Evidence | None:
