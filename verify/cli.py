@@ -725,6 +725,7 @@ def _gate_kernel(args: argparse.Namespace, results, stage, text) -> bool:
         statuses, accepted = gate_kernel(results, args.coq)
     for r, status in zip(results, statuses, strict=True):
         r.kernel, r.coq_theorem = status.kernel, status.theorem
+        r.coq_closed_loop_theorem = status.closed_loop
     if args.require_coq:
         problems = require_coq_problems(results, statuses)
         for p in problems:

@@ -31,6 +31,7 @@ From VerifyCoq Require sos_thm1_S_rl_dot_step4.
 From VerifyCoq Require sos_thm1_V_dot_step3.
 From VerifyCoq Require Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
+From VerifyCoq Require Thm1_reconstructed_k_s_3_0_99babda880e6.
 From VerifyCoq Require Conclusions.
 
 (** Every top theorem of the development. *)
@@ -100,6 +101,8 @@ Definition top_theorems :=
    sos_thm1_V_dot_step3.step3_by_sos,
    Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.passive_on_band,
    Cert_reconstructed_k_s_3_0_99babda880e6.passive,
+   Thm1_reconstructed_k_s_3_0_99babda880e6.thm1_energy,
+   Thm1_reconstructed_k_s_3_0_99babda880e6.thm1_sync,
    Conclusions.every_rotation_is_rot_q,
    Conclusions.lemma1_invariance_on_interval,
    Conclusions.lemma1_invariance_on_half_line,

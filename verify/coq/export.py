@@ -19,7 +19,7 @@ from pathlib import Path
 
 from verify.coq.band import gkyp_unit_from_file
 from verify.coq.band_fd import band_fd_unit_from_file
-from verify.coq.kyp import CoqExportError, kyp_unit_from_file
+from verify.coq.kyp import CoqExportError, kyp_units_from_file
 from verify.coq.positive_real import NOT_KERNEL_CHECKED, pr_unit_from_file
 from verify.coq.unit import CoqUnit
 
@@ -114,11 +114,13 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
     for path in certificate_files(paths):
         schema = schema_of(path)
         if schema in EXPORTED_SCHEMAS:
-            make = (kyp_unit_from_file if schema in KYP_SCHEMAS else
+            make = (kyp_units_from_file if schema in KYP_SCHEMAS else
                     gkyp_unit_from_file if schema in BAND_SCHEMAS else
                     band_fd_unit_from_file if schema in BAND_FD_SCHEMAS else pr_unit_from_file)
             try:
-                units.append(make(path))
+                made = make(path)
+                # a KYP certificate: its unit, then Theorem 1 with that human (thm1_lti)
+                units.extend(made if isinstance(made, list) else [made])
                 # a positive-real unit with its pole conditions ("stable") is whole
                 if schema in PARTLY_EXPORTED and "stable" not in units[-1].theorems:
                     partly.append(NotExported(path.name, schema, PARTLY_EXPORTED[schema]))

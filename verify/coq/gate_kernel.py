@@ -26,6 +26,7 @@ from verify.coq.development import coqc_available
 from verify.coq.export import Export, NotExported, export_certificates
 from verify.coq.kyp import CoqExportError
 from verify.coq.refutation import decision_unit
+from verify.coq.thm1_lti import PREFIX as THM1_PREFIX
 from verify.coq.unit import CoqUnit
 from verify.errors import VerifyInputError
 from verify.passivity.verdicts import NOT_PASSIVE
@@ -38,13 +39,18 @@ NOT_EXPORTED = "not-exported"
 @dataclass(frozen=True)
 class KernelStatus:
     """What checked a verdict: ``kernel`` (``coq``, ``exact-python`` or
-    ``not-exported: reason``) and the Coq theorem that states it, when there is one."""
+    ``not-exported: reason``) and the Coq theorem that states it, when there is one;
+    for a passive verdict with a KYP certificate, ``closed_loop`` names the theorem of
+    Theorem 1 with that human in the loop (:mod:`verify.coq.thm1_lti`), when Coq
+    accepted it."""
 
     kernel: str
     theorem: str | None = None
+    closed_loop: str | None = None
 
     def to_json(self) -> dict:
-        return {"kernel": self.kernel, "coq_theorem": self.theorem}
+        return {"kernel": self.kernel, "coq_theorem": self.theorem,
+                "coq_closed_loop_theorem": self.closed_loop}
 
 
 def default_status(result) -> KernelStatus:
@@ -56,23 +62,24 @@ def default_status(result) -> KernelStatus:
     return KernelStatus(f"{NOT_EXPORTED}: no verdict to prove ({result.decision.verdict})")
 
 
-def _unit_of(result, index: int) -> tuple[CoqUnit | None, str, str]:
-    """(unit, reason when none, what it is exported in part without)."""
+def _units_of(result, index: int) -> tuple[tuple[CoqUnit, ...], str, str]:
+    """(units, reason when none, what it is exported in part without): the verdict's
+    unit first, then (a KYP certificate) the unit of Theorem 1 with that human."""
     if result.error is not None:
-        return None, "no verdict (internal error of the tool)", ""
+        return (), "no verdict (internal error of the tool)", ""
     if result.certificate_path is not None:
         export = export_certificates([Path(result.certificate_path)])
         if export.units:
             partly = "; ".join(i.reason for i in export.partly)
-            return export.units[0], "", partly
+            return export.units, "", partly
         reason = export.not_exported[0].reason if export.not_exported else "not exported"
-        return None, reason, ""
+        return (), reason, ""
     if result.decision.verdict == NOT_PASSIVE:
         try:
-            return decision_unit(result.decision, f"Refutation_{index + 1}"), "", ""
+            return (decision_unit(result.decision, f"Refutation_{index + 1}"),), "", ""
         except CoqExportError as exc:
-            return None, str(exc), ""
-    return None, f"no verdict to prove ({result.decision.verdict})", ""
+            return (), str(exc), ""
+    return (), f"no verdict to prove ({result.decision.verdict})", ""
 
 
 def gate_kernel(results: Sequence, folder: Path) -> tuple[list[KernelStatus], bool]:
@@ -81,19 +88,26 @@ def gate_kernel(results: Sequence, folder: Path) -> tuple[list[KernelStatus], bo
     coqc (or the audit) refused the development."""
     units: list[CoqUnit] = []
     owner: list[int] = []
+    loop_of: dict[int, str] = {}
+    primary: list[CoqUnit] = []
     part_of: dict[int, str] = {}
     statuses: list[KernelStatus] = [default_status(r) for r in results]
     left: list[NotExported] = []
     partly: list[NotExported] = []
     for k, r in enumerate(results):
-        unit, reason, part = _unit_of(r, k)
+        made, reason, part = _units_of(r, k)
         name = r.decision.model.name
-        if unit is None:
+        if not made:
             statuses[k] = KernelStatus(f"{NOT_EXPORTED}: {reason}")
             left.append(NotExported(name, "gate verdict", reason))
             continue
-        units.append(unit)
+        units.append(made[0])
+        primary.append(made[0])
         owner.append(k)
+        for extra in made[1:]:
+            units.append(extra)
+            if extra.name.startswith(THM1_PREFIX):
+                loop_of[k] = f"{extra.name}.{extra.theorems[0]}"
         if part:
             partly.append(NotExported(name, "gate verdict", part))
             part_of[k] = part
@@ -116,10 +130,11 @@ def gate_kernel(results: Sequence, folder: Path) -> tuple[list[KernelStatus], bo
     if result.ok and not problems:
         total = sum(s for _, s in result.timings)
         print(f"coq: compiled by coqc, accepted ({total:.1f} s)")
-        for unit, k in zip(units, owner, strict=True):
+        for unit, k in zip(primary, owner, strict=True):
             theorem = f"{unit.name}.{unit.theorems[0]}"
             # a unit that states part of the verdict: the rest is the Python checker's
-            statuses[k] = KernelStatus(EXACT_PYTHON if k in part_of else COQ, theorem)
+            statuses[k] = KernelStatus(EXACT_PYTHON if k in part_of else COQ, theorem,
+                                       loop_of.get(k))
         return statuses, True
     failed = result.failed_file or "All.v"
     print(f"coq: coqc did not accept the development ({failed})")

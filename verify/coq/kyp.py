@@ -209,11 +209,25 @@ def read_bound_certificate(path: Path, schemas: tuple[str, ...],
 
 def kyp_unit_from_file(path: Path) -> CoqUnit:
     """The unit of a stored KYP certificate file, after its binding is checked."""
+    return kyp_units_from_file(path)[0]
+
+
+def kyp_units_from_file(path: Path) -> list[CoqUnit]:
+    """The unit of a stored KYP certificate file (after its binding is checked), then,
+    when the certificate is for H itself (no margin) with 1 to 3 ports, the unit of
+    Theorem 1 with that human in the loop (:mod:`verify.coq.thm1_lti`)."""
+    from verify.coq.thm1_lti import thm1_unit
+
     path = Path(path)
     cert = read_bound_certificate(path, (cf.KYP_V1, cf.KYP_V2), cf.parse_kyp, "KYP")
+    origin = f"KYP certificate {path.name}"
     try:
-        return kyp_unit(module_name(path.name), model=cert.model, P=cert.P,  # type: ignore[arg-type]
+        unit = kyp_unit(module_name(path.name), model=cert.model, P=cert.P,  # type: ignore[arg-type]
                         margin=cert.claim.margin, label=cert.name, source=cert.source,
-                        fingerprint=cert.fingerprint, origin=f"KYP certificate {path.name}")
+                        fingerprint=cert.fingerprint, origin=origin)
     except CoqExportError as exc:
         raise CoqExportError(f"{path.name}: {exc}") from None
+    if cert.claim.margin != 0 or not 1 <= cert.model.m <= 3:
+        return [unit]
+    return [unit, thm1_unit(unit.name, cert.model.n, cert.model.m, label=cert.name,
+                            origin=origin)]

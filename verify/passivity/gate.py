@@ -68,6 +68,9 @@ class GateResult:
     #: the Coq theorem stating it; set by ``verify gate`` (``--coq`` compiles the units).
     kernel: str | None = None
     coq_theorem: str | None = None
+    #: For a passive verdict with a KYP certificate under ``--coq``: the Coq theorem of
+    #: Theorem 1 with this human in the loop, when coqc accepted it.
+    coq_closed_loop_theorem: str | None = None
 
     @property
     def passed(self) -> bool:
@@ -274,7 +277,8 @@ def _json_entry(r: GateResult) -> dict:
 
 
 def _kernel_json(r: GateResult) -> dict:
-    return {} if r.kernel is None else {"kernel": r.kernel, "coq_theorem": r.coq_theorem}
+    return {} if r.kernel is None else {"kernel": r.kernel, "coq_theorem": r.coq_theorem,
+                                        "coq_closed_loop_theorem": r.coq_closed_loop_theorem}
 
 
 def write_json(results: list[GateResult], path: Path) -> None:
@@ -336,7 +340,9 @@ def _kernel_properties(r: GateResult) -> tuple[tuple[str, str], ...]:
     if r.kernel is None:
         return ()
     return (("kernel", r.kernel),) + ((("coq_theorem", r.coq_theorem),)
-                                      if r.coq_theorem else ())
+                                      if r.coq_theorem else ()) + (
+        (("coq_closed_loop_theorem", r.coq_closed_loop_theorem),)
+        if r.coq_closed_loop_theorem else ())
 
 
 def write_junit(results: list[GateResult], path: Path) -> None:
