@@ -233,36 +233,6 @@ Proof. intro Hf. apply (bl_mult f (fun _ => / c) Hf (bl_const _)). Qed.
 Lemma bl_bd (f : R -> R) : bl f -> bd f.
 Proof. intros [B [L [F _]]]. exists B. exact F. Qed.
 
-(** [bl_build] / [bd_build] prove [bl (fun s => e s)] / [bd (fun s => e s)] for [e]
-    built with [+], [-], [*] and division by a constant from atoms whose property is
-    a hypothesis. *)
-Ltac bl_build :=
-  lazymatch goal with
-  | |- bl (fun _ => ?c) => exact (bl_const c)
-  | |- bl (fun s => @?f s + @?g s) => refine (bl_plus f g _ _); bl_build
-  | |- bl (fun s => @?f s * @?g s) => refine (bl_mult f g _ _); bl_build
-  | |- bl (fun s => @?f s - @?g s) => refine (bl_minus f g _ _); bl_build
-  | |- bl (fun s => - @?f s) => refine (bl_opp f _); bl_build
-  | |- bl (fun s => @?f s / ?c) => refine (bl_div f c _); bl_build
-  | |- bl ?f => assumption
-  end.
-
-Ltac bd_build :=
-  lazymatch goal with
-  | |- bd (fun _ => ?c) => exact (bd_const c)
-  | |- bd (fun s => @?f s + @?g s) => refine (bd_plus f g _ _); bd_build
-  | |- bd (fun s => @?f s * @?g s) => refine (bd_mult f g _ _); bd_build
-  | |- bd (fun s => @?f s - @?g s) => refine (bd_minus f g _ _); bd_build
-  | |- bd (fun s => - @?f s) => refine (bd_opp f _); bd_build
-  | |- bd (fun s => @?f s / ?c) => refine (bd_div f c _); bd_build
-  | |- bd ?f => assumption
-  end.
-
-Ltac entries_unfold :=
-  cbv beta delta [mmul madd mscale mT msub mneg hat vee tr sk sym mvmul vadd vscale vneg
-    vdot phi I3 Z3 vzero vsub e3];
-  cbn [m11 m12 m13 m21 m22 m23 m31 m32 m33 v1 v2 v3].
-
 (** A bounded derivative makes a function Lipschitz. *)
 Lemma lipschitz_of_deriv (f df : R -> R) (B : R) :
   (forall t, 0 <= t -> is_derive f t (df t)) -> (forall t, 0 <= t -> Rabs (df t) <= B) ->
@@ -290,15 +260,100 @@ Qed.
 
 (** ** Matrix trajectories entry by entry *)
 
-Definition mbd (A : R -> M3) : Prop :=
-  bd (fun t => m11 (A t)) /\ bd (fun t => m12 (A t)) /\ bd (fun t => m13 (A t)) /\
-  bd (fun t => m21 (A t)) /\ bd (fun t => m22 (A t)) /\ bd (fun t => m23 (A t)) /\
-  bd (fun t => m31 (A t)) /\ bd (fun t => m32 (A t)) /\ bd (fun t => m33 (A t)).
+(** A property of scalar functions closed under the ring operations ([bd], [bl]),
+    lifted to matrix and vector trajectories entry by entry; the closure under the
+    paper's operations ([mmul], [mT], [sk], [hat], [vee], ...) is proved once, so that a
+    long expression such as [d/dt (R_l^T R-bar)] is handled operation by operation. *)
+Definition closed (P : (R -> R) -> Prop) : Prop :=
+  (forall c, P (fun _ => c)) /\ (forall f g, P f -> P g -> P (fun s => f s + g s)) /\
+  (forall f g, P f -> P g -> P (fun s => f s * g s)) /\ (forall f, P f -> P (fun s => - f s)).
 
-Definition mbl (A : R -> M3) : Prop :=
-  bl (fun t => m11 (A t)) /\ bl (fun t => m12 (A t)) /\ bl (fun t => m13 (A t)) /\
-  bl (fun t => m21 (A t)) /\ bl (fun t => m22 (A t)) /\ bl (fun t => m23 (A t)) /\
-  bl (fun t => m31 (A t)) /\ bl (fun t => m32 (A t)) /\ bl (fun t => m33 (A t)).
+Definition mP (P : (R -> R) -> Prop) (A : R -> M3) : Prop :=
+  P (fun t => m11 (A t)) /\ P (fun t => m12 (A t)) /\ P (fun t => m13 (A t)) /\
+  P (fun t => m21 (A t)) /\ P (fun t => m22 (A t)) /\ P (fun t => m23 (A t)) /\
+  P (fun t => m31 (A t)) /\ P (fun t => m32 (A t)) /\ P (fun t => m33 (A t)).
+
+Definition vP (P : (R -> R) -> Prop) (u : R -> V3) : Prop :=
+  P (fun t => v1 (u t)) /\ P (fun t => v2 (u t)) /\ P (fun t => v3 (u t)).
+
+Notation mbd := (mP bd).
+Notation mbl := (mP bl).
+
+Lemma bd_closed : closed bd.
+Proof. split; [ exact bd_const | split; [ exact bd_plus | split; [ exact bd_mult | exact bd_opp ] ] ]. Qed.
+
+Lemma bl_closed : closed bl.
+Proof. split; [ exact bl_const | split; [ exact bl_plus | split; [ exact bl_mult | exact bl_opp ] ] ]. Qed.
+
+Ltac ent_unfold := cbv beta iota zeta delta [mmul madd mscale mT msub mneg hat vee
+    tr sk sym mvmul vadd vscale vneg vdot phi I3 Z3 vzero vsub e3
+    m11 m12 m13 m21 m22 m23 m31 m32 m33 v1 v2 v3].
+
+Ltac split_all := repeat match goal with H : _ /\ _ |- _ => destruct H end.
+
+(** [p_build] proves [P (fun s => e s)] for [e] built with [+], [-], [*] and division
+    by a constant from atoms whose property is a hypothesis. *)
+Ltac p_build Pc Pp Pm Po :=
+  lazymatch goal with
+  | |- ?P (fun _ => ?c) => exact (Pc c)
+  | |- ?P (fun s => @?f s + @?g s) => refine (Pp f g _ _); p_build Pc Pp Pm Po
+  | |- ?P (fun s => @?f s * @?g s) => refine (Pm f g _ _); p_build Pc Pp Pm Po
+  | |- ?P (fun s => @?f s - @?g s) =>
+      refine (Pp f (fun s => - g s) _ (Po g _)); p_build Pc Pp Pm Po
+  | |- ?P (fun s => - @?f s) => refine (Po f _); p_build Pc Pp Pm Po
+  | |- ?P (fun s => @?f s / ?c) => refine (Pm f (fun _ => / c) _ (Pc _)); p_build Pc Pp Pm Po
+  | |- _ => assumption
+  end.
+
+Ltac closure_entries HP :=
+  let Pc := fresh "Pc" in let Pp := fresh "Pp" in let Pm := fresh "Pm" in let Po := fresh "Po" in
+  destruct HP as [Pc [Pp [Pm Po]]]; unfold mP, vP in *; split_all;
+  repeat split; ent_unfold; p_build Pc Pp Pm Po.
+
+Section Closure.
+Variable P : (R -> R) -> Prop.
+Hypothesis HP : closed P.
+
+Lemma mP_mmul (A B : R -> M3) : mP P A -> mP P B -> mP P (fun t => mmul (A t) (B t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma mP_madd (A B : R -> M3) : mP P A -> mP P B -> mP P (fun t => madd (A t) (B t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma mP_mscale (c : R) (A : R -> M3) : mP P A -> mP P (fun t => mscale c (A t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma mP_mT (A : R -> M3) : mP P A -> mP P (fun t => mT (A t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma mP_sk (A : R -> M3) : mP P A -> mP P (fun t => sk (A t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma mP_hat (u : R -> V3) : vP P u -> mP P (fun t => hat (u t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma vP_vee (A : R -> M3) : mP P A -> vP P (fun t => vee (A t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma vP_vadd (u v : R -> V3) : vP P u -> vP P v -> vP P (fun t => vadd (u t) (v t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma vP_vscale (c : R) (u : R -> V3) : vP P u -> vP P (fun t => vscale c (u t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma vP_mvmul (A : R -> M3) (u : R -> V3) : mP P A -> vP P u -> vP P (fun t => mvmul (A t) (u t)).
+Proof. intros. closure_entries HP. Qed.
+Lemma P_phi (A : R -> M3) : mP P A -> P (fun t => phi (A t)).
+Proof. intros. closure_entries HP. Qed.
+End Closure.
+
+(** [struct_build HP] proves [mP P (fun t => e t)] (or [vP]) for [e] built with the
+    paper's matrix operations from trajectories whose property is a hypothesis. *)
+Ltac struct_build HP :=
+  lazymatch goal with
+  | |- mP ?P (fun t => mmul (@?A t) (@?B t)) => refine (mP_mmul P HP A B _ _); struct_build HP
+  | |- mP ?P (fun t => madd (@?A t) (@?B t)) => refine (mP_madd P HP A B _ _); struct_build HP
+  | |- mP ?P (fun t => mscale ?c (@?A t)) => refine (mP_mscale P HP c A _); struct_build HP
+  | |- mP ?P (fun t => mT (@?A t)) => refine (mP_mT P HP A _); struct_build HP
+  | |- mP ?P (fun t => sk (@?A t)) => refine (mP_sk P HP A _); struct_build HP
+  | |- mP ?P (fun t => hat (@?u t)) => refine (mP_hat P HP u _); struct_build HP
+  | |- vP ?P (fun t => vee (@?A t)) => refine (vP_vee P HP A _); struct_build HP
+  | |- vP ?P (fun t => vadd (@?u t) (@?v t)) => refine (vP_vadd P HP u v _ _); struct_build HP
+  | |- vP ?P (fun t => vscale ?c (@?u t)) => refine (vP_vscale P HP c u _); struct_build HP
+  | |- vP ?P (fun t => mvmul (@?A t) (@?u t)) => refine (vP_mvmul P HP A u _ _); struct_build HP
+  | |- _ => assumption
+  end.
 
 Definition mvanishes (A : R -> M3) : Prop :=
   vanishes (fun t => m11 (A t)) /\ vanishes (fun t => m12 (A t)) /\
@@ -323,13 +378,13 @@ Qed.
 
 Lemma rot_mbd (A : R -> M3) : (forall t, 0 <= t -> is_rot (A t)) -> mbd A.
 Proof.
-  intro H. unfold mbd. repeat split; exists 1; intros t Ht; apply (rot_entries_le_1 _ (H t Ht)).
+  intro H. unfold mP. repeat split; exists 1; intros t Ht; apply (rot_entries_le_1 _ (H t Ht)).
 Qed.
 
 Lemma mbl_of_deriv (A DA : R -> M3) :
   (forall t, 0 <= t -> is_mderiv A t (DA t)) -> mbd A -> mbd DA -> mbl A.
 Proof.
-  intros D HA HD. unfold mbd, mbl, is_mderiv in *.
+  intros D HA HD. unfold mP, is_mderiv in *.
   destruct HA as [a11 [a12 [a13 [a21 [a22 [a23 [a31 [a32 a33]]]]]]]].
   destruct HD as [d11 [d12 [d13 [d21 [d22 [d23 [d31 [d32 d33]]]]]]]].
   repeat split;
@@ -499,3 +554,207 @@ Proof.
   assert (ks * ks * fro2 (sk Q) <= ks * ks * (4 * phi Q)) by (apply Rmult_le_compat_l; lra).
   lra.
 Qed.
+
+Lemma msub_Z3 (A : M3) : msub A Z3 = A.
+Proof. destruct A. so3_split; so3_unfold; ring. Qed.
+
+Lemma vdot_vsub_le (a b c : V3) :
+  vdot (vsub a c) (vsub a c) <= 2 * vdot (vsub b a) (vsub b a) + 2 * vdot (vsub b c) (vsub b c).
+Proof.
+  pose proof (vdot_self_nonneg (vsub (vsub b a) (vsub c b))) as P.
+  destruct a, b, c. unfold vsub in *. so3_unfold. nra.
+Qed.
+
+Lemma abs_v_le_vnorm (u : V3) : Rabs (v1 u) <= vnorm u /\ Rabs (v2 u) <= vnorm u /\ Rabs (v3 u) <= vnorm u.
+Proof.
+  unfold vnorm. destruct u as [a b c]. unfold vdot; simpl.
+  repeat split; rewrite <- sqrt_Rsqr_abs; apply sqrt_le_1_alt; unfold Rsqr; nra.
+Qed.
+
+(** The derivative of a matrix trajectory vanishes when the trajectory converges and
+    the derivative is bounded and Lipschitz (Barbalat's second form, entry by entry). *)
+Lemma rate_entry (e de : R -> R) :
+  (forall t, 0 <= t -> is_derive e t (de t)) -> vanishes e -> bl de -> vanishes de.
+Proof.
+  intros D V [B [L [_ Lip]]]. apply (barbalat_rate e de 0 D).
+  - apply (vanishes_le _ _ V). intros t _. rewrite Rminus_0_r. lra.
+  - exact (lipschitz_unif_cont de L Lip).
+Qed.
+
+Lemma mrate (A DA : R -> M3) :
+  (forall t, 0 <= t -> is_mderiv A t (DA t)) -> mvanishes A -> mbl DA -> mvanishes DA.
+Proof.
+  intros D HA HD. unfold mvanishes, mP, is_mderiv in *.
+  destruct HA as [a11 [a12 [a13 [a21 [a22 [a23 [a31 [a32 a33]]]]]]]].
+  destruct HD as [d11 [d12 [d13 [d21 [d22 [d23 [d31 [d32 d33]]]]]]]].
+  repeat split;
+  match goal with
+  | |- vanishes (fun t => ?p (DA t)) =>
+      apply (rate_entry (fun t => p (A t)));
+      [ intros t Ht; pose proof (D t Ht); m_intro; assumption | assumption | assumption ]
+  end.
+Qed.
+
+(** ** Along solutions *)
+Section LaSalle.
+Variables (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3) (Sh dSh : R -> R) (ks lam Bw Lw : R).
+Hypothesis ks_pos : 0 < ks.
+Hypothesis lam_pos : 0 < lam.
+Hypothesis Rr_rot : is_rot Rr.
+Hypothesis Rb_rot : forall t, 0 <= t -> is_rot (Rb t).
+Hypothesis Rl_rot : forall t, 0 <= t -> is_rot (Rl t).
+Hypothesis Rb_sol : forall t, 0 <= t ->
+  is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t))))).
+Hypothesis Rl_sol : forall t, 0 <= t ->
+  is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                         (mvmul (mT (Rl t)) (ws t))))).
+Hypothesis Sh_deriv : forall t, 0 <= t -> is_derive Sh t (dSh t).
+Hypothesis Sh_supply : forall t, 0 <= t ->
+  dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t)).
+Hypothesis Sh_nonneg : forall t, 0 <= t -> 0 <= Sh t.
+Hypothesis item2 : forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam.
+Hypothesis init : 1 <= tr (mmul (mT Rr) (Rb 0)).
+(** The human command is bounded (item 4 bounds the human's output for a bounded input,
+    and the input [sk(R_l^T R_r)^vee] is bounded) ... *)
+Hypothesis ws_bounded : forall t, 0 <= t -> vnorm (ws t) <= Bw.
+(** ... and Lipschitz (a bounded rate: not in Assumption 1; an LTI human with bounded
+    state and input has it). *)
+Hypothesis ws_lipschitz : forall s t, 0 <= s -> 0 <= t ->
+  vnorm (vsub (ws t) (ws s)) <= Lw * Rabs (t - s).
+(** Assumption 1, item 3, in asymptotic form: if the operator's command dies out, the
+    leader's axis reaches the reference axis [d_r = R_r e3]. *)
+Hypothesis item3_asymptotic :
+  vanishes (fun t => vnorm (ws t)) -> vanishes (fun t => vnorm (vsub (mvmul (Rl t) e3) (mvmul Rr e3))).
+
+Lemma ws_bd : vP bd ws.
+Proof.
+  unfold vP. repeat split; exists Bw; intros t Ht; pose proof (abs_v_le_vnorm (ws t)) as A;
+    pose proof (ws_bounded t Ht); split_all; lra.
+Qed.
+
+Lemma ws_bl : vP bl ws.
+Proof.
+  unfold vP. repeat split; exists Bw, Lw; split;
+    try (intros t Ht; pose proof (abs_v_le_vnorm (ws t)) as A;
+         pose proof (ws_bounded t Ht); split_all; lra);
+    intros s t Hs Ht; cbv beta; pose proof (abs_v_le_vnorm (vsub (ws t) (ws s))) as A;
+    pose proof (ws_lipschitz s t Hs Ht);
+    destruct (ws t) as [a1 a2 a3], (ws s) as [b1 b2 b3]; unfold vsub, vadd, vneg in *;
+    cbn [v1 v2 v3] in *; split_all;
+    unfold Rminus at 1; lra.
+Qed.
+
+Lemma Rl_mbl : mbl Rl.
+Proof.
+  apply (mbl_of_deriv Rl (fun t => mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                                          (mvmul (mT (Rl t)) (ws t)))))
+           Rl_sol (rot_mbd Rl Rl_rot)).
+  pose proof (rot_mbd Rl Rl_rot). pose proof (rot_mbd Rb Rb_rot). pose proof ws_bd.
+  struct_build bd_closed.
+Qed.
+
+Lemma Rb_mbl : mbl Rb.
+Proof.
+  apply (mbl_of_deriv Rb (fun t => mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))
+           Rb_sol (rot_mbd Rb Rb_rot)).
+  pose proof (rot_mbd Rl Rl_rot). pose proof (rot_mbd Rb Rb_rot).
+  struct_build bd_closed.
+Qed.
+
+Lemma phi_rel_nonneg (t : R) : 0 <= t -> 0 <= phi (mmul (mT (Rl t)) (Rb t)).
+Proof.
+  intro Ht. destruct (rot_surjective _ (is_rot_relative _ _ (Rl_rot t Ht) (Rb_rot t Ht))) as [q [Hq E]].
+  rewrite <- E. apply phi_rot_nonneg. exact Hq.
+Qed.
+
+(** Step 1: [phi(R_l^T R-bar) -> 0], with the Lipschitz rate proved from a bounded command. *)
+Theorem sync_phi_vanishes : vanishes (fun t => phi (mmul (mT (Rl t)) (Rb t))).
+Proof.
+  assert (P : bl (fun t => phi (mmul (mT (Rl t)) (Rb t)))).
+  { pose proof Rl_mbl. pose proof Rb_mbl.
+    apply (P_phi bl bl_closed (fun t => mmul (mT (Rl t)) (Rb t))). struct_build bl_closed. }
+  destruct P as [B [L [_ Lip]]].
+  assert (C : forall eps, 0 < eps ->
+            exists N, 0 <= N /\ forall t, N <= t -> phi (mmul (mT (Rl t)) (Rb t)) < eps).
+  { apply (phi_sync_converges Rr Rb Rl ws Sh dSh ks lam (Rabs L + 1)); try assumption.
+    - pose proof (Rabs_pos L). lra.
+    - intros s t Hs Ht. specialize (Lip s t Hs Ht). pose proof (Rle_abs L).
+      pose proof (Rabs_pos (t - s)). nra. }
+  intros eps He. destruct (C eps He) as [N [HN H]]. exists N. split; [ exact HN | ].
+  intros t Ht. rewrite Rabs_right by (apply Rle_ge, phi_rel_nonneg; lra). exact (H t Ht).
+Qed.
+
+(** [R_l^T R-bar -> I] (Frobenius norm) and [d_l - d-bar -> 0]. *)
+Theorem sync_axes :
+  vanishes (fun t => fro2 (msub (mmul (mT (Rl t)) (Rb t)) I3)) /\
+  vanishes (fun t => vnorm (vsub (mvmul (Rl t) e3) (mvmul (Rb t) e3))).
+Proof.
+  pose proof (vanishes_scale 4 _ sync_phi_vanishes) as V4. split.
+  - apply (vanishes_le _ _ V4). intros t Ht.
+    rewrite (fro2_minus_I _ (is_rot_relative _ _ (Rl_rot t Ht) (Rb_rot t Ht))). lra.
+  - apply vanishes_vnorm, (vanishes_le _ _ V4). intros t Ht.
+    pose proof (axes_gap _ _ (Rl_rot t Ht) (Rb_rot t Ht)).
+    pose proof (vdot_self_nonneg (vsub (mvmul (Rl t) e3) (mvmul (Rb t) e3))).
+    rewrite !Rabs_right; lra.
+Qed.
+
+(** The LaSalle step's derivative along the solution. *)
+Lemma rel_deriv (t : R) : 0 <= t ->
+  is_mderiv (fun s => msub (mmul (mT (Rl s)) (Rb s)) I3) t (rel_rate ks (Rl t) (Rb t) (ws t)).
+Proof.
+  intro Ht.
+  pose proof (mderiv_msub _ _ t _ _
+                (mderiv_mmul (fun s => mT (Rl s)) Rb t _ _ (mderiv_mT Rl t _ (Rl_sol t Ht)) (Rb_sol t Ht))
+                (mderiv_const I3 t)) as D.
+  rewrite msub_Z3 in D. exact D.
+Qed.
+
+Theorem rel_rate_along (t : R) : 0 <= t ->
+  is_mderiv (fun s => mmul (mT (Rl s)) (Rb s)) t
+    (msub (mscale (- ks) (madd (mmul (mmul (mT (Rl t)) (Rb t)) (sk (mmul (mT (Rl t)) (Rb t))))
+                               (mmul (sk (mmul (mT (Rl t)) (Rb t))) (mmul (mT (Rl t)) (Rb t)))))
+          (mmul (mT (Rl t)) (mmul (hat (ws t)) (Rb t)))).
+Proof.
+  intro Ht. rewrite <- (rel_rate_identity ks (Rl t) (Rb t) (ws t) (Rl_rot t Ht)).
+  exact (mderiv_mmul (fun s => mT (Rl s)) Rb t _ _ (mderiv_mT Rl t _ (Rl_sol t Ht)) (Rb_sol t Ht)).
+Qed.
+
+(** Step 2: [d/dt (R_l^T R-bar) -> 0] (Barbalat's second form) and so [omega_h^s -> 0]. *)
+Theorem rate_vanishes : vanishes (fun t => fro2 (rel_rate ks (Rl t) (Rb t) (ws t))).
+Proof.
+  apply entries_vanish_fro2.
+  apply (mrate (fun s => msub (mmul (mT (Rl s)) (Rb s)) I3)); [ exact rel_deriv | | ].
+  - apply fro2_vanishes_entries. exact (proj1 sync_axes).
+  - pose proof Rl_mbl. pose proof Rb_mbl. pose proof ws_bl. unfold rel_rate.
+    struct_build bl_closed.
+Qed.
+
+Theorem command_vanishes : vanishes (fun t => vnorm (ws t)).
+Proof.
+  apply vanishes_vnorm.
+  pose proof (vanishes_plus _ _ (vanishes_scale (16 * (ks * ks)) _ sync_phi_vanishes) rate_vanishes) as S.
+  apply (vanishes_le _ _ S). intros t Ht.
+  pose proof (command_from_rate ks (Rl t) (Rb t) (ws t) (Rl_rot t Ht) (Rb_rot t Ht)).
+  pose proof (vdot_self_nonneg (ws t)).
+  pose proof (phi_rel_nonneg t Ht). pose proof (fro2_nonneg (rel_rate ks (Rl t) (Rb t) (ws t))).
+  assert (0 <= 16 * (ks * ks) * phi (mmul (mT (Rl t)) (Rb t)))
+    by (apply Rmult_le_pos; [ pose proof (sq_nonneg ks); lra | assumption ]).
+  rewrite !Rabs_right; lra.
+Qed.
+
+(** Step 3: with item 3 in asymptotic form, [d-bar -> d_r] (the objective, eq. (2)). *)
+Theorem dbar_converges : vanishes (fun t => vnorm (vsub (mvmul (Rb t) e3) (mvmul Rr e3))).
+Proof.
+  apply vanishes_vnorm.
+  pose proof (vnorm_vanishes _ (proj2 sync_axes)) as A.
+  pose proof (vnorm_vanishes _ (item3_asymptotic command_vanishes)) as B.
+  pose proof (vanishes_plus _ _ (vanishes_scale 2 _ A) (vanishes_scale 2 _ B)) as S.
+  apply (vanishes_le _ _ S). intros t _.
+  pose proof (vdot_vsub_le (mvmul (Rb t) e3) (mvmul (Rl t) e3) (mvmul Rr e3)).
+  pose proof (vdot_self_nonneg (vsub (mvmul (Rb t) e3) (mvmul Rr e3))).
+  pose proof (vdot_self_nonneg (vsub (mvmul (Rl t) e3) (mvmul (Rb t) e3))).
+  pose proof (vdot_self_nonneg (vsub (mvmul (Rl t) e3) (mvmul Rr e3))).
+  rewrite !Rabs_right; lra.
+Qed.
+
+End LaSalle.
