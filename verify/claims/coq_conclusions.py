@@ -22,7 +22,7 @@ from verify.coq.conclusions import MODULE, conclusion_units
 from verify.coq.development import LOGICAL_ROOT, coqc_available, prelude_sources
 
 #: The prelude modules the Conclusions unit requires, in dependency order.
-NEEDED = ("SO3", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat")
+NEEDED = ("SO3", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat", "Converge")
 
 
 def _coqc(folder: Path, rel: str) -> subprocess.CompletedProcess:
