@@ -115,3 +115,28 @@ def test_converge_mutations_make_coqc_fail(prelude_dir, old, new):
     assert text.count(old) == 1, old
     assert compiles(prelude_dir, text, "ConvergeCopy")
     assert not compiles(prelude_dir, text.replace(old, new), "ConvergeMutant")
+
+
+def test_the_finding_says_re_checked_only_when_coq_accepted():
+    from verify.claims.evidence import certificate
+    from verify.claims.section3 import convergence_finding
+
+    accepted = convergence_finding(certificate("coq", True))
+    assert "re-checked in this run" in accepted and "not re-checked" not in accepted
+    refused = convergence_finding(certificate("coq", False))
+    assert "did not accept the proof, so not re-checked in this run" in refused
+    missing = convergence_finding(None)
+    assert "is not installed here, so not re-checked in this run" in missing
+    for text in (accepted, refused, missing):
+        # the premises that stay named, and the verdict they leave
+        assert "Conclusions.thm1_phi_sync_converges" in text
+        assert "thm1_dbar_converges_to_dr" in text
+        assert "item 3 in asymptotic form" in text and "Lipschitz" in text
+        assert "the verdict stays assumption" in text
+
+
+def test_without_coqc_there_is_no_convergence_evidence(monkeypatch):
+    import verify.claims.coq_conclusions as coq_conclusions
+
+    monkeypatch.setattr(coq_conclusions, "coqc_available", lambda: False)
+    assert coq_conclusions.convergence_kernel_evidence() is None

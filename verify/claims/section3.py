@@ -415,7 +415,10 @@ def lasalle_derivative(context: CheckContext) -> Outcome:
     paper_latex=r"$V = S_r + S_{rl} + S_h \geq 0$ with $\dot{V} \leq 0$, then LaSalle's principle.",
 )
 def lasalle_storage(context: CheckContext) -> Outcome:
+    from verify.claims.coq_conclusions import convergence_kernel_evidence
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
+
+    kernel = convergence_kernel_evidence()
 
     return cross_checked(Outcome(
         Verdict.ASSUMPTION,
@@ -427,10 +430,36 @@ def lasalle_storage(context: CheckContext) -> Outcome:
         "LTI model, xᵀPx/2 from a KYP certificate, as `verify gate` produces), and item 2 "
         "holds with a uniform λ > 0, then V = S_r + S_rl + S_h has "
         "V̇ ≤ -k_s λ φ(R_lᵀR̄) ≤ 0 and does not increase (Lemma 1 enters as a proved "
-        "theorem). Not proved: the link from a KYP certificate to that storage inside Coq, "
-        "boundedness of trajectories (item 4), the convergence φ(R_lᵀR̄) → 0 "
-        "(Barbalat) and the LaSalle step to d̄ → d_r with item 3. These remain "
-        "assumptions the report lists.",
+        "theorem). Not proved: the link from a KYP certificate to that storage inside Coq "
+        "and boundedness of trajectories (item 4). These remain assumptions the report "
+        "lists. " + convergence_finding(kernel),
         (argument("Uses thm1.v-dot and thm1.lasalle-derivative; Coq: "
-                  "Conclusions.thm1_energy_nonincreasing (certificates/coq/)."),),
+                  "Conclusions.thm1_energy_nonincreasing (certificates/coq/)."),
+         *(() if kernel is None else (kernel,))),
     ), trajectory_evidence(context, "lasalle"))
+
+
+def convergence_finding(kernel: Evidence | None) -> str:
+    """The convergence part of thm1.lasalle-storage's finding (Theorem 1's LaSalle step
+    in asymptotic form, prelude Converge.v): what Coq proves, whether this run
+    re-checked it, and which premises remain."""
+    if kernel is not None and kernel.passed:
+        status = "proved in Coq along every solution and re-checked in this run"
+    else:
+        status = ("proved in Coq along every solution, but Coq "
+                  + ("is not installed here" if kernel is None else "did not accept the proof")
+                  + ", so not re-checked in this run")
+    return (
+        f"Convergence, {status} (Conclusions.thm1_phi_sync_converges, "
+        "thm1_leader_average_axes, thm1_human_command_vanishes, thm1_dbar_converges_to_dr; "
+        "prelude Barbalat.v, Converge.v): φ(R_lᵀR̄) → 0 by Barbalat's lemma, so R_lᵀR̄ → I "
+        "and |d_l - d̄| → 0 with d̄ := R̄e3; d/dt(R_lᵀR̄) = -k_s(Q sk Q + sk Q Q) - "
+        "R_lᵀ hat(ω_h^s) R̄ with Q = R_lᵀR̄ tends to 0 by Barbalat's second form, so "
+        "ω_h^s → 0; then |d̄ - d_r| → 0, eq. (2). Premises beyond the energy theorem's: a "
+        "uniform λ > 0 for item 2, S_h ≥ 0, a bounded human command (item 4) that is also "
+        "Lipschitz (not in Assumption 1), and item 3 in asymptotic form (ω_h^s → 0 implies "
+        "d_l → d_r). The paper's item 3 speaks of signals that vanish identically; it "
+        "reaches limits only through an invariance principle, which needs an autonomous "
+        "closed loop with the human's state (for an LTI human, (R̄, R_l, x)), precompact "
+        "trajectories and LaSalle's theorem on the ω-limit set: not proved, so the "
+        "verdict stays assumption.")
