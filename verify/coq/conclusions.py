@@ -227,8 +227,8 @@ Theorem thm1_human_command_vanishes (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
   vanishes (fun t => vnorm (ws t)).
 Proof. intros. apply (command_vanishes Rr Rb Rl ws Sh dSh ks lam Bw Lw); assumption. Qed.
 
-(** Theorem 1's objective, eq. (2): [|d-bar - d_r| -> 0], under Assumption 1, item 3,
-    in asymptotic form (if the command dies out, [d_l -> d_r = R_r e3]), a premise. *)
+(** Theorem 1's objective (Section 2): [|d-bar - d_r| -> 0], under Assumption 1,
+    item 3, in asymptotic form (if the command dies out, [d_l -> d_r = R_r e3]), a premise. *)
 Theorem thm1_dbar_converges_to_dr (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
     (Sh dSh : R -> R) (ks lam Bw Lw : R) :
   0 < ks -> 0 < lam ->

@@ -10,8 +10,8 @@
 
     - [phi(R_l^T R-bar) -> 0] ([Barbalat.v]) gives [||R_l^T R-bar - I||_F -> 0] and
       [|d_l - d-bar| -> 0] with [d_l = R_l e3] and [d-bar := R-bar e3] (Section 3 aligns
-      [R-bar e3] with [d-bar] at time 0 and eq. (11) keeps it so; here [R-bar e3] is the
-      definition).  The Lipschitz rate that [Barbalat.v] takes as a premise is proved
+      [R-bar e3] with [d-bar] at time 0 and the stealthy control keeps it so; here
+      [R-bar e3] is the definition).  The Lipschitz rate that [Barbalat.v] takes as a premise is proved
       from a bounded human command.
     - [d/dt (R_l^T R-bar) = - R_l^T hat(omega_h^s) R-bar - k_s (Q sk Q + sk Q Q)] with
       [Q = R_l^T R-bar] (eqs. (12b), (13); at [Q = I] it is the paper's
@@ -19,7 +19,7 @@
       [f'] uniformly continuous give [f' -> 0], proved here) makes the derivative vanish,
       and [||R_l^T hat(w) R-bar||_F^2 = 2 |w|^2] then gives [omega_h^s -> 0].
     - Item 3 in the asymptotic form "[omega_h^s -> 0] implies [d_l -> d_r]" (a named
-      premise) then gives [d-bar -> d_r], the paper's objective eq. (2).
+      premise) then gives [d-bar -> d_r], the control objective of Section 2.
 
     Premises beyond those of [Barbalat.v]: the human command is bounded and Lipschitz
     ([|omega_h^s| <= B_w], [|omega_h^s(t) - omega_h^s(s)| <= L_w |t - s|]; item 4 bounds
@@ -742,7 +742,7 @@ Proof.
   rewrite !Rabs_right; lra.
 Qed.
 
-(** Step 3: with item 3 in asymptotic form, [d-bar -> d_r] (the objective, eq. (2)). *)
+(** Step 3: with item 3 in asymptotic form, [d-bar -> d_r] (the control objective of Section 2). *)
 Theorem dbar_converges : vanishes (fun t => vnorm (vsub (mvmul (Rb t) e3) (mvmul Rr e3))).
 Proof.
   apply vanishes_vnorm.
