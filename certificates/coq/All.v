@@ -107,5 +107,10 @@ Definition top_theorems :=
    Conclusions.lemma1_invariance_on_interval,
    Conclusions.lemma1_invariance_on_half_line,
    Conclusions.thm1_energy_nonincreasing,
-   Conclusions.thm1_phi_sync_converges).
+   Conclusions.thm1_phi_sync_converges,
+   Conclusions.barbalat_second_form,
+   Conclusions.thm1_lasalle_relative_rate,
+   Conclusions.thm1_leader_average_axes,
+   Conclusions.thm1_human_command_vanishes,
+   Conclusions.thm1_dbar_converges_to_dr).
 Print Assumptions top_theorems.

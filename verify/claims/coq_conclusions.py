@@ -1,4 +1,4 @@
-"""Kernel evidence for the paper's conclusions along solutions (Section 3, Lemma 1 and
+"""Kernel evidence for the paper's conclusions along solutions (Section 3, Lemma 1,
 Theorem 1).
 
 :func:`lemma1_kernel_evidence` compiles, in a temporary folder, the development of the
@@ -23,7 +23,7 @@ from pathlib import Path
 from verify.claims.evidence import certificate
 from verify.claims.model import Evidence
 from verify.coq.audit import audit_assumptions
-from verify.coq.conclusions import conclusion_units
+from verify.coq.conclusions import MODULE, conclusion_units
 from verify.coq.development import coqc_available
 from verify.coq.unit import CoqUnit
 
@@ -114,3 +114,20 @@ def thm1_kernel_evidence() -> tuple[Evidence, tuple[str, ...]] | None:
         + " from the KYP certificate unit of the k_s = 3.0 reconstruction and the prelude "
         "LTIHuman.v, Thm1LTI.v, Thm1Energy.v, Barbalat.v, compiled here; " + detail,
         ok), tops
+
+
+#: The Coq theorems behind Theorem 1's convergence (prelude Barbalat.v, Converge.v).
+CONVERGENCE_THEOREMS = ("thm1_phi_sync_converges", "thm1_leader_average_axes",
+                        "thm1_human_command_vanishes", "thm1_dbar_converges_to_dr")
+
+
+def convergence_kernel_evidence() -> Evidence | None:
+    """Certificate evidence that Coq proves Theorem 1's convergence chain along every
+    solution (d̄ → d_r under the named premises), or ``None`` without ``coqc``."""
+    if not coqc_available():
+        return None
+    ok, detail, _ = _compiled()["lemma1"]
+    names = ", ".join(f"{MODULE}.{name}" for name in CONVERGENCE_THEOREMS)
+    return certificate(
+        f"Coq (with Coquelicot) proves {names} from the prelude Barbalat.v and Converge.v, "
+        "compiled here; " + detail, ok)

@@ -420,10 +420,12 @@ def lasalle_derivative(context: CheckContext) -> Outcome:
     ),
 )
 def lasalle_storage(context: CheckContext) -> Outcome:
-    from verify.claims.coq_conclusions import thm1_kernel_evidence
+    from verify.claims.coq_conclusions import convergence_kernel_evidence, thm1_kernel_evidence
     from verify.claims.section3_dynamics import cross_checked, trajectory_evidence
 
     found = thm1_kernel_evidence()
+    convergence = convergence_kernel_evidence()
+    converged = () if convergence is None else (convergence,)
     kernel, tops = (None, ()) if found is None else found
     if kernel is None or not kernel.passed:
         return cross_checked(Outcome(
@@ -438,12 +440,12 @@ def lasalle_storage(context: CheckContext) -> Outcome:
             "certificate, S_h = xᵀPx/2 is such a storage (prelude LTIHuman.v, Thm1LTI.v; "
             "the unit Thm1_<certificate> beside the certificate's unit), but Coq "
             + ("is not installed here" if kernel is None else "did not accept that proof")
-            + ", so it is not re-checked in this run. Not proved: the LaSalle step to "
-            "d̄ → d_r with item 3. These remain assumptions the report lists.",
+            + ", so it is not re-checked in this run. " + convergence_finding(convergence),
             (argument("Uses thm1.v-dot and thm1.lasalle-derivative; Coq: "
                       "Conclusions.thm1_energy_nonincreasing, "
                       "Thm1_reconstructed_k_s_3_0_99babda880e6.thm1_energy "
-                      "(certificates/coq/)."), *(() if kernel is None else (kernel,))),
+                      "(certificates/coq/)."), *(() if kernel is None else (kernel,)),
+            *converged),
         ), trajectory_evidence(context, "lasalle"))
     return cross_checked(Outcome(
         Verdict.REPAIRED,
@@ -463,13 +465,39 @@ def lasalle_storage(context: CheckContext) -> Outcome:
         "φ(R_lᵀR̄) → 0 (Barbalat). Premises of the theorems: the solution exists, is "
         "differentiable and stays on SO(3); item 2 with a uniform λ > 0 along it; "
         "tr(R_rᵀR̄(0)) ≥ 1; for the convergence, t ↦ φ(R_lᵀR̄(t)) Lipschitz (not proved). "
-        "Not proved: the LaSalle step from φ(R_lᵀR̄) → 0 to d̄ → d_r (item 3).",
+        + convergence_finding(convergence),
         (argument("Coq: " + ", ".join(tops) + " (certificates/coq/, prelude LTIHuman.v and "
                   "Thm1LTI.v); uses thm1.v-dot, thm1.lasalle-derivative and the KYP "
-                  "certificate of sec4.reconstructed-models."), kernel),
+                  "certificate of sec4.reconstructed-models."), kernel, *converged),
         repaired_statement="The storage: for an LTI human with a KYP certificate, the "
         "state function S_h = xᵀPx/2 replaces the integral storage, and V = S_r + S_rl + "
         "S_h is a function of the closed loop's state (R̄, R_l, x).",
     # the simulation cross-checks what the kernel proved (V does not increase), not the
     # LaSalle step it leaves open
     ), trajectory_evidence(context, "lyapunov"))
+
+
+def convergence_finding(kernel: Evidence | None) -> str:
+    """The convergence part of thm1.lasalle-storage's finding (Theorem 1's LaSalle step
+    in asymptotic form, prelude Converge.v): what Coq proves, whether this run
+    re-checked it, and which premises remain."""
+    if kernel is not None and kernel.passed:
+        status = "proved in Coq along every solution and re-checked in this run"
+    else:
+        status = ("proved in Coq along every solution, but Coq "
+                  + ("is not installed here" if kernel is None else "did not accept the proof")
+                  + ", so not re-checked in this run")
+    return (
+        f"Convergence, {status} (Conclusions.thm1_phi_sync_converges, "
+        "thm1_leader_average_axes, thm1_human_command_vanishes, thm1_dbar_converges_to_dr; "
+        "prelude Barbalat.v, Converge.v): φ(R_lᵀR̄) → 0 by Barbalat's lemma, so R_lᵀR̄ → I "
+        "and |d_l - d̄| → 0 with d̄ := R̄e3; d/dt(R_lᵀR̄) = -k_s(Q sk Q + sk Q Q) - "
+        "R_lᵀ hat(ω_h^s) R̄ with Q = R_lᵀR̄ tends to 0 by Barbalat's second form, so "
+        "ω_h^s → 0; then |d̄ - d_r| → 0, the control objective of Section 2. Premises "
+        "beyond the energy theorem's: a "
+        "uniform λ > 0 for item 2, S_h ≥ 0, a bounded human command (item 4) that is also "
+        "Lipschitz (not in Assumption 1), and item 3 in asymptotic form (ω_h^s → 0 implies "
+        "d_l → d_r). The paper's item 3 speaks of signals that vanish identically; it "
+        "reaches limits only through an invariance principle, which needs an autonomous "
+        "closed loop with the human's state (for an LTI human, (R̄, R_l, x)), precompact "
+        "trajectories and LaSalle's theorem on the ω-limit set: not proved.")

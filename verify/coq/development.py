@@ -34,7 +34,7 @@ LOGICAL_ROOT = "VerifyCoq"
 # Prelude modules in dependency order (each may Require the ones before it).
 PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert",
                                   "PoleCert", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy",
-                                  "Barbalat", "LTIHuman", "Thm1LTI")
+                                  "Barbalat", "Converge", "LTIHuman", "Thm1LTI")
 
 
 def prelude_sources() -> dict[str, str]:

@@ -35,7 +35,7 @@ RESERVED_MODULES = frozenset(name.casefold() for name in (
     "Init", "Logic", "Datatypes", "Specif", "Peano", "Rdefinitions", "Raxioms", "Rbase",
     "Rfunctions", "Rtrigo", "Rtrigo_def", "Interval", "Coquelicot", "Bignums", "VerifyCoq",
     "Top", "Scratch", "Arith", "ZArith", "QArith", "Psatz", "Ring", "Field", "Lia", "Nsatz",
-    "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat", "Conclusions",
+    "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat", "Conclusions", "Converge",
     "LTIHuman", "Thm1LTI",
 ))
 
