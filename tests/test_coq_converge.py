@@ -128,11 +128,11 @@ def test_the_finding_says_re_checked_only_when_coq_accepted():
     missing = convergence_finding(None)
     assert "is not installed here, so not re-checked in this run" in missing
     for text in (accepted, refused, missing):
-        # the premises that stay named, and the verdict they leave
+        # the premises that stay named, and the step left unproved
         assert "Conclusions.thm1_phi_sync_converges" in text
         assert "thm1_dbar_converges_to_dr" in text
         assert "item 3 in asymptotic form" in text and "Lipschitz" in text
-        assert "the verdict stays assumption" in text
+        assert "LaSalle's theorem on the ω-limit set: not proved." in text
 
 
 def test_without_coqc_there_is_no_convergence_evidence(monkeypatch):
