@@ -94,14 +94,16 @@ KERNEL_NOTE = (
     "Barbalat's lemma (Barbalat.v) that energy of the leader relative to the average tends"
     " to 0, given a nonnegative storage and a Lipschitz energy along the solution as named "
     "premises (Conclusions.thm1_phi_sync_converges); the trajectory layer (Traj.v) proves "
-    "the product rule and the other derivative rules once. Not proved in Coq: the link from"
-    " the human's KYP certificate to its storage, the boundedness of item 4, and the "
+    "the product rule and the other derivative rules once. Every derivation unit whose "
+    "first expression is a time derivative (h-dot, the energies' rates, V-dot, the LaSalle "
+    "step's derivative) also proves it (module.ddt): for every trajectory satisfying the "
+    "declared dynamics, is_derive of the differentiated expression is that first "
+    "expression, the rules applied by Coq along the expression. Not proved in Coq: the link"
+    " from the human's KYP certificate to its storage, the boundedness of item 4, and the "
     "convergence of dbar to d_r (item 3)."
-    " Trusted beyond Coq and Coquelicot: the exporter's translation of each statement, the "
-    "product rule behind the derivation units' time-derivative steps (taken by the Python "
-    "checker; the Coq trajectory theorems do not depend on it), and that the adjugate "
-    "formula is the model's frequency response once Coq has checked it inverts sI - A "
-    "(stated in BandCert.v)."
+    " Trusted beyond Coq and Coquelicot: the exporter's translation of each statement, and "
+    "that the adjugate formula is the model's frequency response once Coq has checked it "
+    "inverts sI - A (stated in BandCert.v)."
 )
 
 
