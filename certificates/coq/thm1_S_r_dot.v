@@ -125,3 +125,29 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
 Qed.
 
 End thm1_S_r_dot.
+
+
+From Coquelicot Require Import Hierarchy Derive.
+From VerifyCoq Require Import Traj.
+
+Section ddt_trajectories.
+
+(** R_r: constant *)
+Variable v_1_R_r : M3.
+(** R̄: a trajectory (its derivative at t is a premise when it is differentiated) *)
+Variable v_2_Rbar : R -> M3.
+(** R_l: a trajectory (its derivative at t is a premise when it is differentiated) *)
+Variable v_3_R_l : R -> M3.
+(** k_s: constant *)
+Variable v_4_k_s : R.
+Variable t : R.
+
+(** The first expression is the derivative: d/dt (1/2) tr(I - R_rᵀ R̄) along the declared dynamics,
+    at every t, is (1/2) tr(-R_rᵀ k_s R̄ sk(R̄ᵀ R_l)) *)
+Theorem ddt : is_mderiv v_2_Rbar t (mmul (mscale v_4_k_s (v_2_Rbar t)) (sk (mmul (mT (v_2_Rbar t)) (v_3_R_l t)))) -> is_derive (fun s => (phi (mmul (mT v_1_R_r) (v_2_Rbar s)))) t ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s (v_2_Rbar t)) (sk (mmul (mT (v_2_Rbar t)) (v_3_R_l t)))))))).
+Proof.
+  intros D1.
+  eapply deriv_unique_eq; [ d_mirror | cbv beta; traj_same ].
+Qed.
+
+End ddt_trajectories.

@@ -95,3 +95,31 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_
 Qed.
 
 End thm1_S_rl_dot.
+
+
+From Coquelicot Require Import Hierarchy Derive.
+From VerifyCoq Require Import Traj.
+
+Section ddt_trajectories.
+
+(** R_r: constant *)
+Variable v_1_R_r : M3.
+(** R̄: a trajectory (its derivative at t is a premise when it is differentiated) *)
+Variable v_2_Rbar : R -> M3.
+(** R_l: a trajectory (its derivative at t is a premise when it is differentiated) *)
+Variable v_3_R_l : R -> M3.
+(** k_s: constant *)
+Variable v_4_k_s : R.
+(** ω_h^s: its value at t *)
+Variable v_5_omega_h_s : V3.
+Variable t : R.
+
+(** The first expression is the derivative: d/dt (1/2) tr(I - R_rᵀ R_l) along the declared dynamics,
+    at every t, is (1/2) tr(-R_rᵀ R_l hat(k_s vee(sk(R_lᵀ R̄)) + R_lᵀ 'ω_h^s')) *)
+Theorem ddt : is_mderiv v_3_R_l t (mmul (v_3_R_l t) (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT (v_3_R_l t)) (v_2_Rbar t))))) (mvmul (mT (v_3_R_l t)) v_5_omega_h_s)))) -> is_derive (fun s => (phi (mmul (mT v_1_R_r) (v_3_R_l s)))) t ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (v_3_R_l t) (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT (v_3_R_l t)) (v_2_Rbar t))))) (mvmul (mT (v_3_R_l t)) v_5_omega_h_s)))))))).
+Proof.
+  intros D1.
+  eapply deriv_unique_eq; [ d_mirror | cbv beta; traj_same ].
+Qed.
+
+End ddt_trajectories.

@@ -67,3 +67,29 @@ Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
 Qed.
 
 End thm1_lasalle_derivative.
+
+
+From Coquelicot Require Import Hierarchy Derive.
+From VerifyCoq Require Import Traj.
+
+Section ddt_trajectories.
+
+(** R̄: a trajectory (its derivative at t is a premise when it is differentiated) *)
+Variable v_4_Rbar : R -> M3.
+(** R_l: a trajectory (its derivative at t is a premise when it is differentiated) *)
+Variable v_1_R_l : R -> M3.
+(** k_s: constant *)
+Variable v_2_k_s : R.
+(** ω_h^s: its value at t *)
+Variable v_3_omega_h_s : V3.
+Variable t : R.
+
+(** The first expression is the derivative: d/dt R_lᵀ R̄ along the declared dynamics and the substitution,
+    at every t, is (R_l hat(k_s vee(sk(R_lᵀ R_l)) + R_lᵀ 'ω_h^s'))ᵀ R_l + R_lᵀ k_s R_l sk(R_lᵀ R_l) *)
+Theorem ddt : is_mderiv v_4_Rbar t (mmul (mscale v_2_k_s (v_4_Rbar t)) (sk (mmul (mT (v_4_Rbar t)) (v_1_R_l t)))) -> is_mderiv v_1_R_l t (mmul (v_1_R_l t) (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT (v_1_R_l t)) (v_4_Rbar t))))) (mvmul (mT (v_1_R_l t)) v_3_omega_h_s)))) -> (v_4_Rbar t) = (v_1_R_l t) -> is_mderiv (fun s => (mmul (mT (v_1_R_l s)) (v_4_Rbar s))) t (madd (mmul (mT (mmul (v_1_R_l t) (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT (v_1_R_l t)) (v_1_R_l t))))) (mvmul (mT (v_1_R_l t)) v_3_omega_h_s))))) (v_1_R_l t)) (mmul (mT (v_1_R_l t)) (mmul (mscale v_2_k_s (v_1_R_l t)) (sk (mmul (mT (v_1_R_l t)) (v_1_R_l t)))))).
+Proof.
+  intros D1 D2 E1.
+  eapply mderiv_unique_eq; [ d_mirror | cbv beta; try rewrite E1; traj_same ].
+Qed.
+
+End ddt_trajectories.

@@ -28,8 +28,11 @@ prelude's definitions (``SO3.v``):
   proved like equalities.
 
 Derivatives (``ctx.ddt``) arrive as the trees :mod:`verify.proof.calculus` formed by
-the product rule from the declared dynamics; Coq checks the algebra from there on (the
-README says so). A step justified by a citation is not exported; an SOS step is not
+the product rule from the declared dynamics; the steps check the algebra from there on,
+and a derivation that starts from a derivative also gets the theorem ``ddt``
+(:mod:`verify.coq.ddt`): for every trajectory satisfying the declared dynamics, its
+first expression is the derivative (Coquelicot's ``is_derive``), the rules applied in
+Coq. A step justified by a citation is not exported; an SOS step is not
 exported here: the paper's SOS certificates are units of their own
 (:mod:`verify.coq.sos`), a user's derivation file keeps its by_sos steps out.
 """
@@ -39,6 +42,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from verify.coq.ddt import THEOREM as DDT_THEOREM
+from verify.coq.ddt import ddt_theorem
 from verify.coq.normal import normal_form
 from verify.coq.polys import Atoms, atoms_for, cofactors, denominator_text, entries, evaluate
 from verify.coq.polys import poly_text as _poly_text
@@ -150,6 +155,10 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
         terms.append((thm, intended_statement(step.lhs, step.relation, step.rhs,
                                               sec.naming)))
         fates.append(StepExport(d.name, k, f"{name}.{thm}"))
+    try:
+        ddt = ddt_theorem(d, sec.naming)
+    except _EXPORT_FAILURES:
+        ddt = None  # no derivative theorem; the steps stand as exported
     if not theorems:
         return None, fates
     if len(theorems) == len(d.steps) > 1 and claim:
@@ -168,7 +177,13 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
             "    under the hypotheses its Proof using line names. *)", "",
             HEADER,
             f"Section {section}.", ""]
-    text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""])
+    tail: list[str] = []
+    if ddt is not None:
+        tail = [ddt[0]]
+        theorems.append(DDT_THEOREM)
+        statements.append((DDT_THEOREM, ddt[1]))
+        terms.append((DDT_THEOREM, ddt[2]))
+    text = "\n".join(head + sec.lines + [""] + body + [f"End {section}.", ""] + tail)
     return CoqUnit(name, text, tuple(theorems), source or d.name, tuple(statements),
                    tuple(terms)), fates
 

@@ -28,6 +28,8 @@ _UNARY = {"transpose": "mT", "trace": "tr", "sk": "sk", "sym": "sym", "hat": "ha
           "vee": "vee", "cos": "cos", "sin": "sin", "dot": "vdot", "outer": "outer"}
 _ZEROS = {VECTOR: "vzero", MATRIX: "Z3"}
 RELATIONS = ("=", "<=", ">=")
+#: The prelude's derivative predicates (Coquelicot's ``is_derive``; ``Traj.v``).
+DERIVATIVES = ("is_derive", "is_mderiv", "is_vderiv")
 
 
 class ReparseError(ValueError):
@@ -79,7 +81,7 @@ def intended_statement(lhs: Expr, relation: str, rhs: Expr, naming) -> str:
     return f"{intended(lhs, naming)} {relation} {intended(rhs, naming)}"
 
 
-_TOKEN = re.compile(r"\s*(?:(<=|>=|:=)|(-?\d+)|([A-Za-z_][A-Za-z0-9_']*)|([()+*/=-]))")
+_TOKEN = re.compile(r"\s*(?:(<=|>=|:=|=>|->)|(-?\d+)|([A-Za-z_][A-Za-z0-9_']*)|([()+*/=-]))")
 
 
 class _Term(str):
@@ -130,6 +132,9 @@ def _close(items: list) -> _Term:
         return _Term(_app(items[1], [items[0], items[2]]))
     if len(items) == 2 and items[0] == "-" and isinstance(items[1], _Term):
         return _Term(_app("-", [items[1]]))
+    if (len(items) == 4 and items[0] == "fun" and items[2] == "=>"
+            and isinstance(items[1], _Term) and isinstance(items[3], _Term)):
+        return _Term(_app("fun", [items[1], items[3]]))
     if (len(items) >= 2 and isinstance(items[0], _Term) and not isinstance(items[0], _Num)
             and re.match(r"[A-Za-z_]", items[0]) and "(" not in items[0]
             and all(isinstance(x, _Term) for x in items[1:])):
@@ -166,7 +171,34 @@ def parse_statement(text: str) -> str:
     if len(stack) != 1:
         raise ReparseError("unbalanced parentheses")
     top = stack[0]
+    if any(x == "->" and not isinstance(x, _Term) for x in top) or (
+            top and top[0] in DERIVATIVES):
+        return _implications(top)
     if (len(top) != 3 or isinstance(top[1], _Term) or top[1] not in RELATIONS
             or not all(isinstance(x, _Term) for x in (top[0], top[2]))):
         raise ReparseError("not a statement 'lhs REL rhs'")
     return f"{top[0]} {top[1]} {top[2]}"
+
+
+def _implications(top: list) -> str:
+    """A derivative theorem's statement (:mod:`verify.coq.ddt`): premises and conclusion
+    separated by ``->``, each ``PRED f t d`` or ``a = b``; the conclusion a ``PRED``."""
+    parts: list[list] = [[]]
+    for x in top:
+        if x == "->" and not isinstance(x, _Term):
+            parts.append([])
+        else:
+            parts[-1].append(x)
+    out = []
+    for part in parts:
+        if (len(part) == 4 and part[0] in DERIVATIVES
+                and all(isinstance(x, _Term) for x in part[1:])):
+            out.append(_app(str(part[0]), [str(x) for x in part[1:]]))
+        elif (len(part) == 3 and part[1] == "=" and not isinstance(part[1], _Term)
+                and isinstance(part[0], _Term) and isinstance(part[2], _Term)):
+            out.append(f"{part[0]} = {part[2]}")
+        else:
+            raise ReparseError("a premise or conclusion the exporter does not write")
+    if not out[-1].startswith(DERIVATIVES):
+        raise ReparseError("a derivative theorem concludes with a derivative")
+    return " -> ".join(out)

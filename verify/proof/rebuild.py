@@ -188,7 +188,7 @@ class _Decoder:
             raise WireError(f"{what}: malformed op")
         if op == "ddt":
             ctx = _index(value, len(self.contexts), what)
-            if len(args) != 1 or label is not None:
+            if len(args) != 1:
                 raise WireError(f"{what}: ddt takes one expression")
             self._declare(ctx)
             cache = self.ddt_cache[ctx]
@@ -201,7 +201,7 @@ class _Decoder:
                                 f"{LIMITS['differentiated']} distinct nodes")
             if out.shape != shape:
                 raise WireError(f"{what}: the derivative has another shape")
-            return out
+            return out if label is None else out.named(label)
         if op == "const":
             data: Any = _fraction(value, what)
         elif op == "var":

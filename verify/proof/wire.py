@@ -26,8 +26,9 @@ A node is ``{"op", "shape", "args", "label", "value"}``: ``op`` one of the expre
 operations; ``value`` is ``[numerator, denominator]`` as hexadecimal strings for
 ``const`` (no decimal conversion, so no integer-to-string limit), the variable index for
 ``var``, the chart kind for ``chart_gap``, else null. The op ``ddt`` (``value``: the
-context index, ``args``: the differentiated node) is differentiated again here along the
-context's dynamics, which are themselves re-checked to be tangent (``Context.dynamics``).
+context index, ``args``: the differentiated node, ``label``: its label or null) is
+differentiated again here along the context's dynamics, which are themselves re-checked
+to be tangent (``Context.dynamics``).
 
 A term is ``{"make": constructor, "args": [...]}`` with the kernel's constructors of
 :mod:`verify.proof.justify` (``square``, ``positive``, ``assumed``,
@@ -106,6 +107,7 @@ class _Encoder:
         self.node_index: dict[int, int] = {}
         self.keep: list[Any] = []  # keeps encoded objects alive (ids stay unique)
         self.derived: dict[int, tuple[int, Expr]] = {}
+        self.derived_args: dict[int, tuple[int, Expr, Expr]] = {}
         self.conditions: list[dict] = []
         self.cond_index: dict[int, int] = {}
         self.assumptions: list[dict] = []
@@ -137,6 +139,8 @@ class _Encoder:
             for out, arg in list(ctx._derived):
                 self.keep.append(out)
                 self.derived[id(out)] = (k, arg)
+                if out.args:  # a copy of it under another label (.named) shares its args
+                    self.derived_args[id(out.args)] = (k, arg, out)
             for uid, d in list(ctx._dynamics.items()):
                 v = next((w for w in ctx.variables if w.uid == uid), None)
                 if v is None:
@@ -157,7 +161,7 @@ class _Encoder:
                 continue
             if type(e) is not Expr:
                 raise ProofSyntaxError(f"expected an expression, got {type(e).__name__}")
-            made = self.derived.get(id(e))
+            made = self.derived.get(id(e)) or self._named_derivative(e)
             ddt_of = made if made is not None and made[0] in self.ctx_ready else None
             children = (ddt_of[1],) if ddt_of is not None else tuple(e.args)
             if expanded:
@@ -169,11 +173,24 @@ class _Encoder:
                 raise ProofSyntaxError("an expression has too many nodes")
         return self.node_index[id(root)]
 
+    def _named_derivative(self, e: Expr) -> tuple[int, Expr] | None:
+        """(context, argument) when ``e`` is a derivative under a label of its own
+        (``ctx.ddt(h).named("ḣ")``): it travels as ``ddt`` too, so the checker's
+        process differentiates it again and knows it for a derivative."""
+        found = self.derived_args.get(id(e.args)) if e.args else None
+        if found is None:
+            return None
+        k, arg, out = found
+        if e.op != out.op or e.shape != out.shape or e.data != out.data:
+            return None
+        return k, arg
+
     def _node(self, e: Expr, children: tuple, ddt_of: tuple | None) -> None:
         self.keep.append(e)
         if ddt_of is not None:
             entry = {"op": "ddt", "shape": _SHAPE_NAMES.get(e.shape), "value": ddt_of[0],
-                     "args": [self.node_index[id(ddt_of[1])]], "label": None}
+                     "args": [self.node_index[id(ddt_of[1])]],
+                     "label": None if e.label is None else _text(e.label)}
         else:
             value: Any = None
             if e.op == "const":
