@@ -283,7 +283,7 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
         "Qed.",
         "",
     ]
-    return CoqUnit(name, "\n".join(lines), (THEOREM,), origin)
+    return CoqUnit(name, "\n".join(lines), (THEOREM,), origin, machine_words=True)
 
 
 def read_bound_certificate(path: Path, schemas: tuple[str, ...],
