@@ -25,10 +25,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
 from fractions import Fraction
 from functools import reduce
 from math import lcm
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
