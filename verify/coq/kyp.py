@@ -28,7 +28,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import reduce
-from math import lcm
+from math import gcd, lcm
 from pathlib import Path
 from typing import Any
 
@@ -176,8 +176,9 @@ def word_matrix(m: ex.RationalMatrix) -> WordMatrix:
 
 def word_witness(w: Witness, scale: int) -> str:
     """A witness for a matrix M as a ``QCert.wwit`` for the integer matrix ``scale M``:
-    (e, den, weights, vectors) with ``den scale M - e I - sum_k w_k u_k u_k^T`` equal to
-    ``den scale`` times the rational residual (so dominant exactly when it is)."""
+    (e, den, c, weights, vectors) with ``den scale M - e I - c sum_k w_k u_k u_k^T``
+    equal to ``den scale`` times the rational residual (so dominant exactly when it is);
+    c is the weights' greatest common divisor."""
     terms = list(w.terms)
     vectors, weights = [], []
     for d, vec in terms:
@@ -187,9 +188,12 @@ def word_witness(w: Witness, scale: int) -> str:
     eps = mpq(w.eps) * scale
     den = common_denominator([eps, *weights])
     e = int(eps * den)
-    ws = "; ".join(word_literal(int(x * den)) for x in weights)
+    ints = [int(x * den) for x in weights]
+    c = reduce(gcd, ints, 0) or 1  # the common factor, applied after the sum
+    ws = "; ".join(word_literal(x // c) for x in ints)
     vs = _words_rows([[word_literal(v) for v in vec] for vec in vectors])
-    return f"({word_literal(e)}, {word_literal(den)},\n   [{ws}],\n   {vs})"
+    return (f"({word_literal(e)}, {word_literal(den)}, {word_literal(c)},\n   [{ws}],\n"
+            f"   {vs})")
 
 
 def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Fraction,

@@ -1249,27 +1249,27 @@ Definition zadd (X Y : list (list BigZ.t_)) := gmadd BigZ.add X Y.
 Definition zneg (X : list (list BigZ.t_)) := gmap BigZ.opp X.
 Definition zscale (k : BigZ.t_) (X : list (list BigZ.t_)) := gmap (BigZ.mul k) X.
 
-Definition zkyp (Az Bz Cz Dz Pz : list (list BigZ.t_)) (a b c d p : BigZ.t_) :=
+(** [TLz] stands for the top-left block A^T P + P A times [a p] (lemma [repr_kyp]); the
+    check computes it as [X^T + X] with [X = s P A] (P symmetric: [repr_tl]). *)
+Definition zkyp (TLz Bz Cz Dz Pz : list (list BigZ.t_)) (a b c d p : BigZ.t_) :=
   let pb := BigZ.mul p b in
   let ad := BigZ.mul a d in
-  gblock (zscale (BigZ.mul (BigZ.mul b c) d) (zadd (zmm (ztr Az) Pz) (zmm Pz Az)))
+  gblock (zscale (BigZ.mul (BigZ.mul b c) d) TLz)
          (zscale ad (zadd (zscale c (zmm Pz Bz)) (zneg (zscale pb (ztr Cz)))))
          (zscale ad (zadd (zscale c (zmm (ztr Bz) Pz)) (zneg (zscale pb Cz))))
          (zscale (BigZ.mul (BigZ.mul a p) (BigZ.mul b c)) (zneg (zadd Dz (ztr Dz)))).
 
-Lemma repr_kyp n m A B C D P Az Bz Cz Dz Pz a b c d p :
+Lemma repr_kyp n m A B C D P TLz Bz Cz Dz Pz a b c d p :
   (0 < n)%nat -> (0 < m)%nat ->
-  repr n n A Az (zR a) -> repr n m B Bz (zR b) -> repr m n C Cz (zR c) ->
+  repr n n (madd (mmul (tr A) P) (mmul P A)) TLz (zR a * zR p) ->
+  repr n m B Bz (zR b) -> repr m n C Cz (zR c) ->
   repr m m D Dz (zR d) -> repr n n P Pz (zR p) ->
-  repr (n + m) (n + m) (kyp A B C D P) (zkyp Az Bz Cz Dz Pz a b c d p)
+  repr (n + m) (n + m) (kyp A B C D P) (zkyp TLz Bz Cz Dz Pz a b c d p)
        (zR a * zR p * zR b * zR c * zR d).
 Proof.
-  intros Hn Hm HA HB HC HD HP. unfold kyp, zkyp, zmm, ztr, zadd, zneg, zscale.
+  intros Hn Hm HTL HB HC HD HP. unfold kyp, zkyp, zmm, ztr, zadd, zneg, zscale.
   apply repr_block.
-  - eapply repr_s; [|apply repr_scale, repr_add;
-      [apply (repr_mm n n n); [exact Hn | apply (repr_tr n n); [exact Hn | exact HA] | exact HP]
-      |eapply repr_s; [|apply (repr_mm n n n); [exact Hn | exact HP | exact HA]]]];
-      [rewrite !zR_mul; ring | ring].
+  - eapply repr_s; [|apply repr_scale, HTL]. rewrite !zR_mul; ring.
   - eapply repr_s; [|apply repr_scale, repr_sub;
       [apply repr_scale, (repr_mm n n m); [exact Hn | exact HP | exact HB]
       |eapply repr_s; [|apply repr_scale, (repr_tr m n); [exact Hm | exact HC]]]];
@@ -1280,6 +1280,26 @@ Proof.
       [rewrite !zR_mul; ring | rewrite !zR_mul; ring].
   - eapply repr_s; [|apply repr_scale, repr_neg, repr_add;
       [exact HD | apply repr_tr; assumption]]. rewrite !zR_mul; ring.
+Qed.
+
+Lemma repr_ext r c X Xz Yz s :
+  repr r c X Xz s -> gshape r c Yz ->
+  (forall i j, (i < r)%nat -> (j < c)%nat -> zR (zentry Xz i j) = zR (zentry Yz i j)) ->
+  repr r c X Yz s.
+Proof.
+  intros [HX [_ E]] HY EY. split; [exact HX | split; [exact HY|]].
+  intros i j Hi Hj. rewrite <- EY by assumption. apply E; assumption.
+Qed.
+
+Lemma zmm_val r k c X Y i j :
+  gshape r k X -> gshape k c Y -> (0 < k)%nat -> (i < r)%nat -> (j < c)%nat ->
+  zR (zentry (zmm X Y) i j) = sumR k (fun t => zR (zentry X i t) * zR (zentry Y t j)).
+Proof.
+  intros HX HY Hk Hi Hj. unfold zentry, zmm.
+  rewrite (gmm_entry _ _ _ r k c X Y i j HX HY Hk Hi Hj).
+  rewrite zdot_sum by (rewrite map_length, (gshape_row _ r k X i HX Hi); destruct HY; lia).
+  rewrite (gshape_row _ r k X i HX Hi). apply sumR_ext. intros t Ht.
+  rewrite (gcol_nth _ BigZ.zero). reflexivity.
 Qed.
 
 (** *** Witnesses on integers *)
@@ -1354,48 +1374,52 @@ Qed.
 Definition zdelta (n : nat) (e : BigZ.t_) : list (list BigZ.t_) :=
   gtab n (fun i j => if Nat.eqb i j then e else BigZ.zero).
 
-Definition zresid (n : nat) (M : list (list BigZ.t_)) (e den : BigZ.t_) (ds : list BigZ.t_)
-    (L : list (list BigZ.t_)) : list (list BigZ.t_) :=
-  zadd (zscale den M) (zneg (zadd (zdelta n e) (zmm (ztr L) (gsrows BigZ.mul ds L)))).
+Definition zresid (n : nat) (M : list (list BigZ.t_)) (e den c : BigZ.t_)
+    (ds : list BigZ.t_) (L : list (list BigZ.t_)) : list (list BigZ.t_) :=
+  zadd (zscale den M) (zneg (zadd (zdelta n e) (zscale c (zmm (ztr L) (gsrows BigZ.mul ds L))))).
 
-(** [den M - e I - sum_k d_k l_k l_k^T] is diagonally dominant (the rows of [L] are the
-    [l_k]), with [e >= 0], [den > 0] and every [d_k >= 0]: then
-    [x^T M x >= (e / den) |x|^2] (lemma [zpsd_check_sound]). *)
-Definition zpsd_check (n : nat) (M : list (list BigZ.t_)) (e den : BigZ.t_)
+(** [den M - e I - c sum_k d_k l_k l_k^T] is diagonally dominant (the rows of [L] are the
+    [l_k]), with [e >= 0], [den > 0], [c >= 0] and every [d_k >= 0]: then
+    [x^T M x >= (e / den) |x|^2] (lemma [zpsd_check_sound]).  The common factor [c] of
+    the weights is applied after the sum, so that the products stay short. *)
+Definition zpsd_check (n : nat) (M : list (list BigZ.t_)) (e den c : BigZ.t_)
     (ds : list BigZ.t_) (L : list (list BigZ.t_)) : bool :=
-  BigZ.leb BigZ.zero e && BigZ.ltb BigZ.zero den && forallb (BigZ.leb BigZ.zero) ds
+  BigZ.leb BigZ.zero e && BigZ.ltb BigZ.zero den && BigZ.leb BigZ.zero c
+  && forallb (BigZ.leb BigZ.zero) ds
   && Nat.eqb (length ds) (length L) && Nat.ltb 0 (length L) && Nat.ltb 0 n
   && gshape_b (length L) n L && gshape_b n n M
-  && zdominant n (zresid n M e den ds L).
+  && zdominant n (zresid n M e den c ds L).
 
 Lemma sumR_lin n a b f g h :
   sumR n (fun i => a * f i - b * g i - h i) = a * sumR n f - b * sumR n g - sumR n h.
 Proof. induction n; simpl; [ring|]. rewrite IHn. ring. Qed.
 
-Lemma zpsd_check_sound n M e den ds L :
-  zpsd_check n M e den ds L = true ->
+Lemma zpsd_check_sound n M e den c ds L :
+  zpsd_check n M e den c ds L = true ->
   forall x, zR e * sumR n (fun i => x i * x i) <= zR den * qformZ n M x.
 Proof.
   unfold zpsd_check. rewrite !andb_true_iff.
-  intros [[[[[[[[He Hden] Hds] HK] HK0] Hn] HL] HM] Hdom] x.
-  apply zR_leb in He. apply zR_ltb in Hden. rewrite zR_zero in He, Hden.
+  intros [[[[[[[[[He Hden] Hc] Hds] HK] HK0] Hn] HL] HM] Hdom] x.
+  apply zR_leb in Hc. rewrite zR_zero in Hc. apply zR_leb in He. apply zR_ltb in Hden. rewrite zR_zero in He, Hden.
   apply Nat.eqb_eq in HK. apply Nat.ltb_lt in HK0. apply Nat.ltb_lt in Hn.
   apply gshape_b_sound in HL. apply gshape_b_sound in HM.
   set (K := length L) in *.
   pose proof (gtr_shape _ BigZ.zero K n L HL HK0) as HLt.
   pose proof (gsrows_shape _ BigZ.mul K n ds L HK HL) as HDL.
-  pose proof (gmm_shape _ BigZ.zero zdot n K n _ _ HLt HDL HK0) as HS.
+  pose proof (gmm_shape _ BigZ.zero zdot n K n _ _ HLt HDL HK0) as HS0.
+  pose proof (gmap_shape _ (BigZ.mul c) n n _ HS0) as HS.
   pose proof (gtab_shape _ n (fun i j => if Nat.eqb i j then e else BigZ.zero)) as HD.
   pose proof (gmadd_shape _ BigZ.add n n _ _ HD HS) as HDS.
   pose proof (gmap_shape _ BigZ.opp n n _ HDS) as HnDS.
   pose proof (gmap_shape _ (BigZ.mul den) n n _ HM) as HdM.
   pose proof (gmadd_shape _ BigZ.add n n _ _ HdM HnDS) as HR.
   (* the entries of S = sum_k d_k l_k l_k^T *)
-  set (S := gmm BigZ.zero zdot (gtr BigZ.zero L) (gsrows BigZ.mul ds L)).
+  set (S0 := gmm BigZ.zero zdot (gtr BigZ.zero L) (gsrows BigZ.mul ds L)) in *.
+  set (S := gmap (BigZ.mul c) S0) in *.
   assert (ES : forall i j, (i < n)%nat -> (j < n)%nat ->
-            zR (zentry S i j)
+            zR (zentry S0 i j)
             = sumR K (fun k => zR (nth k ds BigZ.zero) * (zR (zentry L k i) * zR (zentry L k j)))).
-  { intros i j Hi Hj. unfold zentry, S.
+  { intros i j Hi Hj. unfold zentry, S0.
     rewrite (gmm_entry _ _ _ n K n _ _ i j HLt HDL HK0 Hi Hj).
     rewrite zdot_sum by (rewrite map_length, (gshape_row _ n K _ i HLt Hi); destruct HDL; lia).
     rewrite (gshape_row _ n K _ i HLt Hi). apply sumR_ext. intros k Hk.
@@ -1405,7 +1429,7 @@ Proof.
     rewrite (gtr_entry _ _ K n L i k HL HK0 Hi Hk).
     rewrite (gsrows_entry _ _ _ K n ds L k j HK HL Hk Hj), zR_mul. ring. }
   (* the entries of R *)
-  set (Rz := zresid n M e den ds L) in *.
+  set (Rz := zresid n M e den c ds L) in *.
   assert (ER : forall i j, (i < n)%nat -> (j < n)%nat ->
             zR (zentry Rz i j)
             = zR den * zR (zentry M i j) - ((if Nat.eqb i j then zR e else 0)
@@ -1437,7 +1461,7 @@ Proof.
                     - qformZ n S x).
   { unfold qformZ. rewrite (sumR_ext n _ _ Row), sumR_lin, sumR_scal. reflexivity. }
   (* x^T S x = sum_k d_k (l_k . x)^2 >= 0 *)
-  assert (HSx : 0 <= qformZ n S x).
+  assert (HSx0 : 0 <= qformZ n S0 x).
   { unfold qformZ.
     rewrite (sumR_ext n _ (fun i => sumR n (fun j => sumR K (fun k =>
                zR (nth k ds BigZ.zero) * ((zR (zentry L k i) * x i) * (zR (zentry L k j) * x j)))))).
@@ -1456,6 +1480,11 @@ Proof.
     assert (Hsq : 0 <= sumR n (fun i => zR (zentry L k i) * x i)
                        * sumR n (fun j => zR (zentry L k j) * x j)) by apply Rle_0_sqr.
     nra. }
+  assert (HSx : 0 <= qformZ n S x).
+  { replace (qformZ n S x) with (zR c * qformZ n S0 x); [apply Rmult_le_pos; assumption|].
+    unfold qformZ. rewrite <- sumR_scal. apply sumR_ext. intros i Hi.
+    rewrite <- sumR_scal. apply sumR_ext. intros j Hj. unfold S, zentry.
+    rewrite (gmap_entry _ _ _ n n _ i j HS0 Hi Hj), zR_mul. ring. }
   lra.
 Qed.
 
@@ -1567,6 +1596,72 @@ Proof.
       rewrite !zR_mul, wB_spec, !zR_zpos; field; auto.
 Qed.
 
+(** The entries of a matrix's data over its first ([second = false]) or second
+    denominator, as integers (0 elsewhere): [zmatw X = d2 zpart false X + d1 zpart true X]. *)
+Definition zpart (second : bool) (X : wmat) : list (list BigZ.t_) :=
+  let '(_, _, W) := X in let b := bbase in
+  map (map (fun x => if Bool.eqb (wsecond x) second then wB b x else BigZ.zero)) W.
+
+Lemma wshape_parts r c X :
+  wshape_b r c X = true ->
+  gshape r c (zmatw X) /\ gshape r c (zpart true X) /\ gshape r c (zpart false X).
+Proof.
+  destruct X as [[d1 d2] W]. cbn [wshape_b zmatw zpart]. intros HW.
+  apply gshape_b_sound in HW. split; [|split]; apply map2_shape, HW.
+Qed.
+
+Lemma zpart_val r c X i j :
+  wshape_b r c X = true -> (i < r)%nat -> (j < c)%nat ->
+  zR (zentry (zmatw X) i j)
+  = zR (zpos (fst (fst X))) * zR (zentry (zpart true X) i j)
+    + zR (zpos (snd (fst X))) * zR (zentry (zpart false X) i j).
+Proof.
+  destruct X as [[d1 d2] W]. cbn [wshape_b zmatw zpart fst snd]. intros HW Hi Hj.
+  apply gshape_b_sound in HW. unfold zentry, gentry.
+  rewrite (map2_entry _ (Wl false false nil) _ r c W i j HW Hi Hj).
+  rewrite (map2_entry _ (Wl false false nil) _ r c W i j HW Hi Hj).
+  rewrite (map2_entry _ (Wl false false nil) _ r c W i j HW Hi Hj).
+  destruct (wsecond (nth j (nth i W nil) (Wl false false nil))); cbn [Bool.eqb];
+    rewrite ?zR_mul, ?zR_zero; ring.
+Qed.
+
+(** s P A, from the two parts of P's data (the long entries of P are few). *)
+Definition zPA (A P : wmat) : list (list BigZ.t_) :=
+  zadd (zscale (zpos (fst (fst P))) (zmm (zpart true P) (zmatw A)))
+       (zscale (zpos (snd (fst P))) (zmm (zpart false P) (zmatw A))).
+
+Lemma zPA_shape n A P :
+  (0 < n)%nat -> wshape_b n n A = true -> wshape_b n n P = true -> gshape n n (zPA A P).
+Proof.
+  intros Hn HA HP. destruct (wshape_parts _ _ _ HA) as [SA _].
+  destruct (wshape_parts _ _ _ HP) as [_ [S1 S2]]. unfold zPA, zadd, zscale, zmm.
+  apply gmadd_shape; apply gmap_shape; eapply gmm_shape; eassumption.
+Qed.
+
+Lemma zPA_val n A P i j :
+  (0 < n)%nat -> wshape_b n n A = true -> wshape_b n n P = true -> (i < n)%nat -> (j < n)%nat ->
+  zR (zentry (zPA A P) i j)
+  = sumR n (fun t => zR (zentry (zmatw P) i t) * zR (zentry (zmatw A) t j)).
+Proof.
+  intros Hn HA HP Hi Hj. destruct (wshape_parts _ _ _ HA) as [SA _].
+  destruct (wshape_parts _ _ _ HP) as [_ [S1 S2]].
+  pose proof (gmm_shape _ BigZ.zero zdot n n n _ _ S1 SA Hn) as M1.
+  pose proof (gmm_shape _ BigZ.zero zdot n n n _ _ S2 SA Hn) as M2.
+  pose proof (gmap_shape _ (BigZ.mul (zpos (fst (fst P)))) n n _ M1) as N1.
+  pose proof (gmap_shape _ (BigZ.mul (zpos (snd (fst P)))) n n _ M2) as N2.
+  unfold zPA, zadd, zscale. unfold zentry at 1.
+  rewrite (gmadd_entry _ _ _ n n _ _ i j N1 N2 Hi Hj), zR_add.
+  rewrite (gmap_entry _ _ _ n n _ i j M1 Hi Hj), (gmap_entry _ _ _ n n _ i j M2 Hi Hj).
+  rewrite !zR_mul.
+  change (gentry BigZ.zero (gmm BigZ.zero zdot (zpart true P) (zmatw A)) i j)
+    with (zentry (zmm (zpart true P) (zmatw A)) i j).
+  change (gentry BigZ.zero (gmm BigZ.zero zdot (zpart false P) (zmatw A)) i j)
+    with (zentry (zmm (zpart false P) (zmatw A)) i j).
+  rewrite (zmm_val n n n _ _ i j S1 SA Hn Hi Hj), (zmm_val n n n _ _ i j S2 SA Hn Hi Hj).
+  rewrite <- !sumR_scal, <- sumR_plus. apply sumR_ext. intros t Ht.
+  rewrite (zpart_val n n P i t HP Hi Ht). ring.
+Qed.
+
 (** A small matrix given as rationals (the feedthrough D, maybe shifted), checked equal to
     integers over one denominator: [Qnum D_ij * dD = W_ij * Qden D_ij]. *)
 Definition dcheck (m : nat) (D : matQ) (dD : positive) (W : list (list wnum)) : bool :=
@@ -1626,26 +1721,26 @@ Proof.
 Qed.
 
 (** A witness on machine words: [(e, den, weights, vectors)]. *)
-Definition wwit := (wnum * wnum * list wnum * list (list wnum))%type.
+Definition wwit := (wnum * wnum * wnum * list wnum * list (list wnum))%type.
 
 Definition wpsd_check (n : nat) (M : list (list BigZ.t_)) (w : wwit) : bool :=
-  let '(e, den, ds, L) := w in
+  let '(e, den, c, ds, L) := w in
   let b := bbase in
-  zpsd_check n M (wB b e) (wB b den) (map (wB b) ds) (map (map (wB b)) L).
+  zpsd_check n M (wB b e) (wB b den) (wB b c) (map (wB b) ds) (map (map (wB b)) L).
 
-Definition wwit_e (w : wwit) : BigZ.t_ := let '(e, _, _, _) := w in wB bbase e.
+Definition wwit_e (w : wwit) : BigZ.t_ := let '(e, _, _, _, _) := w in wB bbase e.
 
 Lemma wpsd_check_sound n M w :
   wpsd_check n M w = true ->
   exists e den, zR e = zR (wwit_e w) /\ 0 <= zR e /\ 0 < zR den /\
   forall x, zR e * sumR n (fun i => x i * x i) <= zR den * qformZ n M x.
 Proof.
-  destruct w as [[[e den] ds] L]. unfold wpsd_check. intros H.
+  destruct w as [[[[e den] c] ds] L]. unfold wpsd_check. intros H.
   exists (wB bbase e), (wB bbase den). split; [reflexivity|].
   pose proof H as H'. unfold zpsd_check in H'. rewrite !andb_true_iff in H'.
-  destruct H' as [[[[[[[[He Hd] _] _] _] _] _] _] _]. apply zR_ltb in Hd. apply zR_leb in He.
-  rewrite zR_zero in Hd, He. split; [exact He|]. split; [exact Hd|].
-  exact (zpsd_check_sound _ _ _ _ _ _ H).
+  destruct H' as [[[[[[[[[He Hd] _] _] _] _] _] _] _] _]. apply zR_ltb in Hd.
+  apply zR_leb in He. rewrite zR_zero in Hd, He. split; [exact He|]. split; [exact Hd|].
+  exact (zpsd_check_sound _ _ _ _ _ _ _ H).
 Qed.
 
 (** The whole check of [kyp_certified], on integers: the data of A, B, C, P on machine
@@ -1661,8 +1756,10 @@ Definition kyp_wcheck (n m : nat) (A B C : wmat) (D : matQ) (dD : positive)
   && dcheck m D dD WD
   && zeqm Pz (ztr Pz)
   && BigZ.ltb BigZ.zero (wwit_e wP) && wpsd_check n Pz wP
-  && wpsd_check (n + m)
-       (zneg (zkyp Az Bz Cz Dz Pz (wscale A) (wscale B) (wscale C) (zpos dD) (wscale P))) wM.
+  && let PA := zPA A P in
+     wpsd_check (n + m)
+       (zneg (zkyp (zadd (ztr PA) PA) Bz Cz Dz Pz (wscale A) (wscale B) (wscale C) (zpos dD)
+                   (wscale P))) wM.
 
 Lemma repr_pos r c X Xz s : 0 < s -> repr r c X Xz s -> forall i j, (i < r)%nat -> (j < c)%nat ->
   Q2R (entry X i j) = zR (zentry Xz i j) / s.
@@ -1684,7 +1781,38 @@ Proof.
   pose proof (repr_wmat _ _ _ HA) as RA. pose proof (repr_wmat _ _ _ HB) as RB.
   pose proof (repr_wmat _ _ _ HC) as RC. pose proof (repr_wmat _ _ _ HP) as RP.
   pose proof (repr_dcheck _ _ _ _ HD) as RD.
-  pose proof (repr_kyp n m _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ Hn Hm RA RB RC RD RP) as RK.
+  (* the top-left block, computed as X^T + X with X = s P A *)
+  assert (RTL : repr n n (madd (mmul (tr (qmatw A)) (qmatw P)) (mmul (qmatw P) (qmatw A)))
+                  (zadd (ztr (zPA A P)) (zPA A P)) (zR (wscale A) * zR (wscale P))).
+  { pose proof (repr_add _ _ _ _ _ _ _
+      (repr_mm n n n _ _ _ _ _ _ Hn (repr_tr n n _ _ _ Hn RA) RP)
+      (repr_s _ _ _ _ _ _ (Rmult_comm _ _) (repr_mm n n n _ _ _ _ _ _ Hn RP RA))) as R0.
+    destruct (wshape_parts _ _ _ HA) as [SA _]. destruct (wshape_parts _ _ _ HP) as [SP _].
+    pose proof (zPA_shape n A P Hn HA HP) as SPA.
+    pose proof (gtr_shape _ BigZ.zero n n _ SPA Hn) as SPAt.
+    apply (repr_ext _ _ _ _ _ _ R0).
+    - apply gmadd_shape; assumption.
+    - intros i j Hi Hj. unfold zadd, zentry.
+      rewrite (gmadd_entry _ _ _ n n _ _ i j SPAt SPA Hi Hj).
+      pose proof (gtr_shape _ BigZ.zero n n _ SA Hn) as SAt.
+      pose proof (gmm_shape _ BigZ.zero zdot n n n _ _ SAt SP Hn) as M1.
+      pose proof (gmm_shape _ BigZ.zero zdot n n n _ _ SP SA Hn) as M2.
+      rewrite (gmadd_entry _ _ _ n n _ _ i j M1 M2 Hi Hj), !zR_add.
+      rewrite (gtr_entry _ _ n n _ i j SPA Hn Hi Hj).
+      change (gentry BigZ.zero (zPA A P) j i) with (zentry (zPA A P) j i).
+      change (gentry BigZ.zero (zPA A P) i j) with (zentry (zPA A P) i j).
+      change (gentry BigZ.zero (gmm BigZ.zero zdot (gtr BigZ.zero (zmatw A)) (zmatw P)) i j)
+        with (zentry (zmm (ztr (zmatw A)) (zmatw P)) i j).
+      change (gentry BigZ.zero (gmm BigZ.zero zdot (zmatw P) (zmatw A)) i j)
+        with (zentry (zmm (zmatw P) (zmatw A)) i j).
+      rewrite (zPA_val n A P i j Hn HA HP Hi Hj), (zPA_val n A P j i Hn HA HP Hj Hi).
+      rewrite (zmm_val n n n (ztr (zmatw A)) (zmatw P) i j SAt SP Hn Hi Hj).
+      rewrite (zmm_val n n n (zmatw P) (zmatw A) i j SP SA Hn Hi Hj).
+      f_equal. apply sumR_ext. intros t Ht.
+      rewrite (zeqm_entry _ _ t j Hsym). unfold ztr, zentry.
+      rewrite (gtr_entry _ _ n n _ t j SP Hn Ht Hj), (gtr_entry _ _ n n _ i t SA Hn Hi Ht).
+      ring. }
+  pose proof (repr_kyp n m _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ Hn Hm RTL RB RC RD RP) as RK.
   apply repr_neg in RK.
   assert (Hs : 0 < zR (wscale P)) by apply zR_scale_pos.
   assert (HL : 0 < zR (wscale A) * zR (wscale P) * zR (wscale B) * zR (wscale C)
