@@ -170,20 +170,22 @@ def test_coqc_accepts_the_k_s_3_certificate(prelude_dir):
 
 @needs_coqc
 @pytest.mark.parametrize("old, new", [
-    ("[[(545 # 160); (128 # 160);", "[[(45 # 160); (128 # 160);"),  # a changed number of P
-    ("[(-3 # 2); (-4 # 2); (0 # 2); (0 # 2)]", "[(3 # 2); (-4 # 2); (0 # 2); (0 # 2)]"),
+    ("[[(Wp 545); (Wp 128);", "[[(Wp 45); (Wp 128);"),  # a changed number of P
+    ("[(Wn 3); (Wn 4); (Wp 0); (Wp 0)]", "[(Wp 3); (Wn 4); (Wp 0); (Wp 0)]"),
     # ^ the certificate against another model (A changed, P and witnesses kept)
-    ("Definition eP : Q := (1 # 8).", "Definition eP : Q := (1 # 2)."),  # a wrong witness
+    ("(160%positive, 1%positive,", "(16%positive, 1%positive,"),  # P's denominator changed
+    ("[(Wn 1); (Wp 0)]].", "[(Wp 1); (Wp 0)]]."),  # D's integers do not match D
+    ("((Wp 10500), (Wp 525),", "((Wp 10500), (Wp 1),"),  # a wrong witness (eps too large)
     ("kyp_certified 4 2 A B C D P.", "kyp_certified 4 2 A B C Dm P."),  # swapped: H - I
-    ("kyp_check_sound 4 2 A B C D P eP wP eM wM).",
-     "kyp_check_sound 4 2 A B C D P eP wP eM (tl wM))."),  # a dropped witness term
+    ("WP wP wM).",
+     "WP wP (let '(e, d, ws, L) := wM in (e, d, tl ws, tl L)))."),  # a dropped term
 ])
 def test_coqc_rejects_a_tampered_unit(prelude_dir, old, new):
     text = kyp_unit_from_file(KS3).text
     assert old in text
     bad = text.replace(old, new, 1)
     if "Dm" in new:  # the statement swapped (H - I for H), the proof left as it was
-        bad = bad.replace("kyp_check_sound 4 2 A B C D P", "kyp_check_sound 4 2 A B C Dm P")
+        bad = bad.replace("WA WB WC D dD", "WA WB WC Dm dD")
         bad = bad.replace("(** The certificate. *)",
                           "Definition Dm : matQ := msub D (scaled_identity 2 1).\n")
     assert not compiles(prelude_dir, bad)
@@ -194,7 +196,7 @@ def test_a_strengthened_statement_is_rejected(prelude_dir):
     """Claiming M(P) < 0 (strict) where the certificate only gives <= 0."""
     text = kyp_unit_from_file(KS3).text
     extra = ("\nTheorem too_strong : pos_def 6 (mneg (kyp A B C D P)).\n"
-             "Proof. apply (pd_check_sound 6 _ eM wM). vm_compute. reflexivity. Qed.\n")
+             "Proof. apply (pd_check_sound 6 _ (1 # 1000) []). vm_compute. reflexivity. Qed.\n")
     assert not compiles(prelude_dir, text + extra)
 
 
@@ -306,8 +308,10 @@ def test_the_paper_development_has_no_forbidden_command():
     files = development_files(paper_development_units(CERTS))
     assert forbidden_commands(files) == []
     top = files["All.v"].split("Definition top_theorems :=", 1)[1]
-    assert "Cert_reconstructed_k_s_3_0_99babda880e6.passive" in top
-    assert top.rstrip().endswith("Print Assumptions top_theorems.")
+    assert "Print Assumptions top_theorems." in top
+    words = top.split("Definition word_theorems :=", 1)[1]  # checked on machine integers
+    assert "Cert_reconstructed_k_s_3_0_99babda880e6.passive" in words
+    assert words.rstrip().endswith("Print Assumptions word_theorems.")
 
 
 @pytest.mark.parametrize("case", ["not-json", "no-schema", "out-is-input"])
@@ -402,19 +406,19 @@ def pivot_row_unit():
 
 
 def _p_block(text: str) -> str:
-    return text[text.index("Definition P : matQ"):text.index("(** Witnesses")]
+    return text[text.index("Definition WP : wmat"):text.index("(** Witnesses")]
 
 
 def test_a_matrix_with_long_and_short_entries_is_written_over_two_denominators(
         pivot_row_unit):
     import re
 
-    dens = {int(d) for d in re.findall(r"\(-?\d+ # (\d+)\)", _p_block(pivot_row_unit))}
-    assert len(dens) == 2
-    short, long = sorted(dens)
+    block = _p_block(pivot_row_unit)
+    short, long = map(int, re.search(r"\((\d+)%positive, (\d+)%positive,", block).groups())
     assert short & (short - 1) == 0 and long.bit_length() > short.bit_length() + 64
+    assert "true [" in block and "(Wp " in block  # long entries over the second one
     paper = _p_block(kyp_unit_from_file(KS3).text)  # short rationals: one denominator
-    assert set(re.findall(r"\(-?\d+ # (\d+)\)", paper)) == {"160"}
+    assert "(160%positive, 1%positive," in paper and "(Wl " not in paper
 
 
 @needs_coqc
@@ -424,10 +428,10 @@ def test_coqc_accepts_pivot_rows_and_rejects_a_changed_long_entry(prelude_dir,
 
     assert compiles(prelude_dir, pivot_row_unit, "PivotRows")
     block = _p_block(pivot_row_unit)
-    longest = max(int(d) for d in re.findall(r"\(-?\d+ # (\d+)\)", block))
-    entry = re.search(r"\((-?\d+) # " + str(longest) + r"\)", block)
+    entry = re.search(r"\(Wl (true|false) true \[(\d+);", block)
     assert entry is not None
-    changed = block.replace(entry.group(0), f"({int(entry.group(1)) + 1} # {longest})", 1)
+    changed = block.replace(entry.group(0),
+                            f"(Wl {entry.group(1)} true [{int(entry.group(2)) ^ 1};", 1)
     assert not compiles(prelude_dir, pivot_row_unit.replace(block, changed), "PivotRows")
 
 

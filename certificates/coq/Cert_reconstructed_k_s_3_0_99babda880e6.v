@@ -9,52 +9,73 @@
 From Coq Require Import QArith List.
 From VerifyCoq Require Import QCert.
 Import ListNotations.
+Import Uint63.
 Local Open Scope Q_scope.
+Local Open Scope uint63_scope.
 
 (** The model: 4 states, 2 ports; x' = A x + B u, y = C x + D u.
-    Each matrix is written over one common denominator ((2 # 2) is 1, (0 # 2) is 0).
-    *)
-Definition A : matQ :=
-  [[(0 # 2); (2 # 2); (0 # 2); (0 # 2)];
-   [(-3 # 2); (-4 # 2); (0 # 2); (0 # 2)];
-   [(0 # 2); (0 # 2); (0 # 2); (2 # 2)];
-   [(0 # 2); (0 # 2); (-3 # 2); (-4 # 2)]].
-Definition B : matQ :=
-  [[(0 # 1); (0 # 1)];
-   [(1 # 1); (0 # 1)];
-   [(0 # 1); (0 # 1)];
-   [(0 # 1); (1 # 1)]].
-Definition C : matQ :=
-  [[(4 # 5); (6 # 5); (0 # 5); (0 # 5)];
-   [(0 # 5); (0 # 5); (4 # 5); (6 # 5)]].
+    A, B, C (and P below) are data on machine words ([qmatw] in QCert.v): two
+    denominators, then each entry's numerator, (Wp k) = k, (Wn k) = -k, and
+    (Wl neg second [k0; k1; ...]) = +-(k0 + 2^62 k1 + ...) over the second
+    denominator when second = true, else over the first. *)
+Definition WA : wmat :=
+  (2%positive, 1%positive,
+   [[(Wp 0); (Wp 2); (Wp 0); (Wp 0)];
+   [(Wn 3); (Wn 4); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 0); (Wp 0); (Wp 2)];
+   [(Wp 0); (Wp 0); (Wn 3); (Wn 4)]]).
+Definition A : matQ := qmatw WA.
+Definition WB : wmat :=
+  (1%positive, 1%positive,
+   [[(Wp 0); (Wp 0)];
+   [(Wp 1); (Wp 0)];
+   [(Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 1)]]).
+Definition B : matQ := qmatw WB.
+Definition WC : wmat :=
+  (5%positive, 1%positive,
+   [[(Wp 4); (Wp 6); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 0); (Wp 4); (Wp 6)]]).
+Definition C : matQ := qmatw WC.
 Definition D : matQ :=
   [[(0 # 20); (1 # 20)];
    [(-1 # 20); (0 # 20)]].
+(** D times dD, as integers (Coq checks that they are). *)
+Definition dD : positive := 20%positive.
+Definition WD : list (list wnum) :=
+  [[(Wp 0); (Wp 1)];
+   [(Wn 1); (Wp 0)]].
 
 (** The certificate. *)
-Definition P : matQ :=
-  [[(545 # 160); (128 # 160); (0 # 160); (0 # 160)];
-   [(128 # 160); (192 # 160); (0 # 160); (0 # 160)];
-   [(0 # 160); (0 # 160); (545 # 160); (128 # 160)];
-   [(0 # 160); (0 # 160); (128 # 160); (192 # 160)]].
+Definition WP : wmat :=
+  (160%positive, 1%positive,
+   [[(Wp 545); (Wp 128); (Wp 0); (Wp 0)];
+   [(Wp 128); (Wp 192); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 0); (Wp 545); (Wp 128)];
+   [(Wp 0); (Wp 0); (Wp 128); (Wp 192)]]).
+Definition P : matQ := qmatw WP.
 
-(** Witnesses (data Coq re-checks): P - eP I = sum of wP terms + a dominant residual (exact LDLᵀ);
-    -M(P) - eM I likewise (exact LDLᵀ). *)
-Definition eP : Q := (1 # 8).
-Definition wP : list term :=
-  [((275625 # 84000), [(525 # 525); (128 # 525); (0 # 525); (0 # 525)]);
-   ((73916 # 84000), [(0 # 525); (525 # 525); (0 # 525); (0 # 525)]);
-   ((275625 # 84000), [(0 # 525); (0 # 525); (525 # 525); (128 # 525)]);
-   ((73916 # 84000), [(0 # 525); (0 # 525); (0 # 525); (525 # 525)])].
-Definition eM : Q := (0 # 1).
-Definition wM : list term :=
-  [((147456 # 61440), [(384 # 384); (-1 # 384); (0 # 384); (0 # 384); (0 # 384); (0 # 384)]);
-   ((196607 # 61440), [(0 # 384); (384 # 384); (0 # 384); (0 # 384); (0 # 384); (0 # 384)]);
-   ((147456 # 61440), [(0 # 384); (0 # 384); (384 # 384); (-1 # 384); (0 # 384); (0 # 384)]);
-   ((196607 # 61440), [(0 # 384); (0 # 384); (0 # 384); (384 # 384); (0 # 384); (0 # 384)])].
+(** Witnesses (data Coq re-checks) on the integer matrices s P and L M(P), where
+    Coq computes both from the data: (e, den, [w_k], [u_k]) such that
+    den X - e I - sum_k w_k u_k u_k^T is diagonally dominant
+    (P: exact LDLᵀ; -M(P): exact LDLᵀ). *)
+Definition wP : wwit :=
+  ((Wp 10500), (Wp 525), (Wp 1),
+   [(Wp 1); (Wp 73916); (Wp 1); (Wp 73916)],
+   [[(Wp 525); (Wp 128); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 1); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 0); (Wp 525); (Wp 128)];
+   [(Wp 0); (Wp 0); (Wp 0); (Wp 1)]]).
+Definition wM : wwit :=
+  ((Wp 0), (Wp 48), (Wp 25),
+   [(Wp 1); (Wp 196607); (Wp 1); (Wp 196607)],
+   [[(Wp 384); (Wn 1); (Wp 0); (Wp 0); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 1); (Wp 0); (Wp 0); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 0); (Wp 384); (Wn 1); (Wp 0); (Wp 0)];
+   [(Wp 0); (Wp 0); (Wp 0); (Wp 1); (Wp 0); (Wp 0)]]).
 
 Theorem passive : kyp_certified 4 2 A B C D P.
 Proof.
-  apply (kyp_check_sound 4 2 A B C D P eP wP eM wM).
+  apply (kyp_wcheck_sound 4 2 WA WB WC D dD WD WP wP wM).
   vm_cast_no_check (eq_refl true).  (* the kernel evaluates the check once, at Qed *)
 Qed.

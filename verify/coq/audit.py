@@ -25,6 +25,23 @@ ALLOWED_AXIOMS: frozenset[str] = frozenset({
     "Classical_Prop.classic",
 })
 
+#: Coq's primitive 63-bit integers (``PrimInt63``) and the axioms of the standard
+#: library that specify them (``Uint63``): the KYP units' check computes on them, through
+#: bignums' ``BigZ`` (``QCert.kyp_wcheck``). Allowed for those units' theorems only
+#: (:func:`audit_assumptions` with ``word_block``).
+MACHINE_INTEGER_AXIOMS: frozenset[str] = frozenset(
+    [f"PrimInt63.{op}" for op in (
+        "int", "add", "addc", "addcarryc", "addmuldiv", "compare", "div", "diveucl",
+        "diveucl_21", "eqb", "head0", "land", "leb", "lor", "lsl", "lsr", "ltb", "lxor",
+        "mod", "mul", "mulc", "sub", "subc", "subcarryc", "tail0")]
+    + [f"Uint63.{spec}" for spec in (
+        "add_spec", "addc_def_spec", "addcarryc_def_spec", "addmuldiv_def_spec",
+        "compare_def_spec", "div_spec", "diveucl_21_spec", "diveucl_def_spec",
+        "eqb_correct", "eqb_refl", "head0_spec", "land_spec", "leb_spec", "lor_spec",
+        "lsl_spec", "lsr_spec", "ltb_spec", "lxor_spec", "mod_spec", "mul_spec",
+        "mulc_spec", "of_to_Z", "sub_spec", "subc_def_spec", "subcarryc_def_spec",
+        "tail0_spec")])
+
 _FORBIDDEN = re.compile(r"\b(Admitted|admit|Axiom|Axioms|Parameter|Parameters|Conjecture)\b")
 
 
@@ -79,11 +96,34 @@ def printed_axioms(output: str) -> list[str]:
     return names
 
 
-def audit_assumptions(output: str, allowed: Iterable[str] = ALLOWED_AXIOMS) -> AssumptionAudit:
-    """Every axiom ``Print Assumptions`` printed is allowed."""
-    names = tuple(sorted(set(printed_axioms(output))))
+def assumption_blocks(output: str) -> list[str]:
+    """The output of successive ``Print Assumptions`` commands, one block each: a block
+    starts at an ``Axioms:`` heading or is the line ``Closed under the global context``."""
+    blocks: list[list[str]] = []
+    for line in output.splitlines():
+        if line == "Axioms:" or line.startswith("Closed under the global context"):
+            blocks.append([line])
+        elif blocks:
+            blocks[-1].append(line)
+    return ["\n".join(b) + "\n" for b in blocks]
+
+
+def audit_assumptions(output: str, allowed: Iterable[str] = ALLOWED_AXIOMS, *,
+                      word_block: bool = False) -> AssumptionAudit:
+    """Every axiom ``Print Assumptions`` printed is allowed. With ``word_block`` the
+    last block is that of the machine-integer units' theorems (``All.v`` prints it
+    last), where :data:`MACHINE_INTEGER_AXIOMS` are allowed too."""
     allowed_set = set(allowed)
-    bad = tuple(n for n in names if n not in allowed_set)
+    blocks = assumption_blocks(output) if word_block else []
+    if blocks:
+        head = "".join(blocks[:-1])
+        found = [(n, n in allowed_set) for n in printed_axioms(head)]
+        found += [(n, n in allowed_set or n in MACHINE_INTEGER_AXIOMS)
+                  for n in printed_axioms(blocks[-1])]
+    else:
+        found = [(n, n in allowed_set) for n in printed_axioms(output)]
+    names = tuple(sorted({n for n, _ in found}))
+    bad = tuple(sorted({n for n, ok in found if not ok}))
     return AssumptionAudit(not bad, names, bad)
 
 

@@ -30,6 +30,8 @@ from verify.coq.unit import CoqExportError, CoqUnit
 from verify.process_tree import die_with_parent
 
 LOGICAL_ROOT = "VerifyCoq"
+#: The tuple of the top theorems of ``machine_words`` units in ``All.v``.
+WORD_THEOREMS = "word_theorems"
 
 # Prelude modules in dependency order (each may Require the ones before it).
 PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert",
@@ -102,7 +104,10 @@ def render_development(units: Sequence[CoqUnit], *,
     order = [*prelude, *names]
     files["_CoqProject"] = f"-R . {LOGICAL_ROOT}\n" + "".join(f"{name}.v\n" for name in order)
     lines = [f"From {LOGICAL_ROOT} Require {name}." for name in names]
-    tops = [f"{unit.name}.{theorem}" for unit in units for theorem in unit.theorems]
+    tops = [f"{unit.name}.{theorem}" for unit in units if not unit.machine_words
+            for theorem in unit.theorems]
+    words = [f"{unit.name}.{theorem}" for unit in units if unit.machine_words
+             for theorem in unit.theorems]
     if tops:
         # One Print Assumptions of a tuple of every top theorem: Coq walks the
         # theorems' common dependencies (the real numbers' library) once, where a
@@ -112,6 +117,13 @@ def render_development(units: Sequence[CoqUnit], *,
                   "Definition top_theorems :=",
                   "  (" + ",\n   ".join(tops) + ").",
                   "Print Assumptions top_theorems."]
+    if words:
+        # Printed last and apart: these theorems may also rest on Coq's primitive
+        # integers (verify.coq.audit.MACHINE_INTEGER_AXIOMS), the others may not.
+        lines += ["", "(** The top theorems checked on machine integers. *)",
+                  f"Definition {WORD_THEOREMS} :=",
+                  "  (" + ",\n   ".join(words) + ").",
+                  f"Print Assumptions {WORD_THEOREMS}."]
     files["All.v"] = "\n".join(lines) + "\n"
     files["_CoqProject"] += "All.v\n"
     for rel, text in (extra or {}).items():

@@ -25,9 +25,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
 from fractions import Fraction
 from functools import reduce
-from math import lcm
+from math import gcd, lcm
 from pathlib import Path
 from typing import Any
 
@@ -112,16 +113,104 @@ def module_name(file_name: str) -> str:
     return "Cert_" + re.sub(r"[^A-Za-z0-9]+", "_", stem).strip("_")
 
 
+#: Limbs of the integers written on machine words (``QCert.wnum``): base 2^62.
+LIMB_BITS = 62
+
+
+def word_literal(x: int, second: bool = False) -> str:
+    """An integer as a Coq ``QCert.wnum`` literal: ``(Wp w)``, ``(Wn w)`` for one limb over
+    the first denominator, else ``(Wl neg second [w0; w1; ...])`` (limbs of 62 bits, least
+    significant first)."""
+    x = int(x)
+    mag = abs(x)
+    if not second and mag < 1 << LIMB_BITS:
+        return f"(Wp {mag})" if x >= 0 else f"(Wn {mag})"
+    limbs = []
+    while mag:
+        limbs.append(mag & ((1 << LIMB_BITS) - 1))
+        mag >>= LIMB_BITS
+    flag = "true" if x < 0 else "false"
+    return f"(Wl {flag} {'true' if second else 'false'} [{'; '.join(map(str, limbs))}])"
+
+
+def _words_rows(rows) -> str:
+    return "[" + ";\n   ".join("[" + "; ".join(row) + "]" for row in rows) + "]"
+
+
+@dataclass(frozen=True)
+class WordMatrix:
+    """A rational matrix as ``QCert.wmat`` data: two denominators d1, d2 and each entry's
+    numerator over one of them; ``scaled`` is the integer matrix d1 d2 X that Coq's
+    ``zmatw`` computes from it."""
+
+    d1: int
+    d2: int
+    text: str
+    scaled: list[list[int]]
+
+    @property
+    def scale(self) -> int:
+        return self.d1 * self.d2
+
+
+def word_matrix(m: ex.RationalMatrix) -> WordMatrix:
+    """The data of a rational matrix on machine words (:func:`entry_denominators`)."""
+    values = [mpq(x) for row in m for x in row]
+    dens = entry_denominators(values)
+    d1 = dens[0] if values else 1
+    d2 = next((d for d in dens if d != d1), 1)
+    it = iter(dens)
+    rows, scaled = [], []
+    for row in m:
+        lits, ints = [], []
+        for x in row:
+            d = next(it)
+            second = d != d1
+            num = int(mpq(x) * d)
+            lits.append(word_literal(num, second))
+            ints.append(num * (d1 if second else d2))
+        rows.append(lits)
+        scaled.append(ints)
+    return WordMatrix(d1, d2, _words_rows(rows), scaled)
+
+
+def word_witness(w: Witness, scale: int) -> str:
+    """A witness for a matrix M as a ``QCert.wwit`` for the integer matrix ``scale M``:
+    (e, den, c, weights, vectors) with ``den scale M - e I - c sum_k w_k u_k u_k^T``
+    equal to ``den scale`` times the rational residual (so dominant exactly when it is);
+    c is the weights' greatest common divisor."""
+    terms = list(w.terms)
+    vectors, weights = [], []
+    for d, vec in terms:
+        q = common_denominator(vec)
+        vectors.append([int(mpq(x) * q) for x in vec])
+        weights.append(mpq(d) * scale / (q * q))
+    eps = mpq(w.eps) * scale
+    den = common_denominator([eps, *weights])
+    e = int(eps * den)
+    ints = [int(x * den) for x in weights]
+    c = reduce(gcd, ints, 0) or 1  # the common factor, applied after the sum
+    ws = "; ".join(word_literal(x // c) for x in ints)
+    vs = _words_rows([[word_literal(v) for v in vec] for vec in vectors])
+    return (f"({word_literal(e)}, {word_literal(den)}, {word_literal(c)},\n   [{ws}],\n"
+            f"   {vs})")
+
+
 def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Fraction,
              label: str, source: str, fingerprint: str, origin: str) -> CoqUnit:
     """The Coq unit proving ``kyp_certified`` for (A, B, C, D - margin I) and P.
 
-    Raises CoqExportError when P is not a KYP certificate of that model (no witness).
+    The data of A, B, C and P are written on machine words and checked on integers
+    (``QCert.kyp_wcheck``): Coq computes the integer matrices s P and L M(P) from them
+    and checks the witnesses there. Raises CoqExportError when P is not a KYP
+    certificate of that model (no witness).
     """
     n, m = model.n, model.m
     if n == 0:
         raise CoqExportError("a model without states (a static gain) has no KYP matrix P "
                              "to export")
+    if m == 0:
+        raise CoqExportError("a model without ports has no KYP matrix to export")
     target = shifted(model, margin)
     wP = psd_witness(P, strict=True)
     if wP is None:
@@ -132,6 +221,14 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
     if wM is None:
         raise CoqExportError("no witness that M(P) <= 0 (the KYP matrix is not negative "
                              "semidefinite, or has no room for the rounded factor)")
+    wA, wB, wC, wPm = (word_matrix(x) for x in (model.A, model.B, model.C, P))
+    dD = common_denominator(x for row in target.D for x in row)
+    WD = _words_rows([[word_literal(int(mpq(x) * dD)) for x in row] for row in target.D])
+    L = wA.scale * wPm.scale * wB.scale * wC.scale * dD
+    if not wP.terms:
+        wP = Witness(wP.eps, ((mpq(0), (mpq(0),) * n),), wP.method)
+    if not wM.terms:
+        wM = Witness(wM.eps, ((mpq(0), (mpq(0),) * (n + m)),), wM.method)
     d_name = "D"
     lines = [
         f"(** {comment_text(origin)}: exported by verify; checked by coqc.",
@@ -148,42 +245,49 @@ def kyp_unit(name: str, *, model: ExactModel, P: ex.RationalMatrix, margin: Frac
         "From Coq Require Import QArith List.",
         "From VerifyCoq Require Import QCert.",
         "Import ListNotations.",
+        "Import Uint63.",
         "Local Open Scope Q_scope.",
+        "Local Open Scope uint63_scope.",
         "",
         f"(** The model: {n} states, {m} ports; x' = A x + B u, y = C x + D u.",
-        "    Each matrix is written over one common denominator ((2 # 2) is 1, (0 # 2) is 0).",
-        "    *)",
-        f"Definition A : matQ :=\n  {matrix_literal(model.A)}.",
-        f"Definition B : matQ :=\n  {matrix_literal(model.B)}.",
-        f"Definition C : matQ :=\n  {matrix_literal(model.C)}.",
-        f"Definition D : matQ :=\n  {matrix_literal(model.D)}.",
+        "    A, B, C (and P below) are data on machine words ([qmatw] in QCert.v): two",
+        "    denominators, then each entry's numerator, (Wp k) = k, (Wn k) = -k, and",
+        "    (Wl neg second [k0; k1; ...]) = +-(k0 + 2^62 k1 + ...) over the second",
+        "    denominator when second = true, else over the first. *)",
     ]
+    for nm, wm in (("A", wA), ("B", wB), ("C", wC)):
+        lines.append(f"Definition W{nm} : wmat :=\n  ({wm.d1}%positive, {wm.d2}%positive,\n"
+                     f"   {wm.text}).\nDefinition {nm} : matQ := qmatw W{nm}.")
+    lines.append(f"Definition D : matQ :=\n  {matrix_literal(model.D)}.")
     if margin != 0:
         d_name = "D_shifted"
         lines.append(f"(** H - nu0 I has the realisation (A, B, C, D - nu0 I). *)\n"
                      f"Definition nu0 : Q := {q_literal(margin)}.\n"
                      f"Definition D_shifted : matQ := msub D (scaled_identity {m} nu0).")
     lines += [
+        f"(** {d_name} times dD, as integers (Coq checks that they are). *)",
+        f"Definition dD : positive := {dD}%positive.",
+        f"Definition WD : list (list wnum) :=\n  {WD}.",
         "",
         "(** The certificate. *)",
-        f"Definition P : matQ :=\n  {matrix_literal(P)}.",
+        f"Definition WP : wmat :=\n  ({wPm.d1}%positive, {wPm.d2}%positive,\n   {wPm.text}).",
+        "Definition P : matQ := qmatw WP.",
         "",
-        f"(** Witnesses (data Coq re-checks): P - eP I = sum of wP terms + a dominant "
-        f"residual ({wP.method});",
-        f"    -M(P) - eM I likewise ({wM.method}). *)",
-        f"Definition eP : Q := {q_literal(wP.eps)}.",
-        f"Definition wP : list term :=\n  {terms_literal(wP)}.",
-        f"Definition eM : Q := {q_literal(wM.eps)}.",
-        f"Definition wM : list term :=\n  {terms_literal(wM)}.",
+        "(** Witnesses (data Coq re-checks) on the integer matrices s P and L M(P), where",
+        "    Coq computes both from the data: (e, den, [w_k], [u_k]) such that",
+        "    den X - e I - sum_k w_k u_k u_k^T is diagonally dominant",
+        f"    (P: {wP.method}; -M(P): {wM.method}). *)",
+        f"Definition wP : wwit :=\n  {word_witness(wP, wPm.scale)}.",
+        f"Definition wM : wwit :=\n  {word_witness(wM, L)}.",
         "",
         f"Theorem {THEOREM} : kyp_certified {n} {m} A B C {d_name} P.",
         "Proof.",
-        f"  apply (kyp_check_sound {n} {m} A B C {d_name} P eP wP eM wM).",
+        f"  apply (kyp_wcheck_sound {n} {m} WA WB WC {d_name} dD WD WP wP wM).",
         "  vm_cast_no_check (eq_refl true).  (* the kernel evaluates the check once, at Qed *)",
         "Qed.",
         "",
     ]
-    return CoqUnit(name, "\n".join(lines), (THEOREM,), origin)
+    return CoqUnit(name, "\n".join(lines), (THEOREM,), origin, machine_words=True)
 
 
 def read_bound_certificate(path: Path, schemas: tuple[str, ...],

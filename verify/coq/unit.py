@@ -44,6 +44,11 @@ class CoqUnit:
     #: was exported from (:func:`verify.coq.reparse.intended`): the written statement,
     #: read back, must be this tree.
     terms: tuple[tuple[str, str], ...] = ()
+    #: The unit's check computes on machine integers (``QCert.kyp_wcheck``): its theorems'
+    #: ``Print Assumptions`` may also list the primitive integers of Coq and their
+    #: specifications (:data:`verify.coq.audit.MACHINE_INTEGER_AXIOMS`), and no other
+    #: unit's may.
+    machine_words: bool = False
 
     def __post_init__(self) -> None:
         if not _COQ_IDENT.match(self.name):
