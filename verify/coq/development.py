@@ -33,7 +33,7 @@ LOGICAL_ROOT = "VerifyCoq"
 
 # Prelude modules in dependency order (each may Require the ones before it).
 PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert",
-                                  "PoleCert", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy",
+                                  "RobustCert", "PoleCert", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy",
                                   "Barbalat")
 
 

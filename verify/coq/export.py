@@ -21,6 +21,7 @@ from verify.coq.band import gkyp_unit_from_file
 from verify.coq.band_fd import band_fd_unit_from_file
 from verify.coq.kyp import CoqExportError, kyp_unit_from_file
 from verify.coq.positive_real import NOT_KERNEL_CHECKED, pr_unit_from_file
+from verify.coq.robust import robust_unit_from_file
 from verify.coq.unit import CoqUnit
 
 KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
@@ -31,6 +32,11 @@ PR_SCHEMAS = ("verify-pr-certificate/1",)
 #: Every schema :func:`export_certificates` turns into a unit (a file of one of these
 #: kinds that is not exported was refused, with the reason).
 EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS, *PR_SCHEMAS)
+
+#: Robust certificates over an identified region (:mod:`verify.coq.robust`): exported when
+#: every leaf is of a kind ``RobustCert.v`` checks; otherwise listed with the reason (not
+#: a refusal: the Python exact checker still decides them).
+ROBUST_SCHEMAS = ("verify-robust-band-certificate/1", "verify-robust-refutation-certificate/1")
 
 #: Reason prefix of a paper's SOS certificate that was refused (edited statement, not
 #: PSD, malformed): a failure of ``verify coq``, not a kind left out by design.
@@ -125,6 +131,11 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
             except CoqExportError as exc:
                 if strict:
                     raise
+                left.append(NotExported(path.name, schema, str(exc)))
+        elif schema in ROBUST_SCHEMAS:
+            try:
+                units.append(robust_unit_from_file(path))
+            except CoqExportError as exc:
                 left.append(NotExported(path.name, schema, str(exc)))
         else:
             reason = NOT_EXPORTED_REASONS.get(schema, "unknown certificate kind: not exported")
