@@ -137,8 +137,9 @@ def robust_unit(path: Path, data: dict[str, Any]) -> CoqUnit:
         tree = tree_literal(data["pieces"][0]["tree"], False)
     w1, w2 = band
     name = module_name(path.name)
+    kind = "Robust refutation" if refutation else "Robust band"
     lines = [
-        f"(** {comment_text(('Robust refutation' if refutation else 'Robust band') + ' certificate ' + path.name)}:",
+        f"(** {comment_text(kind + ' certificate ' + path.name)}:",
         "    exported by verify; checked by coqc.",
         f"    Model: {comment_text(data['name'])} (structure paper: diagonal",
         "    (b1 s + b0) / (s^2 + a1 s + a0), constant off-diagonal c12, c21).",
