@@ -51,19 +51,6 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "SOS certificate that is not one of the paper's by_sos steps: not exported (the "
         "paper's SOS certificates are; a user's is checked by the Python exact checker "
         "only)",
-    "verify-robust-band-certificate/1":
-        "robust certificate over an ellipsoidal region of identified models: a tree of "
-        "coefficient boxes, each leaf checked by rational interval arithmetic (natural "
-        "interval extensions), Kharitonov's theorem for the denominators, and the "
-        "ellipsoid's enclosing box; the statement quantifies over a continuum of models, "
-        "and none of these three lemmas is in the Coq prelude, so no finite list of exact "
-        "checks Coq could re-run stands for it; checked by the Python exact checker only",
-    "verify-robust-refutation-certificate/1":
-        "refutation over an identified region (every model of it is not passive, from "
-        "leaves where an exact vector makes H(jw) + H(jw)^H negative): its leaves rest on "
-        "the same interval arithmetic over boxes of models as the robust certificates, "
-        "which is not in the Coq prelude (one model's refutation is a Coq unit, "
-        "WitnessCert.v: verify gate --coq); checked by the Python exact checker only",
 }
 
 

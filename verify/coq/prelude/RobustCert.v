@@ -23,8 +23,7 @@
       and Si Sg = I (all checked on [Q]), every th of the region has
       2 v.(th - thc) - v^T Sg v <= chi2 for every real v.  With v along a coordinate this
       is the enclosing box (|phi_k - phic_k| <= r_k when r_k^2 >= chi2 Sg_kk), along a
-      gradient the first-order bound of a linear leaf, along a rational y the test that
-      a box misses the region (the tangent plane of the quadratic form);
+      gradient the first-order bound of a linear leaf;
     - the conditions depend on th through phi = (th_0 .. th_7, th_8 + th_9) and the
       frequency t = w^2; a tree of midpoint splits covers the root box
       [phic - r, phic + r] x [w1^2, w2^2] ([tree_sound]);
