@@ -33,8 +33,8 @@ LOGICAL_ROOT = "VerifyCoq"
 
 # Prelude modules in dependency order (each may Require the ones before it).
 PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert",
-                                  "RobustCert", "PoleCert", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy",
-                                  "Barbalat")
+                                  "RobustCert", "PoleCert", "RotSurj", "Traj", "Lemma1Inv",
+                                  "Thm1Energy", "Barbalat")
 
 
 def prelude_sources() -> dict[str, str]:
