@@ -29,6 +29,8 @@ From VerifyCoq Require sos_lemma1_trace_inequality_sym_psd_step1.
 From VerifyCoq Require sos_thm1_S_r_dot_step7.
 From VerifyCoq Require sos_thm1_S_rl_dot_step4.
 From VerifyCoq Require sos_thm1_V_dot_step3.
+From VerifyCoq Require Cert_nonpassive_human_identified_robust_band_0_1_46_e70cf8beb9e5.
+From VerifyCoq Require Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.
 From VerifyCoq Require Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
 From VerifyCoq Require Thm1_reconstructed_k_s_3_0_99babda880e6.
@@ -106,6 +108,10 @@ Definition top_theorems :=
    sos_thm1_S_r_dot_step7.step7_by_sos,
    sos_thm1_S_rl_dot_step4.step4_by_sos,
    sos_thm1_V_dot_step3.step3_by_sos,
+   Cert_nonpassive_human_identified_robust_band_0_1_46_e70cf8beb9e5.sigma_inverse,
+   Cert_nonpassive_human_identified_robust_band_0_1_46_e70cf8beb9e5.robust_passive,
+   Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.sigma_inverse,
+   Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.robust_not_passive,
    Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.passive_on_band,
    Cert_reconstructed_k_s_3_0_99babda880e6.passive,
    Thm1_reconstructed_k_s_3_0_99babda880e6.thm1_energy,

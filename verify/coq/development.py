@@ -35,8 +35,8 @@ WORD_THEOREMS = "word_theorems"
 
 # Prelude modules in dependency order (each may Require the ones before it).
 PRELUDE_ORDER: tuple[str, ...] = ("SO3", "QCert", "SOSCert", "BandCert", "WitnessCert",
-                                  "PoleCert", "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy",
-                                  "Barbalat", "Converge", "LTIHuman", "Thm1LTI")
+                                  "RobustCert", "PoleCert", "RotSurj", "Traj", "Lemma1Inv",
+                                  "Thm1Energy", "Barbalat", "Converge", "LTIHuman", "Thm1LTI")
 
 
 def prelude_sources() -> dict[str, str]:

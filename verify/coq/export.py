@@ -21,6 +21,7 @@ from verify.coq.band import gkyp_unit_from_file
 from verify.coq.band_fd import band_fd_unit_from_file
 from verify.coq.kyp import CoqExportError, kyp_units_from_file
 from verify.coq.positive_real import NOT_KERNEL_CHECKED, pr_unit_from_file
+from verify.coq.robust import robust_unit_from_file
 from verify.coq.unit import CoqUnit
 
 KYP_SCHEMAS = ("verify-kyp-certificate/1", "verify-kyp-certificate/2")
@@ -31,6 +32,11 @@ PR_SCHEMAS = ("verify-pr-certificate/1",)
 #: Every schema :func:`export_certificates` turns into a unit (a file of one of these
 #: kinds that is not exported was refused, with the reason).
 EXPORTED_SCHEMAS = (*KYP_SCHEMAS, *BAND_SCHEMAS, *BAND_FD_SCHEMAS, *PR_SCHEMAS)
+
+#: Robust certificates over an identified region (:mod:`verify.coq.robust`): exported when
+#: every leaf is of a kind ``RobustCert.v`` checks; otherwise listed with the reason (not
+#: a refusal: the Python exact checker still decides them).
+ROBUST_SCHEMAS = ("verify-robust-band-certificate/1", "verify-robust-refutation-certificate/1")
 
 #: Reason prefix of a paper's SOS certificate that was refused (edited statement, not
 #: PSD, malformed): a failure of ``verify coq``, not a kind left out by design.
@@ -45,19 +51,6 @@ NOT_EXPORTED_REASONS: dict[str, str] = {
         "SOS certificate that is not one of the paper's by_sos steps: not exported (the "
         "paper's SOS certificates are; a user's is checked by the Python exact checker "
         "only)",
-    "verify-robust-band-certificate/1":
-        "robust certificate over an ellipsoidal region of identified models: a tree of "
-        "coefficient boxes, each leaf checked by rational interval arithmetic (natural "
-        "interval extensions), Kharitonov's theorem for the denominators, and the "
-        "ellipsoid's enclosing box; the statement quantifies over a continuum of models, "
-        "and none of these three lemmas is in the Coq prelude, so no finite list of exact "
-        "checks Coq could re-run stands for it; checked by the Python exact checker only",
-    "verify-robust-refutation-certificate/1":
-        "refutation over an identified region (every model of it is not passive, from "
-        "leaves where an exact vector makes H(jw) + H(jw)^H negative): its leaves rest on "
-        "the same interval arithmetic over boxes of models as the robust certificates, "
-        "which is not in the Coq prelude (one model's refutation is a Coq unit, "
-        "WitnessCert.v: verify gate --coq); checked by the Python exact checker only",
 }
 
 
@@ -127,6 +120,11 @@ def export_certificates(paths: Sequence[Path], *, strict: bool = False) -> Expor
             except CoqExportError as exc:
                 if strict:
                     raise
+                left.append(NotExported(path.name, schema, str(exc)))
+        elif schema in ROBUST_SCHEMAS:
+            try:
+                units.append(robust_unit_from_file(path))
+            except CoqExportError as exc:
                 left.append(NotExported(path.name, schema, str(exc)))
         else:
             reason = NOT_EXPORTED_REASONS.get(schema, "unknown certificate kind: not exported")
