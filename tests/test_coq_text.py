@@ -90,3 +90,11 @@ def test_module_names_never_collide_with_the_prelude(name):
 def test_paper_module_names_are_kept():
     assert module_identifier("lemma1.trace-form", set()) == "lemma1_trace_form"
     assert module_identifier("thm1.V-dot", set()) == "thm1_V_dot"
+
+
+def test_every_prelude_module_name_is_reserved():
+    """A unit named like a prelude module would shadow it in the development."""
+    from verify.coq.development import PRELUDE_ORDER
+    from verify.coq.text import RESERVED_MODULES
+
+    assert {name.casefold() for name in PRELUDE_ORDER} <= RESERVED_MODULES

@@ -36,7 +36,7 @@ RESERVED_MODULES = frozenset(name.casefold() for name in (
     "Rfunctions", "Rtrigo", "Rtrigo_def", "Interval", "Coquelicot", "Bignums", "VerifyCoq",
     "Top", "Scratch", "Arith", "ZArith", "QArith", "Psatz", "Ring", "Field", "Lia", "Nsatz",
     "RotSurj", "Traj", "Lemma1Inv", "Thm1Energy", "Barbalat", "Conclusions", "Converge",
-    "LTIHuman", "Thm1LTI",
+    "LTIHuman", "Thm1LTI", "RobustCert",
 ))
 
 #: ASCII names of the Greek letters and marks an identifier hint spells out.
