@@ -978,6 +978,11 @@ Definition robust_band_check (Si Sg : matQ) (eps : Q) (ws : list term) (thc : li
   && check_tree (band_leaf Sg chi2 (phicQ thc))
                 (root_box thc r ++ [(Qred (w1 * w1), Qred (w2 * w2))]) t.
 
+(** A passing check includes [Si Sg = I]: a unit checks it once, with the rest. *)
+Lemma robust_band_check_inv Si Sg eps ws thc chi2 r w1 w2 t :
+  robust_band_check Si Sg eps ws thc chi2 r w1 w2 t = true -> inv_check 10 Si Sg = true.
+Proof. unfold robust_band_check, region_ok. rewrite !andb_true_iff. tauto. Qed.
+
 (** Every model of the region is passive on [w1, w2]. *)
 Theorem robust_band_sound Si Sg eps ws thc chi2 r w1 w2 t :
   robust_band_check Si Sg eps ws thc chi2 r w1 w2 t = true ->
@@ -1010,6 +1015,11 @@ Definition robust_refutation_check (Si Sg : matQ) (eps : Q) (ws : list term) (th
   region_ok Si Sg eps ws && encl_ok Sg chi2 r && Qle_bool w1 ws_ && Qle_bool ws_ w2
   && check_tree (refute_leaf Sg chi2 (phicQ thc) v1 v2)
                 (root_box thc r ++ [(Qred (ws_ * ws_), Qred (ws_ * ws_))]) t.
+
+Lemma robust_refutation_check_inv Si Sg eps ws thc chi2 r w1 w2 ws_ v1 v2 t :
+  robust_refutation_check Si Sg eps ws thc chi2 r w1 w2 ws_ v1 v2 t = true ->
+  inv_check 10 Si Sg = true.
+Proof. unfold robust_refutation_check, region_ok. rewrite !andb_true_iff. tauto. Qed.
 
 (** No model of the region is passive on [w1, w2]: each fails at w*. *)
 Theorem robust_refutation_sound Si Sg eps ws thc chi2 r w1 w2 ws_ v1 v2 t :
