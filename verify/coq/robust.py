@@ -12,6 +12,9 @@ structure, its Hermitian part with BandCert.v's complex arithmetic):
 * ``sigma_inverse : inv_check 10 Si Sg = true``: the region's matrix is the inverse of the
   identification's covariance Σ (Sg), exactly.
 
+Both follow from one lemma, ``certificate_checked``, the whole check evaluated once by the
+kernel (``Si Sg = I`` is part of it).
+
 The data: Σ and its exact inverse, an LDLᵀ witness that Σ^-1 >= 0 (QCert's check), the
 centre, χ², the enclosing box's half-widths and the certificate's tree of leaves. Coq
 re-checks everything by computation (``robust_band_check``, ``robust_refutation_check``)
