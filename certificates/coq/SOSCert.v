@@ -688,14 +688,16 @@ Ltac sos_unfold_in t :=
 
 (** Proves [exists D F, 0 < D /\ 0 <= F /\ s * D = F * peval env target] by [link_ok]:
     [params] is the list [env] stands for, [qs] the positions of the quaternions, [Hq]
-    their norms' non-vanishing, [fe] the factors divided out of the target. *)
+    their norms' non-vanishing, [fe] the factors divided out of the target.  The check
+    [link_check] is evaluated once, by the kernel at [Qed] ([vm_cast_no_check]); [vm_compute]
+    here would evaluate it a second time, in the tactic. *)
 Ltac sos_link params qs Hq fe :=
   lazymatch goal with
   | |- exists D F, 0 < D /\ 0 <= F /\ ?s * D = F * peval ?env ?t =>
       let l := sos_unfold_in params in
       let s' := sos_unfold_in s in
       let r := sos_reify l s' in
-      apply (link_ok env qs r s fe t Hq); [reflexivity | vm_compute; reflexivity]
+      apply (link_ok env qs r s fe t Hq); [reflexivity | vm_cast_no_check (eq_refl true)]
   end.
 
 (** ** Multipliers' entries by computation *)
@@ -761,12 +763,13 @@ Proof.
   apply Rmult_le_pos; [apply Rmult_le_pos|]; assumption.
 Qed.
 
-(** Proves [peval env h = s * denp env 0 d] by [exact_ok]. *)
+(** Proves [peval env h = s * denp env 0 d] by [exact_ok] (its check evaluated once, by the
+    kernel at [Qed], as in [sos_link]). *)
 Ltac sos_exact params qs Hq :=
   lazymatch goal with
   | |- peval ?env ?h = ?s * denp ?env 0 ?d =>
       let l := sos_unfold_in params in
       let s' := sos_unfold_in s in
       let r := sos_reify l s' in
-      apply (exact_ok env qs r s d h Hq); [reflexivity | vm_compute; reflexivity]
+      apply (exact_ok env qs r s d h Hq); [reflexivity | vm_cast_no_check (eq_refl true)]
   end.
