@@ -100,7 +100,7 @@ def test_every_registered_claim_has_latex_forms_that_typeset():
         assert bool(c.repair_latex) == (c.id in {
             "sec2.wtw-invertible", "sec2.stealthiness", "sec2.projector", "sec2.dbar-dot",
             "sec3.rbar-e3", "lemma1.trace-inequality", "lemma1.nagumo-gradient",
-            "lemma1.invariance", "sec4.nu-criterion"}), c.id
+            "lemma1.invariance", "sec4.nu-criterion", "thm1.lasalle-storage"}), c.id
 
 
 def test_each_section_heading_appears_once():
