@@ -140,5 +140,6 @@ def test_the_documented_strategies_example_runs():
               ).read_text()
     start = readme.index("```python\nfrom hypothesis import given") + len("```python\n")
     namespace: dict = {}
-    exec(compile(readme[start: readme.index("```", start)], "README.md", "exec"), namespace)
+    exec(compile(readme[start: readme.index("```", start)], "<docs/guide/python.md block>", "exec"),
+         namespace)
     settings(max_examples=3)(namespace["test_lyapunov"])()
