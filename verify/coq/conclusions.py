@@ -49,7 +49,27 @@ THEOREMS: dict[str, str] = {
         "'identically' form); d̄ := R̄ e3, d_l = R_l e3, d_r = R_r e3"),
 }
 
-_TEXT = """\
+#: The closed loop of Theorem 1 on [0, oo) as premises (eqs. (12b), (13), Assumption 1,
+#: items 2 and 5, Lemma 1's start), shared by the convergence theorems below.
+_CLOSED_LOOP_ON_HALF_LINE = """\
+  0 < ks -> 0 < lam ->
+  is_rot Rr ->
+  (forall t, 0 <= t -> is_rot (Rb t)) ->
+  (forall t, 0 <= t -> is_rot (Rl t)) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
+  (forall t, 0 <= t ->
+     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
+                                            (mvmul (mT (Rl t)) (ws t)))))) ->
+  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
+  (forall t, 0 <= t ->
+     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
+  (forall t, 0 <= t -> 0 <= Sh t) ->
+  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
+  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+"""
+
+_TEXT_WITH_MARKERS = """\
 (** The paper's conclusions along solutions: the statements in full, proved in the
     prelude ([RotSurj.v], [Traj.v], [Lemma1Inv.v]). *)
 From Coq Require Import Reals.
@@ -126,21 +146,7 @@ Qed.
     phi(R_l^T R-bar(t)) -> 0: the leader and the quasi-average synchronise. *)
 Theorem thm1_phi_sync_converges (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
     (Sh dSh : R -> R) (ks lam Lp : R) :
-  0 < ks -> 0 < lam ->
-  is_rot Rr ->
-  (forall t, 0 <= t -> is_rot (Rb t)) ->
-  (forall t, 0 <= t -> is_rot (Rl t)) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
-                                            (mvmul (mT (Rl t)) (ws t)))))) ->
-  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
-  (forall t, 0 <= t ->
-     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
-  (forall t, 0 <= t -> 0 <= Sh t) ->
-  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
-  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  @CLOSED_LOOP_ON_HALF_LINE@
   0 < Lp ->
   (forall s t, 0 <= s -> 0 <= t ->
      Rabs (phi (mmul (mT (Rl t)) (Rb t)) - phi (mmul (mT (Rl s)) (Rb s))) <= Lp * Rabs (t - s)) ->
@@ -183,21 +189,7 @@ Proof. exact (rel_rate_along Rb Rl ws ks). Qed.
     [|d_l - d-bar| -> 0] with [d_l = R_l e3] and [d-bar := R-bar e3]. *)
 Theorem thm1_leader_average_axes (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
     (Sh dSh : R -> R) (ks lam Bw : R) :
-  0 < ks -> 0 < lam ->
-  is_rot Rr ->
-  (forall t, 0 <= t -> is_rot (Rb t)) ->
-  (forall t, 0 <= t -> is_rot (Rl t)) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
-                                            (mvmul (mT (Rl t)) (ws t)))))) ->
-  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
-  (forall t, 0 <= t ->
-     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
-  (forall t, 0 <= t -> 0 <= Sh t) ->
-  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
-  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  @CLOSED_LOOP_ON_HALF_LINE@
   (forall t, 0 <= t -> vnorm (ws t) <= Bw) ->
   vanishes (fun t => fro2 (msub (mmul (mT (Rl t)) (Rb t)) I3)) /\\
   vanishes (fun t => vnorm (vsub (mvmul (Rl t) e3) (mvmul (Rb t) e3))).
@@ -207,21 +199,7 @@ Proof. intros. apply (sync_axes Rr Rb Rl ws Sh dSh ks lam Bw); assumption. Qed.
     second form) and so the human command dies out, [omega_h^s(t) -> 0]. *)
 Theorem thm1_human_command_vanishes (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
     (Sh dSh : R -> R) (ks lam Bw Lw : R) :
-  0 < ks -> 0 < lam ->
-  is_rot Rr ->
-  (forall t, 0 <= t -> is_rot (Rb t)) ->
-  (forall t, 0 <= t -> is_rot (Rl t)) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
-                                            (mvmul (mT (Rl t)) (ws t)))))) ->
-  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
-  (forall t, 0 <= t ->
-     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
-  (forall t, 0 <= t -> 0 <= Sh t) ->
-  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
-  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  @CLOSED_LOOP_ON_HALF_LINE@
   (forall t, 0 <= t -> vnorm (ws t) <= Bw) ->
   (forall s t, 0 <= s -> 0 <= t -> vnorm (vsub (ws t) (ws s)) <= Lw * Rabs (t - s)) ->
   vanishes (fun t => vnorm (ws t)).
@@ -231,21 +209,7 @@ Proof. intros. apply (command_vanishes Rr Rb Rl ws Sh dSh ks lam Bw Lw); assumpt
     item 3, in asymptotic form (if the command dies out, [d_l -> d_r = R_r e3]), a premise. *)
 Theorem thm1_dbar_converges_to_dr (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
     (Sh dSh : R -> R) (ks lam Bw Lw : R) :
-  0 < ks -> 0 < lam ->
-  is_rot Rr ->
-  (forall t, 0 <= t -> is_rot (Rb t)) ->
-  (forall t, 0 <= t -> is_rot (Rl t)) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rb t (mscale ks (mmul (Rb t) (sk (mmul (mT (Rb t)) (Rl t)))))) ->
-  (forall t, 0 <= t ->
-     is_mderiv Rl t (mmul (Rl t) (hat (vadd (vscale ks (vee (sk (mmul (mT (Rl t)) (Rb t)))))
-                                            (mvmul (mT (Rl t)) (ws t)))))) ->
-  (forall t, 0 <= t -> is_derive Sh t (dSh t)) ->
-  (forall t, 0 <= t ->
-     dSh t <= vdot (vee (sk (mmul (mT (Rl t)) Rr))) (mvmul (mT (Rl t)) (ws t))) ->
-  (forall t, 0 <= t -> 0 <= Sh t) ->
-  (forall t, 0 <= t -> lam_min_spec (mmul (mT Rr) (Rl t)) lam) ->
-  1 <= tr (mmul (mT Rr) (Rb 0)) ->
+  @CLOSED_LOOP_ON_HALF_LINE@
   (forall t, 0 <= t -> vnorm (ws t) <= Bw) ->
   (forall s t, 0 <= s -> 0 <= t -> vnorm (vsub (ws t) (ws s)) <= Lw * Rabs (t - s)) ->
   (vanishes (fun t => vnorm (ws t)) ->
@@ -253,6 +217,10 @@ Theorem thm1_dbar_converges_to_dr (Rr : M3) (Rb Rl : R -> M3) (ws : R -> V3)
   vanishes (fun t => vnorm (vsub (mvmul (Rb t) e3) (mvmul Rr e3))).
 Proof. intros. apply (dbar_converges Rr Rb Rl ws Sh dSh ks lam Bw Lw); assumption. Qed.
 """
+
+
+_TEXT = _TEXT_WITH_MARKERS.replace("  @CLOSED_LOOP_ON_HALF_LINE@\n",
+                                   _CLOSED_LOOP_ON_HALF_LINE)
 
 
 def conclusion_units() -> list[CoqUnit]:
