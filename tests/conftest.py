@@ -32,6 +32,27 @@ settings.register_profile(
 settings.load_profile(os.environ.get("VERIFY_HYPOTHESIS_PROFILE", "ci"))
 
 
+def pytest_configure(config):
+    """One folder for the session's compiled Coq prelude (``coq_tools.SHARED_ENV``), made
+    by the first process, before ``pytest -n`` starts its workers (they inherit it)."""
+    from coq_tools import SHARED_ENV
+
+    if os.environ.get(SHARED_ENV):
+        return
+    import tempfile
+
+    os.environ[SHARED_ENV] = tempfile.mkdtemp(prefix="verify-coq-prelude-")
+    config._verify_coq_prelude = os.environ[SHARED_ENV]
+
+
+def pytest_unconfigure(config):
+    made = getattr(config, "_verify_coq_prelude", None)
+    if made:
+        import shutil
+
+        shutil.rmtree(made, ignore_errors=True)
+
+
 def pytest_collection_modifyitems(config, items):
     if os.environ.get("VERIFY_SLOW") == "1":
         return
@@ -64,7 +85,8 @@ def _front_end_without_namespaces(request, monkeypatch):
 
 @pytest.fixture(scope="session")
 def prelude_dir(tmp_path_factory):
-    """The Coq prelude compiled once per test process (skips where coqc is missing)."""
+    """A folder with the Coq prelude, compiled on demand once per session (skips where
+    coqc is missing)."""
     from coq_tools import compile_prelude
 
     from verify.coq.development import coqc_available
