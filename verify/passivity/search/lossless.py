@@ -8,7 +8,8 @@ Section 4). Then P A = −Aᵀ P gives P Aᵏ B = (−Aᵀ)ᵏ Cᵀ for every k,
 
 and when (A, B) is controllable n independent columns of K determine P uniquely. The
 columns of K grow by the bits of A at each power, so K is never formed over Q: it is
-built modulo word-size primes (FLINT ``nmod_mat``), P is solved modulo each prime,
+built modulo primes below 2²⁶ (numpy int64 products, FLINT ``nmod_mat`` for the
+echelon form and the solve), P is solved modulo each prime,
 lifted by Chinese remaindering and rational reconstruction (with a running common
 denominator), and the candidate is checked exactly: Aᵀ P + P A = 0 and P B = Cᵀ
 over the integers (:func:`verify.passivity.check.kyp_int.negated_kyp_matrix` is then the
@@ -27,6 +28,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import gmpy2
+import numpy as np
 from flint import nmod_mat
 from gmpy2 import mpq, mpz
 
@@ -34,9 +36,12 @@ from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, check_kyp
 from verify.passivity.check.kyp_int import IntMatrix, negated_kyp_matrix
 
-#: primes tried before the route gives up (about 62 bits each)
-MAX_PRIMES = 64
-_FIRST_PRIME = 2**62
+#: primes tried before the route gives up (26 bits each)
+MAX_PRIMES = 256
+#: primes below 2^26: residue products stay below 2^52 and sums of up to 2^11 of them
+#: below 2^63, so numpy int64 products are exact up to this many states
+_FIRST_PRIME = 2**26
+MAX_STATES = 2048
 
 
 @dataclass(frozen=True)
@@ -49,88 +54,70 @@ class LosslessSearch:
 
 
 def _primes(denominators: list[int]):
-    p = mpz(_FIRST_PRIME)
+    p = _FIRST_PRIME
     while True:
-        p = gmpy2.prev_prime(p) if hasattr(gmpy2, "prev_prime") else _prev_prime(p)
+        p -= 1
+        while not gmpy2.is_prime(p):
+            p -= 1
         if all(d % p for d in denominators):
-            yield int(p)
+            yield p
 
 
-def _prev_prime(p: mpz) -> mpz:
-    q = p - 1
-    while not gmpy2.is_prime(q):
-        q -= 1
-    return q
+def _mod(M: IntMatrix, rows: int, cols: int, p: int) -> np.ndarray:
+    """M = Z / d modulo p as int64 (p does not divide d)."""
+    out = np.array([z % p for row in M.rows for z in row], dtype=np.int64)
+    return (out.reshape(rows, cols) * pow(M.d, -1, p)) % p
 
 
-def _mod(M: IntMatrix, rows: int, cols: int, p: int) -> nmod_mat:
-    """M = Z / d modulo p (p does not divide d)."""
-    return nmod_mat(M.Z, p) * pow(M.d, -1, p) if rows and cols else nmod_mat(rows, cols, p)
+def _nmod(M: np.ndarray, p: int) -> nmod_mat:
+    rows, cols = M.shape
+    return nmod_mat(rows, cols, M.ravel().tolist(), p)
 
 
-def _hstack(blocks: list[nmod_mat], rows: int, p: int) -> nmod_mat:
-    lists = [b.tolist() for b in blocks]
-    cols = sum(b.ncols() for b in blocks)
-    return nmod_mat(rows, cols, [int(x) for i in range(rows) for rows_ in lists
-                                 for x in rows_[i]], p)
-
-
-@dataclass(frozen=True)
-class _Selection:
-    """The Krylov columns used: pivot column indices of K (block k, port j at k m + j)."""
-
-    columns: list[int]
-    blocks: int
-
-
-def _krylov(A: nmod_mat, X0: nmod_mat, blocks: int) -> list[nmod_mat]:
-    out, X = [X0], X0
+def _krylov(A: np.ndarray, X: np.ndarray, blocks: int, p: int) -> np.ndarray:
+    """[X, A X, ..., A^(blocks-1) X] modulo p."""
+    out = [X]
     for _ in range(blocks - 1):
-        X = A * X
-        out.append(X)
-    return out
+        out.append(A.dot(out[-1]) % p)
+    return np.hstack(out)
 
 
-def _select(A: nmod_mat, B: nmod_mat, n: int, p: int) -> _Selection | None:
-    """The first n independent columns of K modulo p, or None (rank < n)."""
-    m = B.ncols()
-    blocks = n if m else 0
-    if not blocks:
-        return None
-    K = _hstack(_krylov(A, B, blocks), n, p)
-    R, rank = K.rref()
-    if rank < n:
-        return None
-    rows = R.tolist()
-    columns = [next(j for j, x in enumerate(row) if int(x)) for row in rows[:n]]
-    return _Selection(columns, max(columns) // m + 1)
+def _select(A: np.ndarray, B: np.ndarray, p: int) -> list[int] | None:
+    """The first n independent columns of K = [B, AB, ...] modulo p (column k m + j is
+    Aᵏ B e_j), or None (rank < n). ceil(n/m) blocks first, doubling up to n."""
+    n, m = B.shape
+    wanted = -(-n // m)
+    while True:
+        R, rank = _nmod(_krylov(A, B, wanted, p), p).rref()
+        if rank == n:
+            return [next(j for j, x in enumerate(row) if int(x)) for row in R.tolist()[:n]]
+        if wanted >= n:
+            return None
+        wanted = min(n, 2 * wanted)
 
 
-def _columns(blocks: list[nmod_mat], columns: list[int], n: int, m: int, p: int) -> nmod_mat:
-    lists = [b.tolist() for b in blocks]
-    return nmod_mat(n, len(columns), [int(lists[c // m][i][c % m]) for i in range(n)
-                                      for c in columns], p)
-
-
-def _solve_mod(model: ExactModel, sel: _Selection, p: int) -> list[list[int]] | str:
-    """P modulo p from P K_sel = L_sel, or the reason it fails there."""
+def _solve_mod(model: ExactModel, columns: list[int], p: int) -> np.ndarray | str | None:
+    """P modulo p from P K_sel = L_sel, the reason it fails the equations there, or None
+    when the selected columns are singular modulo this prime (it is skipped)."""
     n, m = model.n, model.m
     Ai, Bi, Ci, _ = model.integer
     A, B, C = _mod(Ai, n, n, p), _mod(Bi, n, m, p), _mod(Ci, m, n, p)
-    K = _columns(_krylov(A, B, sel.blocks), sel.columns, n, m, p)
-    L = _columns(_krylov(-A.transpose(), C.transpose(), sel.blocks), sel.columns, n, m, p)
+    blocks = max(columns) // m + 1
+    K = _krylov(A, B, blocks, p)[:, columns]
+    L = _krylov((-A.T) % p, np.ascontiguousarray(C.T), blocks, p)[:, columns]
     try:
-        P = K.transpose().solve(L.transpose()).transpose()  # P K = L
+        Pt = _nmod(K.T.copy(), p).solve(_nmod(L.T.copy(), p))  # Kᵀ Pᵀ = Lᵀ
     except ZeroDivisionError:
-        return "the selected Krylov columns are singular modulo a prime"
-    if P != P.transpose():
+        return None
+    P = np.array([int(x) for x in Pt.entries()], dtype=np.int64).reshape(n, n).T
+    if not np.array_equal(P, P.T):
         return "the solution of P K = L is not symmetric modulo a prime"
-    if P * B != C.transpose():
+    if not np.array_equal(P.dot(B) % p, C.T % p):
         return "the solution of P K = L misses P B = Cᵀ modulo a prime"
-    AtP = A.transpose() * P
-    if AtP + AtP.transpose() != nmod_mat(n, n, p):
+    AtP = A.T.dot(P) % p
+    if np.any((AtP + AtP.T) % p):
         return "the solution of P K = L misses Aᵀ P + P A = 0 modulo a prime"
-    return [[int(x) for x in row] for row in P.tolist()]
+    return P
 
 
 def _reconstruct(values: list[list[int]], modulus: int) -> ex.RationalMatrix | None:
@@ -182,17 +169,18 @@ def lossless_certificate(model: ExactModel, *, max_primes: int = MAX_PRIMES
         return LosslessSearch(None, "D + Dᵀ ≠ 0, so the model is not lossless")
     if n == 0 or m == 0:
         return LosslessSearch(None, "no state or no input: nothing to solve")
+    if n > MAX_STATES:
+        return LosslessSearch(None, f"more than {MAX_STATES} states")
     Ai, Bi, Ci, _ = model.integer
     primes = _primes([Ai.d, Bi.d, Ci.d])
-    sel, used = None, 0
+    columns, used = None, 0
     for _ in range(2):
         p = next(primes)
         used += 1
-        A, B = _mod(Ai, n, n, p), _mod(Bi, n, m, p)
-        sel = _select(A, B, n, p)
-        if sel is not None:
+        columns = _select(_mod(Ai, n, n, p), _mod(Bi, n, m, p), p)
+        if columns is not None:
             break
-    if sel is None:
+    if columns is None:
         return LosslessSearch(None, "the Krylov matrix [B, AB, ...] has rank below n modulo "
                               "two primes: (A, B) is likely not controllable, so the "
                               "lossless storage is not unique", used)
@@ -200,12 +188,16 @@ def lossless_certificate(model: ExactModel, *, max_primes: int = MAX_PRIMES
     modulus = 1
     attempt = 1
     for count in range(1, max_primes + 1):
-        residues = _solve_mod(model, sel, p)
+        residues = _solve_mod(model, columns, p)
+        if residues is None:  # an unlucky prime for these columns
+            p, used = next(primes), used + 1
+            continue
         if isinstance(residues, str):
             return LosslessSearch(None, f"{residues}: no lossless storage", used)
         if values is None:
-            values = residues
+            values = residues.tolist()
         else:
+            residues = residues.tolist()
             inverse = pow(modulus, -1, p)
             values = [[v + modulus * ((r - v) * inverse % p) for v, r in
                        zip(vrow, rrow, strict=True)]
@@ -220,13 +212,11 @@ def lossless_certificate(model: ExactModel, *, max_primes: int = MAX_PRIMES
                     return LosslessSearch(None, f"the lossless storage (M(P) = 0) fails "
                                           f"the exact check: {check.reason}", used)
                 return LosslessSearch(P, f"{check.reason} (lossless storage from the Krylov "
-                                      f"equations P K = L, solved modulo {used} prime(s) "
-                                      "and reconstructed)", used)
-        if count < max_primes:
-            p = next(primes)
-            used += 1
-    return LosslessSearch(None, f"the reconstruction of P did not settle within {used} "
-                          "primes", used)
+                                      f"equations P K = L, solved modulo {count} prime(s) "
+                                      "and reconstructed)", count)
+        p, used = next(primes), used + 1
+    return LosslessSearch(None, f"the reconstruction of P did not settle within "
+                          f"{max_primes} primes", used)
 
 
 __all__ = ["MAX_PRIMES", "LosslessSearch", "lossless_certificate"]
