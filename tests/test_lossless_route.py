@@ -12,9 +12,11 @@ from __future__ import annotations
 import json
 
 import numpy as np
+import pytest
 from gmpy2 import mpq
 
 from verify.cli import main
+from verify.coq.development import coqc_available
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, check_kyp, kyp_matrix
 from verify.passivity.decision import decide
@@ -128,3 +130,23 @@ def test_the_gate_on_a_non_minimal_lossless_model_decides_its_minimal_part():
     assert found.P is None and "not controllable" in found.reason
     d = decide(model)
     assert d.verdict == PASSIVE and "minimal" in d.reason, d.reason
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not coqc_available(), reason="coqc not installed")
+def test_coq_accepts_the_lossless_certificate(tmp_path, capsys):
+    """The KYP unit with M(P) = 0 (its -M(P) witness: the zero matrix) compiles."""
+    A, B, C, D = _float_lossless(6, np.random.default_rng([SEED, 6]))
+    model = tmp_path / "ll6.toml"
+    model.write_text("[state_space]\n" + "".join(
+        f"{k} = {json.dumps(v.tolist())}\n" for k, v in zip("ABCD", (A, B, C, D),
+                                                              strict=True)))
+    d = decide(from_state_space(A, B, C, D, name="ll6"))
+    assert "lossless storage" in d.reason, d.reason
+    rc = main(["gate", str(model), "--certificates", str(tmp_path / "c"),
+               "--coq", str(tmp_path / "coq")])
+    out = capsys.readouterr().out
+    assert rc == 0, out
+    assert "coq: compiled by coqc, accepted" in out
+    assert "(P: exact LDLᵀ; -M(P): zero matrix)" in next(
+        (tmp_path / "coq").glob("Cert_*.v")).read_text()
