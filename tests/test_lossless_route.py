@@ -27,9 +27,10 @@ from verify.passivity.verdicts import PASSIVE
 SEED = 20261129
 
 
-def _exact_lossless(n: int = 6, m: int = 2, long_q: bool = True) -> tuple[ExactModel,
-                                                                           ex.RationalMatrix]:
-    """(model, Q) with a dense Q of long rationals (so several primes are needed)."""
+def _exact_lossless(n: int = 6, m: int = 2, long_q: bool = True, sign: int = 1
+                    ) -> tuple[ExactModel, ex.RationalMatrix]:
+    """(model, Q) with a dense Q of long rationals (so several primes are needed);
+    ``sign`` = -1 makes Q indefinite."""
     rng = np.random.default_rng(SEED + n)
     J = [[mpq(0)] * n for _ in range(n)]
     for i in range(n):
@@ -40,7 +41,7 @@ def _exact_lossless(n: int = 6, m: int = 2, long_q: bool = True) -> tuple[ExactM
          for _ in range(n)]
     top = mpq(2**90 + 1, 3**40) if long_q else mpq(1)
     Q = ex.add(ex.matmul(G, ex.transpose(G)),
-               [[top if i == j else mpq(0) for j in range(n)] for i in range(n)])
+               [[top if i == j else mpq(0) for j in range(n)] for i in range(n)], sign)
     B = [[mpq(int(rng.integers(-3, 4))) for _ in range(m)] for _ in range(n)]
     D = [[mpq(0), mpq(1, 3)], [mpq(-1, 3), mpq(0)]]
     return ExactModel(ex.matmul(J, Q), B, ex.transpose(ex.matmul(Q, B)), D), Q
@@ -70,6 +71,14 @@ def test_a_perturbed_non_passive_twin_gets_no_certificate():
     C = [row[:] for row in model.C]
     C[0][0] += eps  # an output that no longer matches the storage
     assert lossless_certificate(ExactModel(model.A, model.B, C, model.D)).P is None
+
+
+def test_an_indefinite_lossless_storage_is_found_but_not_accepted():
+    """M(P) = 0 with P indefinite (energy-conserving, not passive): the exact check says
+    why, and no certificate comes out."""
+    model, _Q = _exact_lossless(sign=-1)
+    found = lossless_certificate(model)
+    assert found.P is None and "not positive definite" in found.reason, found.reason
 
 
 def test_a_non_minimal_lossless_model_is_refused_with_the_reason():

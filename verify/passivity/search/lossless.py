@@ -6,7 +6,8 @@ Section 4). Then P A = −Aᵀ P gives P Aᵏ B = (−Aᵀ)ᵏ Cᵀ for every k,
 
     P K = L,   K = [B, A B, A² B, ...],   L = [Cᵀ, −Aᵀ Cᵀ, (Aᵀ)² Cᵀ, ...],
 
-and when (A, B) is controllable n independent columns of K determine P uniquely. The
+and when (A, B) is controllable n independent columns of K determine P uniquely (the
+columns are chosen once, modulo the first prime, as the first independent ones). The
 columns of K grow by the bits of A at each power, so K is never formed over Q: it is
 built modulo primes below 2²⁶ (numpy int64 products, FLINT ``nmod_mat`` for the
 echelon form and the solve), P is solved modulo each prime,
@@ -18,8 +19,9 @@ zero matrix). The final word is :func:`verify.passivity.check.certificate.check_
 trusted, it only proposes.
 
 The route gives up, with the reason, when D + Dᵀ ≠ 0, when K has rank below n modulo
-two primes (not controllable: the storage is then not unique), when the solution
-modulo a prime already fails the equations (the model is not lossless), or when the
+two primes (not controllable: the storage is then not unique), when C B is not
+symmetric, when the solution modulo two primes fails the equations (the model is not
+lossless; one failure alone may be a prime that divides P's denominators), or when the
 reconstruction has not settled within :data:`MAX_PRIMES` primes.
 """
 
@@ -171,6 +173,9 @@ def lossless_certificate(model: ExactModel, *, max_primes: int = MAX_PRIMES
         return LosslessSearch(None, "no state or no input: nothing to solve")
     if n > MAX_STATES:
         return LosslessSearch(None, f"more than {MAX_STATES} states")
+    CB = ex.matmul(model.C, model.B)  # = Bᵀ P B for any P with P B = Cᵀ
+    if not ex.is_symmetric(CB):
+        return LosslessSearch(None, "C B is not symmetric, so no symmetric P has P B = Cᵀ")
     Ai, Bi, Ci, _ = model.integer
     primes = _primes([Ai.d, Bi.d, Ci.d])
     columns, used = None, 0
@@ -185,6 +190,7 @@ def lossless_certificate(model: ExactModel, *, max_primes: int = MAX_PRIMES
                               "two primes: (A, B) is likely not controllable, so the "
                               "lossless storage is not unique", used)
     values: list[list[int]] | None = None
+    failed: str | None = None
     modulus = 1
     attempt = 1
     for count in range(1, max_primes + 1):
@@ -193,6 +199,9 @@ def lossless_certificate(model: ExactModel, *, max_primes: int = MAX_PRIMES
             p, used = next(primes), used + 1
             continue
         if isinstance(residues, str):
+            if values is None and failed is None:  # p might divide P's denominators
+                failed, p, used = residues, next(primes), used + 1
+                continue
             return LosslessSearch(None, f"{residues}: no lossless storage", used)
         if values is None:
             values = residues.tolist()
