@@ -1,6 +1,6 @@
 """The exact PSD fallback: fraction-free LDLᵀ on integers against rational LDLᵀ.
 
-Run: ``python benchmarks/bench_exact_ldl.py [--sizes 30,60,100] [--repeat 1]``.
+Run: ``python benchmarks/bench_exact_ldl.py [--sizes 30,60,100]``.
 
 For each size n, three symmetric matrices like the ones the KYP check's exact fallback
 receives (entries dyadic rationals with 52-bit mantissas over a common 2^60, as a rounded
