@@ -15,6 +15,9 @@ rationals, so the exact model is the intended one):
 - ``tangent``: port 1 a dissipative port-Hamiltonian part (n - 3 states), port 2 the
   3-state H_t = (s^2/2 + s/2 + 1) / (s + 1)^3 whose Re H_t(jw) = (w^2 - 1)^2 / (1 + w^2)^3
   touches 0 at w = 1: passive, nu = 0 at w = 1 and at infinity;
+- ``dense``: lossless like ``lossless``, but J and G small integers and Q = R Rᵀ + 2²⁰ I
+  dense with integers of about 37 bits (R integers below 2^15), so that J Q is exact in
+  floats and no short rounding of a float candidate is the storage P = Q;
 - ``nonpassive``: ``tangent`` with port 2 H_t - eps/(s + 1), eps = 2^-40: nu < 0 only
   within about 1e-6 of w = 1, down to -eps/2 (below any float tolerance of the gate).
 
@@ -40,13 +43,21 @@ from fractions import Fraction  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-FAMILIES = ("lossless", "tangent", "nonpassive")
-EXPECTED = {"lossless": "passive", "tangent": "passive", "nonpassive": "not passive"}
+FAMILIES = ("lossless", "tangent", "nonpassive", "dense")
+EXPECTED = {"lossless": "passive", "tangent": "passive", "nonpassive": "not passive",
+            "dense": "passive"}
 SEED = 20261124
 
 
 def build(family: str, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     rng = np.random.default_rng([SEED, n, FAMILIES.index(family)])
+    if family == "dense":  # lossless, Q dense with 37-bit integers: J Q exact in floats
+        J = rng.integers(-9, 10, (n, n)).astype(float)
+        J = J - J.T
+        R = rng.integers(-(2**15), 2**15, (n, n)).astype(float)
+        Q = R @ R.T + 2.0**20 * np.eye(n)
+        G = rng.integers(-9, 10, (n, 2)).astype(float)
+        return J @ Q, G, G.T @ Q, np.zeros((2, 2))
     if family == "lossless":
         J = rng.standard_normal((n, n))
         J = J - J.T

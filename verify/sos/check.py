@@ -6,7 +6,8 @@ Given the target p, blocks (multiplier H_k, basis z_k) and rational Gram matrice
 2. p == sum_k sum_{r,s} (Q_k)_rs (H_k)_{i(r) i(s)} z_{a(r)} z_{a(s)} as polynomials with
    rational coefficients (:func:`verify.sos.program.expand`), exactly;
 3. every Q_k is PSD, decided exactly (:func:`verify.passivity.check.psd.psd_exact`: a
-   dominance certificate over the integers, else exact LDL^T with zero pivots).
+   dominance certificate over the integers, else a fraction-free LDL^T with zero pivots
+   on the integer numerators).
 
 That p >= 0 then follows from each H_k being PSD on R^n, which is the caller's to
 establish (the grounds of each multiplier are re-derived from the claim, see

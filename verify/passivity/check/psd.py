@@ -1,8 +1,9 @@
 """Exact positive (semi)definiteness of a symmetric rational matrix, fast when there is room.
 
 The test tries a verified floating-point Cholesky factorisation first, then a
-*dominance certificate*, and falls back to exact LDL^T
-(:func:`verify.passivity.check.exact.psd_ldl`), so its answer is always exact:
+*dominance certificate*, and falls back to an exact fraction-free LDL^T on the integer
+numerators (:func:`verify.passivity.check.ldl_int.psd_integer`), so its answer is always
+exact:
 
 1. Rows and columns that are exactly zero are dropped (M is PSD iff the rest is).
 2. Rump's test (:mod:`verify.passivity.check.float_cholesky`): a floating-point Cholesky
@@ -19,7 +20,9 @@ The test tries a verified floating-point Cholesky factorisation first, then a
 
 Floating point only proposes L and v; a bad L or v makes the certificate fail, never pass. The
 certificate needs a margin (about n^2 unit roundoffs of |M|); matrices on the boundary
-of the cone go to exact LDL^T, whose cost grows with the size of the rationals.
+of the cone go to the fraction-free LDL^T (FLINT's fraction-free LU when it decides,
+else symmetric Bareiss elimination with zero pivots), whose integers grow to k times the
+entries' bit length at step k.
 """
 
 from __future__ import annotations
@@ -30,6 +33,7 @@ from gmpy2 import mpz
 from verify.passivity.check import exact as ex
 from verify.passivity.check import intmat
 from verify.passivity.check.float_cholesky import verified_pd
+from verify.passivity.check.ldl_int import psd_integer
 
 _FLOAT_MARGIN = 1e-11  # smallest eigenvalue, relative to |M|, worth a dominance attempt
 
@@ -101,7 +105,5 @@ def psd_exact(m: ex.RationalMatrix, *, strict: bool = False) -> ex.LdlResult:
         return ex.LdlResult(True, "M - L Lᵀ diagonally dominant, L a rounded Cholesky factor")
     if evidence is False:
         return ex.LdlResult(False, "a rational vector v has vᵀ M v < 0")
-    result = ex.psd_ldl(reduced, strict=strict)
-    if result.ok:
-        return ex.LdlResult(True, f"{result.reason} (exact LDLᵀ)", None, result.min_pivot)
-    return result
+    # M = Z / d with d > 0: Z has M's definiteness, decided without fractions
+    return psd_integer(intmat.from_rational(reduced).Z.tolist(), strict=strict)

@@ -19,7 +19,10 @@
    can exist; the caller seeks a witness), and the SDP above :data:`SDP_STATE_LIMIT`
    states (642 MB and 14 s at 60 states on an idle machine, over 3.6 GB at 100; the
    exact frequency-domain route decides those sizes instead).
-4. Every candidate is checked exactly (:func:`verify.passivity.check.certificate.check_kyp`):
+4. Lossless models (D + Dᵀ = 0) that the fast path leaves open: the storage with
+   M(P) = 0 is solved from the Krylov equations P K = L modulo primes and lifted
+   (:mod:`verify.passivity.search.lossless`); no SDP, any size.
+5. Every candidate is checked exactly (:func:`verify.passivity.check.certificate.check_kyp`):
    P > 0 and M(P) <= 0. The solvers' status never decides anything.
 """
 
@@ -42,6 +45,7 @@ from verify.passivity.check.certificate import (
     verified_kyp_split,
 )
 from verify.passivity.check.kyp_int import SplitP, int_matrix, int_matrix_from_ints
+from verify.passivity.search.lossless import lossless_certificate
 from verify.passivity.search.reduce import (
     NoCertificate,
     NotReducible,
@@ -415,6 +419,10 @@ def find_certificate(model: ExactModel, A, B, C, D, *, frugal: bool = False) -> 
     fast = reduced_search(model, scaling, frugal)
     if isinstance(fast, KypSearch):
         return fast
+    lossless = lossless_certificate(model)  # D + Dᵀ = 0: M(P) = 0 solved exactly
+    if lossless.P is not None:
+        return KypSearch(lossless.P, 0.0, "lossless", lossless.reason)
+    fast = NotReducible(f"{fast.reason}; lossless route: {lossless.reason}")
     negative = _clearly_not_passive(A, B, C, D)
     if negative:  # the fallback cannot succeed; the caller looks for a witness
         return KypSearch(None, None, "float analysis",
