@@ -190,12 +190,16 @@ def test_theorem1_unit_mutations_make_coqc_fail(prelude_dir, old, new):
 @pytest.mark.parametrize("module,old,new", [
     # the KYP premise dropped from the closed loop (both sections)
     ("Thm1LTI", "Hypothesis cert : QCert.kyp_certified n m A B C D P.\n", ""),
-    # M(P) <= 0 dropped from the certificate the storage theorems assume
-    ("LTIHuman", "Hypothesis cert : kyp_certified n m A B C D P.",
-     "Hypothesis cert : has_shape n n A /\\ has_shape n m B /\\ has_shape m n C /\\ "
-     "has_shape m m D /\\ has_shape n n P /\\ symmetric n P /\\ pos_def n P /\\ True."),
+    # M(P) <= 0 dropped from the certificate the storage theorems assume (slow, as the
+    # next: each compiles a prelude file twice, a copy and a mutant)
+    pytest.param(
+        "LTIHuman", "Hypothesis cert : kyp_certified n m A B C D P.",
+        "Hypothesis cert : has_shape n n A /\\ has_shape n m B /\\ has_shape m n C /\\ "
+        "has_shape m m D /\\ has_shape n n P /\\ symmetric n P /\\ pos_def n P /\\ True.",
+        marks=pytest.mark.slow),
     # the human's output pad drops the second port: the supply no longer matches
-    ("Thm1LTI", "(if Nat.ltb 1 m then y 1%nat else 0)", "0"),
+    pytest.param("Thm1LTI", "(if Nat.ltb 1 m then y 1%nat else 0)", "0",
+                 marks=pytest.mark.slow),
 ])
 def test_prelude_mutations_make_coqc_fail(prelude_dir, module, old, new):
     text = prelude_sources()[module]

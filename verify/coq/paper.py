@@ -8,6 +8,7 @@ derivations (a user's file). The text is deterministic: same bytes on every run.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Sequence
 
 from verify.coq.derivations import StepExport, derivation_unit
@@ -59,7 +60,16 @@ def paper_derivations() -> list[Derivation]:
 
 
 def paper_exports() -> tuple[list[CoqUnit], list[StepExport]]:
-    return derivation_exports(paper_derivations())
+    """The paper's units and every step's fate, exported once per process (the
+    derivations are the package's own and the text is deterministic)."""
+    units, fates = _paper_exports()
+    return list(units), list(fates)
+
+
+@functools.cache
+def _paper_exports() -> tuple[tuple[CoqUnit, ...], tuple[StepExport, ...]]:
+    units, fates = derivation_exports(paper_derivations())
+    return tuple(units), tuple(fates)
 
 
 def paper_units() -> list[CoqUnit]:

@@ -36,6 +36,7 @@ each such unit says so. Rotations (quaternions) and free entries miss nothing.
 
 from __future__ import annotations
 
+import functools
 import json
 from dataclasses import dataclass
 from fractions import Fraction
@@ -132,14 +133,10 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
              module: str | None = None) -> CoqUnit:
     """The unit of one certificate (``data``, parsed JSON) for ``step`` (its module
     ``module``, by default named after the step)."""
-    from verify.proof.checker import step_problem
-    from verify.proof.sos_step import step_program
     from verify.sos import poly as pl
 
-    d = step.derivation
-    (st,) = d.steps
-    problem = step_problem(d, st)
-    sp = step_program(problem, st.because)
+    (st,) = step.derivation.steps
+    problem, sp = _step_program(step)
     if tuple(data.get("variables", ())) != tuple(sp.program.variables):
         raise CoqExportError("the certificate's variables are not this step's parameters")
     n = len(sp.program.variables)
@@ -541,22 +538,45 @@ def _den_text(kf, naming: Naming, space) -> tuple[str, str]:
 
 # -- the paper's certificates ------------------------------------------------------------
 def paper_sos_steps() -> list[SosStep]:
-    """The ``by_sos`` twins of the paper's hand inequality steps."""
+    """The ``by_sos`` twins of the paper's hand inequality steps (built once per
+    process: they are the package's own, fixed objects)."""
+    return list(_paper_sos_steps())
+
+
+@functools.cache
+def _paper_sos_steps() -> tuple[SosStep, ...]:
     from verify.paper_proofs.sos_proofs import sos_reproofs
 
-    return [SosStep(r.derivation, r.original, r.step) for r in sos_reproofs()]
+    return tuple(SosStep(r.derivation, r.original, r.step) for r in sos_reproofs())
+
+
+#: Each step's SOS program by the step object's identity (the object kept with it, so an
+#: identity is never reused while its entry stands).
+_PROGRAMS: dict[int, tuple[SosStep, object]] = {}
+
+
+def _step_program(step: SosStep):
+    """The step's problem and SOS program (:func:`verify.proof.sos_step.step_program`),
+    formed once per step object: naming its certificate, comparing its statement and
+    writing its unit all read the same pair."""
+    from verify.proof.checker import step_problem
+    from verify.proof.sos_step import step_program
+
+    hit = _PROGRAMS.get(id(step))
+    if hit is None or hit[0] is not step:
+        d = step.derivation
+        (st,) = d.steps
+        problem = step_problem(d, st)
+        hit = (step, (problem, step_program(problem, st.because)))
+        _PROGRAMS[id(step)] = hit
+    return hit[1]
 
 
 def certificate_for(step: SosStep, folder: Path) -> Path:
     """The stored certificate file of a step (named by its claim key)."""
-    from verify.proof.checker import step_problem
-    from verify.proof.sos_step import step_program
     from verify.sos.certificate import claim_key, file_name
 
-    d = step.derivation
-    (st,) = d.steps
-    sp = step_program(step_problem(d, st), st.because)
-    return Path(folder) / file_name(claim_key(sp))
+    return Path(folder) / file_name(claim_key(_step_program(step)[1]))
 
 
 def _statement_edited(step: SosStep, data: dict) -> str:
@@ -564,13 +584,9 @@ def _statement_edited(step: SosStep, data: dict) -> str:
     the package's own, so it is written with them), or ""."""
     import dataclasses
 
-    from verify.proof.checker import step_problem
-    from verify.proof.sos_step import step_program
     from verify.sos.certificate import statement_edited
 
-    d = step.derivation
-    (st,) = d.steps
-    sp = step_program(step_problem(d, st), st.because)
+    sp = _step_program(step)[1]
     return statement_edited(data, dataclasses.replace(sp, statement=sp.labelled))
 
 
