@@ -38,7 +38,13 @@
 
     The expressions are those of the Python checker (verify/passivity/check/robust_band.py,
     [leaf_bounds], [direction_bounds]) written as terms, so Coq's interval bounds are the
-    ones the certificate claims.  No axiom is added. *)
+    ones the certificate claims;
+    - a leaf [ROut y] shows that its box misses the region: the dual bound along the
+      rational direction y ([out_ok_sound]; y is the tangent plane's normal, rounded);
+    - [hurwitz2]: s^2 + a1 s + a0 has both roots in Re s < 0 iff a1 > 0 and a0 > 0, for
+      a claim at every frequency over a box of the paper's second-order denominators.
+
+    No axiom is added. *)
 
 From Coq Require Import QArith Qabs Qreals Reals List Lra Lia.
 From VerifyCoq Require Import QCert BandCert.
@@ -1134,4 +1140,62 @@ Proof.
              (pos_ok_sound _ _ _ Hd0 (eiv_sound _ _ _ _ _ HB HTx))
              (pos_ok_sound _ _ _ Hd1 (eiv_sound _ _ _ _ _ HB HTx)) Hneg Hpsd).
 
+Qed.
+
+(** ** Second-order denominators: the Hurwitz condition, proved once *)
+
+(** s^2 + a1 s + a0 at a complex s = (x, y), with BandCert.v's [cmul] and [cadd]. *)
+Definition quad_at (a1 a0 : R) (s : R * R) : R * R :=
+  cadd (cmul s s) (cadd (cmul (a1, 0) s) (a0, 0)).
+
+Lemma quad_at_zero a1 a0 x y :
+  quad_at a1 a0 (x, y) = (0, 0) <-> x * x - y * y + a1 * x + a0 = 0 /\ y * (2 * x + a1) = 0.
+Proof.
+  unfold quad_at, cadd, cmul. cbn [fst snd]. rewrite pair_equal_spec.
+  split; intros [H1 H2]; split; lra.
+Qed.
+
+Lemma quad_real_root a1 a0 : 0 <= a1 * a1 - 4 * a0 ->
+  quad_at a1 a0 ((- a1 + sqrt (a1 * a1 - 4 * a0)) / 2, 0) = (0, 0).
+Proof.
+  intros Hd. apply quad_at_zero. pose proof (sqrt_sqrt _ Hd) as Hs. split; [nra|ring].
+Qed.
+
+(** s^2 + a1 s + a0 (a1, a0 real) has both roots in the open left half-plane iff
+    a1 > 0 and a0 > 0: the Routh-Hurwitz condition of degree 2. *)
+Theorem hurwitz2 a1 a0 :
+  (forall s, quad_at a1 a0 s = (0, 0) -> fst s < 0) <-> 0 < a1 /\ 0 < a0.
+Proof.
+  split.
+  - intros H.
+    assert (Ha0 : 0 < a0).
+    { destruct (Rlt_le_dec 0 a0) as [|Hle]; [assumption|exfalso].
+      assert (Hd : 0 <= a1 * a1 - 4 * a0) by nra.
+      pose proof (H _ (quad_real_root a1 a0 Hd)) as Hx. cbn [fst] in Hx.
+      assert (Habs : Rabs a1 <= sqrt (a1 * a1 - 4 * a0)).
+      { rewrite <- sqrt_Rsqr_abs. apply sqrt_le_1_alt. unfold Rsqr. lra. }
+      pose proof (Rle_abs a1). lra. }
+    split; [|exact Ha0].
+    destruct (Rlt_le_dec 0 a1) as [|Hle]; [assumption|exfalso].
+    destruct (Rle_lt_dec 0 (a1 * a1 - 4 * a0)) as [Hd|Hd].
+    + pose proof (H _ (quad_real_root a1 a0 Hd)) as Hx. cbn [fst] in Hx.
+      pose proof (sqrt_pos (a1 * a1 - 4 * a0)). lra.
+    + assert (Hn : 0 <= 4 * a0 - a1 * a1) by lra.
+      assert (Hz : quad_at a1 a0 (- a1 / 2, sqrt (4 * a0 - a1 * a1) / 2) = (0, 0)).
+      { apply quad_at_zero. pose proof (sqrt_sqrt _ Hn) as Hs. split; [nra|field]. }
+      pose proof (H _ Hz) as Hx. cbn [fst] in Hx. lra.
+  - intros [Ha1 Ha0] [x y] Hz. apply quad_at_zero in Hz. destruct Hz as [H1 H2].
+    cbn [fst]. destruct (Req_dec y 0) as [->|Hy].
+    + nra.
+    + apply Rmult_integral in H2. destruct H2 as [H2|H2]; [contradiction|lra].
+Qed.
+
+(** Over a box of coefficients: a lower bound a1 >= l1 > 0, a0 >= l0 > 0 makes every
+    denominator of the box Hurwitz (the degree-2 case needs no Kharitonov premise). *)
+Corollary hurwitz2_box (l1 l0 : Q) a1 a0 :
+  (0 < l1)%Q -> (0 < l0)%Q -> Q2R l1 <= a1 -> Q2R l0 <= a0 ->
+  forall s, quad_at a1 a0 s = (0, 0) -> fst s < 0.
+Proof.
+  intros H1 H0 L1 L0. apply hurwitz2.
+  apply Qlt_Rlt in H1, H0. rewrite Q2R_0 in H1, H0. lra.
 Qed.
