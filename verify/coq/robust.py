@@ -30,8 +30,8 @@ short rational direction y for which Coq checks the region's dual bound over the
 from __future__ import annotations
 
 import re
-from pathlib import Path
 from collections.abc import Iterator, Sequence
+from pathlib import Path
 from typing import Any
 
 from gmpy2 import mpq
