@@ -102,3 +102,16 @@ def test_statuses_of_a_rendered_run():
     assert steps[1]["kernel_status"].startswith("not-exported: a cited premise")
     # a verified step without a theorem keeps the claim from the status "coq"
     assert c["kernel"] == EXACT_PYTHON and c["coq_theorems"] == ["demo_chain.step1"]
+
+
+def test_markdown_and_html_name_a_robust_certificate_theorem():
+    from verify.claims.evidence import certificate
+    from verify.report import render
+
+    name = "passive_human-identified-robust-band-0-7.97-3da104e65018.json"
+    e = certificate("s", True, path=f"certificates/{name}")
+    theorem = "Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.robust_passive"
+    assert f"Coq: `{theorem}` (kernel: coq)" in render._evidence_line(e)
+    assert f"Coq: <code>{theorem}</code> (kernel: coq)" in render._evidence_html(e)
+    plain = certificate("s", True, path="certificates/k.json")
+    assert "Coq:" not in render._evidence_line(plain) + render._evidence_html(plain)

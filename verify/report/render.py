@@ -223,7 +223,16 @@ def _evidence_line(e) -> str:
         return (f"- [{e.kind.value}, {status}] {summary} (`{href}`)\n\n"
                 f"    ![{_md_escape(normalise(e.summary))[:80]}]({href})\n")
     path = f" (`{e.path}`)" if e.path else ""
-    return f"- [{e.kind.value}, {status}] {summary}{path}"
+    theorem = _evidence_theorem(e)
+    coq = f"; Coq: `{theorem}` (kernel: coq)" if theorem else ""
+    return f"- [{e.kind.value}, {status}] {summary}{path}{coq}"
+
+
+def _evidence_theorem(e) -> str:
+    """The Coq theorem of a robust certificate's evidence ("" for any other)."""
+    from verify.report.kernel_status import evidence_theorem
+
+    return evidence_theorem({"path": e.path, "passed": e.passed})
 
 
 def _verdict_cell(row: StepRow) -> str:
@@ -372,6 +381,8 @@ def _evidence_html(e) -> str:
         f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
         f"{'pass' if e.passed else 'FAIL'}] {prose_html(prose_to_latex(e.summary))}"
         + (f" (<code>{esc(e.path)}</code>)" if e.path and not href else "")
+        + (f"; Coq: <code>{esc(_evidence_theorem(e))}</code> (kernel: coq)"
+           if _evidence_theorem(e) else "")
         + (f"<br><img src='{esc(href)}' alt='{esc(normalise(e.summary))}'>" if href else "")
         + (f"<details><summary>data</summary>{_evidence_table(e)}</details>"
            if e.data else "")
