@@ -7,16 +7,21 @@ modules a robust unit needs (not the whole prelude) and are marked slow.
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
 import pytest
 from coq_tools import compiles, run_coqc
+from gmpy2 import mpq
 
 from verify.coq import robust
 from verify.coq.development import coqc_available, prelude_sources, required_prelude
 from verify.coq.export import export_certificates
 from verify.coq.kyp import CoqExportError
+from verify.coq.robust_outside import dual_value, outside_direction, passes
+from verify.identify.robust.band_check import parse_region
+from verify.passivity.check import robust_band as rb
 
 ROOT = Path(__file__).resolve().parents[1]
 CERTS = ROOT / "certificates"
@@ -35,9 +40,56 @@ def test_the_shipped_band_and_refutation_become_units():
             ("sigma_inverse", "robust_passive"),
         "Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c":
             ("sigma_inverse", "robust_not_passive"),
+        "Cert_passive_human_identified_robust_band_0_7_97_3da104e65018":
+            ("sigma_inverse", "robust_passive"),
     }
-    (left,) = export.not_exported
-    assert left.file == PASSIVE.name and "outside" in left.reason
+    assert not export.not_exported
+
+
+def test_the_committed_development_exports_everything():
+    listed = json.loads((CERTS / "coq" / "NOT_EXPORTED.json").read_text())
+    assert listed == {"not_exported": []}
+    unit = CERTS / "coq" / "Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.v"
+    assert unit.read_text().count("ROut [") == 243
+
+
+def _outside_boxes():
+    """(box, point) of every leaf 'outside' of the passive operator's band, with the
+    region reduced to phi (its centre, covariance and inverse) and chi2."""
+    data = json.loads(PASSIVE.read_text())
+    region, _ = parse_region(data["region"], 10)
+    phi, cov = rb.reduce_region(region.center, region.covariance)
+    r = [mpq(x) for x in data["enclosure"]]
+    w1, w2 = (mpq(w) for w in data["band"])
+    root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(w1 * w1, w2 * w2)]
+    leaves = [(box[:-1], [mpq(v) for v in node[1]])
+              for box, node in rb.leaves(data["pieces"][0]["tree"], root)
+              if node[0] == "outside"]
+    return leaves, phi, cov, rb.inverse(cov), region.chi2
+
+
+def test_outside_directions_are_short_and_pass_exactly():
+    leaves, phi, cov, inverse, chi2 = _outside_boxes()
+    assert len(leaves) == 243
+    for box, point in leaves[:40]:
+        y = outside_direction(box, point, phi, cov, inverse, chi2)
+        assert y is not None and passes(y, box, phi, cov, chi2)
+        assert max(len(str(v.numerator)) + len(str(v.denominator)) for v in y) < 30
+        # the exact tangent direction gives the Python checker's own bound
+        exact = [sum(inverse[i][j] * (point[j] - phi[j]) for j in range(9)) for i in range(9)]
+        lb, q = dual_value(exact, box, phi, cov)
+        assert lb + lb - q == rb.outside_bound(inverse, phi, box, point)
+
+
+def test_a_box_meeting_the_region_has_no_direction():
+    leaves, phi, cov, inverse, chi2 = _outside_boxes()
+    box, _ = leaves[0]
+    # the box moved onto the centre: it meets the region, no plane can separate them
+    centred = [(c - (hi - lo) / 2, c + (hi - lo) / 2) for c, (lo, hi) in zip(phi, box, strict=True)]
+    assert outside_direction(centred, phi, phi, cov, inverse, chi2) is None
+    point = [hi for _, hi in centred]
+    assert outside_direction(centred, point, phi, cov, inverse, chi2) is None
+    assert not passes([mpq(0)] * 9, box, phi, cov, chi2)
 
 
 def test_a_unit_states_the_region_and_the_band():
@@ -57,6 +109,11 @@ def test_a_tree_is_nested_in_pre_order():
         robust.tree_literal([["positive", "1", "1", "1"], 0], False)
     with pytest.raises(CoqExportError, match="outside"):
         robust.tree_literal([["outside", ["0"] * 9]], False)
+    assert robust.tree_literal([["outside", ["0"] * 9]], False, [[mpq(1, 2)] + [mpq(0)] * 8]) \
+        == "(RLeaf (ROut [(1 # 2); (0 # 1); (0 # 1); (0 # 1); (0 # 1); (0 # 1); (0 # 1); " \
+        "(0 # 1); (0 # 1)]))"
+    with pytest.raises(CoqExportError, match="more directions"):
+        robust.tree_literal([["outside", ["0"] * 9]], False, [[mpq(1)] * 9, [mpq(1)] * 9])
 
 
 def test_a_certificate_the_checker_refuses_is_not_exported(tmp_path):
@@ -110,3 +167,77 @@ def test_coqc_accepts_the_refutation_unit_and_refuses_a_changed_frequency(robust
     unit = robust.robust_unit_from_file(REFUTED)
     assert compiles(robust_prelude, unit.text, unit.name)
     assert not compiles(robust_prelude, _scaled(unit.text, "wstar", 3), unit.name)
+
+
+def _first_outside(text: str) -> re.Match:
+    match = re.search(r"ROut \[([^\]]*)\]", text)
+    assert match, "no leaf ROut"
+    return match
+
+
+@needs_coqc
+def test_coqc_checks_one_outside_leaf_and_refuses_a_moved_plane(robust_prelude):
+    """The representative (not slow): one leaf 'outside' of the passive operator's band
+    as a lemma [out_ok ... = true] on its own box; its direction reversed (the plane
+    moved to the other side, so the box is no longer separated) makes coqc fail."""
+    leaves, phi, cov, inverse, chi2 = _outside_boxes()
+    box, point = leaves[0]
+    y = outside_direction(box, point, phi, cov, inverse, chi2)
+    unit = robust.robust_unit_from_file(PASSIVE).text
+    head = unit[:unit.index("(** The half-widths")]
+
+    def lemma(direction) -> str:
+        boxes = "; ".join(f"({robust._q(lo)}, {robust._q(hi)})" for lo, hi in box)
+        return (head + f"Definition B : list iv := [{boxes}].\n"
+                f"Definition y : list Q := {robust._list(direction)}.\n"
+                "Lemma leaf_ok : out_ok Sg chi2 (phicQ thc) B y = true.\n"
+                "Proof. vm_cast_no_check (eq_refl true). Qed.\n")
+
+    assert compiles(robust_prelude, lemma(y), "OutsideLeaf")
+    moved = [-v for v in y]
+    assert not passes(moved, box, phi, cov, chi2)
+    assert not compiles(robust_prelude, lemma(moved), "OutsideLeaf")
+
+
+@pytest.mark.slow
+@needs_coqc
+def test_coqc_accepts_the_passive_band_unit(robust_prelude):
+    unit = robust.robust_unit_from_file(PASSIVE)
+    assert compiles(robust_prelude, unit.text, unit.name)
+
+
+@pytest.mark.slow
+@needs_coqc
+def test_coqc_refuses_the_passive_band_with_a_moved_plane(robust_prelude):
+    """The first leaf 'outside' with its direction reversed: its box meets the region on
+    that side, and the unit's whole check fails."""
+    unit = robust.robust_unit_from_file(PASSIVE)
+    match = _first_outside(unit.text)
+    entries = match.group(1).split("; ")
+    reversed_ = [e.replace("(", "(-", 1).replace("(--", "(") if not e.startswith("(0 #")
+                 else e for e in entries]
+    assert reversed_ != entries
+    wrong = unit.text.replace(match.group(0), "ROut [" + "; ".join(reversed_) + "]", 1)
+    assert not compiles(robust_prelude, wrong, unit.name)
+
+
+@needs_coqc
+def test_the_hurwitz_lemma_of_degree_two(robust_prelude):
+    """hurwitz2 is stated as the Routh-Hurwitz condition of degree 2; a wrong variant
+    (a0 >= 0 allowed) is not provable from it and coqc refuses the attempt."""
+    statement = ("From Coq Require Import Reals.\nFrom VerifyCoq Require Import BandCert "
+                 "RobustCert.\nOpen Scope R_scope.\n"
+                 "Check (hurwitz2 : forall a1 a0 : R, (forall s, quad_at a1 a0 s = (0, 0) -> "
+                 "fst s < 0) <-> 0 < a1 /\\ 0 < a0).\n"
+                 "Goal quad_at 3 2 (-1, 0) = (0, 0) /\\ quad_at 3 2 (-2, 0) = (0, 0).\n"
+                 "Proof. unfold quad_at, cadd, cmul; simpl; split; f_equal; ring. Qed.\n")
+    assert compiles(robust_prelude, statement, "Hurwitz2")
+    wrong = ("From Coq Require Import Reals Lra.\nFrom VerifyCoq Require Import BandCert "
+             "RobustCert.\nOpen Scope R_scope.\n"
+             "Lemma wrong a1 a0 : 0 < a1 -> 0 <= a0 -> "
+             "forall s, quad_at a1 a0 s = (0, 0) -> fst s < 0.\n"
+             "Proof. intros H1 H0. apply hurwitz2. lra. Qed.\n")
+    assert not compiles(robust_prelude, wrong, "Hurwitz2")
+    loose = statement.replace("<-> 0 < a1 /\\ 0 < a0", "<-> 0 < a1 /\\ 0 <= a0")
+    assert loose != statement
+    assert not compiles(robust_prelude, loose, "Hurwitz2")

@@ -31,6 +31,7 @@ From VerifyCoq Require sos_thm1_S_rl_dot_step4.
 From VerifyCoq Require sos_thm1_V_dot_step3.
 From VerifyCoq Require Cert_nonpassive_human_identified_robust_band_0_1_46_e70cf8beb9e5.
 From VerifyCoq Require Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.
+From VerifyCoq Require Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.
 From VerifyCoq Require Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.
 From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
 From VerifyCoq Require Thm1_reconstructed_k_s_3_0_99babda880e6.
@@ -112,6 +113,8 @@ Definition top_theorems :=
    Cert_nonpassive_human_identified_robust_band_0_1_46_e70cf8beb9e5.robust_passive,
    Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.sigma_inverse,
    Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.robust_not_passive,
+   Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.sigma_inverse,
+   Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.robust_passive,
    Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.passive_on_band,
    Conclusions.every_rotation_is_rot_q,
    Conclusions.lemma1_invariance_on_interval,

@@ -218,9 +218,11 @@ def identification(context: CheckContext) -> Outcome:
            "on no band [0, w_max >= 1] found"), band_ok,
         path=str(robust_paths[0]) if robust_paths else None,
         data={"w_max": None if search.w_max is None else str(search.w_max)}))
+    refutations = [p for p in robust_paths if "-robust-refuted-" in p.name]
     evidence.append(counterexample(
         f"nonpassive_human on [{REFUTE_BAND.replace(':', ', ')}] rad/s: "
-        f"{nonpassive.robust.verdict}: {nonpassive.robust.reason}", refuted))
+        f"{nonpassive.robust.verdict}: {nonpassive.robust.reason}", refuted,
+        path=str(refutations[0]) if refutations else None))
     for o in (passive_all, nonpassive):
         for path in sorted(p for p in o.files if p.suffix == ".png"):
             rel = path.relative_to(context.out_dir)

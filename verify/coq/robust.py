@@ -21,14 +21,16 @@ re-checks everything by computation (``robust_band_check``, ``robust_refutation_
 with the lemmas proved once in the prelude. The exporter first re-checks the certificate
 with the exact Python checker (binding included) and refuses it when that fails.
 
-Leaves of the kinds *positive*, *linear* and *negative* are exported; a leaf *outside*
-(a tangent plane shows the box misses the region) is not yet checked in Coq, and a
-certificate with one is refused with that reason.
+Leaves of the kinds *positive*, *linear* and *negative* are exported as they are; a leaf
+*outside* (a tangent plane shows the box misses the region) is exported as ``ROut y``, a
+short rational direction y for which Coq checks the region's dual bound over the box
+(``out_ok``; :mod:`verify.coq.robust_outside` computes y from the leaf's point).
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -45,10 +47,9 @@ REFUTATION_THEOREM = "robust_not_passive"
 INVERSE_THEOREM = "sigma_inverse"
 CHECK_LEMMA = "certificate_checked"
 
-#: Why a certificate with a tangent-plane leaf is not exported.
-OUTSIDE_REASON = ("a leaf 'outside' (a tangent plane shows the box misses the region) is "
-                  "not yet checked in Coq (RobustCert.v checks the leaves 'positive', "
-                  "'linear' and 'negative'); checked by the Python exact checker only")
+#: Why a tangent-plane leaf without its direction cannot be written.
+OUTSIDE_REASON = ("a leaf 'outside' (a tangent plane shows the box misses the region) needs "
+                  "its direction, computed from the region")
 
 
 def _q(x: Any) -> str:
@@ -59,10 +60,15 @@ def _list(values) -> str:
     return "[" + "; ".join(_q(v) for v in values) + "]"
 
 
-def _leaf(node: list, refutation: bool) -> str:
+def _leaf(node: list, refutation: bool, directions: Iterator[list] | None) -> str:
     kind = node[0]
     if kind == "outside":
-        raise CoqExportError(OUTSIDE_REASON)
+        if refutation or directions is None:
+            raise CoqExportError(OUTSIDE_REASON)
+        direction = next(directions, None)
+        if direction is None:
+            raise CoqExportError("more leaves 'outside' than directions")
+        return f"RLeaf (ROut {_list(direction)})"
     values = [mpq(v) for v in node[1:]]
     if not refutation and kind == "positive" and len(values) == 3:
         return "RLeaf (RPos " + " ".join(_q(v) for v in values) + ")"
@@ -75,9 +81,12 @@ def _leaf(node: list, refutation: bool) -> str:
     raise CoqExportError(f"leaf {kind!r} is not one RobustCert.v checks")
 
 
-def tree_literal(tree: list, refutation: bool) -> str:
+def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None = None
+                 ) -> str:
     """The pre-order tree (an int k splits coordinate k, left half first; a list is a
-    leaf) as a nested Coq ``rtree``."""
+    leaf) as a nested Coq ``rtree``; ``directions`` gives the leaves *outside* their
+    ``ROut`` directions, in pre-order."""
+    pending = iter(directions) if directions is not None else None
     out: list[str] = []
     position = 0
 
@@ -92,12 +101,36 @@ def tree_literal(tree: list, refutation: bool) -> str:
             walk()
             out.append(")")
         else:
-            out.append("(" + _leaf(node, refutation) + ")")
+            out.append("(" + _leaf(node, refutation, pending) + ")")
 
     walk()
     if position != len(tree):
         raise CoqExportError("the tree has nodes after its last box")
+    if pending is not None and next(pending, None) is not None:
+        raise CoqExportError("more directions than leaves 'outside'")
     return "".join(out)
+
+
+def outside_directions(tree: list, region, band: tuple, enclosure: Sequence) -> list[list]:
+    """The ``ROut`` direction of every leaf *outside* of a band tree, in pre-order (the
+    boxes are the tree's midpoint splits of the enclosing box times [w1², w2²])."""
+    from verify.coq.robust_outside import outside_direction
+    from verify.passivity.check import robust_band as rb
+
+    phi, cov_phi = rb.reduce_region(region.center, region.covariance)
+    inverse = rb.inverse(cov_phi)
+    r = [mpq(x) for x in enclosure]
+    w1, w2 = (mpq(w) for w in band)
+    root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(w1 * w1, w2 * w2)]
+    out: list[list] = []
+    for box, node in rb.leaves(tree, root):
+        if node and node[0] == "outside":
+            point = [mpq(v) for v in node[1]]
+            y = outside_direction(box[:-1], point, phi, cov_phi, inverse, region.chi2)
+            if y is None:
+                raise CoqExportError("a leaf 'outside' whose box meets the region")
+            out.append(y)
+    return out
 
 
 _LONG_INTEGER = re.compile(r"(?<![\w.])(-?)(\d{20,})(?![\w.])")
@@ -151,7 +184,9 @@ def robust_unit(path: Path, data: dict[str, Any]) -> CoqUnit:
     else:
         if len(data["pieces"]) != 1:
             raise CoqExportError("expected one frequency piece for a band")
-        tree = tree_literal(data["pieces"][0]["tree"], False)
+        piece_tree = data["pieces"][0]["tree"]
+        tree = tree_literal(piece_tree, False,
+                            outside_directions(piece_tree, region, band, data["enclosure"]))
     w1, w2 = band
     name = module_name(path.name)
     kind = "Robust refutation" if refutation else "Robust band"
@@ -242,5 +277,5 @@ def robust_unit_from_file(path: Path) -> CoqUnit:
                              f"{path.name}: {text}") from None
 
 
-__all__ = ["BAND_SCHEMA", "OUTSIDE_REASON", "REFUTATION_SCHEMA", "robust_unit",
-           "robust_unit_from_file", "tree_literal"]
+__all__ = ["BAND_SCHEMA", "OUTSIDE_REASON", "REFUTATION_SCHEMA", "outside_directions",
+           "robust_unit", "robust_unit_from_file", "tree_literal"]

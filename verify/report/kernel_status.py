@@ -12,7 +12,11 @@ compiles it) and a status:
   premise, numerical evidence, an assumption of the paper).
 
 The names follow :func:`verify.report.steps.step_coq_theorem`; a test compares them with
-the committed development.
+the committed development. An evidence entry whose file is a robust band or refutation
+certificate over an identified region (the paper's Section 4) gets its unit's theorem
+(``Cert_<file>.robust_passive`` or ``.robust_not_passive``, RobustCert.v) and ``coq``;
+a claim lists those theorems too, and is ``coq`` only when nothing exact it rests on lacks
+a theorem.
 """
 
 from __future__ import annotations
@@ -44,6 +48,30 @@ def step_status(name: str, step: dict, twins: set[tuple[str, int]]) -> tuple[str
     if step["verdict"] == "refuted" and step.get("counterexample"):
         return "", EXACT_PYTHON
     return "", f"{NOT_EXPORTED}: the step is {step['verdict']}, nothing to prove"
+
+
+def evidence_theorem(evidence: dict[str, Any]) -> str:
+    """The Coq theorem of a passed evidence entry whose file is a robust certificate
+    ("" otherwise): every shipped robust certificate is a unit of the development."""
+    from verify.coq.kyp import module_name
+    from verify.coq.robust import BAND_THEOREM, REFUTATION_THEOREM
+
+    name = str(evidence.get("path") or "").rsplit("/", 1)[-1]
+    if not evidence.get("passed", True) or not name.endswith(".json"):
+        return ""
+    if "-robust-refuted-" in name:
+        return f"{module_name(name)}.{REFUTATION_THEOREM}"
+    if "-robust-band-" in name:
+        return f"{module_name(name)}.{BAND_THEOREM}"
+    return ""
+
+
+def annotate_evidence(evidence: dict[str, Any]) -> dict[str, Any]:
+    """A robust certificate's evidence entry with ``coq_theorem`` and ``kernel_status``
+    (``coq``); any other entry unchanged."""
+    done = {k: v for k, v in evidence.items() if k not in ("coq_theorem", "kernel_status")}
+    theorem = evidence_theorem(done)
+    return {**done, "coq_theorem": theorem, "kernel_status": COQ} if theorem else done
 
 
 def twins_of(claims: list[dict[str, Any]]) -> set[tuple[str, int]]:
@@ -83,6 +111,10 @@ def claim_status(claim: dict[str, Any]) -> dict[str, Any]:
                     missing = True
         if e["kind"] in EXACT_KINDS and e.get("passed", True):
             exact = True
+            if e.get("coq_theorem"):
+                theorems.append(e["coq_theorem"])
+            elif e["kind"] != EvidenceKind.DERIVATION.value:
+                missing = True
     verdict = claim["verdict"]
     if verdict == "refuted":  # by an exact counterexample, whatever its steps' theorems
         status = EXACT_PYTHON if exact else f"{NOT_EXPORTED}: no exact evidence"
@@ -104,7 +136,7 @@ def annotate_claims(claims: list[dict[str, Any]]) -> list[dict[str, Any]]:
     out = []
     for c in claims:
         evidence = [{**e, "data": annotate_derivation(e["data"], twins)}
-                    if e["kind"] == EvidenceKind.DERIVATION.value else e
+                    if e["kind"] == EvidenceKind.DERIVATION.value else annotate_evidence(e)
                     for e in c["evidence"]]
         done = {k: v for k, v in c.items() if k not in ("kernel", "coq_theorems")}
         done["evidence"] = evidence

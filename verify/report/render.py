@@ -86,8 +86,10 @@ KERNEL_NOTE = (
     "and a gate's refutation of one model is a Coq unit too (WitnessCert.v, written by "
     "verify gate --coq). Robust certificates over a region of identified models are units "
     "too (RobustCert.v proves once the ellipsoid's enclosing box, interval arithmetic over "
-    "Q and the cover by a tree of boxes; each unit checks its leaves by computation), "
-    "except those certificates/coq/NOT_EXPORTED.json lists with the reason. Along solutions "
+    "Q, the cover by a tree of boxes, the region's dual bound that shows a box misses it, "
+    "and the Hurwitz condition of degree 2; each unit checks its leaves by computation), "
+    "except those certificates/coq/NOT_EXPORTED.json lists with the reason; the report "
+    "names each robust certificate's theorem. Along solutions "
     "(Coquelicot's derivatives): every rotation matrix is rot q (RotSurj.v); Lemma 1's "
     "invariance for every solution of eq. (13) under item 2 "
     "(Conclusions.lemma1_invariance_on_interval, by a last-exit argument); Theorem 1's "
@@ -221,7 +223,16 @@ def _evidence_line(e) -> str:
         return (f"- [{e.kind.value}, {status}] {summary} (`{href}`)\n\n"
                 f"    ![{_md_escape(normalise(e.summary))[:80]}]({href})\n")
     path = f" (`{e.path}`)" if e.path else ""
-    return f"- [{e.kind.value}, {status}] {summary}{path}"
+    theorem = _evidence_theorem(e)
+    coq = f"; Coq: `{theorem}` (kernel: coq)" if theorem else ""
+    return f"- [{e.kind.value}, {status}] {summary}{path}{coq}"
+
+
+def _evidence_theorem(e) -> str:
+    """The Coq theorem of a robust certificate's evidence ("" for any other)."""
+    from verify.report.kernel_status import evidence_theorem
+
+    return evidence_theorem({"path": e.path, "passed": e.passed})
 
 
 def _verdict_cell(row: StepRow) -> str:
@@ -370,6 +381,8 @@ def _evidence_html(e) -> str:
         f"<li class='{'' if e.passed else 'fail'}'>[{esc(e.kind.value)}, "
         f"{'pass' if e.passed else 'FAIL'}] {prose_html(prose_to_latex(e.summary))}"
         + (f" (<code>{esc(e.path)}</code>)" if e.path and not href else "")
+        + (f"; Coq: <code>{esc(_evidence_theorem(e))}</code> (kernel: coq)"
+           if _evidence_theorem(e) else "")
         + (f"<br><img src='{esc(href)}' alt='{esc(normalise(e.summary))}'>" if href else "")
         + (f"<details><summary>data</summary>{_evidence_table(e)}</details>"
            if e.data else "")

@@ -38,7 +38,13 @@
 
     The expressions are those of the Python checker (verify/passivity/check/robust_band.py,
     [leaf_bounds], [direction_bounds]) written as terms, so Coq's interval bounds are the
-    ones the certificate claims.  No axiom is added. *)
+    ones the certificate claims;
+    - a leaf [ROut y] shows that its box misses the region: the dual bound along the
+      rational direction y ([out_ok_sound]; y is the tangent plane's normal, rounded);
+    - [hurwitz2]: s^2 + a1 s + a0 has both roots in Re s < 0 iff a1 > 0 and a0 > 0, for
+      a claim at every frequency over a box of the paper's second-order denominators.
+
+    No axiom is added. *)
 
 From Coq Require Import QArith Qabs Qreals Reals List Lra Lia.
 From VerifyCoq Require Import QCert BandCert.
@@ -889,11 +895,62 @@ Qed.
 
 
 
+(** ** A box the region misses: the dual bound along a fixed direction *)
+
+(** A leaf [ROut y]: y is a rational direction on phi (9 coordinates).  For th in the
+    region, [region_dual] at t = 1 gives 2 y.(phi - phic) - y^T Sg y <= chi2; if the least
+    value of 2 y.(phi - phic) over the box, less y^T Sg y, exceeds chi2, no point of the
+    box is in the region.  With y = Sg_phi^-1 (p - phic) this is the tangent plane of the
+    region's quadratic form at p (the Python checker's [outside_bound]): q(p) + g.(phi - p)
+    = 2 y.(phi - phic) - y^T Sg_phi y for g = 2 y.  Nothing is assumed of y: any rational
+    direction that passes the test is sound, so the exporter may round it. *)
+Definition out_term (yk pc : Q) (b : iv) : Q := qmin (yk * (fst b - pc)) (yk * (snd b - pc)).
+
+Definition out_ok (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (y : list Q) : bool :=
+  let lb := sumQ 9 (fun k => out_term (nth k y 0%Q) (nth k phic 0%Q) (nth k B zero_iv)) in
+  negb (Qle_bool (lb + lb - qQ Sg y) chi2).
+
+Lemma out_term_le yk pc b x : in_iv b x ->
+  Q2R (out_term yk pc b) <= Q2R yk * (x - Q2R pc).
+Proof.
+  unfold out_term, in_iv. intros Hx.
+  pose proof (qmin_le (yk * (fst b - pc)) (yk * (snd b - pc))) as [H1 H2].
+  rewrite !Q2R_mult, !Q2R_minus in H1, H2.
+  destruct (Rle_dec 0 (Q2R yk)).
+  - apply (Rle_trans _ _ _ H1). apply Rmult_le_compat_l; lra.
+  - apply (Rle_trans _ _ _ H2). nra.
+Qed.
+
+(** The kernel checks the [Qed]s below by converting [out_ok ...] with its body; it is told
+    to unfold [out_ok] first.  Otherwise it may unfold [negb] and [Qle_bool] on the other
+    side and reduce the symbolic sums under them, which did not finish in minutes. *)
+Local Strategy expand [out_ok].
+
+(** A leaf [ROut y] that passes holds no point of the region. *)
+Theorem out_ok_sound Si Sg eps ws thc chi2 B y th x :
+  region_ok Si Sg eps ws = true -> in_region Si thc chi2 th ->
+  out_ok Sg chi2 (phicQ thc) B y = true -> in_box B (point th x) -> False.
+Proof.
+  intros Hreg Hr Hok HB. unfold out_ok in Hok. cbv zeta in Hok.
+  apply Qlt_of_negb in Hok. rewrite Q2R_minus, Q2R_plus, Q2R_sumQ in Hok.
+  pose proof (region_dual Si Sg eps ws thc chi2 th y 1 Hreg Hr) as Hd.
+  assert (Hs : sumR 9 (fun k => Q2R (out_term (nth k y 0%Q) (nth k (phicQ thc) 0%Q)
+                                                (nth k B zero_iv)))
+               <= sumR 9 (fun k => vecR y k * (phi th k - vecR (phicQ thc) k))).
+  { apply sumR_le. intros k Hk.
+    assert (Ep : phi th k = point th x k)
+      by (unfold point; destruct (Nat.eqb_spec k 9); [lia|reflexivity]).
+    rewrite Ep. unfold vecR. apply out_term_le, HB. }
+  lra.
+Qed.
+
 (** A leaf: [RPos c0 c1 c2] (N_1, N_2, det >= c > 0 by intervals), [RLin c0 c1 c2 s0 s1 s2]
     (the same by the first-order form), [RNeg c]
-    (g <= c < 0 by intervals), [RNegLin c s] (the same by the first-order form). *)
+    (g <= c < 0 by intervals), [RNegLin c s] (the same by the first-order form),
+    [ROut y] (the box misses the region, [out_ok]). *)
 Inductive rleaf :=
-| RPos (c0 c1 c2 : Q) | RLin (c0 c1 c2 s0 s1 s2 : Q) | RNeg (c : Q) | RNegLin (c s : Q).
+| RPos (c0 c1 c2 : Q) | RLin (c0 c1 c2 s0 s1 s2 : Q) | RNeg (c : Q) | RNegLin (c s : Q)
+| ROut (y : list Q).
 
 (** A tree of midpoint splits: [RSplit k l r] cuts coordinate k, left half first. *)
 Inductive rtree := RLeaf (l : rleaf) | RSplit (k : nat) (l r : rtree).
@@ -954,6 +1011,7 @@ Definition band_leaf (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (l : r
   | RLin c0 c1 c2 s0 s1 s2 => lin_ok Sg chi2 phic B T (n_expr 0) c0 s0
                               && lin_ok Sg chi2 phic B T (n_expr 1) c1 s1
                               && lin_ok Sg chi2 phic B T det_expr c2 s2
+  | ROut y => out_ok Sg chi2 phic B y
   | _ => false
   end.
 
@@ -1035,6 +1093,7 @@ Proof.
     + exact (lin_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ th x Hreg Hr H0 HB HTx).
     + exact (lin_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ th x Hreg Hr H1 HB HTx).
     + exact (lin_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ th x Hreg Hr H2 HB HTx).
+  - exfalso. exact (out_ok_sound Si Sg eps ws thc chi2 B y th x Hreg Hr Hl HB).
 Qed.
 
 Definition robust_refutation_check (Si Sg : matQ) (eps : Q) (ws : list term) (thc : list Q)
@@ -1081,4 +1140,62 @@ Proof.
              (pos_ok_sound _ _ _ Hd0 (eiv_sound _ _ _ _ _ HB HTx))
              (pos_ok_sound _ _ _ Hd1 (eiv_sound _ _ _ _ _ HB HTx)) Hneg Hpsd).
 
+Qed.
+
+(** ** Second-order denominators: the Hurwitz condition, proved once *)
+
+(** s^2 + a1 s + a0 at a complex s = (x, y), with BandCert.v's [cmul] and [cadd]. *)
+Definition quad_at (a1 a0 : R) (s : R * R) : R * R :=
+  cadd (cmul s s) (cadd (cmul (a1, 0) s) (a0, 0)).
+
+Lemma quad_at_zero a1 a0 x y :
+  quad_at a1 a0 (x, y) = (0, 0) <-> x * x - y * y + a1 * x + a0 = 0 /\ y * (2 * x + a1) = 0.
+Proof.
+  unfold quad_at, cadd, cmul. cbn [fst snd]. rewrite pair_equal_spec.
+  split; intros [H1 H2]; split; lra.
+Qed.
+
+Lemma quad_real_root a1 a0 : 0 <= a1 * a1 - 4 * a0 ->
+  quad_at a1 a0 ((- a1 + sqrt (a1 * a1 - 4 * a0)) / 2, 0) = (0, 0).
+Proof.
+  intros Hd. apply quad_at_zero. pose proof (sqrt_sqrt _ Hd) as Hs. split; [nra|ring].
+Qed.
+
+(** s^2 + a1 s + a0 (a1, a0 real) has both roots in the open left half-plane iff
+    a1 > 0 and a0 > 0: the Routh-Hurwitz condition of degree 2. *)
+Theorem hurwitz2 a1 a0 :
+  (forall s, quad_at a1 a0 s = (0, 0) -> fst s < 0) <-> 0 < a1 /\ 0 < a0.
+Proof.
+  split.
+  - intros H.
+    assert (Ha0 : 0 < a0).
+    { destruct (Rlt_le_dec 0 a0) as [|Hle]; [assumption|exfalso].
+      assert (Hd : 0 <= a1 * a1 - 4 * a0) by nra.
+      pose proof (H _ (quad_real_root a1 a0 Hd)) as Hx. cbn [fst] in Hx.
+      assert (Habs : Rabs a1 <= sqrt (a1 * a1 - 4 * a0)).
+      { rewrite <- sqrt_Rsqr_abs. apply sqrt_le_1_alt. unfold Rsqr. lra. }
+      pose proof (Rle_abs a1). lra. }
+    split; [|exact Ha0].
+    destruct (Rlt_le_dec 0 a1) as [|Hle]; [assumption|exfalso].
+    destruct (Rle_lt_dec 0 (a1 * a1 - 4 * a0)) as [Hd|Hd].
+    + pose proof (H _ (quad_real_root a1 a0 Hd)) as Hx. cbn [fst] in Hx.
+      pose proof (sqrt_pos (a1 * a1 - 4 * a0)). lra.
+    + assert (Hn : 0 <= 4 * a0 - a1 * a1) by lra.
+      assert (Hz : quad_at a1 a0 (- a1 / 2, sqrt (4 * a0 - a1 * a1) / 2) = (0, 0)).
+      { apply quad_at_zero. pose proof (sqrt_sqrt _ Hn) as Hs. split; [nra|field]. }
+      pose proof (H _ Hz) as Hx. cbn [fst] in Hx. lra.
+  - intros [Ha1 Ha0] [x y] Hz. apply quad_at_zero in Hz. destruct Hz as [H1 H2].
+    cbn [fst]. destruct (Req_dec y 0) as [->|Hy].
+    + nra.
+    + apply Rmult_integral in H2. destruct H2 as [H2|H2]; [contradiction|lra].
+Qed.
+
+(** Over a box of coefficients: a lower bound a1 >= l1 > 0, a0 >= l0 > 0 makes every
+    denominator of the box Hurwitz (the degree-2 case needs no Kharitonov premise). *)
+Corollary hurwitz2_box (l1 l0 : Q) a1 a0 :
+  (0 < l1)%Q -> (0 < l0)%Q -> Q2R l1 <= a1 -> Q2R l0 <= a0 ->
+  forall s, quad_at a1 a0 s = (0, 0) -> fst s < 0.
+Proof.
+  intros H1 H0 L1 L0. apply hurwitz2.
+  apply Qlt_Rlt in H1, H0. rewrite Q2R_0 in H1, H0. lra.
 Qed.
