@@ -129,7 +129,10 @@ def gate_kernel(results: Sequence, folder: Path) -> tuple[list[KernelStatus], bo
     result, problems = check_and_audit(development_files(export))
     if result.ok and not problems:
         total = sum(s for _, s in result.timings)
-        print(f"coq: compiled by coqc, accepted ({total:.1f} s)")
+        if result.prelude:
+            print(f"coq: {result.prelude}")
+        files = ", ".join(f"{rel} {s:.1f} s" for rel, s in result.timings)
+        print(f"coq: compiled by coqc, accepted: {files} ({total:.1f} s)")
         for unit, k in zip(primary, owner, strict=True):
             theorem = f"{unit.name}.{unit.theorems[0]}"
             # a unit that states part of the verdict: the rest is the Python checker's

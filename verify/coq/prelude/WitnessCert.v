@@ -112,13 +112,18 @@ Qed.
 
 (** ** The frequency witness *)
 
-Definition model_ok_b (n m : nat) (A B C D : matQ) : bool :=
+(** [model_ok] by computation, with [fl] the value of [charpoly_adj n A] (computed once
+    by the caller). *)
+Definition model_ok_fl (n m : nat) (A B C D : matQ) (fl : list Q * list matQ) : bool :=
   has_shape_b n n A && has_shape_b n m B && has_shape_b m n C && has_shape_b m m D
-  && resolvent_ok n A (zeros n n) (fst (charpoly_adj n A)) (snd (charpoly_adj n A)).
+  && resolvent_ok n A (zeros n n) (fst fl) (snd fl).
+
+Definition model_ok_b (n m : nat) (A B C D : matQ) : bool :=
+  model_ok_fl n m A B C D (charpoly_adj n A).
 
 Lemma model_ok_b_sound n m A B C D : model_ok_b n m A B C D = true -> model_ok n m A B C D.
 Proof.
-  unfold model_ok_b. rewrite !andb_true_iff. intros [[[[HA HB] HC] HD] Hres].
+  unfold model_ok_b, model_ok_fl. rewrite !andb_true_iff. intros [[[[HA HB] HC] HD] Hres].
   split; [apply has_shape_b_sound, HA|]. split; [apply has_shape_b_sound, HB|].
   split; [apply has_shape_b_sound, HC|]. split; [apply has_shape_b_sound, HD|].
   exact Hres.
@@ -138,7 +143,7 @@ Definition fdi_witness_check (n m : nat) (A B C D : matQ) (w : Q) (zs : list cQ)
   let N := tf_num C B D d (snd fl) in
   let dr := pevalQ (fst (jw_parts d)) w in
   let di := pevalQ (snd (jw_parts d)) w in
-  model_ok_b n m A B C D && Qle_bool 0 w
+  model_ok_fl n m A B C D fl && Qle_bool 0 w
   && negb (Qeq_bool (radd (rmul dr dr) (rmul di di)) 0)
   && negb (Qle_bool 0 (hformQ m (mtQ N d w) (zvec zs))).
 
@@ -147,7 +152,7 @@ Theorem fdi_witness_point n m A B C D w zs :
   model_ok n m A B C D /\ 0 <= Q2R w /\ ~ hermitian_part_psd_at n m A B C D (Q2R w).
 Proof.
   unfold fdi_witness_check. cbv zeta. rewrite !andb_true_iff, !negb_true_iff.
-  intros [[[Hm Hw] Hd] Hneg]. split; [exact (model_ok_b_sound _ _ _ _ _ _ Hm)|].
+  intros [[[Hm Hw] Hd] Hneg]. split; [exact (model_ok_b_sound n m A B C D Hm)|].
   assert (Hw0 : 0 <= Q2R w) by (rewrite <- Q2R_0; apply Qle_bool_R, Hw).
   split; [exact Hw0|]. intros Hpsd.
   set (d := fst (charpoly_adj n A)) in *.
