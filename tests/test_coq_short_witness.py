@@ -132,3 +132,19 @@ def test_strip_comments_matches_the_character_scan():
         assert strip_comments(text) == _strip_reference(text), repr(text)
     source = (ROOT / "verify" / "coq" / "prelude" / "QCert.v").read_text()
     assert strip_comments(source) == _strip_reference(source)
+
+
+def test_units_are_compiled_in_rounds_after_the_units_they_require(tmp_path):
+    from verify.coq.development import unit_levels
+
+    texts = {"Cert_a.v": "From VerifyCoq Require Import QCert.\n",
+             "Thm1_a.v": "From VerifyCoq Require QCert LTIHuman Cert_a.\n",
+             "Cert_b.v": "(* Cert_a is named in a comment only *) Definition x := 1.\n",
+             "Thm1_b.v": "From VerifyCoq Require Cert_b.\n"}
+    for rel, text in texts.items():
+        (tmp_path / rel).write_text(text)
+    assert unit_levels(tmp_path, list(texts)) == [["Cert_a.v", "Cert_b.v"],
+                                                  ["Thm1_a.v", "Thm1_b.v"]]
+    (tmp_path / "Cert_a.v").write_text("From VerifyCoq Require Thm1_a.\n")  # a cycle
+    assert unit_levels(tmp_path, list(texts)) == [["Cert_b.v"], ["Thm1_b.v"],
+                                                  ["Cert_a.v", "Thm1_a.v"]]
