@@ -18,6 +18,9 @@ The model stated is the exact minimal realisation the gate decided (shifted by t
 margin), so that the refutation is about the transfer matrix, as the verdict is.
 Nothing here is trusted: :func:`form_at` repeats Coq's computation exactly so that the
 exporter proposes only a witness that Coq will accept, and Coq recomputes everything.
+A frequency witness is first made short (:func:`short_witness`: the simplest w near the
+gate's and z rounded to a few bits, each re-checked exactly), since the kernel's work
+grows with their digits.
 """
 
 from __future__ import annotations
