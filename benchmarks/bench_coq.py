@@ -19,14 +19,26 @@ seconds is reported as such.
 Exact-band certificates: the paper's k_s = 2.5 one on [0, 3/2] and random passive models
 of ``--band-sizes`` states on [0, 1], the same way.
 
-    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 30] [--band-sizes 4 6]
-                                             [--timeout 900] [--raw] [--no-sos]
+The whole command (``--gate-sizes``, default 10): the same random model written to a
+model file with each double's exact decimal expansion (so it stays passive: a shortest
+``repr`` is another rational), then ``verify gate MODEL --coq DIR`` run twice in a
+subprocess with a fresh ``XDG_CACHE_HOME``: the first run compiles the prelude into that
+cache (cold), the second reuses it (warm). Wall and CPU (the command and its coqc
+children) of both, with the load average, and the command's own "compiled by coqc" line.
+
+The prelude is taken from the user's cache (:mod:`verify.coq.prelude_cache`), compiled
+there first when absent.
+
+    .venv/bin/python benchmarks/bench_coq.py [--sizes 4 10 60 200] [--band-sizes 4 6]
+                                             [--gate-sizes 10] [--timeout 900] [--raw]
+                                             [--no-sos] [--no-band]
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -37,9 +49,10 @@ from pathlib import Path
 import numpy as np
 
 from verify.coq.band_fd import band_fd_unit_from_file, band_unit
-from verify.coq.development import LOGICAL_ROOT, prelude_sources
+from verify.coq.development import LOGICAL_ROOT, _compile_one, prelude_sources
 from verify.coq.kyp import kyp_unit, kyp_unit_from_file
 from verify.coq.positive_real import pr_unit_from_file
+from verify.coq.prelude_cache import compiled_prelude, install
 from verify.passivity.check.band_fd import BandFdCertificate, analyse_band, check_band_fd_data
 from verify.passivity.check.certificate import check_kyp, exact_model
 from verify.passivity.check.fd_certificate import check_pr_certificate_data
@@ -124,6 +137,70 @@ def sos_rows(folder: Path, timeout: float) -> None:
               flush=True)
     print(f"{'all SOS units':<44} {total_cpu:8.1f} {'':>8} {total_py:9.3f} "
           f"{total_cpu / max(total_py, 1e-9):9.0f}")
+def exact_decimal_toml(n: int, name: str) -> str:
+    """The benchmark's random model of ``n`` states as a model file, every double written
+    as its exact decimal expansion."""
+    from decimal import Decimal
+
+    A, B, C, D = random_port_hamiltonian(n, 2, np.random.default_rng([11, n]), False)
+
+    def number(x: float) -> str:
+        text = format(Decimal(float(x)), "f")
+        return text if "." in text else text + ".0"
+
+    def mat(M) -> str:
+        return "[" + ", ".join("[" + ", ".join(number(x) for x in row) + "]"
+                               for row in M) + "]"
+
+    return (f'name = "{name}"\ndescription = "bench_coq.py"\n\n[state_space]\n'
+            f"A = {mat(A)}\nB = {mat(B)}\nC = {mat(C)}\nD = {mat(D)}\n")
+
+
+def children_cpu() -> float:
+    """CPU seconds (user + system) of every child this process has waited for."""
+    import resource
+
+    ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return ru.ru_utime + ru.ru_stime
+
+
+def run_command(argv: list[str], env: dict, cwd: Path,
+                timeout: float) -> tuple[float, float, int, str]:
+    """(wall s, CPU s of the command and its coqc children, exit code, output)."""
+    cpu0, start = children_cpu(), time.perf_counter()
+    proc = subprocess.Popen(argv, cwd=cwd, env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    try:
+        out, _ = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, _ = proc.communicate()
+    return time.perf_counter() - start, children_cpu() - cpu0, proc.returncode, out
+
+
+def gate_command_rows(sizes: list[int], timeout: float) -> None:
+    """``verify gate MODEL --coq DIR`` on a passive random model: cold then warm cache."""
+    verify = Path(sys.executable).with_name("verify")
+    print(f"{'verify gate --coq':<26} {'cache':>5} {'wall s':>7} {'CPU s':>7} {'load':>5}  "
+          "coqc line")
+    for n in sizes:
+        with tempfile.TemporaryDirectory() as tmp:
+            work = Path(tmp)
+            (work / "model.toml").write_text(exact_decimal_toml(n, f"pH {n}"))
+            env = dict(os.environ, XDG_CACHE_HOME=str(work / "cache"))
+            for cache in ("cold", "warm"):
+                for old in ("coq", "certs"):
+                    shutil.rmtree(work / old, ignore_errors=True)
+                load = os.getloadavg()[0]
+                wall, cpu, rc, out = run_command(
+                    [str(verify), "gate", "model.toml", "--certificates", "certs",
+                     "--coq", "coq"], env, work, timeout)
+                line = next((ln for ln in out.splitlines()
+                             if ln.startswith("coq: compiled by coqc")), f"exit {rc}")
+                print(f"{f'{n} states':<26} {cache:>5} {wall:7.1f} {cpu:7.1f} {load:5.1f}  "
+                      f"{line}", flush=True)
+
+
 def entry_bits(P) -> int:
     """The longest numerator or denominator of P, in bits."""
     return max((max(int(x.numerator).bit_length(), int(x.denominator).bit_length())
@@ -132,20 +209,31 @@ def entry_bits(P) -> int:
 
 def main() -> int:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--sizes", type=int, nargs="*", default=[4, 10, 30])
+    ap.add_argument("--sizes", type=int, nargs="*", default=[4, 10, 60, 200])
+    ap.add_argument("--gate-sizes", type=int, nargs="*", default=[10],
+                    help="sizes of the whole 'verify gate --coq' command (cold, warm)")
+    ap.add_argument("--no-band", action="store_true", help="skip the band certificates")
     ap.add_argument("--band-sizes", type=int, nargs="*", default=[4, 6])
     ap.add_argument("--timeout", type=float, default=900.0)
     ap.add_argument("--no-sos", action="store_true", help="skip the SOS certificates")
     ap.add_argument("--raw", action="store_true",
                     help="the decision's P as found, not the gate's coarse P")
     args = ap.parse_args()
+    gate_command_rows(args.gate_sizes, args.timeout)
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
-        for name, text in prelude_sources().items():
+        sources = prelude_sources()
+        for name, text in sources.items():
             (folder / f"{name}.v").write_text(text)
-            secs, cpu, mb, ok = coqc(folder, f"{name}.v", args.timeout)
-            print(f"prelude {name}.v: {secs:.1f} s wall, {cpu:.1f} s CPU, {mb:.0f} MB, "
-                  f"ok={ok}")
+        cached = compiled_prelude(sources, LOGICAL_ROOT, timeout_seconds=args.timeout,
+                                  compile_one=_compile_one)
+        if cached is not None and install(cached, list(sources), folder):
+            print(f"prelude: {cached.summary()}")
+        else:
+            for name in sources:
+                secs, cpu, mb, ok = coqc(folder, f"{name}.v", args.timeout)
+                print(f"prelude {name}.v: {secs:.1f} s wall, {cpu:.1f} s CPU, {mb:.0f} MB, "
+                      f"ok={ok}")
         if not args.no_sos:
             sos_rows(folder, args.timeout)
         cases = []
@@ -170,7 +258,8 @@ def main() -> int:
             state = "" if ok else ("  TIMEOUT" if secs >= args.timeout else "  FAILED")
             print(f"{label:<26} {secs:9.1f} {cpu:9.1f} {mb:8.0f} {py:9.4f} {cpu / py:9.0f}  "
                   f"{len(unit.text) // 1024} KiB, {entry_bits(P)} bits{state}", flush=True)
-        band_cases(folder, args)
+        if not args.no_band:
+            band_cases(folder, args)
     return 0
 
 

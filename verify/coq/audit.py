@@ -45,21 +45,35 @@ MACHINE_INTEGER_AXIOMS: frozenset[str] = frozenset(
 _FORBIDDEN = re.compile(r"\b(Admitted|admit|Axiom|Axioms|Parameter|Parameters|Conjecture)\b")
 
 
+_COMMENT_TOKEN = re.compile(r'\(\*|\*\)|"')
+
+
 def strip_comments(text: str) -> str:
     """Coq source without comments (nested) and string literals."""
     out, depth, i, n = [], 0, 0, len(text)
+    pos = 0  # start of the text outside comments not yet copied
     while i < n:
-        if text.startswith("(*", i):
-            depth, i = depth + 1, i + 2
-        elif depth and text.startswith("*)", i):
-            depth, i = depth - 1, i + 2
-        elif not depth and text[i] == '"':
-            j = text.find('"', i + 1)
-            i = n if j < 0 else j + 1
-        else:
+        found = _COMMENT_TOKEN.search(text, i)
+        if found is None:
+            break
+        token, start = found.group(), found.start()
+        if token == "(*":
             if not depth:
-                out.append(text[i])
-            i += 1
+                out.append(text[pos:start])
+            depth, i = depth + 1, start + 2
+        elif token == "*)":
+            if depth:  # outside comments a stray "*)" stays in the text
+                depth -= 1
+                pos = start + 2
+            i = start + 2
+        elif depth:  # a quote inside a comment
+            i = start + 1
+        else:
+            out.append(text[pos:start])
+            j = text.find('"', start + 1)
+            i = pos = n if j < 0 else j + 1
+    if not depth:
+        out.append(text[pos:])
     return "".join(out)
 
 
@@ -200,11 +214,13 @@ def statement_problems(name: str, text: str, intended: Mapping[str, str],
     those of ``intended`` (name -> statement), each with its intended statement, and,
     with ``trees``, each statement read back (:func:`verify.coq.reparse.parse_statement`)
     is the intended term tree."""
-    from verify.coq.reparse import ReparseError, parse_statement
-
     written = stated_theorems(text)
     for k, tree in (trees or {}).items():
         if k in written:
+            # imported here: the term reader loads the proof layer, which a unit
+            # without term trees (a gate's) does not need
+            from verify.coq.reparse import ReparseError, parse_statement
+
             try:
                 ok = parse_statement(written[k]) == tree
             except ReparseError as exc:

@@ -277,24 +277,38 @@ def _stop_running() -> None:
             proc.kill()
 
 
-def _independent(folder: Path, units: list[str]) -> bool:
-    """True when no unit ``Require``s another unit (each needs only the prelude), so the
-    units may be compiled in any order once the prelude is."""
-    names = {rel[:-2] for rel in units}
+def unit_levels(folder: Path, units: list[str]) -> list[list[str]]:
+    """The units in rounds: each unit after every unit it ``Require``s (a gate's
+    ``Thm1_`` unit after its certificate's unit); the units of one round are independent
+    of each other, so they may be compiled at once. A cycle (not written by us) puts the
+    rest in one last round, compiled in order."""
+    names = {rel[:-2]: rel for rel in units}
+    needs = {}
     for rel in units:
         text = (folder / rel).read_text(encoding="utf-8")
-        if any(re.search(rf"\bRequire\b[^.]*\b{re.escape(name)}\b", text)
-               for name in names if name != rel[:-2]):
-            return False
-    return True
+        needs[rel] = {names[name] for name in names if name != rel[:-2]
+                      and re.search(rf"\bRequire\b[^.]*\b{re.escape(name)}\b", text)}
+    levels: list[list[str]] = []
+    done: set[str] = set()
+    left = list(units)
+    while left:
+        ready = [rel for rel in left if needs[rel] <= done]
+        if not ready:
+            levels.append(left)
+            break
+        levels.append(ready)
+        done.update(ready)
+        left = [rel for rel in left if rel not in done]
+    return levels
 
 
 def compile_development(folder: Path, *, coqc: str = "coqc",
                         timeout_seconds: float = 600.0, jobs: int = 1,
                         prelude_cache: bool = True) -> CompileResult:
     """Compile every file of the development with ``coqc``: the prelude in
-    ``_CoqProject`` order, then the units (``jobs`` at a time when none requires
-    another), then ``All.v``. Stops at the first file ``coqc`` refuses.
+    ``_CoqProject`` order, then the units (with ``jobs`` > 1, in rounds of units that
+    require none of each other, ``jobs`` at a time: :func:`unit_levels`), then
+    ``All.v``. Stops at the first file ``coqc`` refuses.
 
     With ``prelude_cache`` the prelude's ``.vo`` files come from the user's cache
     (:mod:`verify.coq.prelude_cache`: compiled there once per Coq version and prelude
@@ -328,26 +342,33 @@ def compile_development(folder: Path, *, coqc: str = "coqc",
                 return rel
         return None
 
+    def run_at_once(files: list[str]) -> str | None:
+        pool = ThreadPoolExecutor(max_workers=jobs)
+        try:
+            done = list(pool.map(
+                lambda rel: _compile_one(folder, rel, coqc, timeout_seconds), files))
+        except BaseException:  # a stop: no thread waits for its coqc to finish
+            pool.shutdown(wait=False, cancel_futures=True)
+            _stop_running()
+            pool.shutdown(wait=True)
+            raise
+        pool.shutdown(wait=True)
+        first = None
+        for rel, (ok, text, seconds) in zip(files, done, strict=True):
+            outputs.append(text)
+            timings.append((rel, seconds))
+            if not ok and first is None:
+                first = rel
+        return first
+
     failed = run_in_order(prelude)
     if failed is None and units:
-        if jobs > 1 and _independent(folder, units):
-            pool = ThreadPoolExecutor(max_workers=jobs)
-            try:
-                done = list(pool.map(
-                    lambda rel: _compile_one(folder, rel, coqc, timeout_seconds), units))
-            except BaseException:  # a stop: no thread waits for its coqc to finish
-                pool.shutdown(wait=False, cancel_futures=True)
-                _stop_running()
-                pool.shutdown(wait=True)
-                raise
-            pool.shutdown(wait=True)
-            for rel, (ok, text, seconds) in zip(units, done, strict=True):
-                outputs.append(text)
-                timings.append((rel, seconds))
-                if not ok and failed is None:
-                    failed = rel
-        else:
-            failed = run_in_order(units)
+        levels = unit_levels(folder, units) if jobs > 1 else [units]
+        for level in levels:
+            failed = run_at_once(level) if jobs > 1 and len(level) > 1 \
+                else run_in_order(level)
+            if failed is not None:
+                break
     if failed is None:
         failed = run_in_order(last)
     return CompileResult(failed is None, failed, "".join(outputs), tuple(timings), how)

@@ -18,6 +18,9 @@ The model stated is the exact minimal realisation the gate decided (shifted by t
 margin), so that the refutation is about the transfer matrix, as the verdict is.
 Nothing here is trusted: :func:`form_at` repeats Coq's computation exactly so that the
 exporter proposes only a witness that Coq will accept, and Coq recomputes everything.
+A frequency witness is first made short (:func:`short_witness`: the simplest w near the
+gate's and z rounded to a few bits, each re-checked exactly), since the kernel's work
+grows with their digits.
 """
 
 from __future__ import annotations
@@ -77,17 +80,32 @@ def _polys(model: ExactModel) -> tuple[fmpq_poly, list[list[fmpq_poly]]]:
     return fmpq_poly(cs), N
 
 
+class _Form:
+    """Re z^H Mt(w) z as a function of (w, z), the polynomials computed once."""
+
+    def __init__(self, model: ExactModel) -> None:
+        d, N = _polys(model)
+        self.m = model.m
+        self.d_parts = jw_parts(d)
+        self.n_parts = [[jw_parts(N[i][k]) for k in range(self.m)] for i in range(self.m)]
+
+    def __call__(self, omega: Fraction, a, b) -> Fraction | None:
+        return _form_value(self, omega, a, b)
+
+
 def form_at(model: ExactModel, omega: Fraction, a, b) -> Fraction | None:
     """Re z^H Mt(w) z for z = a + jb, exactly as ``fdi_witness_check`` computes it;
     None when d(jw) = 0 (the check then fails)."""
-    d, N = _polys(model)
+    return _Form(model)(omega, a, b)
+
+
+def _form_value(form: _Form, omega: Fraction, a, b) -> Fraction | None:
     w = _fq(omega)
-    dr_p, di_p = jw_parts(d)
-    dr, di = dr_p(w), di_p(w)
+    dr, di = form.d_parts[0](w), form.d_parts[1](w)
     if dr * dr + di * di == 0:
         return None
-    m = model.m
-    vals = [[tuple(p(w) for p in jw_parts(N[i][k])) for k in range(m)] for i in range(m)]
+    m = form.m
+    vals = [[tuple(p(w) for p in form.n_parts[i][k]) for k in range(m)] for i in range(m)]
     z = [(_fq(a[i]), _fq(b[i])) for i in range(m)]
     total = fmpq(0)
     for i in range(m):
@@ -99,6 +117,61 @@ def form_at(model: ExactModel, omega: Fraction, a, b) -> Fraction | None:
             pr, pi = mr * z[k][0] - mi * z[k][1], mr * z[k][1] + mi * z[k][0]
             total += z[i][0] * pr + z[i][1] * pi
     return _fr(total)
+
+
+def simplest_between(lo: Fraction, hi: Fraction) -> Fraction:
+    """The simplest rational in [lo, hi] (0 <= lo <= hi): the least denominator, and the
+    least numerator for it (the first one met going down the Stern-Brocot tree), by
+    continued fractions."""
+    lo, hi = Fraction(lo), Fraction(hi)
+    if lo < 0 or hi < lo:
+        raise ValueError("need 0 <= lo <= hi")
+    whole = lo.numerator // lo.denominator
+    if whole == lo or whole + 1 <= hi:
+        return Fraction(whole if whole == lo else whole + 1)
+    # lo and hi in (whole, whole + 1): the simplest of their reciprocals' interval
+    return whole + 1 / simplest_between(1 / (hi - whole), 1 / (lo - whole))
+
+
+#: Bits tried for the entries of a shortened direction z (largest entry scaled to 1).
+SHORT_BITS = (2, 4, 8, 16, 32, 64)
+#: Relative half-widths tried for a shortened frequency: 2^-1, 2^-2, ..., 2^-64.
+SHORT_WIDTHS = tuple(Fraction(1, 2 ** k) for k in range(1, 65))
+
+
+def _rounded(x: Fraction, bits: int) -> Fraction:
+    return Fraction(round(x * 2 ** bits), 2 ** bits)
+
+
+def short_witness(model: ExactModel, found: FrequencyWitness,
+                  band: tuple[Fraction, Fraction] | None = None) -> FrequencyWitness:
+    """A witness with short numbers for the same model: z scaled so its largest entry
+    is 1 and rounded to a few bits, then w the simplest rational within a relative
+    2^-k of the witness's (inside the band, if any), each re-checked exactly
+    (:func:`form_at`: the value stays < 0); ``found`` itself where nothing shorter
+    passes. The kernel's work grows with the digits of w and z (Mt(w) has degree 2n)."""
+    form = _Form(model)
+    top = max((abs(x) for x in (*found.a, *found.b)), default=Fraction(0))
+    a, b, value = found.a, found.b, found.value
+    if top > 0:
+        for bits in SHORT_BITS:
+            ra = tuple(_rounded(x / top, bits) for x in found.a)
+            rb = tuple(_rounded(x / top, bits) for x in found.b)
+            v = form(found.omega, ra, rb)
+            if v is not None and v < 0:
+                a, b, value = ra, rb, v
+                break
+    omega = found.omega
+    if omega > 0:
+        for width in SHORT_WIDTHS:
+            lo, hi = omega * (1 - width), omega * (1 + width)
+            if band is not None:
+                lo, hi = max(lo, band[0]), min(hi, band[1])
+            w = simplest_between(max(lo, Fraction(0)), hi)
+            v = form(w, a, b)
+            if v is not None and v < 0:
+                return FrequencyWitness(w, a, b, v)
+    return FrequencyWitness(omega, a, b, value)
 
 
 def frequency_from_data(model: ExactModel, data: dict) -> FrequencyWitness | None:
@@ -307,6 +380,8 @@ def decision_witness(decision) -> tuple[ExactModel, FrequencyWitness | UnstableW
         if band is not None:
             hints += [float(band[0] + (band[1] - band[0]) * k / 16) for k in range(17)]
         found = _search_frequency(em, hints, band)
+    if isinstance(found, FrequencyWitness):
+        found = short_witness(em, found, band)
     if found is None:
         raise CoqExportError(
             f"no witness Coq's check accepts was found for the {kind or 'gate'} witness (a "

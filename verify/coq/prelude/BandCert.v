@@ -82,14 +82,34 @@ Definition mtrace (n : nat) (M : matQ) : Q := sumQ n (fun i => entry M i i).
 (** Faddeev-LeVerrier: M_1 = I, c_(n-k) = -tr(A M_k) / k, M_(k+1) = A M_k + c_(n-k) I.
     Returns d's coefficients [c_0; ...; c_n] (c_n = 1) and Adj's coefficient matrices
     [M_n; ...; M_1] (M_k multiplies s^(n-k)), both lowest degree first. *)
+Fixpoint same_den_mat (d : positive) (M : matQ) : bool :=
+  match M with nil => true | row :: M' => same_den d row && same_den_mat d M' end.
+
+(** One step: c = -tr(A M_k) / k and M_(k+1) = A M_k + c I.  When A is written over one
+    denominator e, A M_k is over e^k and the numerator of its trace is divisible by k
+    (the numbers of the recursion on the integer matrix e A are integers), so c and
+    M_(k+1) are kept over e^k, unreduced: the next product then sums numerators
+    ([dot]'s fast path) instead of adding fractions over different denominators (whose
+    lengths multiply).  Otherwise c and M_(k+1) are reduced entry by entry.  Either way
+    the values are the same rationals; nothing is proved about them here: [resolvent_ok]
+    checks the result. *)
+Definition fl_step (n k : nat) (AM : matQ) : Q * matQ :=
+  let t := mtrace n AM in
+  let kz := Z.of_nat k in
+  if same_den_mat (Qden t) AM && Z.eqb (Z.rem (Qnum t) kz) 0 then
+    let c := Qmake (Z.opp (Z.quot (Qnum t) kz)) (Qden t) in
+    (c, madd AM (scaled_identity n c))
+  else
+    let c := Qred (Qopp t / inject_Z kz) in
+    (c, mred (madd AM (scaled_identity n c))).
+
 Fixpoint fl_loop (A : matQ) (n steps k : nat) (Mk : matQ) (cs : list Q) (Ms : list matQ)
     : list Q * list matQ :=
   match steps with
   | O => (cs, Ms)
   | S st =>
-      let AM := mmul A Mk in
-      let c := Qred (Qopp (mtrace n AM) / inject_Z (Z.of_nat k)) in
-      fl_loop A n st (S k) (mred (madd AM (scaled_identity n c))) (c :: cs) (Mk :: Ms)
+      let cM := fl_step n k (mmul A Mk) in
+      fl_loop A n st (S k) (snd cM) (fst cM :: cs) (Mk :: Ms)
   end.
 
 Definition charpoly_adj (n : nat) (A : matQ) : list Q * list matQ :=
@@ -118,9 +138,11 @@ Fixpoint zip2 {X Y Z : Type} (f : X -> Y -> Z) (xs : list X) (ys : list Y) : lis
     (C Adj_j B)_ik + c_j D_ik (Adj_n = 0), lowest degree first. *)
 Definition num_coeffs (C B : matQ) (cs : list Q) (Ms : list matQ) : list (matQ * Q) :=
   zip2 (fun c M => (mmul (mmul C M) B, c)) cs (Ms ++ [nil]).
-Definition tf_num (C B D : matQ) (cs : list Q) (Ms : list matQ) (i k : nat) : poly :=
-  map (fun x => Qred (qadd (entry (fst x) i k) (qmul (snd x) (entry D i k))))
-      (num_coeffs C B cs Ms).
+(** The coefficient matrices are bound before [i k]: [let N := tf_num C B D cs Ms in ...]
+    computes them once for all entries under [vm_compute] (call by value). *)
+Definition tf_num (C B D : matQ) (cs : list Q) (Ms : list matQ) : nat -> nat -> poly :=
+  let NC := num_coeffs C B cs Ms in
+  fun i k => map (fun x => Qred (qadd (entry (fst x) i k) (qmul (snd x) (entry D i k)))) NC.
 
 (** ** What a band certificate states, over the reals *)
 

@@ -112,13 +112,18 @@ Qed.
 
 (** ** The frequency witness *)
 
-Definition model_ok_b (n m : nat) (A B C D : matQ) : bool :=
+(** [model_ok] by computation, with [fl] the value of [charpoly_adj n A] (computed once
+    by the caller). *)
+Definition model_ok_fl (n m : nat) (A B C D : matQ) (fl : list Q * list matQ) : bool :=
   has_shape_b n n A && has_shape_b n m B && has_shape_b m n C && has_shape_b m m D
-  && resolvent_ok n A (zeros n n) (fst (charpoly_adj n A)) (snd (charpoly_adj n A)).
+  && resolvent_ok n A (zeros n n) (fst fl) (snd fl).
+
+Definition model_ok_b (n m : nat) (A B C D : matQ) : bool :=
+  model_ok_fl n m A B C D (charpoly_adj n A).
 
 Lemma model_ok_b_sound n m A B C D : model_ok_b n m A B C D = true -> model_ok n m A B C D.
 Proof.
-  unfold model_ok_b. rewrite !andb_true_iff. intros [[[[HA HB] HC] HD] Hres].
+  unfold model_ok_b, model_ok_fl. rewrite !andb_true_iff. intros [[[[HA HB] HC] HD] Hres].
   split; [apply has_shape_b_sound, HA|]. split; [apply has_shape_b_sound, HB|].
   split; [apply has_shape_b_sound, HC|]. split; [apply has_shape_b_sound, HD|].
   exact Hres.
@@ -132,22 +137,44 @@ Definition zvec (zs : list cQ) (i : nat) : cQ := nth i zs (0%Q, 0%Q).
 Definition mtQ (N : nat -> nat -> poly) (d : poly) (w : Q) (i k : nat) : cQ :=
   (pevalQ (mt_re N d i k) w, pevalQ (mt_im N d i k) w).
 
+(** p(jw) over the complex rationals, from the real and imaginary parts of p. *)
+Definition jw_valQ (p : poly) (w : Q) : cQ :=
+  (pevalQ (fst (jw_parts p)) w, pevalQ (snd (jw_parts p)) w).
+
+(** The same entry of Mt(w) as [mtQ], from the values d(jw) = [dv] and N(jw): the
+    numbers are those of the values, where [mtQ] first forms Mt's polynomials (whose
+    coefficients are products of N's and d's) and then evaluates them. *)
+Definition mtQv (N : nat -> nat -> poly) (dv : cQ) (w : Q) (i k : nat) : cQ :=
+  let nik := jw_valQ (N i k) w in
+  let nki := jw_valQ (N k i) w in
+  (radd (rmul (fst dv) (radd (fst nik) (fst nki))) (rmul (snd dv) (radd (snd nik) (snd nki))),
+   radd (rmul (fst dv) (radd (snd nik) (Qopp (snd nki))))
+        (Qopp (rmul (snd dv) (radd (fst nik) (Qopp (fst nki)))))).
+
+Lemma cR_mtQv N d w i k p q :
+  at_jw d (Q2R w) = (p, q) ->
+  cR (mtQv N (jw_valQ d w) w i k) = mt_at (fun i k => at_jw (N i k) (Q2R w)) p q i k.
+Proof.
+  intros Ed. unfold mtQv, jw_valQ, cR, mt_at. cbn [fst snd].
+  repeat rewrite ?Q2R_radd, ?Q2R_rmul, ?Q2R_opp.
+  rewrite !Q2R_pevalQ, !jw_re, !jw_im, Ed. cbn [fst snd]. f_equal; ring.
+Qed.
+
 Definition fdi_witness_check (n m : nat) (A B C D : matQ) (w : Q) (zs : list cQ) : bool :=
   let fl := charpoly_adj n A in
   let d := fst fl in
   let N := tf_num C B D d (snd fl) in
-  let dr := pevalQ (fst (jw_parts d)) w in
-  let di := pevalQ (snd (jw_parts d)) w in
-  model_ok_b n m A B C D && Qle_bool 0 w
-  && negb (Qeq_bool (radd (rmul dr dr) (rmul di di)) 0)
-  && negb (Qle_bool 0 (hformQ m (mtQ N d w) (zvec zs))).
+  let dv := jw_valQ d w in
+  model_ok_fl n m A B C D fl && Qle_bool 0 w
+  && negb (Qeq_bool (radd (rmul (fst dv) (fst dv)) (rmul (snd dv) (snd dv))) 0)
+  && negb (Qle_bool 0 (hformQ m (mtQv N dv w) (zvec zs))).
 
 Theorem fdi_witness_point n m A B C D w zs :
   fdi_witness_check n m A B C D w zs = true ->
   model_ok n m A B C D /\ 0 <= Q2R w /\ ~ hermitian_part_psd_at n m A B C D (Q2R w).
 Proof.
   unfold fdi_witness_check. cbv zeta. rewrite !andb_true_iff, !negb_true_iff.
-  intros [[[Hm Hw] Hd] Hneg]. split; [exact (model_ok_b_sound _ _ _ _ _ _ Hm)|].
+  intros [[[Hm Hw] Hd] Hneg]. unfold jw_valQ at 1 2 3 4 in Hd. cbn [fst snd] in Hd. split; [exact (model_ok_b_sound n m A B C D Hm)|].
   assert (Hw0 : 0 <= Q2R w) by (rewrite <- Q2R_0; apply Qle_bool_R, Hw).
   split; [exact Hw0|]. intros Hpsd.
   set (d := fst (charpoly_adj n A)) in *.
@@ -172,12 +199,11 @@ Proof.
   rewrite hform_herm_of in Hpsd by exact Hn.
   assert (Emt : hform m (mt_at (fun i k => at_jw (N i k) (Q2R w)) p q)
                         (fun i => cR (zvec zs i))
-                = Q2R (hformQ m (mtQ N d w) (zvec zs))).
+                = Q2R (hformQ m (mtQv N (jw_valQ d w) w) (zvec zs))).
   { rewrite Q2R_hformQ. unfold hform. apply sumR_ext. intros i _. apply sumR_ext.
-    intros k _. f_equal. f_equal. unfold mtQ, cR, mt_at. simpl.
-    rewrite !Q2R_pevalQ, peval_mt_re, peval_mt_im, Ed. reflexivity. }
+    intros k _. rewrite (cR_mtQv N d w i k p q Ed). reflexivity. }
   rewrite Emt in Hpsd.
-  assert (Hlt : Q2R (hformQ m (mtQ N d w) (zvec zs)) < 0).
+  assert (Hlt : Q2R (hformQ m (mtQv N (jw_valQ d w) w) (zvec zs)) < 0).
   { apply Rnot_le_lt. intros Hle. rewrite <- Q2R_0 in Hle. apply Rle_Qle in Hle.
     apply Qle_bool_iff in Hle. congruence. }
   assert (Hpos : 0 < p * p + q * q).
