@@ -193,7 +193,7 @@ Proof.
   pose proof (deriv_phi _ t _ (mderiv_mmul (fun _ => mT Rr) Rl t Z3 _ (mderiv_const (mT Rr) t) (Rl_sol t Ht))) as D2.
   eapply deriv_unique_eq.
   - exact (d_plus _ _ t _ _ (d_plus _ _ t _ _ D1 D2) (Sh_deriv t Ht)).
-  - destruct Rr, (Rb t), (Rl t), (ws t). so3_unfold. field.
+  - destruct Rr, (Rb t), (Rl t), (ws t). so3_poly.
 Qed.
 
 (** eq. (17) along the solution: [d/dt V <= - k_s lam phi(R_l^T R-bar) <= 0]. *)
