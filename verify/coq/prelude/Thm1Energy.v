@@ -138,6 +138,14 @@ Proof.
   rewrite E. unfold Rdiv. apply Rmult_le_pos; [ nra | apply Rlt_le, Rinv_0_lt_compat; exact Hp ].
 Qed.
 
+(** [phi(A^T B) >= 0] for two rotations: the relative rotation is a rotation.  Shared by
+    [Barbalat.v], [Converge.v] and [Thm1LTI.v]. *)
+Lemma phi_rel_rot_nonneg (A B : M3) : is_rot A -> is_rot B -> 0 <= phi (mmul (mT A) B).
+Proof.
+  intros HA HB. destruct (rot_surjective _ (is_rot_relative _ _ HA HB)) as [q [Hq E]].
+  rewrite <- E. apply phi_rot_nonneg. exact Hq.
+Qed.
+
 (** ** Along solutions *)
 
 (** A function whose derivative is [<= 0] on [[0, T]] does not increase there. *)
