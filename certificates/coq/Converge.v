@@ -663,8 +663,7 @@ Qed.
 
 Lemma phi_rel_nonneg (t : R) : 0 <= t -> 0 <= phi (mmul (mT (Rl t)) (Rb t)).
 Proof.
-  intro Ht. destruct (rot_surjective _ (is_rot_relative _ _ (Rl_rot t Ht) (Rb_rot t Ht))) as [q [Hq E]].
-  rewrite <- E. apply phi_rot_nonneg. exact Hq.
+  intro Ht. exact (phi_rel_rot_nonneg _ _ (Rl_rot t Ht) (Rb_rot t Ht)).
 Qed.
 
 (** Step 1: [phi(R_l^T R-bar) -> 0], with the Lipschitz rate proved from a bounded command. *)

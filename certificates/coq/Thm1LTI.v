@@ -179,12 +179,8 @@ Proof.
     { intros t Ht. pose proof (LTIHuman.storage_nonneg n m A B C D P cert x t) as Hs.
       split; [ exact Hs | ].
       pose proof (Dec 0 t ltac:(lra) ltac:(lra) ltac:(lra)) as Hd.
-      assert (P1 : 0 <= phi (mmul (mT Rr) (Rb t))).
-      { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rb_rot t Ht))) as [q [Hq E]].
-        rewrite <- E. apply phi_rot_nonneg. exact Hq. }
-      assert (P2 : 0 <= phi (mmul (mT Rr) (Rl t))).
-      { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rl_rot t Ht))) as [q [Hq E]].
-        rewrite <- E. apply phi_rot_nonneg. exact Hq. }
+      pose proof (phi_rel_rot_nonneg _ _ Rr_rot (Rb_rot t Ht)) as P1.
+      pose proof (phi_rel_rot_nonneg _ _ Rr_rot (Rl_rot t Ht)) as P2.
       unfold V, S_h, LTIHuman.storage in *. lra. }
     split; [ exact Sub | ].
     destruct (LTIHuman.storage_coercive n m A B C D P cert x) as [c [Hc Low]].

@@ -105,8 +105,7 @@ Ltac from_forever :=
 
 Lemma phi_sync_nonneg (t : R) : 0 <= t -> 0 <= phi (mmul (mT (Rl t)) (Rb t)).
 Proof.
-  intro Ht. destruct (rot_surjective _ (is_rot_relative _ _ (Rl_rot t Ht) (Rb_rot t Ht))) as [q [Hq E]].
-  rewrite <- E. apply phi_rot_nonneg. exact Hq.
+  intro Ht. exact (phi_rel_rot_nonneg _ _ (Rl_rot t Ht) (Rb_rot t Ht)).
 Qed.
 
 (** [phi(R_l^T R-bar(t)) -> 0] as [t -> oo]. *)
@@ -131,12 +130,8 @@ Proof.
     rewrite (Rabs_right (ks * lam)) by (apply Rle_ge, Rmult_le_pos; lra).
     apply Rmult_le_compat_l; [ apply Rmult_le_pos; lra | apply phi_lipschitz; assumption ].
   - intros t Ht. unfold V. pose proof (phi_sync_nonneg t Ht). pose proof (Sh_nonneg t Ht).
-    assert (0 <= phi (mmul (mT Rr) (Rb t))).
-    { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rb_rot t Ht))) as [q [Hq E]].
-      rewrite <- E. apply phi_rot_nonneg. exact Hq. }
-    assert (0 <= phi (mmul (mT Rr) (Rl t))).
-    { destruct (rot_surjective _ (is_rot_relative _ _ Rr_rot (Rl_rot t Ht))) as [q [Hq E]].
-      rewrite <- E. apply phi_rot_nonneg. exact Hq. }
+    pose proof (phi_rel_rot_nonneg _ _ Rr_rot (Rb_rot t Ht)).
+    pose proof (phi_rel_rot_nonneg _ _ Rr_rot (Rl_rot t Ht)).
     lra.
   - apply Rmult_lt_0_compat; [ apply Rmult_lt_0_compat | ]; assumption.
   - exists N. split; [ exact HN | ]. intros t Ht. specialize (HT t Ht).

@@ -111,10 +111,10 @@ Proof.
 Qed.
 
 Lemma det_mmul (A B : M3) : det (mmul A B) = det A * det B.
-Proof. destruct A, B. so3_unfold. ring. Qed.
+Proof. destruct A, B. so3_unfold. lra. Qed.
 
 Lemma det_mT (A : M3) : det (mT A) = det A.
-Proof. destruct A. so3_unfold. ring. Qed.
+Proof. destruct A. so3_unfold. lra. Qed.
 
 Lemma is_rot_rr (M : M3) : is_rot M -> mmul M (mT M) = I3.
 Proof.
@@ -136,7 +136,7 @@ Lemma h_rate_relative (Rr B L : M3) (ks : R) :
   = ks * tr (mmul (mmul (mT Rr) B) (sk (mmul (mT (mmul (mT Rr) B)) (mmul (mT Rr) L)))).
 Proof.
   intro H. rewrite mT_mmul, mT_mT, !mmul_assoc, <- (mmul_assoc Rr (mT Rr) L), H, mmul_I3_l.
-  destruct Rr, B, L. so3_unfold. ring.
+  destruct Rr, B, L. so3_unfold. lra.
 Qed.
 
 Lemma boundary_quat (w x y z : R) : qn (mkQ w x y z) <> 0 -> tr (rot (mkQ w x y z)) = 1 ->
@@ -228,7 +228,7 @@ Proof.
   apply deriv_tr in D.
   eapply deriv_unique_eq.
   - apply (d_minus _ _ t _ 0 D (d_const 1 t)).
-  - destruct Rr, (Rb t). so3_unfold. ring.
+  - destruct Rr, (Rb t). so3_unfold. lra.
 Qed.
 
 (** Lemma 1 on [[0, T]]: [tr(R_r^T R-bar) >= 1] (i.e. [R-bar_r + R-bar_r^T] positive

@@ -138,6 +138,14 @@ Proof.
   rewrite E. unfold Rdiv. apply Rmult_le_pos; [ nra | apply Rlt_le, Rinv_0_lt_compat; exact Hp ].
 Qed.
 
+(** [phi(A^T B) >= 0] for two rotations: the relative rotation is a rotation.  Shared by
+    [Barbalat.v], [Converge.v] and [Thm1LTI.v]. *)
+Lemma phi_rel_rot_nonneg (A B : M3) : is_rot A -> is_rot B -> 0 <= phi (mmul (mT A) B).
+Proof.
+  intros HA HB. destruct (rot_surjective _ (is_rot_relative _ _ HA HB)) as [q [Hq E]].
+  rewrite <- E. apply phi_rot_nonneg. exact Hq.
+Qed.
+
 (** ** Along solutions *)
 
 (** A function whose derivative is [<= 0] on [[0, T]] does not increase there. *)
@@ -193,7 +201,7 @@ Proof.
   pose proof (deriv_phi _ t _ (mderiv_mmul (fun _ => mT Rr) Rl t Z3 _ (mderiv_const (mT Rr) t) (Rl_sol t Ht))) as D2.
   eapply deriv_unique_eq.
   - exact (d_plus _ _ t _ _ (d_plus _ _ t _ _ D1 D2) (Sh_deriv t Ht)).
-  - destruct Rr, (Rb t), (Rl t), (ws t). so3_unfold. field.
+  - destruct Rr, (Rb t), (Rl t), (ws t). so3_poly.
 Qed.
 
 (** eq. (17) along the solution: [d/dt V <= - k_s lam phi(R_l^T R-bar) <= 0]. *)
