@@ -81,12 +81,14 @@ def _leaf(node: list, refutation: bool, directions: Iterator[list] | None) -> st
     raise CoqExportError(f"leaf {kind!r} is not one RobustCert.v checks")
 
 
-def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None = None
-                 ) -> str:
+def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None = None,
+                 short: Sequence[str | None] | None = None) -> str:
     """The pre-order tree (an int k splits coordinate k, left half first; a list is a
     leaf) as a nested Coq ``rtree``; ``directions`` gives the leaves *outside* their
-    ``ROut`` directions, in pre-order."""
+    ``ROut`` directions, in pre-order; ``short`` gives every leaf, in pre-order, a
+    subtree with short numbers (``RGrid``, ``RLinY``) or None for the leaf as it is."""
     pending = iter(directions) if directions is not None else None
+    rewritten = iter(short) if short is not None else None
     out: list[str] = []
     position = 0
 
@@ -101,7 +103,9 @@ def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None
             walk()
             out.append(")")
         else:
-            out.append("(" + _leaf(node, refutation, pending) + ")")
+            text = next(rewritten, None) if rewritten is not None else None
+            out.append(text if text is not None else
+                       "(" + _leaf(node, refutation, pending) + ")")
 
     walk()
     if position != len(tree):
@@ -130,6 +134,41 @@ def outside_directions(tree: list, region, band: tuple, enclosure: Sequence) -> 
             if y is None:
                 raise CoqExportError("a leaf 'outside' whose box meets the region")
             out.append(y)
+    return out
+
+
+def short_leaves(tree: list, region, band: tuple, enclosure: Sequence) -> list[str | None]:
+    """Every leaf of a band tree, in pre-order, as a subtree with short numbers where one
+    passes Coq's check (exactly, in Python first): a positive leaf on its box rounded out
+    to a coarse grid (``RGrid 2^k (RLeaf (RPos ...))``), a linear leaf likewise with short
+    directions (``RGrid 2^k (RLeaf (RLinY ...))``); None keeps the leaf as it is (leaves
+    *outside* are short already, see :func:`outside_directions`)."""
+    from verify.coq.robust_leaves import short_linear, short_positive
+    from verify.passivity.check import robust_band as rb
+
+    phi, cov_phi = rb.reduce_region(region.center, region.covariance)
+    r = [mpq(x) for x in enclosure]
+    w1, w2 = (mpq(w) for w in band)
+    root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(w1 * w1, w2 * w2)]
+    out: list[str | None] = []
+    for box, node in rb.leaves(tree, root):
+        text = None
+        values = [mpq(v) for v in node[1:]] if node[0] != "outside" else []
+        if node[0] == "positive" and len(values) == 3:
+            found = short_positive(box, values)
+            if found is not None:
+                bits, bounds = found
+                text = (f"(RGrid {2 ** bits} (RLeaf (RPos "
+                        + " ".join(_q(c) for c in bounds) + ")))")
+        elif node[0] == "linear" and len(values) == 6:
+            found = short_linear(box, values[:3], phi, cov_phi, region.chi2)
+            if found is not None:
+                bits, forms = found
+                cs = " ".join(_q(c) for c, _, _ in forms)
+                ss = " ".join(_q(s) for _, s, _ in forms)
+                ys = " ".join(_list(y) for _, _, y in forms)
+                text = f"(RGrid {2 ** bits} (RLeaf (RLinY {cs} {ss} {ys})))"
+        out.append(text)
     return out
 
 
@@ -186,7 +225,8 @@ def robust_unit(path: Path, data: dict[str, Any]) -> CoqUnit:
             raise CoqExportError("expected one frequency piece for a band")
         piece_tree = data["pieces"][0]["tree"]
         tree = tree_literal(piece_tree, False,
-                            outside_directions(piece_tree, region, band, data["enclosure"]))
+                            outside_directions(piece_tree, region, band, data["enclosure"]),
+                            short_leaves(piece_tree, region, band, data["enclosure"]))
     w1, w2 = band
     name = module_name(path.name)
     kind = "Robust refutation" if refutation else "Robust band"
@@ -278,4 +318,4 @@ def robust_unit_from_file(path: Path) -> CoqUnit:
 
 
 __all__ = ["BAND_SCHEMA", "OUTSIDE_REASON", "REFUTATION_SCHEMA", "outside_directions",
-           "robust_unit", "robust_unit_from_file", "tree_literal"]
+           "robust_unit", "robust_unit_from_file", "short_leaves", "tree_literal"]
