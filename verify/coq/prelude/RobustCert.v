@@ -905,15 +905,48 @@ Qed.
 Definition dir_term (g b : iv) (yk pc : Q) : Q :=
   Qred (- yk * (pc - mid b) + fst (imul (iadd g (yk, yk)) (isub b (mid b, mid b)))).
 
-Definition lin_dir_ok (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (T : iv) (e : expr)
-    (c s : Q) (y : list Q) : bool :=
-  let V := eiv (centre_box 9 B) T e in
-  let G := snd (egr B T e) in
+Definition lin_dir_core (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (V : iv)
+    (G : list iv) (c s : Q) (y : list Q) : bool :=
   let q := qQ Sg y in
   let bound := (fst V - s + sumQ 9 (fun k =>
       dir_term (nth k G zero_iv) (nth k B zero_iv) (nth k y 0%Q) (nth k phic 0%Q)))%Q in
   negb (Qle_bool c 0) && Qle_bool 0 s && negb (Qle_bool q 0) && Qle_bool (chi2 * q) (s * s)
   && Qle_bool c bound.
+
+Definition lin_dir_ok (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (T : iv) (e : expr)
+    (c s : Q) (y : list Q) : bool :=
+  lin_dir_core Sg chi2 phic B (eiv (centre_box 9 B) T e) (snd (egr B T e)) c s y.
+
+(** The three conditions of a linear leaf with N_1, N_2 and their slopes computed once:
+    [det_expr] is built from [n_expr 0] and [n_expr 1], so [eiv] and [egr] of [det_expr]
+    are these terms ([lin_leaf_dir]). *)
+Definition egr_det (B : list iv) (T : iv) (g0 g1 : iv * list iv) : iv * list iv :=
+  match (match (match g0 with (va, ga) => match g1 with (vb, gb) =>
+                  (imul va vb, gzip (fun x y => iadd (imul va y) (imul vb x)) ga gb) end end)
+         with (va, ga) => (iscale 4 va, map (iscale 4) ga) end) with
+  | (va, ga) => match egr B T (EMul (ESqr (EVar 8)) (EMul (d_expr 0) (d_expr 1))) with
+                | (vb, gb) => (isub va vb, gzip isub ga gb) end
+  end.
+
+Definition eiv_det (B : list iv) (T : iv) (n0 n1 : iv) : iv :=
+  isub (iscale 4 (imul n0 n1))
+       (imul (isqr (nth 8 B zero_iv)) (imul (eiv B T (d_expr 0)) (eiv B T (d_expr 1)))).
+
+Definition lin_leaf (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (T : iv)
+    (c0 c1 c2 s0 s1 s2 : Q) (y0 y1 y2 : list Q) : bool :=
+  let C := centre_box 9 B in
+  let v0 := eiv C T (n_expr 0) in let v1 := eiv C T (n_expr 1) in
+  let g0 := egr B T (n_expr 0) in let g1 := egr B T (n_expr 1) in
+  lin_dir_core Sg chi2 phic B v0 (snd g0) c0 s0 y0
+  && lin_dir_core Sg chi2 phic B v1 (snd g1) c1 s1 y1
+  && lin_dir_core Sg chi2 phic B (eiv_det C T v0 v1) (snd (egr_det B T g0 g1)) c2 s2 y2.
+
+Lemma lin_leaf_dir Sg chi2 phic B T c0 c1 c2 s0 s1 s2 y0 y1 y2 :
+  lin_leaf Sg chi2 phic B T c0 c1 c2 s0 s1 s2 y0 y1 y2
+  = lin_dir_ok Sg chi2 phic B T (n_expr 0) c0 s0 y0
+    && lin_dir_ok Sg chi2 phic B T (n_expr 1) c1 s1 y1
+    && lin_dir_ok Sg chi2 phic B T det_expr c2 s2 y2.
+Proof. reflexivity. Qed.
 
 Lemma dir_term_le g b yk pc sk pk : in_iv g sk -> in_iv b pk ->
   Q2R (dir_term g b yk pc) - Q2R yk * (pk - Q2R pc) <= sk * (pk - Q2R (mid b)).
@@ -926,14 +959,14 @@ Proof.
   rewrite Q2R_red, Q2R_plus, Q2R_mult, Q2R_opp, Q2R_minus. nra.
 Qed.
 
-Local Strategy expand [lin_dir_ok].
+Local Strategy expand [lin_dir_ok lin_dir_core].
 
 Theorem lin_dir_ok_sound Si Sg eps ws thc chi2 B T e c s y th x :
   region_ok Si Sg eps ws = true -> in_region Si thc chi2 th ->
   lin_dir_ok Sg chi2 (phicQ thc) B T e c s y = true ->
   in_box B (point th x) -> in_iv T x -> 0 < ereal (point th x) x e.
 Proof.
-  intros Hreg Hr Hok HB HT. unfold lin_dir_ok in Hok. cbv zeta in Hok.
+  intros Hreg Hr Hok HB HT. unfold lin_dir_ok, lin_dir_core in Hok. cbv zeta in Hok.
   rewrite !andb_true_iff in Hok. destruct Hok as [[[[Hc Hs] Hq] Hsq] Hb].
   apply Qlt_of_negb in Hc, Hq. rewrite Q2R_0 in Hc, Hq.
   apply Qle_bool_R in Hs, Hsq, Hb. rewrite Q2R_0 in Hs. rewrite !Q2R_mult in Hsq.
@@ -1138,9 +1171,7 @@ Definition band_leaf (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (l : r
                               && lin_ok Sg chi2 phic B T (n_expr 1) c1 s1
                               && lin_ok Sg chi2 phic B T det_expr c2 s2
   | ROut y => out_ok Sg chi2 phic B y
-  | RLinY c0 c1 c2 s0 s1 s2 y0 y1 y2 => lin_dir_ok Sg chi2 phic B T (n_expr 0) c0 s0 y0
-                                        && lin_dir_ok Sg chi2 phic B T (n_expr 1) c1 s1 y1
-                                        && lin_dir_ok Sg chi2 phic B T det_expr c2 s2 y2
+  | RLinY c0 c1 c2 s0 s1 s2 y0 y1 y2 => lin_leaf Sg chi2 phic B T c0 c1 c2 s0 s1 s2 y0 y1 y2
   | _ => false
   end.
 
@@ -1213,7 +1244,7 @@ Proof.
   unfold band_leaf in Hl. cbv zeta in Hl.
   assert (HTx : in_iv (nth 9 B zero_iv) x).
   { pose proof (HB 9%nat) as H. unfold point in H. simpl in H. exact H. }
-  destruct l; try discriminate; rewrite ?pos_leaf_eiv, ?andb_true_iff in Hl.
+  destruct l; try discriminate; rewrite ?pos_leaf_eiv, ?lin_leaf_dir, ?andb_true_iff in Hl.
   - destruct Hl as [[H0 H1] H2]. apply psd_of_conditions.
     + exact (pos_ok_sound _ _ _ H0 (eiv_sound _ _ _ _ _ HB HTx)).
     + exact (pos_ok_sound _ _ _ H1 (eiv_sound _ _ _ _ _ HB HTx)).
