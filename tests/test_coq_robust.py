@@ -19,6 +19,13 @@ from verify.coq import robust
 from verify.coq.development import coqc_available, prelude_sources, required_prelude
 from verify.coq.export import export_certificates
 from verify.coq.kyp import CoqExportError
+from verify.coq.robust_leaves import (
+    direction_ok,
+    positive_bounds,
+    short_linear,
+    short_positive,
+    widened,
+)
 from verify.coq.robust_outside import dual_value, outside_direction, passes
 from verify.identify.robust.band_check import parse_region
 from verify.passivity.check import robust_band as rb
@@ -50,7 +57,11 @@ def test_the_committed_development_exports_everything():
     listed = json.loads((CERTS / "coq" / "NOT_EXPORTED.json").read_text())
     assert listed == {"not_exported": []}
     unit = CERTS / "coq" / "Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.v"
-    assert unit.read_text().count("ROut [") == 243
+    text = unit.read_text()
+    assert text.count("ROut [") == 243
+    # every positive and linear leaf on a coarse grid box, linear ones with short directions
+    assert text.count("(RGrid ") == 688
+    assert text.count("RLinY") == 100
 
 
 def _outside_boxes():
@@ -66,6 +77,57 @@ def _outside_boxes():
               for box, node in rb.leaves(data["pieces"][0]["tree"], root)
               if node[0] == "outside"]
     return leaves, phi, cov, rb.inverse(cov), region.chi2
+
+
+def _leaf_boxes(kind: str):
+    """(box, claimed bounds) of every leaf ``kind`` of the passive operator's band, with
+    the region reduced to phi (its centre, covariance) and chi2."""
+    data = json.loads(PASSIVE.read_text())
+    region, _ = parse_region(data["region"], 10)
+    phi, cov = rb.reduce_region(region.center, region.covariance)
+    r = [mpq(x) for x in data["enclosure"]]
+    w1, w2 = (mpq(w) for w in data["band"])
+    root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(w1 * w1, w2 * w2)]
+    leaves = [(box, [mpq(v) for v in node[1:4]])
+              for box, node in rb.leaves(data["pieces"][0]["tree"], root) if node[0] == kind]
+    return leaves, phi, cov, region.chi2
+
+
+def _moved(box, k: int, widths: int):
+    """The box moved along coordinate k by ``widths`` of its widths."""
+    lo, hi = box[k]
+    out = list(box)
+    out[k] = (lo + widths * (hi - lo), hi + widths * (hi - lo))
+    return out
+
+
+def test_short_linear_leaves_pass_exactly_and_fail_when_changed():
+    leaves, phi, cov, chi2 = _leaf_boxes("linear")
+    assert len(leaves) == 100
+    for box, claimed in leaves[:3]:
+        bits, forms = short_linear(box, claimed, phi, cov, chi2)
+        wide = widened(box, bits)
+        assert all(a <= lo and hi <= b for (lo, hi), (a, b) in zip(box, wide, strict=True))
+        _, parts = rb.linear_parts(wide[:-1], wide[-1], "x", rb.Shape(1, 2))
+        for (value, grad), (c, s, y) in zip(parts, forms, strict=True):
+            assert max(len(str(v.numerator)) + len(str(v.denominator)) for v in y) < 12
+            assert direction_ok(wide[:-1], value, grad, y, c, s, phi, cov, chi2)
+            # the direction reversed: the region's term no longer bounds the slopes' part
+            assert not direction_ok(wide[:-1], value, grad, [-v for v in y], c, s, phi, cov,
+                                    chi2)
+            # s below sqrt(chi2 y^T Sigma y)
+            assert not direction_ok(wide[:-1], value, grad, y, c, s / 2, phi, cov, chi2)
+
+
+def test_short_positive_leaves_pass_exactly_and_a_moved_box_does_not():
+    leaves, _, _, _ = _leaf_boxes("positive")
+    assert len(leaves) == 588
+    for box, claimed in leaves[:20]:
+        bits, bounds = short_positive(box, claimed)
+        assert all(c > 0 for c in bounds)
+        assert positive_bounds(widened(box, bits), bounds) == bounds
+    box, claimed = leaves[0]
+    assert positive_bounds(_moved(box, 8, 40), claimed) is None
 
 
 def test_outside_directions_are_short_and_pass_exactly():
@@ -197,6 +259,40 @@ def test_coqc_checks_one_outside_leaf_and_refuses_a_moved_plane(robust_prelude):
     moved = [-v for v in y]
     assert not passes(moved, box, phi, cov, chi2)
     assert not compiles(robust_prelude, lemma(moved), "OutsideLeaf")
+
+
+def _linear_lemma(head: str, box, bits: int, forms) -> str:
+    boxes = "; ".join(f"({robust._q(lo)}, {robust._q(hi)})" for lo, hi in box)
+    cs = " ".join(robust._q(c) for c, _, _ in forms)
+    ss = " ".join(robust._q(s) for _, s, _ in forms)
+    ys = " ".join(robust._list(y) for _, _, y in forms)
+    return (head + f"Definition B : list iv := grid_box {2 ** bits} [{boxes}].\n"
+            "Lemma leaf_ok : lin_leaf Sg chi2 (phicQ thc) B (nth 9 B zero_iv) "
+            f"{cs} {ss} {ys} = true.\n"
+            "Proof. vm_cast_no_check (eq_refl true). Qed.\n")
+
+
+@needs_coqc
+def test_coqc_checks_one_linear_leaf_and_refuses_a_wrong_direction_or_a_moved_box(
+        robust_prelude):
+    """The representative (not slow): one linear leaf of the passive operator's band as a
+    lemma [lin_leaf ... = true] on its box rounded out to its grid ([grid_box]), with the
+    short directions the exporter writes; coqc refuses it with the det direction reversed,
+    and on the box moved along c = c12 + c21 (the same numbers no longer bound det)."""
+    leaves, phi, cov, chi2 = _leaf_boxes("linear")
+    box, claimed = leaves[0]
+    bits, forms = short_linear(box, claimed, phi, cov, chi2)
+    unit = robust.robust_unit_from_file(PASSIVE).text
+    head = unit[:unit.index("(** The half-widths")]
+    assert compiles(robust_prelude, _linear_lemma(head, box, bits, forms), "LinearLeaf")
+    c, s, y = forms[2]
+    wrong = [*forms[:2], (c, s, [-v for v in y])]
+    assert not compiles(robust_prelude, _linear_lemma(head, box, bits, wrong), "LinearLeaf")
+    moved = _moved(box, 8, 3)
+    wide = widened(moved, bits)
+    _, parts = rb.linear_parts(wide[:-1], wide[-1], "x", rb.Shape(1, 2))
+    assert not direction_ok(wide[:-1], *parts[2], y, c, s, phi, cov, chi2)
+    assert not compiles(robust_prelude, _linear_lemma(head, moved, bits, forms), "LinearLeaf")
 
 
 @pytest.mark.slow

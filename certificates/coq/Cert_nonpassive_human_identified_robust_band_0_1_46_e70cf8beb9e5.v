@@ -57,7 +57,7 @@ Definition w1 : Q := (0 # 1).
 Definition w2 : Q := (73 # 50).
 (** The certificate's tree of midpoint splits and its leaves. *)
 Definition tr : rtree :=
-  (RSplit 9 (RLeaf (RPos (393 # 1000) (433 # 1000) (27 # 20))) (RSplit 9 (RLeaf (RPos (187 # 1000) (31 # 125) (367 # 1000))) (RSplit 9 (RLeaf (RPos (211 # 2500) (39 # 250) (101 # 1000))) (RSplit 1 (RLeaf (RPos (103 # 1000) (129 # 2000) (479 # 10000))) (RLeaf (RPos (107 # 1250) (129 # 2000) (77 # 2000))))))).
+  (RSplit 9 (RGrid 16 (RLeaf (RPos (393 # 1000) (433 # 1000) (27 # 20)))) (RSplit 9 (RGrid 16 (RLeaf (RPos (187 # 1000) (31 # 125) (1 # 8)))) (RSplit 9 (RGrid 32 (RLeaf (RPos (211 # 2500) (39 # 250) (1 # 32)))) (RSplit 1 (RGrid 64 (RLeaf (RPos (103 # 1000) (1 # 32) (1 # 256)))) (RGrid 64 (RLeaf (RPos (107 # 1250) (1 # 32) (1 # 512)))))))).
 
 (** The whole check (Si Sg = I included), evaluated once by the kernel, at Qed. *)
 Lemma certificate_checked : robust_band_check Si Sg eS wS thc chi2 r w1 w2 tr = true.

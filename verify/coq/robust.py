@@ -21,10 +21,14 @@ re-checks everything by computation (``robust_band_check``, ``robust_refutation_
 with the lemmas proved once in the prelude. The exporter first re-checks the certificate
 with the exact Python checker (binding included) and refuses it when that fails.
 
-Leaves of the kinds *positive*, *linear* and *negative* are exported as they are; a leaf
-*outside* (a tangent plane shows the box misses the region) is exported as ``ROut y``, a
-short rational direction y for which Coq checks the region's dual bound over the box
-(``out_ok``; :mod:`verify.coq.robust_outside` computes y from the leaf's point).
+A refutation's leaves (*negative*, *linear*) are exported as they are. A band's leaves
+are written with short numbers (:func:`band_tree_literal`): a leaf *outside* (a tangent
+plane shows the box misses the region) as ``ROut y``, a short rational direction y for
+which Coq checks the region's dual bound over the box (``out_ok``;
+:mod:`verify.coq.robust_outside`); a positive or linear leaf on its box rounded out to a
+coarse dyadic grid (``RGrid``), a linear one with short directions (``RLinY``;
+:mod:`verify.coq.robust_leaves`). Each form is checked exactly in Python before it is
+written, and Coq re-checks it whatever its numbers.
 """
 
 from __future__ import annotations
@@ -111,26 +115,69 @@ def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None
     return "".join(out)
 
 
-def outside_directions(tree: list, region, band: tuple, enclosure: Sequence) -> list[list]:
-    """The ``ROut`` direction of every leaf *outside* of a band tree, in pre-order (the
-    boxes are the tree's midpoint splits of the enclosing box times [w1², w2²])."""
+def band_tree_literal(tree: list, region, band: tuple, enclosure: Sequence) -> str:
+    """A band tree as a Coq ``rtree`` with short numbers, every form checked exactly in
+    Python first (:mod:`verify.coq.robust_leaves`, :mod:`verify.coq.robust_outside`):
+
+    * a leaf *outside* as ``ROut y`` with a short direction y;
+    * a positive leaf as ``RGrid 2^k (RLeaf (RPos c0 c1 c2))``, its box rounded out to the
+      coarsest grid 2^-k that passes; a linear leaf as ``RGrid 2^k (RLeaf (RLinY ...))``
+      with short directions.
+
+    A leaf for which no short form passes is written as it is (``RPos``, ``RLin``)."""
+    from verify.coq.robust_leaves import short_linear, short_positive
     from verify.coq.robust_outside import outside_direction
     from verify.passivity.check import robust_band as rb
 
     phi, cov_phi = rb.reduce_region(region.center, region.covariance)
     inverse = rb.inverse(cov_phi)
+    chi2 = region.chi2
     r = [mpq(x) for x in enclosure]
     w1, w2 = (mpq(w) for w in band)
     root = [(c - h, c + h) for c, h in zip(phi, r, strict=True)] + [(w1 * w1, w2 * w2)]
-    out: list[list] = []
-    for box, node in rb.leaves(tree, root):
-        if node and node[0] == "outside":
+    list(rb.leaves(tree, root))  # a malformed tree is refused here, as the checker does
+    position = 0
+
+    def short(box, claimed, linear: bool) -> str | None:
+        """A leaf on ``box`` with short numbers that passes, or None."""
+        if not linear:
+            found = short_positive(box, claimed)
+            if found is None:
+                return None
+            bits, bounds = found
+            return (f"(RGrid {2 ** bits} (RLeaf (RPos " + " ".join(_q(c) for c in bounds)
+                    + ")))")
+        found_lin = short_linear(box, claimed, phi, cov_phi, chi2)
+        if found_lin is None:
+            return None
+        bits, forms = found_lin
+        cs = " ".join(_q(c) for c, _, _ in forms)
+        ss = " ".join(_q(s) for _, s, _ in forms)
+        ys = " ".join(_list(y) for _, _, y in forms)
+        return f"(RGrid {2 ** bits} (RLeaf (RLinY {cs} {ss} {ys})))"
+
+    def walk(box):
+        nonlocal position
+        node = tree[position]
+        position += 1
+        if isinstance(node, int):
+            left, right = rb.midpoint_split(box, node)
+            return f"(RSplit {node} {walk(left)} {walk(right)})"
+        kind = node[0]
+        if kind == "outside":
             point = [mpq(v) for v in node[1]]
-            y = outside_direction(box[:-1], point, phi, cov_phi, inverse, region.chi2)
+            y = outside_direction(box[:-1], point, phi, cov_phi, inverse, chi2)
             if y is None:
                 raise CoqExportError("a leaf 'outside' whose box meets the region")
-            out.append(y)
-    return out
+            return f"(RLeaf (ROut {_list(y)}))"
+        values = [mpq(v) for v in node[1:]]
+        if (kind, len(values)) in (("positive", 3), ("linear", 6)):
+            found = short(box, values[:3], kind == "linear")
+            if found is not None:
+                return found
+        return "(" + _leaf(node, False, None) + ")"
+
+    return walk(root)
 
 
 _LONG_INTEGER = re.compile(r"(?<![\w.])(-?)(\d{20,})(?![\w.])")
@@ -185,8 +232,7 @@ def robust_unit(path: Path, data: dict[str, Any]) -> CoqUnit:
         if len(data["pieces"]) != 1:
             raise CoqExportError("expected one frequency piece for a band")
         piece_tree = data["pieces"][0]["tree"]
-        tree = tree_literal(piece_tree, False,
-                            outside_directions(piece_tree, region, band, data["enclosure"]))
+        tree = band_tree_literal(piece_tree, region, band, data["enclosure"])
     w1, w2 = band
     name = module_name(path.name)
     kind = "Robust refutation" if refutation else "Robust band"
@@ -277,5 +323,5 @@ def robust_unit_from_file(path: Path) -> CoqUnit:
                              f"{path.name}: {text}") from None
 
 
-__all__ = ["BAND_SCHEMA", "OUTSIDE_REASON", "REFUTATION_SCHEMA", "outside_directions",
+__all__ = ["BAND_SCHEMA", "OUTSIDE_REASON", "REFUTATION_SCHEMA", "band_tree_literal",
            "robust_unit", "robust_unit_from_file", "tree_literal"]

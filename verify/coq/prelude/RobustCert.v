@@ -46,7 +46,7 @@
 
     No axiom is added. *)
 
-From Coq Require Import QArith Qabs Qreals Reals List Lra Lia.
+From Coq Require Import QArith Qabs Qround Qreals Reals List Lra Lia.
 From VerifyCoq Require Import QCert BandCert.
 Import ListNotations.
 
@@ -894,6 +894,110 @@ Proof.
 Qed.
 
 
+(** A linear leaf with its direction given ([RLinY]): the same first-order form as
+    [lin_ok], with the region's term bounded along a rational direction y that the unit
+    supplies (short, rounded by the exporter) instead of the gradient midpoints computed
+    here.  For the slope s_k in G_k and phi_k in b_k with midpoint m_k,
+    s_k (phi_k - m_k) = (s_k + y_k)(phi_k - m_k) - y_k (phi_k - phic_k) - y_k (phic_k - m_k),
+    and the first product is bounded below by interval multiplication.  The region gives
+    y.(phi - phic) <= s when chi2 y^T Sg y <= s^2.  Nothing is assumed of y: with
+    y = -(midpoints of G) this is [lin_ok]'s bound. *)
+Definition dir_term (g b : iv) (yk pc : Q) : Q :=
+  Qred (- yk * (pc - mid b) + fst (imul (iadd g (yk, yk)) (isub b (mid b, mid b)))).
+
+Definition lin_dir_core (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (V : iv)
+    (G : list iv) (c s : Q) (y : list Q) : bool :=
+  let q := qQ Sg y in
+  let bound := (fst V - s + sumQ 9 (fun k =>
+      dir_term (nth k G zero_iv) (nth k B zero_iv) (nth k y 0%Q) (nth k phic 0%Q)))%Q in
+  negb (Qle_bool c 0) && Qle_bool 0 s && negb (Qle_bool q 0) && Qle_bool (chi2 * q) (s * s)
+  && Qle_bool c bound.
+
+Definition lin_dir_ok (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (T : iv) (e : expr)
+    (c s : Q) (y : list Q) : bool :=
+  lin_dir_core Sg chi2 phic B (eiv (centre_box 9 B) T e) (snd (egr B T e)) c s y.
+
+(** The three conditions of a linear leaf with N_1, N_2 and their slopes computed once:
+    [det_expr] is built from [n_expr 0] and [n_expr 1], so [eiv] and [egr] of [det_expr]
+    are these terms ([lin_leaf_dir]). *)
+Definition egr_det (B : list iv) (T : iv) (g0 g1 : iv * list iv) : iv * list iv :=
+  match (match (match g0 with (va, ga) => match g1 with (vb, gb) =>
+                  (imul va vb, gzip (fun x y => iadd (imul va y) (imul vb x)) ga gb) end end)
+         with (va, ga) => (iscale 4 va, map (iscale 4) ga) end) with
+  | (va, ga) => match egr B T (EMul (ESqr (EVar 8)) (EMul (d_expr 0) (d_expr 1))) with
+                | (vb, gb) => (isub va vb, gzip isub ga gb) end
+  end.
+
+Definition eiv_det (B : list iv) (T : iv) (n0 n1 : iv) : iv :=
+  isub (iscale 4 (imul n0 n1))
+       (imul (isqr (nth 8 B zero_iv)) (imul (eiv B T (d_expr 0)) (eiv B T (d_expr 1)))).
+
+Definition lin_leaf (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (T : iv)
+    (c0 c1 c2 s0 s1 s2 : Q) (y0 y1 y2 : list Q) : bool :=
+  let C := centre_box 9 B in
+  let v0 := eiv C T (n_expr 0) in let v1 := eiv C T (n_expr 1) in
+  let g0 := egr B T (n_expr 0) in let g1 := egr B T (n_expr 1) in
+  lin_dir_core Sg chi2 phic B v0 (snd g0) c0 s0 y0
+  && lin_dir_core Sg chi2 phic B v1 (snd g1) c1 s1 y1
+  && lin_dir_core Sg chi2 phic B (eiv_det C T v0 v1) (snd (egr_det B T g0 g1)) c2 s2 y2.
+
+Lemma lin_leaf_dir Sg chi2 phic B T c0 c1 c2 s0 s1 s2 y0 y1 y2 :
+  lin_leaf Sg chi2 phic B T c0 c1 c2 s0 s1 s2 y0 y1 y2
+  = lin_dir_ok Sg chi2 phic B T (n_expr 0) c0 s0 y0
+    && lin_dir_ok Sg chi2 phic B T (n_expr 1) c1 s1 y1
+    && lin_dir_ok Sg chi2 phic B T det_expr c2 s2 y2.
+Proof. reflexivity. Qed.
+
+Lemma dir_term_le g b yk pc sk pk : in_iv g sk -> in_iv b pk ->
+  Q2R (dir_term g b yk pc) - Q2R yk * (pk - Q2R pc) <= sk * (pk - Q2R (mid b)).
+Proof.
+  intros Hg Hb. unfold dir_term.
+  assert (Hy : in_iv (yk, yk) (Q2R yk)) by (unfold in_iv; cbn [fst snd]; lra).
+  assert (Hm : in_iv (mid b, mid b) (Q2R (mid b))) by (unfold in_iv; cbn [fst snd]; lra).
+  pose proof (imul_sound _ _ _ _ (iadd_sound _ _ _ _ Hg Hy) (isub_sound _ _ _ _ Hb Hm)) as H.
+  unfold in_iv in H. destruct H as [H _].
+  rewrite Q2R_red, Q2R_plus, Q2R_mult, Q2R_opp, Q2R_minus. nra.
+Qed.
+
+Local Strategy expand [lin_dir_ok lin_dir_core].
+
+Theorem lin_dir_ok_sound Si Sg eps ws thc chi2 B T e c s y th x :
+  region_ok Si Sg eps ws = true -> in_region Si thc chi2 th ->
+  lin_dir_ok Sg chi2 (phicQ thc) B T e c s y = true ->
+  in_box B (point th x) -> in_iv T x -> 0 < ereal (point th x) x e.
+Proof.
+  intros Hreg Hr Hok HB HT. unfold lin_dir_ok, lin_dir_core in Hok. cbv zeta in Hok.
+  rewrite !andb_true_iff in Hok. destruct Hok as [[[[Hc Hs] Hq] Hsq] Hb].
+  apply Qlt_of_negb in Hc, Hq. rewrite Q2R_0 in Hc, Hq.
+  apply Qle_bool_R in Hs, Hsq, Hb. rewrite Q2R_0 in Hs. rewrite !Q2R_mult in Hsq.
+  set (p := point th x) in *. set (p0 := centre_point 9 B p).
+  destruct (centre_point_in 9 B p HB) as [HB0 HC0].
+  set (G := snd (egr B T e)) in *.
+  pose proof (eiv_sound _ T p0 x e HC0 HT) as HV.
+  destruct (egr_sound 9 B T p p0 x e HB HB0 HT) as [sl [Hsl Heq]].
+  { intros k Hk. unfold p0, centre_point. destruct (Nat.ltb_spec k 9); [lia|reflexivity]. }
+  fold G in Hsl.
+  set (a := sumR 9 (fun k => vecR y k * (phi th k - vecR (phicQ thc) k))).
+  assert (Ha : a <= Q2R s).
+  { pose proof (dual_scalar a _ _ Hq (fun t => region_dual Si Sg eps ws thc chi2 th y t Hreg Hr))
+      as H. apply (Rle_trans _ (Rabs a)); [apply Rle_abs|].
+    apply (Rle_trans _ (Rabs (Q2R s))); [apply Rsqr_le_abs_0; unfold Rsqr; lra|].
+    rewrite Rabs_right; lra. }
+  assert (Hsum : sumR 9 (fun k => sl k * (p k - p0 k))
+                 >= - a + sumR 9 (fun k => Q2R (dir_term (nth k G zero_iv) (nth k B zero_iv)
+                                                        (nth k y 0%Q) (nth k (phicQ thc) 0%Q)))).
+  { unfold a. rewrite <- sumR_opp, <- sumR_plus. apply Rle_ge, sumR_le. intros k Hk.
+    assert (Ep : phi th k = p k) by (unfold p, point; destruct (Nat.eqb_spec k 9); [lia|reflexivity]).
+    assert (Ep0 : p0 k = Q2R (mid (nth k B zero_iv))).
+    { unfold p0, centre_point. destruct (Nat.ltb_spec k 9); [reflexivity|lia]. }
+    rewrite Ep, Ep0. unfold vecR.
+    pose proof (dir_term_le _ _ (nth k y 0%Q) (nth k (phicQ thc) 0%Q) (sl k) (p k) (Hsl k) (HB k))
+      as H. lra. }
+  rewrite Q2R_plus, Q2R_minus, Q2R_sumQ in Hb.
+  unfold in_iv in HV. lra.
+Qed.
+
+
 
 (** ** A box the region misses: the dual bound along a fixed direction *)
 
@@ -950,10 +1054,50 @@ Qed.
     [ROut y] (the box misses the region, [out_ok]). *)
 Inductive rleaf :=
 | RPos (c0 c1 c2 : Q) | RLin (c0 c1 c2 s0 s1 s2 : Q) | RNeg (c : Q) | RNegLin (c s : Q)
-| ROut (y : list Q).
+| ROut (y : list Q)
+| RLinY (c0 c1 c2 s0 s1 s2 : Q) (y0 y1 y2 : list Q).
 
-(** A tree of midpoint splits: [RSplit k l r] cuts coordinate k, left half first. *)
-Inductive rtree := RLeaf (l : rleaf) | RSplit (k : nat) (l r : rtree).
+(** A tree of midpoint splits: [RSplit k l r] cuts coordinate k, left half first;
+    [RGrid k t] rounds the current box outwards to the grid 1/k (each corner to a
+    multiple of 1/k, [grid_box]) and checks t on that larger box, whose numbers are
+    short. *)
+Inductive rtree := RLeaf (l : rleaf) | RSplit (k : nat) (l r : rtree) | RGrid (k : positive) (t : rtree).
+
+Definition gdown (k : positive) (a : Q) : Q := Qmake (Qfloor (a * inject_Z (Zpos k))) k.
+Definition gup (k : positive) (a : Q) : Q := Qmake (Qceiling (a * inject_Z (Zpos k))) k.
+Definition grid_box (k : positive) (B : list iv) : list iv :=
+  map (fun b => (gdown k (fst b), gup k (snd b))) B.
+
+Lemma grid_scale k z : (Qmake z k * inject_Z (Zpos k) == inject_Z z)%Q.
+Proof. unfold Qeq, inject_Z. simpl. rewrite Pos.mul_1_r. ring. Qed.
+
+Lemma grid_pos k : (0 < inject_Z (Zpos k))%Q.
+Proof. unfold Qlt, inject_Z. simpl. lia. Qed.
+
+Lemma gdown_le k a : Q2R (gdown k a) <= Q2R a.
+Proof.
+  apply Qle_Rle. unfold gdown. apply (Qmult_le_r _ _ _ (grid_pos k)).
+  rewrite grid_scale. apply Qfloor_le.
+Qed.
+
+Lemma gup_ge k a : Q2R a <= Q2R (gup k a).
+Proof.
+  apply Qle_Rle. unfold gup. apply (Qmult_le_r _ _ _ (grid_pos k)).
+  rewrite grid_scale. apply Qle_ceiling.
+Qed.
+
+Lemma grid_box_in k B p : in_box B p -> in_box (grid_box k B) p.
+Proof.
+  intros HB j. pose proof (HB j) as H. unfold grid_box.
+  destruct (Nat.lt_ge_cases j (length B)) as [Hj|Hj].
+  - rewrite (nth_indep _ zero_iv (gdown k (fst zero_iv), gup k (snd zero_iv)))
+      by (rewrite map_length; exact Hj).
+    rewrite (map_nth (fun b => (gdown k (fst b), gup k (snd b)))).
+    unfold in_iv in *. cbn [fst snd]. destruct H as [H1 H2].
+    split; [eapply Rle_trans; [apply gdown_le|exact H1]|eapply Rle_trans; [exact H2|apply gup_ge]].
+  - rewrite nth_overflow by (rewrite map_length; exact Hj).
+    rewrite nth_overflow in H by exact Hj. exact H.
+Qed.
 
 Fixpoint set_nth (B : list iv) (k : nat) (x : iv) : list iv :=
   match B, k with
@@ -976,6 +1120,7 @@ Fixpoint check_tree (ok : list iv -> rleaf -> bool) (B : list iv) (t : rtree) : 
       let b := nth k B zero_iv in
       Nat.ltb k (length B) && check_tree ok (set_nth B k (fst b, mid b)) l
       && check_tree ok (set_nth B k (mid b, snd b)) r
+  | RGrid k' t' => check_tree ok (grid_box k' B) t'
   end.
 
 (** The leaves cover the box: a property every leaf's box gives holds on the whole box. *)
@@ -983,7 +1128,7 @@ Theorem tree_sound (ok : list iv -> rleaf -> bool) (p : nat -> R) (P : Prop) :
   (forall B l, ok B l = true -> in_box B p -> P) ->
   forall t B, check_tree ok B t = true -> in_box B p -> P.
 Proof.
-  intros Hleaf t. induction t as [l|k l IHl r IHr]; intros B Hc HB; simpl in Hc.
+  intros Hleaf t. induction t as [l|k l IHl r IHr|g t IH]; intros B Hc HB; simpl in Hc.
   - exact (Hleaf B l Hc HB).
   - rewrite !andb_true_iff in Hc. destruct Hc as [[Hk Hl] Hr]. apply Nat.ltb_lt in Hk.
     pose proof (HB k) as Hpk. unfold in_iv in Hpk.
@@ -992,6 +1137,7 @@ Proof.
       destruct (Nat.eqb_spec j k) as [->|_]; [unfold in_iv; cbn [fst snd]; lra|apply HB].
     + apply (IHr _ Hr). intros j. rewrite nth_set_nth by exact Hk.
       destruct (Nat.eqb_spec j k) as [->|_]; [unfold in_iv; cbn [fst snd]; lra|apply HB].
+  - exact (IH _ Hc (grid_box_in g B p HB)).
 Qed.
 
 Definition pos_ok (I : iv) (c : Q) : bool := negb (Qle_bool c 0) && Qle_bool c (fst I).
@@ -1002,16 +1148,30 @@ Proof.
   apply Qlt_of_negb in H1. apply Qle_bool_R in H2. rewrite Q2R_0 in H1. lra.
 Qed.
 
+(** The three enclosures of a positive leaf, N_1 and N_2 computed once: the same
+    intervals as [eiv] of [n_expr 0], [n_expr 1] and [det_expr] ([pos_leaf_eiv]), since
+    [det_expr] is built from [n_expr 0] and [n_expr 1]. *)
+Definition pos_leaf (B : list iv) (T : iv) (c0 c1 c2 : Q) : bool :=
+  let n0 := eiv B T (n_expr 0) in let n1 := eiv B T (n_expr 1) in
+  let det := isub (iscale 4 (imul n0 n1))
+                  (imul (isqr (nth 8 B zero_iv)) (imul (eiv B T (d_expr 0)) (eiv B T (d_expr 1)))) in
+  pos_ok n0 c0 && pos_ok n1 c1 && pos_ok det c2.
+
+Lemma pos_leaf_eiv B T c0 c1 c2 :
+  pos_leaf B T c0 c1 c2 = pos_ok (eiv B T (n_expr 0)) c0 && pos_ok (eiv B T (n_expr 1)) c1
+                          && pos_ok (eiv B T det_expr) c2.
+Proof. reflexivity. Qed.
+
 (** A leaf of a band certificate (the frequency t = w^2 is coordinate 9 of the box). *)
 Definition band_leaf (Sg : matQ) (chi2 : Q) (phic : list Q) (B : list iv) (l : rleaf) : bool :=
   let T := nth 9 B zero_iv in
   match l with
-  | RPos c0 c1 c2 => pos_ok (eiv B T (n_expr 0)) c0 && pos_ok (eiv B T (n_expr 1)) c1
-                     && pos_ok (eiv B T det_expr) c2
+  | RPos c0 c1 c2 => pos_leaf B T c0 c1 c2
   | RLin c0 c1 c2 s0 s1 s2 => lin_ok Sg chi2 phic B T (n_expr 0) c0 s0
                               && lin_ok Sg chi2 phic B T (n_expr 1) c1 s1
                               && lin_ok Sg chi2 phic B T det_expr c2 s2
   | ROut y => out_ok Sg chi2 phic B y
+  | RLinY c0 c1 c2 s0 s1 s2 y0 y1 y2 => lin_leaf Sg chi2 phic B T c0 c1 c2 s0 s1 s2 y0 y1 y2
   | _ => false
   end.
 
@@ -1081,10 +1241,10 @@ Proof.
   { unfold in_iv, x. cbn [fst snd]. rewrite !Q2R_red, !Q2R_mult. split; nra. }
   pose proof (root_box_in Si Sg eps ws thc chi2 r th x _ Hreg Henc Hr HT) as Hroot.
   refine (tree_sound _ (point th x) _ _ t _ Ht Hroot). intros B l Hl HB.
-  unfold band_leaf in Hl.
+  unfold band_leaf in Hl. cbv zeta in Hl.
   assert (HTx : in_iv (nth 9 B zero_iv) x).
   { pose proof (HB 9%nat) as H. unfold point in H. simpl in H. exact H. }
-  destruct l; try discriminate; rewrite ?andb_true_iff in Hl.
+  destruct l; try discriminate; rewrite ?pos_leaf_eiv, ?lin_leaf_dir, ?andb_true_iff in Hl.
   - destruct Hl as [[H0 H1] H2]. apply psd_of_conditions.
     + exact (pos_ok_sound _ _ _ H0 (eiv_sound _ _ _ _ _ HB HTx)).
     + exact (pos_ok_sound _ _ _ H1 (eiv_sound _ _ _ _ _ HB HTx)).
@@ -1094,6 +1254,10 @@ Proof.
     + exact (lin_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ th x Hreg Hr H1 HB HTx).
     + exact (lin_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ th x Hreg Hr H2 HB HTx).
   - exfalso. exact (out_ok_sound Si Sg eps ws thc chi2 B y th x Hreg Hr Hl HB).
+  - destruct Hl as [[H0 H1] H2]. apply psd_of_conditions.
+    + exact (lin_dir_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ _ th x Hreg Hr H0 HB HTx).
+    + exact (lin_dir_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ _ th x Hreg Hr H1 HB HTx).
+    + exact (lin_dir_ok_sound Si Sg eps ws thc chi2 B _ _ _ _ _ th x Hreg Hr H2 HB HTx).
 Qed.
 
 Definition robust_refutation_check (Si Sg : matQ) (eps : Q) (ws : list term) (thc : list Q)
