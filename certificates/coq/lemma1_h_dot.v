@@ -35,7 +35,6 @@ Hypothesis v_4_k_s_pos : 0 < v_4_k_s.
     (algebra (h = tr(R̄_r) - 1, R_r constant)) *)
 Theorem step1 : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
-  so3_norm.
   generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
   generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
@@ -46,7 +45,6 @@ Qed.
     (algebra (eq. (13))) *)
 Theorem step2 : (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))) = (v_4_k_s * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos.
-  so3_norm.
   generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
   generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.

@@ -40,7 +40,7 @@ Proof.
   - reflexivity.
   - exact (Rmult_le_pos _ _ Rle_0_1 Rle_0_1).
   - intros x1 x2 x3. exact (lam1_spec (mkV x1 x2 x3)).
-  - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
+  - intros x1 x2 x3. rewrite (evalM_Z env H1 (eq_refl true <: all_int_matrix H1 = true)). unfold H1. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. lra.
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
@@ -56,7 +56,7 @@ Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((tr (mmul v_1_A (madd (mmul (mT v_2
 Proof.
   exists 1, 1. split; [exact Rlt_0_1|]. split; [exact Rle_0_1|].
   rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).
-  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. field; sos_nonzero.
+  unfold target. cbv beta iota zeta delta [evalMZ qfR dotR map zeval meval hd tl env Qnum]. so3_unfold. lra.
 Qed.
 
 Theorem step1_by_sos : (tr (mmul v_1_A (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))) >= (lam1 * (tr (madd (mmul (mT v_2_G) v_2_G) (hat v_3_v)))).

@@ -39,7 +39,6 @@ Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul
     (algebra (φ(R) = tr(I - R)/2)) *)
 Theorem step1 : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) = ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l)))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
-  so3_norm.
   generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
   generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
@@ -61,7 +60,6 @@ Qed.
     (algebra (sk definition)) *)
 Theorem step3 : (((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (sk (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)))))) = (((-1/4) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_2_Rbar) (madd (mmul (mT (mmul (mT v_1_R_r) v_2_Rbar)) (mmul (mT v_1_R_r) v_3_R_l)) (mneg (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
-  so3_norm.
   generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
   generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
   generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
@@ -114,7 +112,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
   assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
   assert (E : (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))) + (- (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))))) = (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))).
-  { so3_norm. generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_poly. }
+  { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_poly. }
   exact (le_by_slack _ _ _ E T4).
 Qed.
 

@@ -42,7 +42,6 @@ Hypothesis lam1_spec : lam_min_spec (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul 
     (algebra (φ(R) = tr(I - R)/2)) *)
 Theorem step1 : ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s)))))))) = ((-1/2) * (tr (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
-  so3_norm_hat.
   generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
   generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.
@@ -64,7 +63,6 @@ Qed.
     (algebra (linearity)) *)
 Theorem step3 : ((-1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (madd (mscale v_4_k_s (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s)))))) = ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))).
 Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_nonzero q_v_2_Rbar_nonzero q_v_3_R_l_nonzero v_4_k_s_pos lam1_spec.
-  so3_norm_hat.
   generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r.
   generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l.
   generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar.

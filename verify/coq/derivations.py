@@ -458,10 +458,12 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
     """Tactics proving ``lhs = rhs`` (any shape) from the generators' vanishing.
 
     First with rotations as free matrices (conditions on rotations left out), as they
-    stand and after the prelude's matrix-level normal form ``so3_norm``
-    (:mod:`verify.coq.normal`: rotations meeting their transposes cancel); when the
+    stand, and only when that fails after the prelude's matrix-level normal form
+    ``so3_norm`` (:mod:`verify.coq.normal`: rotations meeting their transposes cancel;
+    of ``so3_norm`` and ``so3_norm_hat``, the one with fewer terms is written); when the
     identity holds there, ``generalize`` forgets that they are rotations and ``field``
-    works on small polynomials (of the two, the one with fewer terms is written).
+    works on small polynomials. The normal form is tried second because its
+    ``autorewrite`` costs more CPU in ``coqc`` than the larger polynomials save.
     Otherwise with some rotations in quaternion parameters, or with their
     orthogonality as cofactors, or all in quaternion parameters.
     """
@@ -470,7 +472,8 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
     rotations = [sec.naming.variable(v) for v in variables_of(lhs, rhs)
                  if v.kind == "rotation"]
     attempts = []
-    free_attempts = 0  # the first ones: with free matrices, the smaller polynomials win
+    free_attempts = 0  # the first ones: with free matrices (the first that works as the
+    # rotations stand; else the normal form with the smaller polynomials)
     if rotations and sec.gatoms is not None:
         free = [c for c in conds
                 if not any(v.kind == "rotation" for v in variables_of(c.lhs, c.rhs))]
@@ -518,7 +521,7 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
                    for x, y in zip(left, right, strict=True))
         if best is None or size < best[0]:
             best = (size, script)
-        if k >= free_attempts - 1:
+        if k == 0 or k >= free_attempts - 1:
             return best[1]
     if best is not None:
         return best[1]

@@ -25,7 +25,8 @@ by computation: the tactic ``sos_reify`` reads the unfolded statement into an ex
 ``sx`` (sums, products, integers, parameters, ``/ |q|^2``), Coq computes its value as a
 polynomial over a product of norms and compares it with ``T`` (or ``H``'s entries) by
 ``vm_compute`` (``link_ok``, ``exact_ok``: soundness proved once). Otherwise (charts,
-free matrices) ``field`` proves them after unfolding the prelude.
+free matrices) ``field`` proves them after unfolding the prelude, or ``lra`` where there
+is no rotation, chart, angle or denominator (the identities are then polynomial).
 
 Charts. A unit vector ``xi`` is stated with the hypothesis ``xi = stereo a b`` and an
 angle ``theta`` with ``cos theta``, ``sin theta`` given by ``t = tan(theta/2)``: the
@@ -248,6 +249,11 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
     qs_text = "[" + "; ".join(str(pos) for pos, _ in positions) + "]%nat"
     hq_text = "".join(f"apply Forall_cons; [exact {h}|]; " for _, h in positions)
     rewrites = "".join(f"{r}; " for r in unfold_extra)
+    # With no rotation (|q|^2), chart or angle and no denominator in the slack, every
+    # identity below is polynomial once unfolded: lra decides it (a monomial is an atom)
+    # many times faster than field; otherwise field, with the non-zero denominators.
+    closer = ("lra" if not rot_positions and not unfold_extra and not any(exps.values())
+              else "field; sos_nonzero")
     body: list[str] = []
     block_names: list[str] = []
     psd_proofs: list[str] = []
@@ -290,7 +296,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
                      f"  unfold {hname}. apply mult_psd_scalar.",
                      "  rewrite zeval_peval by (vm_compute; reflexivity).",
                      f"  match goal with |- 0 <= ?g => replace g with {plan.scalar} "
-                     f"by ({UNFOLD}; {rewrites}so3_unfold; field; sos_nonzero) end.",
+                     f"by ({UNFOLD}; {rewrites}so3_unfold; {closer}) end.",
                      f"  exact {plan.scalar_proof}.", "Qed.", ""]
         elif k == 3 and plan.matrix and reflective:
             d = [0] * len(env)
@@ -315,7 +321,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
                      f"  - intros x1 x2 x3. exact ({plan.matrix_proof} (mkV x1 x2 x3)).",
                      f"  - intros x1 x2 x3. rewrite (evalM_Z env {hname} (eq_refl true <: "
                      f"all_int_matrix {hname} = true)). unfold {hname}. {UNFOLD}. "
-                     f"{rewrites}so3_unfold. field; sos_nonzero.", "Qed.", ""]
+                     f"{rewrites}so3_unfold. {closer}.", "Qed.", ""]
         else:
             raise CoqExportError(f"block {b_index}: a multiplier of size {k} with grounds "
                                  f"{grounds!r} is not exported")
@@ -373,7 +379,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
             f"  exists {d_text}, {f_text}. split; [exact {d_pos}|]. "
             f"split; [exact {f_nonneg}|].",
             "  rewrite (zeval_peval env target (eq_refl true <: all_int target = true)).",
-            f"  unfold target. {UNFOLD}. {rewrites}so3_unfold. field; sos_nonzero.",
+            f"  unfold target. {UNFOLD}. {rewrites}so3_unfold. {closer}.",
             "Qed.", ""]
     text = "\n".join([
         *head, "", HEADER, f"Section {section}.", "", *lines,
