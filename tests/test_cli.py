@@ -25,8 +25,16 @@ def test_help_lists_every_command():
         assert cmd in out.stdout
 
 
+#: Claims of each verdict and with derivations, fast (the whole run is in
+#: test_symbolic_and_claims and in the README's main command).
+SAMPLE = ("sec2.wtw-invertible", "sec2.stealthiness", "lemma1.trace-inequality",
+          "lemma1.nagumo-gradient", "lemma1.h-dot", "lemma1.boundary", "thm1.v-dot",
+          "thm1.phi")
+
+
 def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys):
-    assert main(["all", "--quick", "--out", str(tmp_path), "--certificates",
+    only = [arg for claim in SAMPLE for arg in ("--only", claim)]
+    assert main(["all", "--quick", *only, "--out", str(tmp_path), "--certificates",
                  str(tmp_path / "certificates")]) == 0  # not into the checkout's certificates/
     data = json.loads((tmp_path / "report.json").read_text())
     verdicts = {c["id"]: c["verdict"] for c in data["claims"]}
@@ -42,7 +50,7 @@ def test_all_writes_reports_and_strict_fails_on_refuted_claims(tmp_path, capsys)
         if e["kind"] == "derivation"
         for s in e["data"]["steps"]
     ]
-    assert len(steps) > 40 and all(s["verdict"] in ("verified", "refuted") for s in steps)
+    assert len(steps) > 20 and all(s["verdict"] in ("verified", "refuted") for s in steps)
     md = (tmp_path / "report.md").read_text()
     assert "Repaired statement" in md and "sec2.stealthiness" in md
     page = (tmp_path / "report.html").read_text()
