@@ -171,11 +171,6 @@ def test_a_tree_is_nested_in_pre_order():
         robust.tree_literal([["positive", "1", "1", "1"], 0], False)
     with pytest.raises(CoqExportError, match="outside"):
         robust.tree_literal([["outside", ["0"] * 9]], False)
-    assert robust.tree_literal([["outside", ["0"] * 9]], False, [[mpq(1, 2)] + [mpq(0)] * 8]) \
-        == "(RLeaf (ROut [(1 # 2); (0 # 1); (0 # 1); (0 # 1); (0 # 1); (0 # 1); (0 # 1); " \
-        "(0 # 1); (0 # 1)]))"
-    with pytest.raises(CoqExportError, match="more directions"):
-        robust.tree_literal([["outside", ["0"] * 9]], False, [[mpq(1)] * 9, [mpq(1)] * 9])
 
 
 def test_a_certificate_the_checker_refuses_is_not_exported(tmp_path):

@@ -34,7 +34,7 @@ written, and Coq re-checks it whatever its numbers.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -64,15 +64,10 @@ def _list(values) -> str:
     return "[" + "; ".join(_q(v) for v in values) + "]"
 
 
-def _leaf(node: list, refutation: bool, directions: Iterator[list] | None) -> str:
+def _leaf(node: list, refutation: bool) -> str:
     kind = node[0]
     if kind == "outside":
-        if refutation or directions is None:
-            raise CoqExportError(OUTSIDE_REASON)
-        direction = next(directions, None)
-        if direction is None:
-            raise CoqExportError("more leaves 'outside' than directions")
-        return f"RLeaf (ROut {_list(direction)})"
+        raise CoqExportError(OUTSIDE_REASON)
     values = [mpq(v) for v in node[1:]]
     if not refutation and kind == "positive" and len(values) == 3:
         return "RLeaf (RPos " + " ".join(_q(v) for v in values) + ")"
@@ -85,12 +80,10 @@ def _leaf(node: list, refutation: bool, directions: Iterator[list] | None) -> st
     raise CoqExportError(f"leaf {kind!r} is not one RobustCert.v checks")
 
 
-def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None = None
-                 ) -> str:
+def tree_literal(tree: list, refutation: bool) -> str:
     """The pre-order tree (an int k splits coordinate k, left half first; a list is a
-    leaf) as a nested Coq ``rtree``; ``directions`` gives the leaves *outside* their
-    ``ROut`` directions, in pre-order."""
-    pending = iter(directions) if directions is not None else None
+    leaf) as a nested Coq ``rtree``, its leaves as the certificate writes them (a leaf
+    *outside* needs the region: :func:`band_tree_literal`)."""
     out: list[str] = []
     position = 0
 
@@ -105,13 +98,11 @@ def tree_literal(tree: list, refutation: bool, directions: Sequence[list] | None
             walk()
             out.append(")")
         else:
-            out.append("(" + _leaf(node, refutation, pending) + ")")
+            out.append("(" + _leaf(node, refutation) + ")")
 
     walk()
     if position != len(tree):
         raise CoqExportError("the tree has nodes after its last box")
-    if pending is not None and next(pending, None) is not None:
-        raise CoqExportError("more directions than leaves 'outside'")
     return "".join(out)
 
 
@@ -175,7 +166,7 @@ def band_tree_literal(tree: list, region, band: tuple, enclosure: Sequence) -> s
             found = short(box, values[:3], kind == "linear")
             if found is not None:
                 return found
-        return "(" + _leaf(node, False, None) + ")"
+        return "(" + _leaf(node, False) + ")"
 
     return walk(root)
 

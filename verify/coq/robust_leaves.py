@@ -88,6 +88,7 @@ def direction_term(g: Interval, b: Interval, yk: mpq, pc: mpq) -> mpq:
 
 
 def quadratic(y: Sequence[mpq], covariance: Sequence[Sequence[mpq]]) -> mpq:
+    """yᵀ Σ y, exactly."""
     n = len(y)
     return sum((y[i] * covariance[i][j] * y[j] for i in range(n) for j in range(n)), mpq(0))
 

@@ -21,6 +21,8 @@ from collections.abc import Sequence
 
 from gmpy2 import mpq
 
+from verify.coq.robust_leaves import quadratic
+
 Interval = tuple[mpq, mpq]
 
 #: The finest grid tried before the exact direction is written.
@@ -31,11 +33,9 @@ def dual_value(y: Sequence[mpq], box: Sequence[Interval], center: Sequence[mpq],
                covariance: Sequence[Sequence[mpq]]) -> tuple[mpq, mpq]:
     """(lb, yᵀ Σ y) with lb the least value of y.(φ - φc) over the box: the terms of
     RobustCert.v's ``out_ok`` (which checks lb + lb - yᵀ Σ y > χ²)."""
-    n = len(y)
     lb = sum((min(y[k] * (box[k][0] - center[k]), y[k] * (box[k][1] - center[k]))
-              for k in range(n)), mpq(0))
-    q = sum((y[i] * covariance[i][j] * y[j] for i in range(n) for j in range(n)), mpq(0))
-    return lb, q
+              for k in range(len(y))), mpq(0))
+    return lb, quadratic(y, covariance)
 
 
 def passes(y: Sequence[mpq], box: Sequence[Interval], center: Sequence[mpq],
