@@ -340,7 +340,7 @@ def _invariant_row_space_mod(A: nmod_mat, C: nmod_mat, p: int) -> tuple[nmod_mat
     return W, pivots
 
 
-def _rational_reconstruction(a: int, m: int) -> fmpq | None:
+def rational_reconstruction(a: int, m: int) -> fmpq | None:
     """x/y with x = a y (mod m), |x|, y <= sqrt(m/2) (Wang's algorithm), or None."""
     bound = int(gmpy2.isqrt(m // 2))
     r0, r1, t0, t1 = m, a % m, 0, 1
@@ -366,7 +366,7 @@ def _reconstruct(residues: list[tuple[int, list[list[int]]]], rows: int, cols: i
     entries = []
     for i in range(rows):
         for c in range(cols):
-            x = _rational_reconstruction(values[i][c], modulus)
+            x = rational_reconstruction(values[i][c], modulus)
             if x is None:
                 return None
             entries.append(x)

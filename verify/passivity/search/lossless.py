@@ -37,6 +37,7 @@ from gmpy2 import mpq, mpz
 from verify.passivity.check import exact as ex
 from verify.passivity.check.certificate import ExactModel, check_kyp
 from verify.passivity.check.kyp_int import IntMatrix, negated_kyp_matrix
+from verify.passivity.check.realization import rational_reconstruction
 
 #: primes tried before the route gives up (26 bits each)
 MAX_PRIMES = 256
@@ -137,15 +138,11 @@ def _reconstruct(values: list[list[int]], modulus: int) -> ex.RationalMatrix | N
             if abs(y) <= bound:
                 line.append(mpq(y, den))
                 continue
-            r0, r1, t0, t1 = mpz(modulus), mpz(v * den % modulus), mpz(0), mpz(1)
-            while r1 > bound:
-                q = r0 // r1
-                r0, r1, t0, t1 = r1, r0 - q * r1, t1, t0 - q * t1
-            if t1 == 0 or abs(t1) > bound or gmpy2.gcd(r1, t1) != 1:
+            x = rational_reconstruction(int(v * den % modulus), int(modulus))
+            if x is None:
                 return None
-            if t1 < 0:
-                r1, t1 = -r1, -t1
-            line.append(mpq(r1, t1 * den))
+            t1 = mpz(int(x.q))  # x = r1 / t1 in lowest terms, t1 > 0
+            line.append(mpq(int(x.p), t1 * den))
             den *= t1
             if den > bound:
                 return None
