@@ -286,8 +286,9 @@ def unit_levels(folder: Path, units: list[str]) -> list[list[str]]:
     needs = {}
     for rel in units:
         text = (folder / rel).read_text(encoding="utf-8")
-        needs[rel] = {names[name] for name in names if name != rel[:-2]
-                      and re.search(rf"\bRequire\b[^.]*\b{re.escape(name)}\b", text)}
+        needs[rel] = {names[name] for match in _REQUIRE.finditer(text)
+                      for name in match.group(1).split()
+                      if name in names and name != rel[:-2]}
     levels: list[list[str]] = []
     done: set[str] = set()
     left = list(units)
