@@ -291,7 +291,9 @@ def test_verify_all_step_writes_the_paper_development_only_into_an_existing_fold
     write_paper_development(certs)
     written = {p.name: p.read_text() for p in (certs / "coq").iterdir()}
     assert written == development_files(paper_development_units(certs))
-    assert "Cert_reconstructed_k_s_3_0_99babda880e6.v" in written
+    # the certificate's unit and Theorem 1 with its human: modules of one bundle
+    assert "Module Cert_reconstructed_k_s_3_0_99babda880e6." in written["Certificates.v"]
+    assert "Module Thm1_reconstructed_k_s_3_0_99babda880e6." in written["Certificates.v"]
 
 
 def test_coq_command_on_a_certificate_of_another_model_exits_1(tmp_path, capsys):

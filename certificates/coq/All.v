@@ -1,40 +1,7 @@
-From VerifyCoq Require lemma1_spectrum.
-From VerifyCoq Require lemma1_spectrum_projector.
-From VerifyCoq Require lemma1_spectrum_rank.
-From VerifyCoq Require lemma1_trace_form.
-From VerifyCoq Require sec3_rbar_dot_form.
-From VerifyCoq Require lemma1_h_dot.
-From VerifyCoq Require lemma1_boundary_square.
-From VerifyCoq Require lemma1_boundary_h_dot.
-From VerifyCoq Require lemma1_boundary_sign_direct.
-From VerifyCoq Require lemma1_gradient_form.
-From VerifyCoq Require lemma1_gradient_nonzero.
-From VerifyCoq Require lemma1_gradient_vanishes_at_pi.
-From VerifyCoq Require lemma1_trace_inequality_psd.
-From VerifyCoq Require lemma1_trace_inequality_sym_psd.
-From VerifyCoq Require thm1_phi.
-From VerifyCoq Require thm1_S_r_dot.
-From VerifyCoq Require thm1_S_rl_dot.
-From VerifyCoq Require thm1_S_h_sign.
-From VerifyCoq Require thm1_V_dot.
-From VerifyCoq Require thm1_V_dot_zero_implies_sync.
-From VerifyCoq Require thm1_V_dot_zero_on_sync.
-From VerifyCoq Require thm1_lasalle_derivative.
-From VerifyCoq Require thm1_lasalle_derivative_from_sk_only.
-From VerifyCoq Require sos_lemma1_boundary_h_dot_step4.
-From VerifyCoq Require sos_lemma1_boundary_h_dot_step5.
-From VerifyCoq Require sos_lemma1_boundary_sign_direct_step1.
-From VerifyCoq Require sos_lemma1_trace_inequality_psd_step1.
-From VerifyCoq Require sos_lemma1_trace_inequality_sym_psd_step1.
-From VerifyCoq Require sos_thm1_S_r_dot_step7.
-From VerifyCoq Require sos_thm1_S_rl_dot_step4.
-From VerifyCoq Require sos_thm1_V_dot_step3.
-From VerifyCoq Require Cert_nonpassive_human_identified_robust_band_0_1_46_e70cf8beb9e5.
-From VerifyCoq Require Cert_nonpassive_human_identified_robust_refuted_at_2_88945_ca067ce3563c.
-From VerifyCoq Require Cert_passive_human_identified_robust_band_0_7_97_3da104e65018.
-From VerifyCoq Require Cert_reconstructed_k_s_2_5_band_0_1_5_f0739b7ae628.
-From VerifyCoq Require Cert_reconstructed_k_s_3_0_99babda880e6.
-From VerifyCoq Require Thm1_reconstructed_k_s_3_0_99babda880e6.
+From VerifyCoq Require Import Lemma1Steps.
+From VerifyCoq Require Import Thm1Steps.
+From VerifyCoq Require Import SosSteps.
+From VerifyCoq Require Import Certificates.
 From VerifyCoq Require Conclusions.
 
 (** Every top theorem of the development. *)

@@ -144,13 +144,16 @@ def audit_assumptions(output: str, allowed: Iterable[str] = ALLOWED_AXIOMS, *,
 #: The first words of the top-level commands the exporters' templates write (a command
 #: between ``Proof`` and ``Qed`` is a tactic, and only ``Qed`` may end it); ``Local`` only
 #: as ``Local Notation`` or ``Local Open``, ``Print`` only as ``Print Assumptions``
-#: (``All.v``).
+#: (``All.v``), ``Module`` only as ``Module <name>`` (a unit of a bundle,
+#: :mod:`verify.coq.bundle`).
 TEMPLATE_COMMANDS: frozenset[str] = frozenset({
-    "From", "Require", "Import", "Open", "Section", "End", "Variable", "Variables",
+    "From", "Require", "Import", "Open", "Section", "Module", "End", "Variable", "Variables",
     "Hypothesis", "Hypotheses", "Local", "Let", "Definition", "Theorem", "Lemma", "Proof",
     "Print",
 })
 _TWO_WORDS = {"Local": ("Notation", "Open"), "Print": ("Assumptions",)}
+_PLAIN_MODULE = re.compile(
+    r"Module\s+(?!(?:Type|Import|Export)\b)[A-Za-z][A-Za-z0-9_]*\Z")
 
 
 def sentences(text: str) -> list[str]:
@@ -183,7 +186,8 @@ def template_problems(files: Mapping[str, str], skip: Iterable[str] = ()) -> lis
                         found.append(f"{name}: a proof ends with {sentence[:40]!r}, not Qed")
                 continue
             if head not in TEMPLATE_COMMANDS or (
-                    head in _TWO_WORDS and (len(words) < 2 or words[1] not in _TWO_WORDS[head])):
+                    head in _TWO_WORDS and (len(words) < 2 or words[1] not in _TWO_WORDS[head])
+            ) or (head == "Module" and not _PLAIN_MODULE.match(sentence)):
                 found.append(f"{name}: command outside the template: {sentence[:60]!r}")
             in_proof = head == "Proof"
         if in_proof:

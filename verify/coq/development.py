@@ -25,7 +25,12 @@ from importlib import resources
 from pathlib import Path
 
 from verify.artefacts.atomic import write_all_atomic
-from verify.coq.audit import forbidden_commands, statement_problems, template_problems
+from verify.coq.audit import (
+    forbidden_commands,
+    stated_theorems,
+    statement_problems,
+    template_problems,
+)
 from verify.coq.unit import CoqExportError, CoqUnit
 from verify.process_tree import die_with_parent
 
@@ -84,26 +89,55 @@ def prelude_digest() -> str:
     return digest.hexdigest()
 
 
+def _files_of_units(units: Sequence[CoqUnit]) -> dict[str, list[CoqUnit]]:
+    """The units by the file (stem) they are written into, in order of first use: a
+    bundle's units together (:mod:`verify.coq.bundle`), every other unit alone."""
+    groups: dict[str, list[CoqUnit]] = {}
+    for unit in units:
+        groups.setdefault(unit.bundle or unit.name, []).append(unit)
+    bundled = {unit.name for unit in units if unit.bundle}
+    for stem, group in groups.items():
+        if len(group) > 1 and any(not unit.bundle for unit in group):
+            raise ValueError(f"Coq bundle name clashes with a unit's name: {stem}")
+        for unit in group:
+            if unit.bundle:
+                continue
+            used = {name for match in _REQUIRE.finditer(unit.text)
+                    for name in match.group(1).split()}
+            if used & bundled:
+                raise ValueError(f"Coq unit {unit.name} requires a unit written into a "
+                                 f"bundle: {sorted(used & bundled)[0]}")
+    return groups
+
+
 def render_development(units: Sequence[CoqUnit], *,
                        extra: Mapping[str, str] | None = None) -> dict[str, str]:
     """Every file of the development by relative path (no I/O; bytes depend only on units).
 
+    A unit with a :attr:`~verify.coq.unit.CoqUnit.bundle` is a module of that file
+    (:func:`verify.coq.bundle.bundle_text`), which ``All.v`` imports so that its
+    theorems keep their names ``<unit>.<theorem>``.
     ``extra``: further files (not Coq sources, e.g. the list of certificates not exported).
     """
+    from verify.coq.bundle import bundle_text
+
     names = [unit.name for unit in units]
     if len(set(names)) != len(names):
         raise ValueError("two Coq units share a module name")
+    groups = _files_of_units(units)
     prelude = prelude_sources()
-    clash = set(names) & set(prelude) | ({"All"} & set(names))
+    clash = (set(names) | set(groups)) & set(prelude) | ({"All"} & (set(names) | set(groups)))
     if clash:
         raise ValueError(f"Coq unit names clash with the prelude: {sorted(clash)}")
     if units:
         prelude = required_prelude(prelude, [unit.text for unit in units])
     files: dict[str, str] = {f"{name}.v": text for name, text in prelude.items()}
-    files.update({f"{unit.name}.v": unit.text for unit in units})
-    order = [*prelude, *names]
+    for stem, group in groups.items():
+        files[f"{stem}.v"] = bundle_text(stem, group) if group[0].bundle else group[0].text
+    order = [*prelude, *groups]
     files["_CoqProject"] = f"-R . {LOGICAL_ROOT}\n" + "".join(f"{name}.v\n" for name in order)
-    lines = [f"From {LOGICAL_ROOT} Require {name}." for name in names]
+    lines = [f"From {LOGICAL_ROOT} Require {'Import ' if group[0].bundle else ''}{stem}."
+             for stem, group in groups.items()]
     tops = [f"{unit.name}.{theorem}" for unit in units if not unit.machine_words
             for theorem in unit.theorems]
     words = [f"{unit.name}.{theorem}" for unit in units if unit.machine_words
@@ -142,12 +176,28 @@ def audit_problems(files: Mapping[str, str], units: Sequence[CoqUnit]) -> list[s
     """What the audit refuses in rendered (or re-read) files: forbidden commands,
     commands outside the templates (units and ``All.v``; the prelude is ours), and
     statements that differ from those the exporter made (the round trip)."""
+    from verify.coq.bundle import module_texts
+
     prelude = [f"{name}.v" for name in prelude_sources()]
     problems = forbidden_commands(files) + template_problems(files, skip=prelude)
-    for unit in units:
-        if unit.statements:
-            problems += statement_problems(f"{unit.name}.v", files.get(f"{unit.name}.v", ""),
-                                           dict(unit.statements), dict(unit.terms))
+    for stem, group in _files_of_units(units).items():
+        rel = f"{stem}.v"
+        text = files.get(rel, "")
+        if not group[0].bundle:
+            texts = {group[0].name: text}
+        else:
+            header, texts = module_texts(text)
+            extra = [name for name in texts if name not in {u.name for u in group}]
+            problems += [f"{rel}: module {name} is not a unit the exporter wrote"
+                         for name in extra]
+            problems += [f"{rel}: {name} stated before the first module"
+                         for name in stated_theorems(header)]
+        for unit in group:
+            if unit.name not in texts:
+                problems.append(f"{rel}: unit {unit.name} is missing")
+            elif unit.statements:
+                problems += statement_problems(rel, texts[unit.name], dict(unit.statements),
+                                               dict(unit.terms))
     return problems
 
 

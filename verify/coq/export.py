@@ -7,14 +7,14 @@ exact-band certificates, :mod:`verify.coq.band_fd`; the paper's SOS certificates
 the reason, machine-readably (:func:`not_exported_json`, written beside the development
 as ``NOT_EXPORTED.json``). :func:`paper_development_units` is the paper's development:
 the derivation units of :mod:`verify.coq.paper` when that module is installed, then the
-certificate units.
+certificate units, written as a few bundles (:mod:`verify.coq.bundle`).
 """
 
 from __future__ import annotations
 
 import json
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from verify.coq.band import gkyp_unit_from_file
@@ -173,6 +173,19 @@ def paper_development_units(certificates_dir: Path) -> Export:
         elif fate.startswith("refused: "):
             left.append(NotExported(item.file, item.schema,
                                     PAPER_SOS_REFUSED + fate.removeprefix("refused: ")))
-    return Export((*derivation_units(), *sos_units, *certs.units, *conclusion_units()),
-                  tuple(left),
-                  certs.partly)
+    steps = derivation_units()
+    units = (*in_bundle([u for u in steps if not u.name.startswith("thm1_")], "Lemma1Steps"),
+             *in_bundle([u for u in steps if u.name.startswith("thm1_")], "Thm1Steps"),
+             *in_bundle(sos_units, "SosSteps"),
+             *in_bundle(certs.units, "Certificates"),
+             *conclusion_units())
+    return Export(units, tuple(left), certs.partly)
+
+
+def in_bundle(units: Sequence[CoqUnit], bundle: str) -> list[CoqUnit]:
+    """The units written as modules of one file ``bundle`` (:mod:`verify.coq.bundle`):
+    the paper's development loads the libraries once per bundle instead of once per
+    unit. A single unit keeps its own file."""
+    if len(units) < 2:
+        return list(units)
+    return [replace(unit, bundle=bundle) for unit in units]

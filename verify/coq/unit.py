@@ -49,10 +49,15 @@ class CoqUnit:
     #: specifications (:data:`verify.coq.audit.MACHINE_INTEGER_AXIOMS`), and no other
     #: unit's may.
     machine_words: bool = False
+    #: The file the unit is written into, as a module of its own name beside the other
+    #: units of that bundle (:mod:`verify.coq.bundle`); empty: a file of its own.
+    bundle: str = ""
 
     def __post_init__(self) -> None:
         if not _COQ_IDENT.match(self.name):
             raise ValueError(f"Coq module name must be an identifier, got name={self.name!r}")
+        if self.bundle and not _COQ_IDENT.match(self.bundle):
+            raise ValueError(f"Coq bundle name must be an identifier, got {self.bundle!r}")
         for theorem in self.theorems:
             if not _COQ_IDENT.match(theorem):
                 raise ValueError(f"Coq theorem name must be an identifier, got {theorem!r}")
