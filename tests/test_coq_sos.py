@@ -86,7 +86,7 @@ def test_the_sos_units_have_no_forbidden_command_and_print_their_assumptions(sos
     sos = {k: v for k, v in files.items() if k.startswith("sos_") or k == "SOSCert.v"}
     assert len(sos) == 9
     assert forbidden_commands(sos) == []
-    all_v = files["All.v"]  # one Print Assumptions of the tuple of every top theorem
+    all_v = files["All.v"]  # one Print Assumptions of a term naming every top theorem
     tuple_text = all_v[all_v.index("top_theorems"):all_v.index("Print Assumptions")]
     assert all_v.rstrip().endswith("Print Assumptions top_theorems.")
     for unit in units:
