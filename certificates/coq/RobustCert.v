@@ -722,9 +722,10 @@ Lemma paper_hform th w z :
     + 2 * ((th 8%nat + th 9%nat) * (fst (z 0%nat) * fst (z 1%nat) + snd (z 0%nat) * snd (z 1%nat))
            - 0 * (fst (z 0%nat) * snd (z 1%nat) - snd (z 0%nat) * fst (z 1%nat))).
 Proof.
-  intros D0 D1 N0 N1 H0 H1. unfold D0, D1, N0, N1 in *.
-  unfold hform, paper_herm, paper_H, cadd, cmul, cconj, cdiv, num_at, den_at in *. simpl in *.
-  field. split; assumption.
+  (* with [N_i] and [D_i] kept as atoms, [field] works on a small rational function *)
+  intros D0 D1 N0 N1 H0 H1.
+  unfold hform, paper_herm, paper_H, cadd, cmul, cconj, cdiv. cbn [sumR fst snd].
+  fold D0 D1 N0 N1. field. split; assumption.
 Qed.
 
 Lemma psd_of_conditions th w :

@@ -116,11 +116,11 @@ Proof. m_entries. Qed.
 
 Lemma mderiv_sk (A : R -> M3) (t : R) (DA : M3) :
   is_mderiv A t DA -> is_mderiv (fun s => sk (A s)) t (sk DA).
-Proof. intro H. pose proof (d_const (1/2) t). pose proof (d_const (-1) t). m_entries. Qed.
+Proof. intro H. apply mderiv_mscale, mderiv_msub; [ exact H | apply mderiv_mT, H ]. Qed.
 
 Lemma mderiv_sym (A : R -> M3) (t : R) (DA : M3) :
   is_mderiv A t DA -> is_mderiv (fun s => sym (A s)) t (sym DA).
-Proof. intro H. pose proof (d_const (1/2) t). m_entries. Qed.
+Proof. intro H. apply mderiv_mscale, mderiv_madd; [ exact H | apply mderiv_mT, H ]. Qed.
 
 Lemma mderiv_hat (u : R -> V3) (t : R) (du : V3) :
   is_vderiv u t du -> is_mderiv (fun s => hat (u s)) t (hat du).

@@ -514,7 +514,9 @@ Lemma hform2_eq (Nv : nat -> nat -> R * R) (p q : R) (z : nat -> R * R) :
      + 2 * (sr 0%nat 1%nat * (x1 * x2 + y1 * y2) - si 0%nat 1%nat * (x1 * y2 - y1 * x2)))
     / (p * p + q * q).
 Proof.
-  intros Hn. unfold hform, herm_of, cadd, cmul, cconj, cdiv. simpl. field. exact Hn.
+  (* linear in 1 / (p^2 + q^2): with its inverse as an atom, lra decides it *)
+  intros _. unfold hform, herm_of, cadd, cmul, cconj, cdiv. simpl. cbv zeta. unfold Rdiv.
+  generalize (/ (p * p + q * q)); intro t. lra.
 Qed.
 
 Lemma hform1_eq (Nv : nat -> nat -> R * R) (p q : R) (z : nat -> R * R) :

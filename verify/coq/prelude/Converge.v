@@ -443,7 +443,7 @@ Proof.
   destruct Hl as [Ol _], Hb as [Ob _].
   destruct Rl as [a b c d e f g h i], Rb as [a' b' c' d' e' f' g' h' i'].
   unfold mmul, mT, I3 in Ol, Ob; simpl in Ol, Ob. injection Ol; injection Ob; intros.
-  unfold phi, vsub, e3 in *. so3_unfold. nra.
+  unfold phi, vsub, e3 in *. so3_unfold. lra.
 Qed.
 
 (** For a rotation [M]: [hat(M^T w) = M^T hat(w) M]. *)
@@ -492,7 +492,7 @@ Lemma fro2_madd_le (A B : M3) : fro2 (madd A B) <= 2 * fro2 A + 2 * fro2 B.
 Proof.
   pose proof (fro2_nonneg (msub A B)) as P.
   assert (E : 2 * fro2 A + 2 * fro2 B - fro2 (madd A B) = fro2 (msub A B))
-    by (destruct A, B; unfold fro2; so3_unfold; ring).
+    by (destruct A, B; unfold fro2; so3_unfold; lra).
   lra.
 Qed.
 
@@ -523,7 +523,7 @@ Lemma fro2_sk_le (Q : M3) : fro2 (sk Q) <= fro2 (msub Q I3).
 Proof.
   pose proof (fro2_nonneg (msub (sym Q) I3)) as P.
   assert (E : fro2 (msub Q I3) = fro2 (sk Q) + fro2 (msub (sym Q) I3))
-    by (destruct Q; unfold fro2; so3_unfold; field).
+    by (destruct Q; unfold fro2; so3_unfold; lra).
   lra.
 Qed.
 

@@ -155,11 +155,26 @@ Lemma boundary_identity (w x y z lam : R) (A : M3) :
      + qform (msub (sym A) (mscale lam I3)) (mkV z 0 (- x))
      + qform (msub (sym A) (mscale lam I3)) (mkV (- y) x 0)) / (x * x + y * y + z * z).
 Proof.
-  intros Hb Hs. destruct A. unfold qform. so3_unfold.
-  assert (N : w * w + x * x + y * y + z * z = 2 * (x * x + y * y + z * z)) by lra.
-  rewrite N. field_simplify; [ | exact Hs | lra ].
-  assert (W : w ^ 2 = x ^ 2 + y ^ 2 + z ^ 2) by (simpl; rewrite !Rmult_1_r; lra).
-  rewrite W. field. split; [ nra | ]. intro Z. apply Hs. nra.
+  (* With t = 1/|v|^2 (= 2/|q|^2 on the boundary), both sides are polynomials in t;
+     their difference is a combination of t |v|^2 - 1 and w^2 - |v|^2, checked by lra
+     (cheaper than field_simplify on the rational entries). *)
+  intros Hb Hs.
+  assert (Ht : 2 / qn (mkQ w x y z) = / (x * x + y * y + z * z))
+    by (unfold qn; simpl; rewrite Hb; field; split; [exact Hs | intro E; apply Hs; lra]).
+  assert (Hi : / (x * x + y * y + z * z) * (x * x + y * y + z * z) = 1) by (field; exact Hs).
+  unfold rot. rewrite Ht. unfold Rdiv. revert Hi.
+  generalize (/ (x * x + y * y + z * z)); intros t Hi.
+  destruct A as [a11 a12 a13 a21 a22 a23 a31 a32 a33]. unfold qform. so3_unfold.
+  apply (eq_by_cofactors_2 _ _
+    (a11 * t * y * y + a11 * t * z * z - a12 * t * w * z - a12 * t * x * y + a13 * t * w * y
+     - a13 * t * x * z + a21 * t * w * z - a21 * t * x * y + a22 * t * w * w - a22 * t * y * y
+     - a23 * t * w * x - a23 * t * y * z - a31 * t * w * y - a31 * t * x * z + a32 * t * w * x
+     - a32 * t * y * z + a33 * t * w * w - a33 * t * z * z + 2 * lam)
+    (t * (x * x + y * y + z * z) - 1)
+    (- t * (- a11 * t * y * y - a11 * t * z * z + a12 * t * x * y + a13 * t * x * z
+            + a21 * t * x * y + a22 * t * y * y - a22 + a23 * t * y * z + a31 * t * x * z
+            + a32 * t * y * z + a33 * t * z * z - a33))
+    (w * w - (x * x + y * y + z * z))); lra.
 Qed.
 
 Lemma boundary_rate (w x y z : R) (A : M3) (lam : R) :

@@ -206,15 +206,44 @@ Proof. intros H E. rewrite H in E. lra. Qed.
 Lemma circle (t : R) : cos t * cos t + sin t * sin t - 1 = 0.
 Proof. pose proof (sin2_cos2 t) as H. unfold Rsqr in H. lra. Qed.
 
-(** [rot q] is a rotation: orthogonal with determinant 1. *)
+(** [rot q] is a rotation: orthogonal with determinant 1.  With [s = 2/|q|^2] and
+    [K = hat(v)], [R = I + s (w K + K^2)]; as polynomials in [s] and [q] (no division),
+    [R^T R = R R^T = I + s (2 - s |q|^2) K^2] and [det R - 1 = s |v|^2 (s |q|^2 - 2)],
+    which [lra] checks entry by entry (monomials are its atoms); [s |q|^2 = 2] ends
+    the proofs.  ([field] on the entries as rational functions costs many times more.) *)
+Lemma rot_scale_norm (q : quat) : qn q <> 0 -> 2 / qn q * qn q = 2.
+Proof. intro H. field. exact H. Qed.
+
 Lemma rot_orthogonal (q : quat) : qn q <> 0 -> mmul (mT (rot q)) (rot q) = I3.
-Proof. intro H. destruct q as [w x y z]. so3_split; so3_unfold; field; exact H. Qed.
+Proof.
+  intro H. pose proof (rot_scale_norm q H) as Hs. unfold rot. revert Hs.
+  generalize (2 / qn q); intros s Hs. destruct q as [w x y z].
+  transitivity (madd I3 (mscale (s * (2 - s * qn (mkQ w x y z)))
+                               (mmul (hat (qvec (mkQ w x y z))) (hat (qvec (mkQ w x y z)))))).
+  - so3_split; so3_unfold; lra.
+  - replace (s * (2 - s * qn (mkQ w x y z))) with 0 by (rewrite Hs; ring).
+    so3_split; so3_unfold; lra.
+Qed.
 
 Lemma rot_orthogonal_r (q : quat) : qn q <> 0 -> mmul (rot q) (mT (rot q)) = I3.
-Proof. intro H. destruct q as [w x y z]. so3_split; so3_unfold; field; exact H. Qed.
+Proof.
+  intro H. pose proof (rot_scale_norm q H) as Hs. unfold rot. revert Hs.
+  generalize (2 / qn q); intros s Hs. destruct q as [w x y z].
+  transitivity (madd I3 (mscale (s * (2 - s * qn (mkQ w x y z)))
+                               (mmul (hat (qvec (mkQ w x y z))) (hat (qvec (mkQ w x y z)))))).
+  - so3_split; so3_unfold; lra.
+  - replace (s * (2 - s * qn (mkQ w x y z))) with 0 by (rewrite Hs; ring).
+    so3_split; so3_unfold; lra.
+Qed.
 
 Lemma rot_det (q : quat) : qn q <> 0 -> det (rot q) = 1.
-Proof. intro H. destruct q as [w x y z]. so3_unfold. field. exact H. Qed.
+Proof.
+  intro H. pose proof (rot_scale_norm q H) as Hs. unfold rot. revert Hs.
+  generalize (2 / qn q); intros s Hs. destruct q as [w x y z].
+  apply (eq_by_cofactors_1 _ _ (s * (x * x + y * y + z * z)) (s * qn (mkQ w x y z) - 2)).
+  - lra.
+  - so3_unfold. lra.
+Qed.
 
 (** ** Matrix-level normal form (rewriting before going to entries)
 

@@ -40,7 +40,19 @@ Proof.
               = 2 * ((a * a + b * b + c * c) * (w * w - (x * x + y * y + z * z))
                      + 2 * (x * a + y * b + z * c) * (x * a + y * b + z * c))
                 / (w * w + x * x + y * y + z * z)).
-  { unfold qform. so3_unfold. field. exact Hn. }
+  { (* with s = 2/|q|^2 both sides are polynomials in s; their difference is
+       -|v|^2 (s |q|^2 - 2), checked by lra (cheaper than field on the entries) *)
+    pose proof (rot_scale_norm (mkQ w x y z)) as Hs.
+    replace (2 * ((a * a + b * b + c * c) * (w * w - (x * x + y * y + z * z))
+                  + 2 * (x * a + y * b + z * c) * (x * a + y * b + z * c))
+             / (w * w + x * x + y * y + z * z))
+      with (((a * a + b * b + c * c) * (w * w - (x * x + y * y + z * z))
+             + 2 * (x * a + y * b + z * c) * (x * a + y * b + z * c)) * (2 / qn (mkQ w x y z)))
+      by (unfold qn; simpl; field; exact Hn).
+    unfold qform, rot. revert Hs. generalize (2 / qn (mkQ w x y z)); intros s Hs.
+    specialize (Hs Hn). so3_unfold.
+    apply (eq_by_cofactors_1 _ _ (- (a * a + b * b + c * c))
+                             (s * (w * w + x * x + y * y + z * z) - 2)); lra. }
   rewrite E. unfold Rdiv. apply Rmult_le_pos; [ | apply Rlt_le, Rinv_0_lt_compat; exact Hp ].
   pose proof (Rmult_le_pos _ _ (vdot_self_nonneg (mkV a b c)) Hw) as P1.
   pose proof (sq_nonneg (x * a + y * b + z * c)) as P2. unfold vdot in P1; simpl in P1. lra.
@@ -123,7 +135,7 @@ Proof.
   destruct (rot_surjective _ HRl) as [ql [Hl El]].
   subst Rr Rb Rl.
   rewrite v_rate_identity by assumption.
-  unfold phi. nra.
+  unfold phi. pose proof (Rmult_le_pos _ _ Hks T1). pose proof (Rmult_le_pos _ _ Hks T2). lra.
 Qed.
 
 (** [phi(R) >= 0] for a rotation (Theorem 1's energy function). *)
