@@ -227,6 +227,18 @@ def test_coqc_rejects_a_changed_statement(prelude_dir):
 
 
 @needs_coqc
+def test_coqc_rejects_a_rotation_step_whose_link_does_not_hold(prelude_dir):
+    """A step over rotations (the link by computation at the prelude's level,
+    SOSCert.link_ok): its coefficient -1/2 made -1/3 everywhere in the unit. The new
+    inequality still holds, but the certificate's target is not its slack: the link's
+    check, evaluated by the kernel, fails."""
+    text = _unit_text(("thm1.V-dot", 3))
+    old = "(-1/2) * v_1_k_s) * (lam1 + lam2)"
+    assert text.count(old) == 3 and "sos_link" in text
+    assert not compiles(prelude_dir, text.replace(old, "(-1/3) * v_1_k_s) * (lam1 + lam2)"))
+
+
+@needs_coqc
 def test_coqc_rejects_a_weakened_hypothesis(prelude_dir):
     """The multiplier's ground replaced by a hypothesis that does not give it (psd of
     the transpose's negation): the grounds lemma no longer holds."""
