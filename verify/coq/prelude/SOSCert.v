@@ -1103,10 +1103,267 @@ Proof.
   - apply vv_ent_ok; auto.
 Qed.
 
+(** *** Rotations meeting their transposes: [R^T R = R R^T = I] in products
+
+    Before evaluation, every product is read as a chain of factors (transposes pushed to
+    the factors), and adjacent factors [rot q^T rot q] or [rot q rot q^T] (the same
+    parameters) are cancelled, as the prelude's [so3_norm] does by rewriting.  The value
+    of a product of rotations then keeps the denominators of the rotations left in it:
+    [(R_r^T R_l)^T (R_r^T R)] is evaluated as [R_l^T R]. *)
+
+Definition fac := (mx * bool)%type.  (* a factor, transposed when [true] *)
+
+Definition fmx (f : fac) : mx := if snd f then MT (fst f) else fst f.
+
+Fixpoint build (l : list fac) : mx :=
+  match l with
+  | nil => MI3
+  | [f] => fmx f
+  | f :: l' => MMul (fmx f) (build l')
+  end.
+
+(** [f g = I]: the same rotation, once transposed. *)
+Definition rot_inv (f g : fac) : bool :=
+  match fst f, fst g with
+  | MRot _ p, MRot _ p' => Nat.eqb p p' && negb (Bool.eqb (snd f) (snd g))
+  | _, _ => false
+  end.
+
+Fixpoint cancel1 (l : list fac) : list fac :=
+  match l with
+  | f :: ((g :: l'') as l') => if rot_inv f g then l'' else f :: cancel1 l'
+  | _ => l
+  end.
+
+Fixpoint cancel (fuel : nat) (l : list fac) : list fac :=
+  match fuel with O => l | S k => cancel k (cancel1 l) end.
+
+Fixpoint simp_m (a : mx) : mx :=
+  match a with
+  | MMul a b => let l := chain false a ++ chain false b in build (cancel (length l) l)
+  | MT a => let l := chain true a in build (cancel (length l) l)
+  | MRot q p => MRot q p
+  | MI3 => MI3
+  | MZ3 => MZ3
+  | MAdd a b => MAdd (simp_m a) (simp_m b)
+  | MSub a b => MSub (simp_m a) (simp_m b)
+  | MNeg a => MNeg (simp_m a)
+  | MScale c a => MScale (simp_s c) (simp_m a)
+  | MSk a => MSk (simp_m a)
+  | MSym a => MSym (simp_m a)
+  | MHat u => MHat (simp_v u)
+  | MOuter u w => MOuter (simp_v u) (simp_v w)
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      MSymm (simp_s a11) (simp_s a22) (simp_s a33) (simp_s a12) (simp_s a13) (simp_s a23)
+  end
+with chain (t : bool) (a : mx) : list fac :=
+  match a with
+  | MMul a b => if t then chain true b ++ chain true a else chain false a ++ chain false b
+  | MT a => chain (negb t) a
+  | MRot q p => [(MRot q p, t)]
+  | MI3 => [(MI3, t)]
+  | MZ3 => [(MZ3, t)]
+  | MAdd a b => [(MAdd (simp_m a) (simp_m b), t)]
+  | MSub a b => [(MSub (simp_m a) (simp_m b), t)]
+  | MNeg a => [(MNeg (simp_m a), t)]
+  | MScale c a => [(MScale (simp_s c) (simp_m a), t)]
+  | MSk a => [(MSk (simp_m a), t)]
+  | MSym a => [(MSym (simp_m a), t)]
+  | MHat u => [(MHat (simp_v u), t)]
+  | MOuter u w => [(MOuter (simp_v u) (simp_v w), t)]
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      [(MSymm (simp_s a11) (simp_s a22) (simp_s a33) (simp_s a12) (simp_s a13)
+              (simp_s a23), t)]
+  end
+with simp_v (u : vx) : vx :=
+  match u with
+  | VVar u p => VVar u p
+  | VZero => VZero
+  | VAdd u w => VAdd (simp_v u) (simp_v w)
+  | VNeg u => VNeg (simp_v u)
+  | VScale c u => VScale (simp_s c) (simp_v u)
+  | VMv a u => VMv (simp_m a) (simp_v u)
+  | VVee a => VVee (simp_m a)
+  end
+with simp_s (r : sx) : sx :=
+  match r with
+  | SZ z => SZ z
+  | SV i => SV i
+  | SDivC a d => SDivC (simp_s a) d
+  | SAdd a b => SAdd (simp_s a) (simp_s b)
+  | SMul a b => SMul (simp_s a) (simp_s b)
+  | SNeg a => SNeg (simp_s a)
+  | SSub a b => SSub (simp_s a) (simp_s b)
+  | STr a => STr (simp_m a)
+  | STrMul a b => STrMul (simp_m a) (simp_m b)
+  | SPhi a => SPhi (simp_m a)
+  | SVdot u w => SVdot (simp_v u) (simp_v w)
+  | SEnt k a => SEnt k (simp_m a)
+  | SVEnt k u => SVEnt k (simp_v u)
+  end.
+
+Definition fden env (f : fac) : M3 := if snd f then mT (mden env (fst f)) else mden env (fst f).
+
+Fixpoint cden env (l : list fac) : M3 :=
+  match l with nil => I3 | f :: l' => mmul (fden env f) (cden env l') end.
+
+Definition fleaves env (l : list fac) : Prop := Forall (fun f => mleaves env (fst f)) l.
+
+Lemma cden_app env l1 l2 : cden env (l1 ++ l2) = mmul (cden env l1) (cden env l2).
+Proof.
+  induction l1 as [|f l1 IH]; simpl; [symmetry; apply mmul_I3_l|].
+  rewrite IH, mmul_assoc. reflexivity.
+Qed.
+
+Lemma build_ok env l :
+  fleaves env l -> mleaves env (build l) /\ mden env (build l) = cden env l.
+Proof.
+  induction l as [|f l IH]; intros H; [split; [exact I | reflexivity]|].
+  inversion H as [|? ? Hf Hl]; subst.
+  assert (Hfm : mleaves env (fmx f) /\ mden env (fmx f) = fden env f)
+    by (unfold fmx, fden; destruct (snd f); split; auto).
+  destruct l as [|g l].
+  - cbn [build cden]. destruct Hfm as [Hfm Efm]. split; [exact Hfm|].
+    rewrite Efm, mmul_I3_r. reflexivity.
+  - destruct (IH Hl) as [IH1 IH2]. destruct Hfm as [Hfm Efm].
+    change (build (f :: g :: l)) with (MMul (fmx f) (build (g :: l))).
+    split; [split; assumption|]. cbn [mden]. rewrite IH2, Efm. reflexivity.
+Qed.
+
+Lemma rot_same q q' p env :
+  qw q = nth p env 0 /\ qx q = nth (S p) env 0 /\ qy q = nth (S (S p)) env 0 /\
+  qz q = nth (S (S (S p))) env 0 /\ qn q <> 0 ->
+  qw q' = nth p env 0 /\ qx q' = nth (S p) env 0 /\ qy q' = nth (S (S p)) env 0 /\
+  qz q' = nth (S (S (S p))) env 0 /\ qn q' <> 0 -> rot q = rot q'.
+Proof.
+  destruct q, q'. simpl. intros (->&->&->&->&_) (->&->&->&->&_). reflexivity.
+Qed.
+
+Lemma cancel1_ok env l :
+  fleaves env l -> fleaves env (cancel1 l) /\ cden env (cancel1 l) = cden env l.
+Proof.
+  induction l as [|f l IH]; intros H; [split; [exact H | reflexivity]|].
+  inversion H as [|? ? Hf Hl]; subst.
+  destruct l as [|g l]; [split; [exact H | reflexivity]|].
+  change (cancel1 (f :: g :: l))
+    with (if rot_inv f g then l else f :: cancel1 (g :: l)).
+  destruct (rot_inv f g) eqn:E.
+  - inversion Hl as [|? ? Hg Hl']; subst. split; [exact Hl'|].
+    destruct f as [[] tf]; try discriminate. destruct g as [[] tg]; try discriminate.
+    unfold rot_inv in E. cbn [fst snd] in *. apply andb_true_iff in E as [Ep Et].
+    apply Nat.eqb_eq in Ep. subst.
+    cbn [cden]. unfold fden. cbn [fst snd mden].
+    rewrite (rot_same q0 q p0 env Hg Hf). destruct Hf as (_&_&_&_&Hn).
+    rewrite <- mmul_assoc.
+    destruct tf, tg; try discriminate; cbn [fst snd].
+    + rewrite (rot_orthogonal q Hn), mmul_I3_l. reflexivity.
+    + rewrite (rot_orthogonal_r q Hn), mmul_I3_l. reflexivity.
+  - destruct (IH Hl) as [IH1 IH2]. split; [constructor; assumption|].
+    cbn [cden]. rewrite IH2. reflexivity.
+Qed.
+
+Lemma cancel_ok env n l :
+  fleaves env l -> fleaves env (cancel n l) /\ cden env (cancel n l) = cden env l.
+Proof.
+  revert l. induction n as [|n IH]; intros l H; [split; [exact H | reflexivity]|].
+  cbn [cancel]. destruct (cancel1_ok env l H) as [H1 E1].
+  destruct (IH _ H1) as [H2 E2]. split; [exact H2|]. rewrite E2, E1. reflexivity.
+Qed.
+
+Lemma bc_ok env l :
+  fleaves env l -> mleaves env (build (cancel (length l) l)) /\
+                   mden env (build (cancel (length l) l)) = cden env l.
+Proof.
+  intros H. destruct (cancel_ok env (length l) l H) as [H1 E1].
+  destruct (build_ok env _ H1) as [H2 E2]. split; [exact H2|]. rewrite E2, E1. reflexivity.
+Qed.
+
+Definition chain_ok env a : Prop :=
+  forall t, fleaves env (chain t a) /\
+            cden env (chain t a) = if t then mT (mden env a) else mden env a.
+
+Definition simp_ok env a : Prop :=
+  mleaves env (simp_m a) /\ mden env (simp_m a) = mden env a.
+
+Lemma chain_one env (x y : mx) t :
+  mleaves env x -> mden env x = mden env y ->
+  fleaves env [(x, t)] /\ cden env [(x, t)] = if t then mT (mden env y) else mden env y.
+Proof.
+  intros Hx E. split; [repeat constructor; exact Hx|].
+  cbn [cden]. rewrite mmul_I3_r. unfold fden. cbn [fst snd]. rewrite E. reflexivity.
+Qed.
+
+Lemma mmul_case env a b :
+  chain_ok env a -> chain_ok env b -> simp_ok env (MMul a b) /\ chain_ok env (MMul a b).
+Proof.
+  intros Ha Hb. destruct (Ha false) as [Ha1 Ea1], (Hb false) as [Hb1 Eb1].
+  split.
+  - unfold simp_ok. cbn [simp_m].
+    assert (H : fleaves env (chain false a ++ chain false b))
+      by (apply Forall_app; split; assumption).
+    destruct (bc_ok env _ H) as [H1 E1]. split; [exact H1|].
+    rewrite E1, cden_app, Ea1, Eb1. reflexivity.
+  - intros [|].
+    + destruct (Ha true) as [Ha2 Ea2], (Hb true) as [Hb2 Eb2]. cbn [chain].
+      split; [apply Forall_app; split; assumption|].
+      rewrite cden_app, Ea2, Eb2. cbn [mden]. symmetry. apply mT_mmul.
+    + cbn [chain]. split; [apply Forall_app; split; assumption|].
+      rewrite cden_app, Ea1, Eb1. reflexivity.
+Qed.
+
+Lemma mt_case env a : chain_ok env a -> simp_ok env (MT a) /\ chain_ok env (MT a).
+Proof.
+  intros Ha. split.
+  - destruct (Ha true) as [H1 E1]. unfold simp_ok. cbn [simp_m].
+    destruct (bc_ok env _ H1) as [H2 E2]. split; [exact H2|]. rewrite E2, E1. reflexivity.
+  - intros [|]; cbn [chain negb mden].
+    + destruct (Ha false) as [H1 E1]. split; [exact H1|]. rewrite E1, mT_mT. reflexivity.
+    + exact (Ha true).
+Qed.
+
+Local Ltac simp_leaves :=
+  repeat match goal with
+  | |- _ /\ _ => split
+  | |- True => exact I
+  | |- _ => assumption
+  end.
+
+Local Ltac simp_eq :=
+  repeat match goal with
+  | H : mden _ _ = _ |- _ => rewrite H; clear H
+  | H : vden _ _ = _ |- _ => rewrite H; clear H
+  | H : sden _ _ = _ |- _ => rewrite H; clear H
+  end; reflexivity.
+
+Lemma simp_sound env :
+  (forall a, mleaves env a -> simp_ok env a /\ chain_ok env a) /\
+  (forall u, vleaves env u -> vleaves env (simp_v u) /\ vden env (simp_v u) = vden env u) /\
+  (forall r, sleaves env r -> sleaves env (simp_s r) /\ sden env (simp_s r) = sden env r).
+Proof.
+  apply ex_ind2; intros; cbn [mleaves vleaves sleaves] in *;
+    repeat match goal with
+    | H : _ /\ _ |- _ => destruct H
+    | H : ?P -> _, H' : ?P |- _ => specialize (H H')
+    | H : simp_ok _ _ |- _ => unfold simp_ok in H
+    end;
+      lazymatch goal with
+        | |- simp_ok _ (MMul _ _) /\ _ => apply mmul_case; assumption
+        | |- simp_ok _ (MT _) /\ _ => apply mt_case; assumption
+        | |- simp_ok ?env ?y /\ _ =>
+            assert (S : simp_ok env y)
+              by (unfold simp_ok; cbn [simp_m mleaves mden]; split; [simp_leaves | simp_eq]);
+            split; [exact S | intros t; destruct S as [S1 S2]; unfold simp_ok in S1, S2;
+                                cbn [chain]; cbn [simp_m] in S1, S2;
+                                exact (chain_one env _ y t S1 S2)]
+        | |- _ => cbn [simp_v simp_s vleaves sleaves mleaves vden sden mden];
+                  split; [simp_leaves | simp_eq]
+        end.
+Qed.
+
 (** [d]: the denominator the exporter expects (powers of norms); the check lifts the
     computed value and the target to the larger of the two. *)
 Definition link_check (qs : list nat) (r : sx) (d : list nat) (target : poly) : bool :=
-  let (n, e) := evs r in
+  let (n, e) := evs (simp_s r) in
   let m := emax e d in
   exps_ok_from qs 0 m && poly_zero (lift n (ediff e m) ++ pneg (lift target (ediff d m))).
 
@@ -1118,8 +1375,9 @@ Theorem link_ok env qs r (s : R) d target :
   exists D F, 0 < D /\ 0 <= F /\ s * D = F * peval env target.
 Proof.
   intros Hq Hl Hs H. unfold link_check in H.
-  pose proof (proj2 (proj2 (ev_sound env)) r Hl) as Hev. unfold srel in Hev.
-  destruct (evs r) as [n e]. cbn [fst snd] in Hev.
+  destruct (proj2 (proj2 (simp_sound env)) r Hl) as [Hl' Es]. rewrite <- Es in Hs.
+  pose proof (proj2 (proj2 (ev_sound env)) _ Hl') as Hev. unfold srel in Hev.
+  destruct (evs (simp_s r)) as [n e]. cbn [fst snd] in Hev.
   apply andb_true_iff in H as [He Hz].
   exists (denp env 0 (emax e d)), (denp env 0 (ediff d (emax e d))).
   split; [exact (denp_pos env qs 0 _ Hq He)|]. split; [apply denp_nonneg|].
@@ -1235,7 +1493,7 @@ Qed.
 
 (** [s * den d = h] exactly, when [s]'s computed denominator divides [den d]. *)
 Definition exact_check (r : sx) (d : list nat) (h : poly) : bool :=
-  let (n, e) := evs r in
+  let (n, e) := evs (simp_s r) in
   eqb_list (emax e d) d && poly_zero (lift n (ediff e d) ++ pneg h).
 
 Theorem exact_ok env r (s : R) d h :
@@ -1243,8 +1501,9 @@ Theorem exact_ok env r (s : R) d h :
   exact_check r d h = true -> peval env h = s * denp env 0 d.
 Proof.
   intros Hl Hs H. unfold exact_check in H.
-  pose proof (proj2 (proj2 (ev_sound env)) r Hl) as Hev. unfold srel in Hev.
-  destruct (evs r) as [n e]. cbn [fst snd] in Hev.
+  destruct (proj2 (proj2 (simp_sound env)) r Hl) as [Hl' Es]. rewrite <- Es in Hs.
+  pose proof (proj2 (proj2 (ev_sound env)) _ Hl') as Hev. unfold srel in Hev.
+  destruct (evs (simp_s r)) as [n e]. cbn [fst snd] in Hev.
   apply andb_true_iff in H as [Hd Hz].
   apply eqb_list_eq in Hd.
   subst s. rewrite <- Hd at 1. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
