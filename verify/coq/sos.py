@@ -336,7 +336,9 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
             f"{comment_text(str(st.rhs))}.",
             "    The certificate's data (target polynomial, multipliers, LDL^T squares) "
             "is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and "
-            "the link from the statement to the target polynomial are proved by field.",
+            "the link from the statement to the target polynomial are proved "
+            + ("by computation (SOSCert.exact_ok, SOSCert.link_ok)." if reflective
+               else "by field."),
             ]
     if unfold_extra:
         head.append("    Charts: a unit vector is stated in its stereographic chart (all but "
