@@ -26,7 +26,7 @@ prelude's operations (``rot q``, ``mmul``, ``mT``, ``sk``, ``hat``, ``vee``, ``t
 ``phi``, ``vdot``, ...), into an expression ``sx`` of those operations, without unfolding
 them; Coq computes its value (each matrix subexpression once, as nine entry polynomials
 over products of norms) and compares it with ``T`` (or ``H``'s entries) by ``vm_compute``
-(``link_ok``, ``exact_ok``: soundness proved once, ``ev_sound``). Otherwise (charts,
+(``link_ok``, ``mult_psd_9r``: soundness proved once, ``ev_sound``). Otherwise (charts,
 free matrices) ``field`` proves them after unfolding the prelude, or ``lra`` where there
 is no rotation, chart, angle or denominator (the identities are then polynomial).
 
@@ -305,11 +305,10 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
             for key, e in plan.den_exps:
                 d[rot_positions[key][0]] = e
             body += [f"Lemma {lemma} : mult_psd env {hname}.", "Proof.",
-                     f"  unfold {hname}. apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ "
-                     f"{plan.matrix} {plan.scalar} (denp env 0 [{'; '.join(map(str, d))}]%nat));",
-                     f"    [exact {plan.scalar_proof} | apply denp_nonneg | "
-                     f"exact {plan.matrix_proof} |",
-                     f"     sos_exact [{'; '.join(env)}] ..].", "Qed.", ""]
+                     f"  unfold {hname}. sos_psd9 [{'; '.join(env)}] ({plan.scalar}) "
+                     f"{plan.matrix} [{'; '.join(map(str, d))}]%nat.",
+                     f"  - exact {plan.scalar_proof}.", f"  - exact {plan.matrix_proof}.",
+                     "Qed.", ""]
         elif k == 3 and plan.matrix:
             dtext, dpos = plan.den
             c_text = f"({plan.scalar} * {dtext})"
@@ -337,7 +336,7 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
             "    The certificate's data (target polynomial, multipliers, LDL^T squares) "
             "is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and "
             "the link from the statement to the target polynomial are proved "
-            + ("by computation (SOSCert.exact_ok, SOSCert.link_ok)." if reflective
+            + ("by computation (SOSCert.mult_psd_9r, SOSCert.link_ok)." if reflective
                else "by field."),
             ]
     if unfold_extra:

@@ -1491,27 +1491,22 @@ Proof.
   rewrite H1, (IH b H2). reflexivity.
 Qed.
 
-(** [s * den d = h] exactly, when [s]'s computed denominator divides [den d]. *)
-Definition exact_check (r : sx) (d : list nat) (h : poly) : bool :=
-  let (n, e) := evs (simp_s r) in
-  eqb_list (emax e d) d && poly_zero (lift n (ediff e d) ++ pneg h).
+(** [v] is [h] over [den d] exactly: [v]'s denominator divides [den d]. *)
+Definition entry_check (v : sv) (d : list nat) (h : poly) : bool :=
+  eqb_list (emax (snd v) d) d && poly_zero (lift (fst v) (ediff (snd v) d) ++ pneg h).
 
-Theorem exact_ok env r (s : R) d h :
-  sleaves env r -> s = sden env r ->
-  exact_check r d h = true -> peval env h = s * denp env 0 d.
+Lemma entry_ok env x v d h :
+  srel env x v -> entry_check v d h = true -> peval env h = x * denp env 0 d.
 Proof.
-  intros Hl Hs H. unfold exact_check in H.
-  destruct (proj2 (proj2 (simp_sound env)) r Hl) as [Hl' Es]. rewrite <- Es in Hs.
-  pose proof (proj2 (proj2 (ev_sound env)) _ Hl') as Hev. unfold srel in Hev.
-  destruct (evs (simp_s r)) as [n e]. cbn [fst snd] in Hev.
-  apply andb_true_iff in H as [Hd Hz].
-  apply eqb_list_eq in Hd.
-  subst s. rewrite <- Hd at 1. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
+  unfold srel, entry_check. destruct v as [n e]. cbn [fst snd]. intros Hev H.
+  apply andb_true_iff in H as [Hd Hz]. apply eqb_list_eq in Hd.
+  rewrite <- Hd at 1. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
   rewrite Hd.
   apply (poly_zero_sound env) in Hz. rewrite peval_app in Hz. unfold pneg in Hz.
   rewrite peval_scale, peval_lift in Hz.
   assert (E : Q2R (-1) = -1) by (unfold Q2R; simpl; lra). rewrite E in Hz. lra.
 Qed.
+
 (** A 3 x 3 multiplier that is [c * D] times a matrix with a non-negative quadratic form,
     entry by entry. *)
 Lemma mult_psd_9 env (h11 h12 h13 h21 h22 h23 h31 h32 h33 : poly) (M : M3) (c D : R) :
@@ -1537,11 +1532,44 @@ Proof.
   apply Rmult_le_pos; [apply Rmult_le_pos|]; assumption.
 Qed.
 
-(** Proves [peval env h = s * denp env 0 d] by [exact_ok] (its check evaluated once, by the
-    kernel at [Qed], as in [sos_link]). *)
-Ltac sos_exact params :=
+(** The entries of a 3 x 3 multiplier [c * D * M] by computation: [c] and [M] read as
+    expressions ([rc], [rM]), evaluated once, each entry compared with [H]'s. *)
+Definition psd9_check (rc : sx) (rM : mx) (d : list nat)
+    (h11 h12 h13 h21 h22 h23 h31 h32 h33 : poly) : bool :=
+  let c := evs (simp_s rc) in
+  let m := evm (simp_m rM) in
+  entry_check (sv_mul c (e11 m)) d h11 && entry_check (sv_mul c (e12 m)) d h12 &&
+  entry_check (sv_mul c (e13 m)) d h13 && entry_check (sv_mul c (e21 m)) d h21 &&
+  entry_check (sv_mul c (e22 m)) d h22 && entry_check (sv_mul c (e23 m)) d h23 &&
+  entry_check (sv_mul c (e31 m)) d h31 && entry_check (sv_mul c (e32 m)) d h32 &&
+  entry_check (sv_mul c (e33 m)) d h33.
+
+Theorem mult_psd_9r env rc rM d (h11 h12 h13 h21 h22 h23 h31 h32 h33 : poly) :
+  sleaves env rc -> mleaves env rM -> 0 <= sden env rc ->
+  (forall v, 0 <= qform (mden env rM) v) ->
+  psd9_check rc rM d h11 h12 h13 h21 h22 h23 h31 h32 h33 = true ->
+  mult_psd env [[h11; h12; h13]; [h21; h22; h23]; [h31; h32; h33]].
+Proof.
+  intros Hc HM Hc0 HMq Hk.
+  destruct (proj2 (proj2 (simp_sound env)) rc Hc) as [Hc' Ec].
+  destruct (proj1 (simp_sound env) rM HM) as [[HM' EM] _].
+  pose proof (proj2 (proj2 (ev_sound env)) _ Hc') as Vc. rewrite Ec in Vc.
+  pose proof (proj1 (ev_sound env) _ HM') as VM. rewrite EM in VM.
+  unfold psd9_check in Hk. cbv zeta in Hk. do 8 (apply andb_true_iff in Hk as [Hk ?]).
+  destruct VM as (V11&V12&V13&V21&V22&V23&V31&V32&V33).
+  apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ (mden env rM) (sden env rc) (denp env 0 d) Hc0
+           (denp_nonneg env 0 d) HMq);
+    (eapply entry_ok; [apply sv_mul_ok; eassumption | eassumption]).
+Qed.
+
+(** Proves [mult_psd env H] for [H = c * D * M] entry by entry, [D] the product of norms
+    [d], by [mult_psd_9r] (its check evaluated once, by the kernel at [Qed], as in
+    [sos_link]); leaves [0 <= c] and [forall v, 0 <= qform M v] (up to reading). *)
+Ltac sos_psd9 params c M d :=
   lazymatch goal with
-  | |- peval ?env ?h = ?s * denp ?env 0 ?d =>
-      let r := sos_reify params s in
-      apply (exact_ok env r s d h); [sos_leaves | reflexivity | vm_cast_no_check (eq_refl true)]
+  | |- mult_psd ?env _ =>
+      let rc := sos_reify params c in
+      let rM := sos_reify_m params M in
+      refine (mult_psd_9r env rc rM d _ _ _ _ _ _ _ _ _ _ _ _ _ _);
+        [sos_leaves | sos_leaves | | | vm_cast_no_check (eq_refl true)]
   end.
