@@ -227,6 +227,33 @@ def test_coqc_rejects_a_changed_statement(prelude_dir):
 
 
 @needs_coqc
+def test_coqc_rejects_a_rotation_step_whose_link_does_not_hold(prelude_dir):
+    """A step over rotations (the link by computation at the prelude's level,
+    SOSCert.link_ok): its coefficient -1/2 made -1/3 everywhere in the unit. The new
+    inequality still holds, but the certificate's target is not its slack: the link's
+    check, evaluated by the kernel, fails."""
+    text = _unit_text(("thm1.V-dot", 3))
+    old = "(-1/2) * v_1_k_s) * (lam1 + lam2)"
+    assert text.count(old) == 3 and "sos_link" in text
+    assert not compiles(prelude_dir, text.replace(old, "(-1/3) * v_1_k_s) * (lam1 + lam2)"))
+
+
+@pytest.mark.slow  # a Gram-48 certificate: about 5 s of CPU
+@needs_coqc
+def test_coqc_rejects_a_rotation_multiplier_over_another_denominator(prelude_dir):
+    """A 3 x 3 multiplier's grounds by computation (SOSCert.mult_psd_9r): the product of
+    norms D it is compared over changed (|q_r|^2 squared instead of once). The
+    certificate's identity is untouched; the grounds lemma fails."""
+    text = _unit_text(("thm1.S_r-dot", 7))
+    (line,) = [x for x in text.splitlines() if "sos_psd9" in x]
+    head, den = line.rsplit(" [", 1)
+    assert den.startswith("0; 1; ") and den.endswith("]%nat.")
+    bad = text.replace(line, f"{head} [0; 2; {den[len('0; 1; '):]}")
+    assert bad != text
+    assert not compiles(prelude_dir, bad)
+
+
+@needs_coqc
 def test_coqc_rejects_a_weakened_hypothesis(prelude_dir):
     """The multiplier's ground replaced by a hypothesis that does not give it (psd of
     the transpose's negation): the grounds lemma no longer holds."""

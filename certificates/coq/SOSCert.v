@@ -409,38 +409,27 @@ Proof.
   reflexivity.
 Qed.
 
-(** ** The link by computation: scalar expressions over the parameters
+(** ** The link by computation, at the level of the prelude's operations
 
-    After the prelude's definitions are unfolded, a statement about rotations, vectors and
-    scalars is a real expression built from [+], [*], [-], integer constants, the
-    parameters (the entries of [env]), [/ IZR z] and [/ qn q].  [sx] is that language;
-    [ev] computes its value as a polynomial over one denominator, a product of powers
-    of quaternion norms ([den]); [ev_sound] proves that value right once, so a unit's
-    link needs no [field] on large polynomials: the tactic [sos_reify] reads the
-    unfolded statement into [sx] and [vm_compute] compares the polynomials. *)
+    A unit's statement is written with the prelude's definitions ([rot q], [mmul], [mT],
+    [sk], [hat], [vee], [tr], [phi], [vdot], ...).  [sx], [mx], [vx] are that language
+    (scalars, matrices, vectors): its leaves are the parameters (the entries of [env]),
+    the rotations [rot q] (with the position of [q]'s entries in [env]) and the vectors
+    (with the position of their entries).  [sden], [mden], [vden] give a term's value with
+    the prelude's own operations, so that a statement and the denotation of its reading
+    are the same term up to unfolding the denotation: the kernel checks that cheaply.
+    [evs], [evm], [evv] compute the value of every scalar, of every entry of a matrix or
+    vector, as a polynomial over a product of powers of quaternion norms ([sv]), each
+    matrix subexpression once; [ev_sound] proves them right once.  So a unit's link needs
+    no [field] on large polynomials and no unfolding of its statement into a tree of
+    reals: the tactic [sos_reify] reads the statement (a few dozen operations) and
+    [vm_compute] compares the polynomials. *)
 
-Inductive sx : Type :=
-| SZ (z : Z)            (* IZR z *)
-| SV (i : nat)          (* the parameter env_i *)
-| SInvC (d : positive)  (* / IZR (Zpos d) *)
-| SInvQ (p : nat)       (* / |q|^2 for the quaternion at env_p .. env_(p+3) *)
-| SAdd (a b : sx) | SMul (a b : sx) | SNeg (a : sx).
-
+(** The norm of the quaternion whose entries are [env_p .. env_(p+3)]. *)
 Definition qnR (env : list R) (p : nat) : R :=
   nth p env 0 * nth p env 0 + nth (S p) env 0 * nth (S p) env 0 +
   nth (S (S p)) env 0 * nth (S (S p)) env 0 +
   nth (S (S (S p))) env 0 * nth (S (S (S p))) env 0.
-
-Fixpoint sden (env : list R) (r : sx) : R :=
-  match r with
-  | SZ z => IZR z
-  | SV i => nth i env 0
-  | SInvC d => / IZR (Zpos d)
-  | SInvQ p => / qnR env p
-  | SAdd a b => sden env a + sden env b
-  | SMul a b => sden env a * sden env b
-  | SNeg a => - sden env a
-  end.
 
 (** Denominators: [e_p] is the power of the norm of the quaternion at [env_p]. *)
 Fixpoint denp (env : list R) (p : nat) (e : list nat) : R :=
@@ -541,29 +530,6 @@ Proof.
   rewrite peval_normal, peval_mul, peval_ppow, peval_qnP, IH. reflexivity.
 Qed.
 
-Fixpoint ev (r : sx) : poly * list nat :=
-  match r with
-  | SZ z => ([(nil, inject_Z z)], nil)
-  | SV i => ([(mono_at i 1, 1%Q)], nil)
-  | SInvC d => ([(nil, (1 # d)%Q)], nil)
-  | SInvQ p => (pone, mono_at p 1)
-  | SAdd a b =>
-      let (na, ea) := ev a in let (nb, eb) := ev b in
-      let e := emax ea eb in
-      (normal (pmul na (liftP 0 (ediff ea e)) ++ pmul nb (liftP 0 (ediff eb e))), e)
-  | SMul a b =>
-      let (na, ea) := ev a in let (nb, eb) := ev b in (normal (pmul na nb), eadd ea eb)
-  | SNeg a => let (na, ea) := ev a in (pneg na, ea)
-  end.
-
-Fixpoint sx_valid (qs : list nat) (r : sx) : bool :=
-  match r with
-  | SInvQ p => existsb (Nat.eqb p) qs
-  | SAdd a b | SMul a b => sx_valid qs a && sx_valid qs b
-  | SNeg a => sx_valid qs a
-  | _ => true
-  end.
-
 Lemma denp_at_from env c p k : denp env c (mono_at p k) = qnR env (c + p) ^ k.
 Proof.
   revert c. induction p as [|p IH]; intros c; simpl.
@@ -573,35 +539,6 @@ Qed.
 
 Lemma denp_at env p k : denp env 0 (mono_at p k) = qnR env p ^ k.
 Proof. apply denp_at_from. Qed.
-
-Lemma ev_sound env qs r :
-  Forall (fun p => qnR env p <> 0) qs -> sx_valid qs r = true ->
-  sden env r * denp env 0 (snd (ev r)) = peval env (fst (ev r)).
-Proof.
-  intros Hq. induction r as [z|i|d|p|a IHa b IHb|a IHa b IHb|a IHa]; simpl; intros Hv.
-  - unfold Q2R. simpl. field.
-  - rewrite meval_at. unfold Q2R. simpl. field.
-  - unfold Q2R. simpl. field. apply not_0_IZR. discriminate.
-  - apply existsb_exists in Hv as [p' [Hin Hp]]. apply Nat.eqb_eq in Hp. subst p'.
-    rewrite Forall_forall in Hq. pose proof (Hq p Hin) as Hn.
-    rewrite denp_at. unfold pone. cbn [peval meval]. unfold Q2R. simpl. field. exact Hn.
-  - apply andb_true_iff in Hv as [Ha Hb].
-    destruct (ev a) as [na ea], (ev b) as [nb eb]. simpl in *.
-    rewrite peval_normal, peval_app, !peval_mul, !peval_liftP.
-    rewrite <- (IHa Ha), <- (IHb Hb).
-    assert (E1 : denp env 0 (emax ea eb)
-                 = denp env 0 ea * denp env 0 (ediff ea (emax ea eb)))
-      by (rewrite <- denp_eadd, eadd_ediff_l; reflexivity).
-    assert (E2 : denp env 0 (emax ea eb)
-                 = denp env 0 eb * denp env 0 (ediff eb (emax ea eb)))
-      by (rewrite <- denp_eadd, (emax_comm ea eb), eadd_ediff_l; reflexivity).
-    rewrite Rmult_plus_distr_r. f_equal; [rewrite E1 | rewrite E2]; ring.
-  - apply andb_true_iff in Hv as [Ha Hb].
-    destruct (ev a) as [na ea], (ev b) as [nb eb]. simpl in *.
-    rewrite peval_normal, peval_mul, denp_eadd, <- (IHa Ha), <- (IHb Hb). ring.
-  - destruct (ev a) as [na ea]. simpl in *. unfold pneg.
-    rewrite peval_scale, <- (IHa Hv). unfold Q2R. simpl. field.
-Qed.
 
 Fixpoint exps_ok_from (qs : list nat) (c : nat) (e : list nat) : bool :=
   match e with
@@ -631,60 +568,899 @@ Proof.
   apply Rmult_le_pos; [apply pow_le, qnR_nonneg | apply IH].
 Qed.
 
+Lemma denp_zeros env c e : forallb (Nat.eqb 0) e = true -> denp env c e = 1.
+Proof.
+  revert c. induction e as [|k e IH]; intros c H; simpl in *; [reflexivity|].
+  apply andb_true_iff in H as [Hk He]. destruct k; [|discriminate].
+  rewrite (IH _ He). ring.
+Qed.
+
+(** [n] times the product of norms [d] (nothing to compute for [0] or for [d = 1]). *)
+Definition lift (n : poly) (d : list nat) : poly :=
+  match n with
+  | nil => nil
+  | _ => if forallb (Nat.eqb 0) d then n else pmul n (liftP 0 d)
+  end.
+
+Lemma peval_lift env n d : peval env (lift n d) = peval env n * denp env 0 d.
+Proof.
+  unfold lift. destruct n as [|t n]; [simpl; ring|].
+  destruct (forallb (Nat.eqb 0) d) eqn:E.
+  - rewrite (denp_zeros env 0 d E). ring.
+  - rewrite peval_mul, peval_liftP. reflexivity.
+Qed.
+
+(** *** Values: a polynomial over a product of powers of norms *)
+
+Definition sv := (poly * list nat)%type.
+
+(** [v] is the value of [x]: [x * den = numerator]. *)
+Definition srel (env : list R) (x : R) (v : sv) : Prop :=
+  x * denp env 0 (snd v) = peval env (fst v).
+
+Definition sv_q (c : Q) : sv := ([(nil, c)], nil).
+Definition sv_var (i : nat) : sv := ([(mono_at i 1, 1%Q)], nil).
+Definition sv_add (a b : sv) : sv :=
+  let e := emax (snd a) (snd b) in
+  (normal (lift (fst a) (ediff (snd a) e) ++ lift (fst b) (ediff (snd b) e)), e).
+Definition sv_mul (a b : sv) : sv := (normal (pmul (fst a) (fst b)), eadd (snd a) (snd b)).
+Definition sv_neg (a : sv) : sv := (pneg (fst a), snd a).
+Definition sv_sub (a b : sv) : sv := sv_add a (sv_neg b).
+Definition sv_scq (c : Q) (a : sv) : sv := (pscale c (fst a), snd a).
+
+Lemma Q2R_1 : Q2R 1 = 1.
+Proof. unfold Q2R. simpl. field. Qed.
+
+Lemma sv_q_ok env c : srel env (Q2R c) (sv_q c).
+Proof. unfold srel, sv_q. cbn [fst snd denp peval meval]. ring. Qed.
+
+Lemma sv_Z_ok env z : srel env (IZR z) (sv_q (inject_Z z)).
+Proof. unfold srel, sv_q. cbn [fst snd denp peval meval]. unfold Q2R. simpl. field. Qed.
+
+Lemma sv_var_ok env i : srel env (nth i env 0) (sv_var i).
+Proof.
+  unfold srel, sv_var. cbn [fst snd denp peval]. rewrite meval_at, Q2R_1. ring.
+Qed.
+
+Lemma sv_add_ok env x y a b :
+  srel env x a -> srel env y b -> srel env (x + y) (sv_add a b).
+Proof.
+  unfold srel, sv_add. destruct a as [na ea], b as [nb eb]. cbn [fst snd]. intros Ha Hb.
+  rewrite peval_normal, peval_app, !peval_lift, <- Ha, <- Hb.
+  assert (E1 : denp env 0 (emax ea eb)
+               = denp env 0 ea * denp env 0 (ediff ea (emax ea eb)))
+    by (rewrite <- denp_eadd, eadd_ediff_l; reflexivity).
+  assert (E2 : denp env 0 (emax ea eb)
+               = denp env 0 eb * denp env 0 (ediff eb (emax ea eb)))
+    by (rewrite <- denp_eadd, (emax_comm ea eb), eadd_ediff_l; reflexivity).
+  rewrite Rmult_plus_distr_r. f_equal; [rewrite E1 | rewrite E2]; ring.
+Qed.
+
+Lemma sv_mul_ok env x y a b :
+  srel env x a -> srel env y b -> srel env (x * y) (sv_mul a b).
+Proof.
+  unfold srel, sv_mul. destruct a as [na ea], b as [nb eb]. cbn [fst snd]. intros Ha Hb.
+  rewrite peval_normal, peval_mul, denp_eadd, <- Ha, <- Hb. ring.
+Qed.
+
+Lemma sv_neg_ok env x a : srel env x a -> srel env (- x) (sv_neg a).
+Proof.
+  unfold srel, sv_neg, pneg. destruct a as [na ea]. cbn [fst snd]. intros Ha.
+  rewrite peval_scale, <- Ha. unfold Q2R. simpl. field.
+Qed.
+
+Lemma sv_sub_ok env x y a b :
+  srel env x a -> srel env y b -> srel env (x - y) (sv_sub a b).
+Proof. intros Ha Hb. unfold Rminus. apply sv_add_ok; [exact Ha | apply sv_neg_ok, Hb]. Qed.
+
+Lemma sv_divc_ok env x a d :
+  srel env x a -> srel env (x / IZR (Zpos d)) (sv_scq (1 # d) a).
+Proof.
+  unfold srel, sv_scq. destruct a as [na ea]. cbn [fst snd]. intros Ha.
+  rewrite peval_scale, <- Ha. unfold Q2R. simpl. field. apply not_0_IZR. discriminate.
+Qed.
+
+Lemma sv_half_ok env : srel env (1 / 2) (sv_q (1 # 2)).
+Proof.
+  replace (1 / 2) with (Q2R (1 # 2)) by (unfold Q2R; simpl; field). apply sv_q_ok.
+Qed.
+
+Lemma sv_zero_ok env : srel env 0 (sv_q 0).
+Proof. apply (sv_Z_ok env 0). Qed.
+
+Lemma sv_one_ok env : srel env 1 (sv_q 1).
+Proof. apply (sv_Z_ok env 1). Qed.
+
+Lemma sv_mone_ok env : srel env (-1) (sv_q (-1)).
+Proof. apply (sv_Z_ok env (-1)). Qed.
+
+(** Vectors and matrices: one value per entry. *)
+Record vv := VV { f1 : sv; f2 : sv; f3 : sv }.
+Record mv := MV { e11 : sv; e12 : sv; e13 : sv; e21 : sv; e22 : sv; e23 : sv;
+                  e31 : sv; e32 : sv; e33 : sv }.
+
+Definition vrel env (u : V3) (a : vv) : Prop :=
+  srel env (v1 u) (f1 a) /\ srel env (v2 u) (f2 a) /\ srel env (v3 u) (f3 a).
+
+Definition mrel env (A : M3) (a : mv) : Prop :=
+  srel env (m11 A) (e11 a) /\ srel env (m12 A) (e12 a) /\ srel env (m13 A) (e13 a) /\
+  srel env (m21 A) (e21 a) /\ srel env (m22 A) (e22 a) /\ srel env (m23 A) (e23 a) /\
+  srel env (m31 A) (e31 a) /\ srel env (m32 A) (e32 a) /\ srel env (m33 A) (e33 a).
+
+(** The prelude's operations on values, entry by entry as in [SO3.v]. *)
+Definition mv_I3 : mv := let o := sv_q 1 in let z := sv_q 0 in MV o z z z o z z z o.
+Definition mv_Z3 : mv := let z := sv_q 0 in MV z z z z z z z z z.
+Definition mv_add (a b : mv) : mv :=
+  MV (sv_add (e11 a) (e11 b)) (sv_add (e12 a) (e12 b)) (sv_add (e13 a) (e13 b))
+     (sv_add (e21 a) (e21 b)) (sv_add (e22 a) (e22 b)) (sv_add (e23 a) (e23 b))
+     (sv_add (e31 a) (e31 b)) (sv_add (e32 a) (e32 b)) (sv_add (e33 a) (e33 b)).
+Definition mv_scale (c : sv) (a : mv) : mv :=
+  MV (sv_mul c (e11 a)) (sv_mul c (e12 a)) (sv_mul c (e13 a))
+     (sv_mul c (e21 a)) (sv_mul c (e22 a)) (sv_mul c (e23 a))
+     (sv_mul c (e31 a)) (sv_mul c (e32 a)) (sv_mul c (e33 a)).
+Definition mv_neg (a : mv) : mv := mv_scale (sv_q (-1)) a.
+Definition mv_sub (a b : mv) : mv := mv_add a (mv_neg b).
+Definition mv_mul (a b : mv) : mv :=
+  let d x1 x2 x3 y1 y2 y3 := sv_add (sv_add (sv_mul x1 y1) (sv_mul x2 y2)) (sv_mul x3 y3) in
+  MV (d (e11 a) (e12 a) (e13 a) (e11 b) (e21 b) (e31 b))
+     (d (e11 a) (e12 a) (e13 a) (e12 b) (e22 b) (e32 b))
+     (d (e11 a) (e12 a) (e13 a) (e13 b) (e23 b) (e33 b))
+     (d (e21 a) (e22 a) (e23 a) (e11 b) (e21 b) (e31 b))
+     (d (e21 a) (e22 a) (e23 a) (e12 b) (e22 b) (e32 b))
+     (d (e21 a) (e22 a) (e23 a) (e13 b) (e23 b) (e33 b))
+     (d (e31 a) (e32 a) (e33 a) (e11 b) (e21 b) (e31 b))
+     (d (e31 a) (e32 a) (e33 a) (e12 b) (e22 b) (e32 b))
+     (d (e31 a) (e32 a) (e33 a) (e13 b) (e23 b) (e33 b)).
+Definition mv_T (a : mv) : mv :=
+  MV (e11 a) (e21 a) (e31 a) (e12 a) (e22 a) (e32 a) (e13 a) (e23 a) (e33 a).
+Definition mv_sk (a : mv) : mv := mv_scale (sv_q (1 # 2)) (mv_sub a (mv_T a)).
+Definition mv_sym (a : mv) : mv := mv_scale (sv_q (1 # 2)) (mv_add a (mv_T a)).
+Definition mv_hat (u : vv) : mv :=
+  let z := sv_q 0 in
+  MV z (sv_neg (f3 u)) (f2 u) (f3 u) z (sv_neg (f1 u)) (sv_neg (f2 u)) (f1 u) z.
+Definition mv_outer (u w : vv) : mv :=
+  MV (sv_mul (f1 u) (f1 w)) (sv_mul (f1 u) (f2 w)) (sv_mul (f1 u) (f3 w))
+     (sv_mul (f2 u) (f1 w)) (sv_mul (f2 u) (f2 w)) (sv_mul (f2 u) (f3 w))
+     (sv_mul (f3 u) (f1 w)) (sv_mul (f3 u) (f2 w)) (sv_mul (f3 u) (f3 w)).
+Definition mv_symm (a11 a22 a33 a12 a13 a23 : sv) : mv :=
+  MV a11 a12 a13 a12 a22 a23 a13 a23 a33.
+Definition vv_zero : vv := let z := sv_q 0 in VV z z z.
+Definition vv_add (u w : vv) : vv :=
+  VV (sv_add (f1 u) (f1 w)) (sv_add (f2 u) (f2 w)) (sv_add (f3 u) (f3 w)).
+Definition vv_neg (u : vv) : vv := VV (sv_neg (f1 u)) (sv_neg (f2 u)) (sv_neg (f3 u)).
+Definition vv_scale (c : sv) (u : vv) : vv :=
+  VV (sv_mul c (f1 u)) (sv_mul c (f2 u)) (sv_mul c (f3 u)).
+Definition vv_mv (a : mv) (u : vv) : vv :=
+  let d x1 x2 x3 := sv_add (sv_add (sv_mul x1 (f1 u)) (sv_mul x2 (f2 u))) (sv_mul x3 (f3 u)) in
+  VV (d (e11 a) (e12 a) (e13 a)) (d (e21 a) (e22 a) (e23 a)) (d (e31 a) (e32 a) (e33 a)).
+Definition vv_vee (a : mv) : vv :=
+  VV (sv_scq (1 # 2) (sv_sub (e32 a) (e23 a))) (sv_scq (1 # 2) (sv_sub (e13 a) (e31 a)))
+     (sv_scq (1 # 2) (sv_sub (e21 a) (e12 a))).
+Definition sv_tr (a : mv) : sv := sv_add (sv_add (e11 a) (e22 a)) (e33 a).
+(** [tr (A B)] without the off-diagonal entries of [A B]. *)
+Definition sv_trmul (a b : mv) : sv :=
+  let d x1 x2 x3 y1 y2 y3 := sv_add (sv_add (sv_mul x1 y1) (sv_mul x2 y2)) (sv_mul x3 y3) in
+  sv_add (sv_add (d (e11 a) (e12 a) (e13 a) (e11 b) (e21 b) (e31 b))
+                 (d (e21 a) (e22 a) (e23 a) (e12 b) (e22 b) (e32 b)))
+         (d (e31 a) (e32 a) (e33 a) (e13 b) (e23 b) (e33 b)).
+Definition sv_phi (a : mv) : sv := sv_scq (1 # 2) (sv_tr (mv_sub mv_I3 a)).
+Definition sv_vdot (u w : vv) : sv :=
+  sv_add (sv_add (sv_mul (f1 u) (f1 w)) (sv_mul (f2 u) (f2 w))) (sv_mul (f3 u) (f3 w)).
+
+(** The rotation [rot q] whose [q] has its entries at [env_p .. env_(p+3)]. *)
+Definition mv_rot (p : nat) : mv :=
+  let u := VV (sv_var (S p)) (sv_var (S (S p))) (sv_var (S (S (S p)))) in
+  mv_add mv_I3 (mv_scale ([(nil, 2%Q)], mono_at p 1)
+                         (mv_add (mv_scale (sv_var p) (mv_hat u)) (mv_mul (mv_hat u) (mv_hat u)))).
+
+(** Entries by number, for the multipliers' entries ([m11 A] is [ment 0 A]). *)
+Definition ment (k : nat) (A : M3) : R :=
+  match k with
+  | 0%nat => m11 A | 1%nat => m12 A | 2%nat => m13 A | 3%nat => m21 A | 4%nat => m22 A
+  | 5%nat => m23 A | 6%nat => m31 A | 7%nat => m32 A | _ => m33 A
+  end.
+
+Definition mv_ent (k : nat) (a : mv) : sv :=
+  match k with
+  | 0%nat => e11 a | 1%nat => e12 a | 2%nat => e13 a | 3%nat => e21 a | 4%nat => e22 a
+  | 5%nat => e23 a | 6%nat => e31 a | 7%nat => e32 a | _ => e33 a
+  end.
+
+Definition vent (k : nat) (u : V3) : R := match k with 0%nat => v1 u | 1%nat => v2 u | _ => v3 u end.
+Definition vv_ent (k : nat) (a : vv) : sv :=
+  match k with 0%nat => f1 a | 1%nat => f2 a | _ => f3 a end.
+
+(** Each operation's value is right. *)
+Ltac rel_go :=
+  repeat match goal with
+  | |- _ /\ _ => split
+  | |- srel _ (_ + _) (sv_add _ _) => apply sv_add_ok
+  | |- srel _ (_ * _) (sv_mul _ _) => apply sv_mul_ok
+  | |- srel _ (- _) (sv_neg _) => apply sv_neg_ok
+  | |- srel _ (_ - _) (sv_sub _ _) => apply sv_sub_ok
+  | |- srel _ (_ / IZR (Zpos _)) (sv_scq _ _) => apply sv_divc_ok
+  | |- srel _ (IZR Z0) (sv_q 0) => apply sv_zero_ok
+  | |- srel _ (IZR (Zpos xH)) (sv_q 1) => apply sv_one_ok
+  | |- srel _ (IZR (Zneg xH)) (sv_q (-1)) => apply sv_mone_ok
+  | |- srel _ (IZR (Zpos xH) / IZR (Zpos (xO xH))) (sv_q (1 # 2)) => apply sv_half_ok
+  | H : ?P |- ?P => exact H
+  end.
+
+Lemma mv_I3_ok env : mrel env I3 mv_I3.
+Proof. unfold mrel, mv_I3, I3. cbn -[srel sv_q]. rel_go. Qed.
+
+Lemma mv_Z3_ok env : mrel env Z3 mv_Z3.
+Proof. unfold mrel, mv_Z3, Z3. cbn -[srel sv_q]. rel_go. Qed.
+
+Ltac rel_destr :=
+  repeat match goal with
+  | H : mrel _ _ _ |- _ => unfold mrel in H; destruct H as (?&?&?&?&?&?&?&?&?)
+  | H : vrel _ _ _ |- _ => unfold vrel in H; destruct H as (?&?&?)
+  end.
+
+Lemma mv_add_ok env A B a b : mrel env A a -> mrel env B b -> mrel env (madd A B) (mv_add a b).
+Proof. intros. rel_destr. unfold mrel, madd, mv_add. cbn -[srel sv_add]. rel_go. Qed.
+
+Lemma mv_scale_ok env c A x a :
+  srel env c x -> mrel env A a -> mrel env (mscale c A) (mv_scale x a).
+Proof. intros. rel_destr. unfold mrel, mscale, mv_scale. cbn -[srel sv_mul]. rel_go. Qed.
+
+Lemma mv_neg_ok env A a : mrel env A a -> mrel env (mneg A) (mv_neg a).
+Proof. intros. unfold mneg, mv_neg. apply mv_scale_ok; [apply sv_mone_ok | assumption]. Qed.
+
+Lemma mv_sub_ok env A B a b : mrel env A a -> mrel env B b -> mrel env (msub A B) (mv_sub a b).
+Proof. intros. unfold msub, mv_sub. apply mv_add_ok; [|apply mv_neg_ok]; assumption. Qed.
+
+Lemma mv_mul_ok env A B a b : mrel env A a -> mrel env B b -> mrel env (mmul A B) (mv_mul a b).
+Proof. intros. rel_destr. unfold mrel, mmul, mv_mul. cbn -[srel sv_add sv_mul]. rel_go. Qed.
+
+Lemma mv_T_ok env A a : mrel env A a -> mrel env (mT A) (mv_T a).
+Proof. intros. rel_destr. unfold mrel, mT, mv_T. cbn -[srel]. rel_go. Qed.
+
+Lemma mv_sk_ok env A a : mrel env A a -> mrel env (sk A) (mv_sk a).
+Proof.
+  intros. unfold sk, mv_sk. apply mv_scale_ok; [apply sv_half_ok|].
+  apply mv_sub_ok; [|apply mv_T_ok]; assumption.
+Qed.
+
+Lemma mv_sym_ok env A a : mrel env A a -> mrel env (sym A) (mv_sym a).
+Proof.
+  intros. unfold sym, mv_sym. apply mv_scale_ok; [apply sv_half_ok|].
+  apply mv_add_ok; [|apply mv_T_ok]; assumption.
+Qed.
+
+Lemma mv_hat_ok env u a : vrel env u a -> mrel env (hat u) (mv_hat a).
+Proof. intros. rel_destr. unfold mrel, hat, mv_hat. cbn -[srel sv_neg sv_q]. rel_go. Qed.
+
+Lemma mv_outer_ok env u w a b : vrel env u a -> vrel env w b -> mrel env (outer u w) (mv_outer a b).
+Proof. intros. rel_destr. unfold mrel, outer, mv_outer. cbn -[srel sv_mul]. rel_go. Qed.
+
+Lemma mv_symm_ok env x11 x22 x33 x12 x13 x23 a11 a22 a33 a12 a13 a23 :
+  srel env x11 a11 -> srel env x22 a22 -> srel env x33 a33 -> srel env x12 a12 ->
+  srel env x13 a13 -> srel env x23 a23 ->
+  mrel env (symm x11 x22 x33 x12 x13 x23) (mv_symm a11 a22 a33 a12 a13 a23).
+Proof. intros. unfold mrel, symm, mv_symm. cbn -[srel]. rel_go. Qed.
+
+Lemma vv_zero_ok env : vrel env vzero vv_zero.
+Proof. unfold vrel, vzero, vv_zero. cbn -[srel sv_q]. rel_go. Qed.
+
+Lemma vv_add_ok env u w a b : vrel env u a -> vrel env w b -> vrel env (vadd u w) (vv_add a b).
+Proof. intros. rel_destr. unfold vrel, vadd, vv_add. cbn -[srel sv_add]. rel_go. Qed.
+
+Lemma vv_neg_ok env u a : vrel env u a -> vrel env (vneg u) (vv_neg a).
+Proof. intros. rel_destr. unfold vrel, vneg, vv_neg. cbn -[srel sv_neg]. rel_go. Qed.
+
+Lemma vv_scale_ok env c u x a :
+  srel env c x -> vrel env u a -> vrel env (vscale c u) (vv_scale x a).
+Proof. intros. rel_destr. unfold vrel, vscale, vv_scale. cbn -[srel sv_mul]. rel_go. Qed.
+
+Lemma vv_mv_ok env A u a b : mrel env A a -> vrel env u b -> vrel env (mvmul A u) (vv_mv a b).
+Proof. intros. rel_destr. unfold vrel, mvmul, vv_mv. cbn -[srel sv_add sv_mul]. rel_go. Qed.
+
+Lemma vv_vee_ok env A a : mrel env A a -> vrel env (vee A) (vv_vee a).
+Proof. intros. rel_destr. unfold vrel, vee, vv_vee. cbn -[srel sv_scq sv_sub]. rel_go. Qed.
+
+Lemma sv_tr_ok env A a : mrel env A a -> srel env (tr A) (sv_tr a).
+Proof. intros. rel_destr. unfold tr, sv_tr. cbn -[srel sv_add]. rel_go. Qed.
+
+Lemma sv_trmul_ok env A B a b :
+  mrel env A a -> mrel env B b -> srel env (tr (mmul A B)) (sv_trmul a b).
+Proof. intros. rel_destr. unfold tr, mmul, sv_trmul. cbn -[srel sv_add sv_mul]. rel_go. Qed.
+
+Lemma sv_phi_ok env A a : mrel env A a -> srel env (phi A) (sv_phi a).
+Proof.
+  intros. unfold phi, sv_phi. apply (sv_divc_ok env _ _ 2).
+  apply sv_tr_ok, mv_sub_ok; [apply mv_I3_ok | assumption].
+Qed.
+
+Lemma sv_vdot_ok env u w a b : vrel env u a -> vrel env w b -> srel env (vdot u w) (sv_vdot a b).
+Proof. intros. rel_destr. unfold vdot, sv_vdot. cbn -[srel sv_add sv_mul]. rel_go. Qed.
+
+Lemma mv_ent_ok env k A a : mrel env A a -> srel env (ment k A) (mv_ent k a).
+Proof.
+  intros H. rel_destr.
+  do 8 (destruct k as [|k]; [assumption|]). assumption.
+Qed.
+
+Lemma vv_ent_ok env k u a : vrel env u a -> srel env (vent k u) (vv_ent k a).
+Proof.
+  intros H. rel_destr. do 2 (destruct k as [|k]; [assumption|]). assumption.
+Qed.
+
+Lemma mv_rot_ok env q p :
+  qw q = nth p env 0 -> qx q = nth (S p) env 0 -> qy q = nth (S (S p)) env 0 ->
+  qz q = nth (S (S (S p))) env 0 -> qn q <> 0 -> mrel env (rot q) (mv_rot p).
+Proof.
+  intros Hw Hx Hy Hz Hn. unfold rot, mv_rot.
+  assert (Hu : vrel env (qvec q) (VV (sv_var (S p)) (sv_var (S (S p))) (sv_var (S (S (S p)))))).
+  { unfold vrel, qvec. cbn [v1 v2 v3 f1 f2 f3]. rewrite Hx, Hy, Hz.
+    split; [|split]; apply sv_var_ok. }
+  apply mv_add_ok; [apply mv_I3_ok|]. apply mv_scale_ok.
+  - unfold srel. cbn [fst snd peval meval]. rewrite denp_at.
+    assert (E : qn q = qnR env p) by (unfold qn, qnR; rewrite Hw, Hx, Hy, Hz; reflexivity).
+    rewrite <- E. unfold Q2R. simpl. field. exact Hn.
+  - apply mv_add_ok; [apply mv_scale_ok; [rewrite Hw; apply sv_var_ok | apply mv_hat_ok, Hu]|].
+    apply mv_mul_ok; apply mv_hat_ok, Hu.
+Qed.
+
+(** *** The language and its reading *)
+
+Inductive mx : Type :=
+| MRot (q : quat) (p : nat)   (* rot q, q's entries at env_p .. env_(p+3) *)
+| MI3 | MZ3
+| MAdd (a b : mx) | MSub (a b : mx) | MNeg (a : mx) | MScale (c : sx) (a : mx)
+| MMul (a b : mx) | MT (a : mx) | MSk (a : mx) | MSym (a : mx)
+| MHat (u : vx) | MOuter (u w : vx)
+| MSymm (a11 a22 a33 a12 a13 a23 : sx)
+with vx : Type :=
+| VVar (u : V3) (p : nat)     (* a vector, its entries at env_p .. env_(p+2) *)
+| VZero | VAdd (u w : vx) | VNeg (u : vx) | VScale (c : sx) (u : vx)
+| VMv (a : mx) (u : vx) | VVee (a : mx)
+with sx : Type :=
+| SZ (z : Z)                  (* IZR z *)
+| SV (i : nat)                (* the parameter env_i *)
+| SDivC (a : sx) (d : positive)  (* a / IZR (Zpos d) *)
+| SAdd (a b : sx) | SMul (a b : sx) | SNeg (a : sx) | SSub (a b : sx)
+| STr (a : mx) | STrMul (a b : mx) | SPhi (a : mx) | SVdot (u w : vx)
+| SEnt (k : nat) (a : mx) | SVEnt (k : nat) (u : vx).
+
+Fixpoint mden (env : list R) (a : mx) : M3 :=
+  match a with
+  | MRot q _ => rot q
+  | MI3 => I3
+  | MZ3 => Z3
+  | MAdd a b => madd (mden env a) (mden env b)
+  | MSub a b => msub (mden env a) (mden env b)
+  | MNeg a => mneg (mden env a)
+  | MScale c a => mscale (sden env c) (mden env a)
+  | MMul a b => mmul (mden env a) (mden env b)
+  | MT a => mT (mden env a)
+  | MSk a => sk (mden env a)
+  | MSym a => sym (mden env a)
+  | MHat u => hat (vden env u)
+  | MOuter u w => outer (vden env u) (vden env w)
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      symm (sden env a11) (sden env a22) (sden env a33) (sden env a12) (sden env a13)
+           (sden env a23)
+  end
+with vden (env : list R) (u : vx) : V3 :=
+  match u with
+  | VVar u _ => u
+  | VZero => vzero
+  | VAdd u w => vadd (vden env u) (vden env w)
+  | VNeg u => vneg (vden env u)
+  | VScale c u => vscale (sden env c) (vden env u)
+  | VMv a u => mvmul (mden env a) (vden env u)
+  | VVee a => vee (mden env a)
+  end
+with sden (env : list R) (r : sx) : R :=
+  match r with
+  | SZ z => IZR z
+  | SV i => nth i env 0
+  | SDivC a d => sden env a / IZR (Zpos d)
+  | SAdd a b => sden env a + sden env b
+  | SMul a b => sden env a * sden env b
+  | SNeg a => - sden env a
+  | SSub a b => sden env a - sden env b
+  | STr a => tr (mden env a)
+  | STrMul a b => tr (mmul (mden env a) (mden env b))
+  | SPhi a => phi (mden env a)
+  | SVdot u w => vdot (vden env u) (vden env w)
+  | SEnt k a => ment k (mden env a)
+  | SVEnt k u => vent k (vden env u)
+  end.
+
+(** What the reading takes for granted at its leaves: a rotation's [q] has its entries
+    where the leaf says and a non-zero norm; a vector has its entries where it says. *)
+Fixpoint mleaves (env : list R) (a : mx) : Prop :=
+  match a with
+  | MRot q p =>
+      qw q = nth p env 0 /\ qx q = nth (S p) env 0 /\ qy q = nth (S (S p)) env 0 /\
+      qz q = nth (S (S (S p))) env 0 /\ qn q <> 0
+  | MI3 | MZ3 => True
+  | MAdd a b | MSub a b | MMul a b => mleaves env a /\ mleaves env b
+  | MNeg a | MT a | MSk a | MSym a => mleaves env a
+  | MScale c a => sleaves env c /\ mleaves env a
+  | MHat u => vleaves env u
+  | MOuter u w => vleaves env u /\ vleaves env w
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      sleaves env a11 /\ sleaves env a22 /\ sleaves env a33 /\ sleaves env a12 /\
+      sleaves env a13 /\ sleaves env a23
+  end
+with vleaves (env : list R) (u : vx) : Prop :=
+  match u with
+  | VVar u p => v1 u = nth p env 0 /\ v2 u = nth (S p) env 0 /\ v3 u = nth (S (S p)) env 0
+  | VZero => True
+  | VAdd u w => vleaves env u /\ vleaves env w
+  | VNeg u => vleaves env u
+  | VScale c u => sleaves env c /\ vleaves env u
+  | VMv a u => mleaves env a /\ vleaves env u
+  | VVee a => mleaves env a
+  end
+with sleaves (env : list R) (r : sx) : Prop :=
+  match r with
+  | SZ _ | SV _ => True
+  | SDivC a _ | SNeg a => sleaves env a
+  | SAdd a b | SMul a b | SSub a b => sleaves env a /\ sleaves env b
+  | STr a | SPhi a | SEnt _ a => mleaves env a
+  | STrMul a b => mleaves env a /\ mleaves env b
+  | SVdot u w => vleaves env u /\ vleaves env w
+  | SVEnt _ u => vleaves env u
+  end.
+
+Fixpoint evm (a : mx) : mv :=
+  match a with
+  | MRot _ p => mv_rot p
+  | MI3 => mv_I3
+  | MZ3 => mv_Z3
+  | MAdd a b => mv_add (evm a) (evm b)
+  | MSub a b => mv_sub (evm a) (evm b)
+  | MNeg a => mv_neg (evm a)
+  | MScale c a => mv_scale (evs c) (evm a)
+  | MMul a b => mv_mul (evm a) (evm b)
+  | MT a => mv_T (evm a)
+  | MSk a => mv_sk (evm a)
+  | MSym a => mv_sym (evm a)
+  | MHat u => mv_hat (evv u)
+  | MOuter u w => mv_outer (evv u) (evv w)
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      mv_symm (evs a11) (evs a22) (evs a33) (evs a12) (evs a13) (evs a23)
+  end
+with evv (u : vx) : vv :=
+  match u with
+  | VVar _ p => VV (sv_var p) (sv_var (S p)) (sv_var (S (S p)))
+  | VZero => vv_zero
+  | VAdd u w => vv_add (evv u) (evv w)
+  | VNeg u => vv_neg (evv u)
+  | VScale c u => vv_scale (evs c) (evv u)
+  | VMv a u => vv_mv (evm a) (evv u)
+  | VVee a => vv_vee (evm a)
+  end
+with evs (r : sx) : sv :=
+  match r with
+  | SZ z => sv_q (inject_Z z)
+  | SV i => sv_var i
+  | SDivC a d => sv_scq (1 # d) (evs a)
+  | SAdd a b => sv_add (evs a) (evs b)
+  | SMul a b => sv_mul (evs a) (evs b)
+  | SNeg a => sv_neg (evs a)
+  | SSub a b => sv_sub (evs a) (evs b)
+  | STr a => sv_tr (evm a)
+  | STrMul a b => sv_trmul (evm a) (evm b)
+  | SPhi a => sv_phi (evm a)
+  | SVdot u w => sv_vdot (evv u) (evv w)
+  | SEnt k a => mv_ent k (evm a)
+  | SVEnt k u => vv_ent k (evv u)
+  end.
+
+Scheme mx_ind2 := Induction for mx Sort Prop
+  with vx_ind2 := Induction for vx Sort Prop
+  with sx_ind2 := Induction for sx Sort Prop.
+Combined Scheme ex_ind2 from mx_ind2, vx_ind2, sx_ind2.
+
+Theorem ev_sound env :
+  (forall a, mleaves env a -> mrel env (mden env a) (evm a)) /\
+  (forall u, vleaves env u -> vrel env (vden env u) (evv u)) /\
+  (forall r, sleaves env r -> srel env (sden env r) (evs r)).
+Proof.
+  apply ex_ind2; cbn [mleaves vleaves sleaves mden vden sden evm evv evs]; intros;
+    repeat match goal with H : _ /\ _ |- _ => destruct H end.
+  - apply mv_rot_ok; assumption.
+  - apply mv_I3_ok.
+  - apply mv_Z3_ok.
+  - apply mv_add_ok; auto.
+  - apply mv_sub_ok; auto.
+  - apply mv_neg_ok; auto.
+  - apply mv_scale_ok; auto.
+  - apply mv_mul_ok; auto.
+  - apply mv_T_ok; auto.
+  - apply mv_sk_ok; auto.
+  - apply mv_sym_ok; auto.
+  - apply mv_hat_ok; auto.
+  - apply mv_outer_ok; auto.
+  - apply mv_symm_ok; auto.
+  - unfold vrel. cbn [f1 f2 f3].
+    repeat match goal with H : ?x = nth _ _ _ |- context [?x] => rewrite H; clear H end.
+    split; [|split]; apply sv_var_ok.
+  - apply vv_zero_ok.
+  - apply vv_add_ok; auto.
+  - apply vv_neg_ok; auto.
+  - apply vv_scale_ok; auto.
+  - apply vv_mv_ok; auto.
+  - apply vv_vee_ok; auto.
+  - apply sv_Z_ok.
+  - apply sv_var_ok.
+  - apply sv_divc_ok; auto.
+  - apply sv_add_ok; auto.
+  - apply sv_mul_ok; auto.
+  - apply sv_neg_ok; auto.
+  - apply sv_sub_ok; auto.
+  - apply sv_tr_ok; auto.
+  - apply sv_trmul_ok; auto.
+  - apply sv_phi_ok; auto.
+  - apply sv_vdot_ok; auto.
+  - apply mv_ent_ok; auto.
+  - apply vv_ent_ok; auto.
+Qed.
+
+(** *** Rotations meeting their transposes: [R^T R = R R^T = I] in products
+
+    Before evaluation, every product is read as a chain of factors (transposes pushed to
+    the factors), and adjacent factors [rot q^T rot q] or [rot q rot q^T] (the same
+    parameters) are cancelled, as the prelude's [so3_norm] does by rewriting.  The value
+    of a product of rotations then keeps the denominators of the rotations left in it:
+    [(R_r^T R_l)^T (R_r^T R)] is evaluated as [R_l^T R]. *)
+
+Definition fac := (mx * bool)%type.  (* a factor, transposed when [true] *)
+
+Definition fmx (f : fac) : mx := if snd f then MT (fst f) else fst f.
+
+Fixpoint build (l : list fac) : mx :=
+  match l with
+  | nil => MI3
+  | [f] => fmx f
+  | f :: l' => MMul (fmx f) (build l')
+  end.
+
+(** [f g = I]: the same rotation, once transposed. *)
+Definition rot_inv (f g : fac) : bool :=
+  match fst f, fst g with
+  | MRot _ p, MRot _ p' => Nat.eqb p p' && negb (Bool.eqb (snd f) (snd g))
+  | _, _ => false
+  end.
+
+Fixpoint cancel1 (l : list fac) : list fac :=
+  match l with
+  | f :: ((g :: l'') as l') => if rot_inv f g then l'' else f :: cancel1 l'
+  | _ => l
+  end.
+
+Fixpoint cancel (fuel : nat) (l : list fac) : list fac :=
+  match fuel with O => l | S k => cancel k (cancel1 l) end.
+
+Fixpoint simp_m (a : mx) : mx :=
+  match a with
+  | MMul a b => let l := chain false a ++ chain false b in build (cancel (length l) l)
+  | MT a => let l := chain true a in build (cancel (length l) l)
+  | MRot q p => MRot q p
+  | MI3 => MI3
+  | MZ3 => MZ3
+  | MAdd a b => MAdd (simp_m a) (simp_m b)
+  | MSub a b => MSub (simp_m a) (simp_m b)
+  | MNeg a => MNeg (simp_m a)
+  | MScale c a => MScale (simp_s c) (simp_m a)
+  | MSk a => MSk (simp_m a)
+  | MSym a => MSym (simp_m a)
+  | MHat u => MHat (simp_v u)
+  | MOuter u w => MOuter (simp_v u) (simp_v w)
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      MSymm (simp_s a11) (simp_s a22) (simp_s a33) (simp_s a12) (simp_s a13) (simp_s a23)
+  end
+with chain (t : bool) (a : mx) : list fac :=
+  match a with
+  | MMul a b => if t then chain true b ++ chain true a else chain false a ++ chain false b
+  | MT a => chain (negb t) a
+  | MRot q p => [(MRot q p, t)]
+  | MI3 => [(MI3, t)]
+  | MZ3 => [(MZ3, t)]
+  | MAdd a b => [(MAdd (simp_m a) (simp_m b), t)]
+  | MSub a b => [(MSub (simp_m a) (simp_m b), t)]
+  | MNeg a => [(MNeg (simp_m a), t)]
+  | MScale c a => [(MScale (simp_s c) (simp_m a), t)]
+  | MSk a => [(MSk (simp_m a), t)]
+  | MSym a => [(MSym (simp_m a), t)]
+  | MHat u => [(MHat (simp_v u), t)]
+  | MOuter u w => [(MOuter (simp_v u) (simp_v w), t)]
+  | MSymm a11 a22 a33 a12 a13 a23 =>
+      [(MSymm (simp_s a11) (simp_s a22) (simp_s a33) (simp_s a12) (simp_s a13)
+              (simp_s a23), t)]
+  end
+with simp_v (u : vx) : vx :=
+  match u with
+  | VVar u p => VVar u p
+  | VZero => VZero
+  | VAdd u w => VAdd (simp_v u) (simp_v w)
+  | VNeg u => VNeg (simp_v u)
+  | VScale c u => VScale (simp_s c) (simp_v u)
+  | VMv a u => VMv (simp_m a) (simp_v u)
+  | VVee a => VVee (simp_m a)
+  end
+with simp_s (r : sx) : sx :=
+  match r with
+  | SZ z => SZ z
+  | SV i => SV i
+  | SDivC a d => SDivC (simp_s a) d
+  | SAdd a b => SAdd (simp_s a) (simp_s b)
+  | SMul a b => SMul (simp_s a) (simp_s b)
+  | SNeg a => SNeg (simp_s a)
+  | SSub a b => SSub (simp_s a) (simp_s b)
+  | STr a => STr (simp_m a)
+  | STrMul a b => STrMul (simp_m a) (simp_m b)
+  | SPhi a => SPhi (simp_m a)
+  | SVdot u w => SVdot (simp_v u) (simp_v w)
+  | SEnt k a => SEnt k (simp_m a)
+  | SVEnt k u => SVEnt k (simp_v u)
+  end.
+
+Definition fden env (f : fac) : M3 := if snd f then mT (mden env (fst f)) else mden env (fst f).
+
+Fixpoint cden env (l : list fac) : M3 :=
+  match l with nil => I3 | f :: l' => mmul (fden env f) (cden env l') end.
+
+Definition fleaves env (l : list fac) : Prop := Forall (fun f => mleaves env (fst f)) l.
+
+Lemma cden_app env l1 l2 : cden env (l1 ++ l2) = mmul (cden env l1) (cden env l2).
+Proof.
+  induction l1 as [|f l1 IH]; simpl; [symmetry; apply mmul_I3_l|].
+  rewrite IH, mmul_assoc. reflexivity.
+Qed.
+
+Lemma build_ok env l :
+  fleaves env l -> mleaves env (build l) /\ mden env (build l) = cden env l.
+Proof.
+  induction l as [|f l IH]; intros H; [split; [exact I | reflexivity]|].
+  inversion H as [|? ? Hf Hl]; subst.
+  assert (Hfm : mleaves env (fmx f) /\ mden env (fmx f) = fden env f)
+    by (unfold fmx, fden; destruct (snd f); split; auto).
+  destruct l as [|g l].
+  - cbn [build cden]. destruct Hfm as [Hfm Efm]. split; [exact Hfm|].
+    rewrite Efm, mmul_I3_r. reflexivity.
+  - destruct (IH Hl) as [IH1 IH2]. destruct Hfm as [Hfm Efm].
+    change (build (f :: g :: l)) with (MMul (fmx f) (build (g :: l))).
+    split; [split; assumption|]. cbn [mden]. rewrite IH2, Efm. reflexivity.
+Qed.
+
+Lemma rot_same q q' p env :
+  qw q = nth p env 0 /\ qx q = nth (S p) env 0 /\ qy q = nth (S (S p)) env 0 /\
+  qz q = nth (S (S (S p))) env 0 /\ qn q <> 0 ->
+  qw q' = nth p env 0 /\ qx q' = nth (S p) env 0 /\ qy q' = nth (S (S p)) env 0 /\
+  qz q' = nth (S (S (S p))) env 0 /\ qn q' <> 0 -> rot q = rot q'.
+Proof.
+  destruct q, q'. simpl. intros (->&->&->&->&_) (->&->&->&->&_). reflexivity.
+Qed.
+
+Lemma cancel1_ok env l :
+  fleaves env l -> fleaves env (cancel1 l) /\ cden env (cancel1 l) = cden env l.
+Proof.
+  induction l as [|f l IH]; intros H; [split; [exact H | reflexivity]|].
+  inversion H as [|? ? Hf Hl]; subst.
+  destruct l as [|g l]; [split; [exact H | reflexivity]|].
+  change (cancel1 (f :: g :: l))
+    with (if rot_inv f g then l else f :: cancel1 (g :: l)).
+  destruct (rot_inv f g) eqn:E.
+  - inversion Hl as [|? ? Hg Hl']; subst. split; [exact Hl'|].
+    destruct f as [[] tf]; try discriminate. destruct g as [[] tg]; try discriminate.
+    unfold rot_inv in E. cbn [fst snd] in *. apply andb_true_iff in E as [Ep Et].
+    apply Nat.eqb_eq in Ep. subst.
+    cbn [cden]. unfold fden. cbn [fst snd mden].
+    rewrite (rot_same q0 q p0 env Hg Hf). destruct Hf as (_&_&_&_&Hn).
+    rewrite <- mmul_assoc.
+    destruct tf, tg; try discriminate; cbn [fst snd].
+    + rewrite (rot_orthogonal q Hn), mmul_I3_l. reflexivity.
+    + rewrite (rot_orthogonal_r q Hn), mmul_I3_l. reflexivity.
+  - destruct (IH Hl) as [IH1 IH2]. split; [constructor; assumption|].
+    cbn [cden]. rewrite IH2. reflexivity.
+Qed.
+
+Lemma cancel_ok env n l :
+  fleaves env l -> fleaves env (cancel n l) /\ cden env (cancel n l) = cden env l.
+Proof.
+  revert l. induction n as [|n IH]; intros l H; [split; [exact H | reflexivity]|].
+  cbn [cancel]. destruct (cancel1_ok env l H) as [H1 E1].
+  destruct (IH _ H1) as [H2 E2]. split; [exact H2|]. rewrite E2, E1. reflexivity.
+Qed.
+
+Lemma bc_ok env l :
+  fleaves env l -> mleaves env (build (cancel (length l) l)) /\
+                   mden env (build (cancel (length l) l)) = cden env l.
+Proof.
+  intros H. destruct (cancel_ok env (length l) l H) as [H1 E1].
+  destruct (build_ok env _ H1) as [H2 E2]. split; [exact H2|]. rewrite E2, E1. reflexivity.
+Qed.
+
+Definition chain_ok env a : Prop :=
+  forall t, fleaves env (chain t a) /\
+            cden env (chain t a) = if t then mT (mden env a) else mden env a.
+
+Definition simp_ok env a : Prop :=
+  mleaves env (simp_m a) /\ mden env (simp_m a) = mden env a.
+
+Lemma chain_one env (x y : mx) t :
+  mleaves env x -> mden env x = mden env y ->
+  fleaves env [(x, t)] /\ cden env [(x, t)] = if t then mT (mden env y) else mden env y.
+Proof.
+  intros Hx E. split; [repeat constructor; exact Hx|].
+  cbn [cden]. rewrite mmul_I3_r. unfold fden. cbn [fst snd]. rewrite E. reflexivity.
+Qed.
+
+Lemma mmul_case env a b :
+  chain_ok env a -> chain_ok env b -> simp_ok env (MMul a b) /\ chain_ok env (MMul a b).
+Proof.
+  intros Ha Hb. destruct (Ha false) as [Ha1 Ea1], (Hb false) as [Hb1 Eb1].
+  split.
+  - unfold simp_ok. cbn [simp_m].
+    assert (H : fleaves env (chain false a ++ chain false b))
+      by (apply Forall_app; split; assumption).
+    destruct (bc_ok env _ H) as [H1 E1]. split; [exact H1|].
+    rewrite E1, cden_app, Ea1, Eb1. reflexivity.
+  - intros [|].
+    + destruct (Ha true) as [Ha2 Ea2], (Hb true) as [Hb2 Eb2]. cbn [chain].
+      split; [apply Forall_app; split; assumption|].
+      rewrite cden_app, Ea2, Eb2. cbn [mden]. symmetry. apply mT_mmul.
+    + cbn [chain]. split; [apply Forall_app; split; assumption|].
+      rewrite cden_app, Ea1, Eb1. reflexivity.
+Qed.
+
+Lemma mt_case env a : chain_ok env a -> simp_ok env (MT a) /\ chain_ok env (MT a).
+Proof.
+  intros Ha. split.
+  - destruct (Ha true) as [H1 E1]. unfold simp_ok. cbn [simp_m].
+    destruct (bc_ok env _ H1) as [H2 E2]. split; [exact H2|]. rewrite E2, E1. reflexivity.
+  - intros [|]; cbn [chain negb mden].
+    + destruct (Ha false) as [H1 E1]. split; [exact H1|]. rewrite E1, mT_mT. reflexivity.
+    + exact (Ha true).
+Qed.
+
+Local Ltac simp_leaves :=
+  repeat match goal with
+  | |- _ /\ _ => split
+  | |- True => exact I
+  | |- _ => assumption
+  end.
+
+Local Ltac simp_eq :=
+  repeat match goal with
+  | H : mden _ _ = _ |- _ => rewrite H; clear H
+  | H : vden _ _ = _ |- _ => rewrite H; clear H
+  | H : sden _ _ = _ |- _ => rewrite H; clear H
+  end; reflexivity.
+
+Lemma simp_sound env :
+  (forall a, mleaves env a -> simp_ok env a /\ chain_ok env a) /\
+  (forall u, vleaves env u -> vleaves env (simp_v u) /\ vden env (simp_v u) = vden env u) /\
+  (forall r, sleaves env r -> sleaves env (simp_s r) /\ sden env (simp_s r) = sden env r).
+Proof.
+  apply ex_ind2; intros; cbn [mleaves vleaves sleaves] in *;
+    repeat match goal with
+    | H : _ /\ _ |- _ => destruct H
+    | H : ?P -> _, H' : ?P |- _ => specialize (H H')
+    | H : simp_ok _ _ |- _ => unfold simp_ok in H
+    end;
+      lazymatch goal with
+        | |- simp_ok _ (MMul _ _) /\ _ => apply mmul_case; assumption
+        | |- simp_ok _ (MT _) /\ _ => apply mt_case; assumption
+        | |- simp_ok ?env ?y /\ _ =>
+            assert (S : simp_ok env y)
+              by (unfold simp_ok; cbn [simp_m mleaves mden]; split; [simp_leaves | simp_eq]);
+            split; [exact S | intros t; destruct S as [S1 S2]; unfold simp_ok in S1, S2;
+                                cbn [chain]; cbn [simp_m] in S1, S2;
+                                exact (chain_one env _ y t S1 S2)]
+        | |- _ => cbn [simp_v simp_s vleaves sleaves mleaves vden sden mden];
+                  split; [simp_leaves | simp_eq]
+        end.
+Qed.
+
 (** [d]: the denominator the exporter expects (powers of norms); the check lifts the
     computed value and the target to the larger of the two. *)
 Definition link_check (qs : list nat) (r : sx) (d : list nat) (target : poly) : bool :=
-  let (n, e) := ev r in
+  let (n, e) := evs (simp_s r) in
   let m := emax e d in
-  sx_valid qs r && exps_ok_from qs 0 m
-  && poly_zero (pmul n (liftP 0 (ediff e m)) ++ pneg (pmul (liftP 0 (ediff d m)) target)).
+  exps_ok_from qs 0 m && poly_zero (lift n (ediff e m) ++ pneg (lift target (ediff d m))).
 
 (** The link of a unit: its slack [s] is the expression [r], whose value times a positive
     product of norms is the target polynomial times a non-negative one. *)
 Theorem link_ok env qs r (s : R) d target :
-  Forall (fun p => qnR env p <> 0) qs -> s = sden env r ->
+  Forall (fun p => qnR env p <> 0) qs -> sleaves env r -> s = sden env r ->
   link_check qs r d target = true ->
   exists D F, 0 < D /\ 0 <= F /\ s * D = F * peval env target.
 Proof.
-  intros Hq Hs H. unfold link_check in H.
-  pose proof (ev_sound env qs r Hq) as Hev.
-  destruct (ev r) as [n e]. simpl in Hev.
-  apply andb_true_iff in H as [H Hz]. apply andb_true_iff in H as [Hv He].
-  specialize (Hev Hv).
+  intros Hq Hl Hs H. unfold link_check in H.
+  destruct (proj2 (proj2 (simp_sound env)) r Hl) as [Hl' Es]. rewrite <- Es in Hs.
+  pose proof (proj2 (proj2 (ev_sound env)) _ Hl') as Hev. unfold srel in Hev.
+  destruct (evs (simp_s r)) as [n e]. cbn [fst snd] in Hev.
+  apply andb_true_iff in H as [He Hz].
   exists (denp env 0 (emax e d)), (denp env 0 (ediff d (emax e d))).
   split; [exact (denp_pos env qs 0 _ Hq He)|]. split; [apply denp_nonneg|].
   subst s. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
   rewrite (eadd_ediff_l e d).
   apply (poly_zero_sound env) in Hz. rewrite peval_app in Hz. unfold pneg in Hz.
-  rewrite peval_scale, !peval_mul, !peval_liftP in Hz.
+  rewrite peval_scale, !peval_lift in Hz.
   assert (E : Q2R (-1) = -1) by (unfold Q2R; simpl; lra). rewrite E in Hz. lra.
 Qed.
 
-(** Reading an unfolded real expression into [sx] ([l]: the parameters, unfolded). *)
+(** Reading a statement into [sx] ([l]: the parameters, as [env] lists them). *)
 Ltac sos_index x l :=
   lazymatch l with
   | x :: _ => constr:(O)
   | _ :: ?l' => let n := sos_index x l' in constr:(S n)
   end.
 
-Ltac sos_reify l t :=
+Ltac sos_reify_m l t :=
+  lazymatch t with
+  | rot ?q => let p := sos_index (qw q) l in constr:(MRot q p)
+  | I3 => constr:(MI3)
+  | Z3 => constr:(MZ3)
+  | madd ?a ?b => let ra := sos_reify_m l a in let rb := sos_reify_m l b in constr:(MAdd ra rb)
+  | msub ?a ?b => let ra := sos_reify_m l a in let rb := sos_reify_m l b in constr:(MSub ra rb)
+  | mneg ?a => let ra := sos_reify_m l a in constr:(MNeg ra)
+  | mscale ?c ?a => let rc := sos_reify l c in let ra := sos_reify_m l a in constr:(MScale rc ra)
+  | mmul ?a ?b => let ra := sos_reify_m l a in let rb := sos_reify_m l b in constr:(MMul ra rb)
+  | mT ?a => let ra := sos_reify_m l a in constr:(MT ra)
+  | sk ?a => let ra := sos_reify_m l a in constr:(MSk ra)
+  | sym ?a => let ra := sos_reify_m l a in constr:(MSym ra)
+  | hat ?u => let ru := sos_reify_v l u in constr:(MHat ru)
+  | outer ?u ?w => let ru := sos_reify_v l u in let rw := sos_reify_v l w in constr:(MOuter ru rw)
+  | symm ?a11 ?a22 ?a33 ?a12 ?a13 ?a23 =>
+      let r11 := sos_reify l a11 in let r22 := sos_reify l a22 in
+      let r33 := sos_reify l a33 in let r12 := sos_reify l a12 in
+      let r13 := sos_reify l a13 in let r23 := sos_reify l a23 in
+      constr:(MSymm r11 r22 r33 r12 r13 r23)
+  end
+with sos_reify_v l t :=
+  lazymatch t with
+  | vzero => constr:(VZero)
+  | vadd ?u ?w => let ru := sos_reify_v l u in let rw := sos_reify_v l w in constr:(VAdd ru rw)
+  | vneg ?u => let ru := sos_reify_v l u in constr:(VNeg ru)
+  | vscale ?c ?u => let rc := sos_reify l c in let ru := sos_reify_v l u in constr:(VScale rc ru)
+  | mvmul ?a ?u => let ra := sos_reify_m l a in let ru := sos_reify_v l u in constr:(VMv ra ru)
+  | vee ?a => let ra := sos_reify_m l a in constr:(VVee ra)
+  | ?u => let p := sos_index (v1 u) l in constr:(VVar u p)
+  end
+with sos_reify l t :=
   lazymatch t with
   | ?a + ?b => let ra := sos_reify l a in let rb := sos_reify l b in constr:(SAdd ra rb)
   | ?a * ?b => let ra := sos_reify l a in let rb := sos_reify l b in constr:(SMul ra rb)
+  | ?a - ?b => let ra := sos_reify l a in let rb := sos_reify l b in constr:(SSub ra rb)
   | - ?a => let ra := sos_reify l a in constr:(SNeg ra)
-  | / IZR (Zpos ?d) => constr:(SInvC d)
-  | / qn ?q =>
-      let w := eval cbv delta [qw] beta iota in (qw q) in
-      let p := sos_index w l in constr:(SInvQ p)
+  | ?a / IZR (Zpos ?d) => let ra := sos_reify l a in constr:(SDivC ra d)
   | IZR ?z => constr:(SZ z)
+  | tr (mmul ?a ?b) =>
+      let ra := sos_reify_m l a in let rb := sos_reify_m l b in constr:(STrMul ra rb)
+  | tr ?a => let ra := sos_reify_m l a in constr:(STr ra)
+  | phi ?a => let ra := sos_reify_m l a in constr:(SPhi ra)
+  | vdot ?u ?w => let ru := sos_reify_v l u in let rw := sos_reify_v l w in constr:(SVdot ru rw)
+  | m11 ?a => let ra := sos_reify_m l a in constr:(SEnt 0 ra)
+  | m12 ?a => let ra := sos_reify_m l a in constr:(SEnt 1 ra)
+  | m13 ?a => let ra := sos_reify_m l a in constr:(SEnt 2 ra)
+  | m21 ?a => let ra := sos_reify_m l a in constr:(SEnt 3 ra)
+  | m22 ?a => let ra := sos_reify_m l a in constr:(SEnt 4 ra)
+  | m23 ?a => let ra := sos_reify_m l a in constr:(SEnt 5 ra)
+  | m31 ?a => let ra := sos_reify_m l a in constr:(SEnt 6 ra)
+  | m32 ?a => let ra := sos_reify_m l a in constr:(SEnt 7 ra)
+  | m33 ?a => let ra := sos_reify_m l a in constr:(SEnt 8 ra)
   | ?x => let i := sos_index x l in constr:(SV i)
   end.
 
-(** The prelude's definitions unfolded, the quaternion norm kept (it becomes [SInvQ]). *)
-Ltac sos_unfold_in t :=
-  eval cbv beta iota zeta delta [rot qvec phi fro2 det sk sym hat vee symm outer tr I3 Z3
-     mT mvmul mmul msub mneg mscale madd vdot vzero vscale vneg vadd row1 row2 row3 qform
-     v1 v2 v3 m11 m12 m13 m21 m22 m23 m31 m32 m33 qw qx qy qz Rdiv Rminus] in t.
+(** The leaves' conditions: equalities of a leaf's entries with the parameters (by
+    conversion) and the rotations' non-zero norms (the unit's hypotheses). *)
+Ltac sos_leaves :=
+  cbn [sleaves mleaves vleaves];
+  repeat match goal with
+  | |- _ /\ _ => split
+  | |- True => exact I
+  | |- _ = _ => reflexivity
+  | |- qn _ <> 0 => assumption
+  end.
 
 (** Proves [exists D F, 0 < D /\ 0 <= F /\ s * D = F * peval env target] by [link_ok]:
     [params] is the list [env] stands for, [qs] the positions of the quaternions, [Hq]
@@ -694,10 +1470,9 @@ Ltac sos_unfold_in t :=
 Ltac sos_link params qs Hq fe :=
   lazymatch goal with
   | |- exists D F, 0 < D /\ 0 <= F /\ ?s * D = F * peval ?env ?t =>
-      let l := sos_unfold_in params in
-      let s' := sos_unfold_in s in
-      let r := sos_reify l s' in
-      apply (link_ok env qs r s fe t Hq); [reflexivity | vm_cast_no_check (eq_refl true)]
+      let r := sos_reify params s in
+      apply (link_ok env qs r s fe t Hq);
+        [sos_leaves | reflexivity | vm_cast_no_check (eq_refl true)]
   end.
 
 (** ** Multipliers' entries by computation *)
@@ -716,25 +1491,19 @@ Proof.
   rewrite H1, (IH b H2). reflexivity.
 Qed.
 
-(** [s * den d = h] exactly, when [s]'s computed denominator divides [den d]. *)
-Definition exact_check (qs : list nat) (r : sx) (d : list nat) (h : poly) : bool :=
-  let (n, e) := ev r in
-  sx_valid qs r && eqb_list (emax e d) d
-  && poly_zero (pmul n (liftP 0 (ediff e d)) ++ pneg h).
+(** [v] is [h] over [den d] exactly: [v]'s denominator divides [den d]. *)
+Definition entry_check (v : sv) (d : list nat) (h : poly) : bool :=
+  eqb_list (emax (snd v) d) d && poly_zero (lift (fst v) (ediff (snd v) d) ++ pneg h).
 
-Theorem exact_ok env qs r (s : R) d h :
-  Forall (fun p => qnR env p <> 0) qs -> s = sden env r ->
-  exact_check qs r d h = true -> peval env h = s * denp env 0 d.
+Lemma entry_ok env x v d h :
+  srel env x v -> entry_check v d h = true -> peval env h = x * denp env 0 d.
 Proof.
-  intros Hq Hs H. unfold exact_check in H.
-  pose proof (ev_sound env qs r Hq) as Hev.
-  destruct (ev r) as [n e]. simpl in Hev.
-  apply andb_true_iff in H as [H Hz]. apply andb_true_iff in H as [Hv Hd].
-  apply eqb_list_eq in Hd. specialize (Hev Hv).
-  subst s. rewrite <- Hd at 1. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
+  unfold srel, entry_check. destruct v as [n e]. cbn [fst snd]. intros Hev H.
+  apply andb_true_iff in H as [Hd Hz]. apply eqb_list_eq in Hd.
+  rewrite <- Hd at 1. rewrite <- (eadd_ediff_l e d), denp_eadd, <- Rmult_assoc, Hev.
   rewrite Hd.
   apply (poly_zero_sound env) in Hz. rewrite peval_app in Hz. unfold pneg in Hz.
-  rewrite peval_scale, peval_mul, peval_liftP in Hz.
+  rewrite peval_scale, peval_lift in Hz.
   assert (E : Q2R (-1) = -1) by (unfold Q2R; simpl; lra). rewrite E in Hz. lra.
 Qed.
 
@@ -763,13 +1532,44 @@ Proof.
   apply Rmult_le_pos; [apply Rmult_le_pos|]; assumption.
 Qed.
 
-(** Proves [peval env h = s * denp env 0 d] by [exact_ok] (its check evaluated once, by the
-    kernel at [Qed], as in [sos_link]). *)
-Ltac sos_exact params qs Hq :=
+(** The entries of a 3 x 3 multiplier [c * D * M] by computation: [c] and [M] read as
+    expressions ([rc], [rM]), evaluated once, each entry compared with [H]'s. *)
+Definition psd9_check (rc : sx) (rM : mx) (d : list nat)
+    (h11 h12 h13 h21 h22 h23 h31 h32 h33 : poly) : bool :=
+  let c := evs (simp_s rc) in
+  let m := evm (simp_m rM) in
+  entry_check (sv_mul c (e11 m)) d h11 && entry_check (sv_mul c (e12 m)) d h12 &&
+  entry_check (sv_mul c (e13 m)) d h13 && entry_check (sv_mul c (e21 m)) d h21 &&
+  entry_check (sv_mul c (e22 m)) d h22 && entry_check (sv_mul c (e23 m)) d h23 &&
+  entry_check (sv_mul c (e31 m)) d h31 && entry_check (sv_mul c (e32 m)) d h32 &&
+  entry_check (sv_mul c (e33 m)) d h33.
+
+Theorem mult_psd_9r env rc rM d (h11 h12 h13 h21 h22 h23 h31 h32 h33 : poly) :
+  sleaves env rc -> mleaves env rM -> 0 <= sden env rc ->
+  (forall v, 0 <= qform (mden env rM) v) ->
+  psd9_check rc rM d h11 h12 h13 h21 h22 h23 h31 h32 h33 = true ->
+  mult_psd env [[h11; h12; h13]; [h21; h22; h23]; [h31; h32; h33]].
+Proof.
+  intros Hc HM Hc0 HMq Hk.
+  destruct (proj2 (proj2 (simp_sound env)) rc Hc) as [Hc' Ec].
+  destruct (proj1 (simp_sound env) rM HM) as [[HM' EM] _].
+  pose proof (proj2 (proj2 (ev_sound env)) _ Hc') as Vc. rewrite Ec in Vc.
+  pose proof (proj1 (ev_sound env) _ HM') as VM. rewrite EM in VM.
+  unfold psd9_check in Hk. cbv zeta in Hk. do 8 (apply andb_true_iff in Hk as [Hk ?]).
+  destruct VM as (V11&V12&V13&V21&V22&V23&V31&V32&V33).
+  apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ (mden env rM) (sden env rc) (denp env 0 d) Hc0
+           (denp_nonneg env 0 d) HMq);
+    (eapply entry_ok; [apply sv_mul_ok; eassumption | eassumption]).
+Qed.
+
+(** Proves [mult_psd env H] for [H = c * D * M] entry by entry, [D] the product of norms
+    [d], by [mult_psd_9r] (its check evaluated once, by the kernel at [Qed], as in
+    [sos_link]); leaves [0 <= c] and [forall v, 0 <= qform M v] (up to reading). *)
+Ltac sos_psd9 params c M d :=
   lazymatch goal with
-  | |- peval ?env ?h = ?s * denp ?env 0 ?d =>
-      let l := sos_unfold_in params in
-      let s' := sos_unfold_in s in
-      let r := sos_reify l s' in
-      apply (exact_ok env qs r s d h Hq); [reflexivity | vm_cast_no_check (eq_refl true)]
+  | |- mult_psd ?env _ =>
+      let rc := sos_reify params c in
+      let rM := sos_reify_m params M in
+      refine (mult_psd_9r env rc rM d _ _ _ _ _ _ _ _ _ _ _ _ _ _);
+        [sos_leaves | sos_leaves | | | vm_cast_no_check (eq_refl true)]
   end.

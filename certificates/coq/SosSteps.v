@@ -82,7 +82,7 @@ Qed.
 Definition blocks : list block := [(mkBlock H1 S1); (mkBlock H2 S2)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_cons env (mkBlock H2 S2) _ H2_psd (blocks_psd_nil env))). Qed.
@@ -166,7 +166,7 @@ Qed.
 Definition blocks : list block := [(mkBlock H1 S1)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
@@ -245,7 +245,7 @@ Qed.
 Definition blocks : list block := [(mkBlock H1 S1)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
@@ -315,7 +315,7 @@ Qed.
 Definition blocks : list block := [(mkBlock H1 S1)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
@@ -388,7 +388,7 @@ Qed.
 Definition blocks : list block := [(mkBlock H1 S1)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
@@ -416,7 +416,7 @@ Module sos_thm1_S_r_dot_step7.
 
 (** SOS certificate sos-217401dc738227942628.json, exported to Coq.
     It proves step 7 of the derivation 'thm1.S_r-dot' (verify.paper_proofs): (-1/4) k_s tr((R̄_r + R̄_rᵀ) (I - R̄ᵀ R_l)) - (1/2) k_s tr(I - R̄_r) + (1/2) k_s tr(I - R_rl) <= (-1/2) k_s λmin((R̄_r + R̄_rᵀ)) φ(R̄ᵀ R_l) - k_s φ(R̄_r) + k_s φ(R_rl).
-    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by field. *)
+    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by computation (SOSCert.mult_psd_9r, SOSCert.link_ok). *)
 
 Import Reals QArith List Lra SO3 SOSCert.
 Import ListNotations.
@@ -460,21 +460,20 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_v_2_R_r_nonzero|]; apply Forall_cons; [exact q_v_3_Rbar_nonzero|]; apply Forall_cons; [exact q_v_4_R_l_nonzero|]; apply Forall_nil).
-  unfold H1. apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ (msub (sym (madd (mmul (mT v_2_R_r) v_3_Rbar) (mT (mmul (mT v_2_R_r) v_3_Rbar)))) (mscale lam1 I3)) v_1_k_s (denp env 0 [0; 1; 0; 0; 0; 1; 0; 0; 0; 0; 0; 0; 0; 0]%nat));
-    [exact (Rlt_le _ _ v_1_k_s_pos) | apply denp_nonneg | exact lam1_spec |
-     sos_exact [v_1_k_s; (qw q_v_2_R_r); (qx q_v_2_R_r); (qy q_v_2_R_r); (qz q_v_2_R_r); (qw q_v_3_Rbar); (qx q_v_3_Rbar); (qy q_v_3_Rbar); (qz q_v_3_Rbar); (qw q_v_4_R_l); (qx q_v_4_R_l); (qy q_v_4_R_l); (qz q_v_4_R_l); lam1] [1; 5; 9]%nat Hq ..].
+  unfold H1. sos_psd9 [v_1_k_s; (qw q_v_2_R_r); (qx q_v_2_R_r); (qy q_v_2_R_r); (qz q_v_2_R_r); (qw q_v_3_Rbar); (qx q_v_3_Rbar); (qy q_v_3_Rbar); (qz q_v_3_Rbar); (qw q_v_4_R_l); (qx q_v_4_R_l); (qy q_v_4_R_l); (qz q_v_4_R_l); lam1] (v_1_k_s) (msub (sym (madd (mmul (mT v_2_R_r) v_3_Rbar) (mT (mmul (mT v_2_R_r) v_3_Rbar)))) (mscale lam1 I3)) [0; 1; 0; 0; 0; 1; 0; 0; 0; 0; 0; 0; 0; 0]%nat.
+  - exact (Rlt_le _ _ v_1_k_s_pos).
+  - exact lam1_spec.
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link, by computation: the statement's slack, unfolded and read as an expression (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
+(** The link, by computation: the statement's slack, read as an expression of the prelude's operations (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
 Lemma link : exists D F, 0 < D /\ 0 <= F /\ (((((((-1/2) * v_1_k_s) * lam1) * (phi (mmul (mT v_3_Rbar) v_4_R_l))) + (- (v_1_k_s * (phi (mmul (mT v_2_R_r) v_3_Rbar))))) + (v_1_k_s * (phi (mmul (mT v_2_R_r) v_4_R_l)))) + - (((((-1/4) * v_1_k_s) * (tr (mmul (madd (mmul (mT v_2_R_r) v_3_Rbar) (mT (mmul (mT v_2_R_r) v_3_Rbar))) (madd I3 (mneg (mmul (mT v_3_Rbar) v_4_R_l)))))) + (- (((1/2) * v_1_k_s) * (tr (madd I3 (mneg (mmul (mT v_2_R_r) v_3_Rbar))))))) + (((1/2) * v_1_k_s) * (tr (madd I3 (mneg (mmul (mT v_2_R_r) v_4_R_l))))))) * D = F * peval env target.
 Proof.
   assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_v_2_R_r_nonzero|]; apply Forall_cons; [exact q_v_3_Rbar_nonzero|]; apply Forall_cons; [exact q_v_4_R_l_nonzero|]; apply Forall_nil).
@@ -496,7 +495,7 @@ Module sos_thm1_S_rl_dot_step4.
 
 (** SOS certificate sos-0723deceb163521b67e4.json, exported to Coq.
     It proves step 4 of the derivation 'thm1.S_rl-dot' (verify.paper_proofs): (-1/2) k_s tr(R_rl sk(R_rlᵀ R̄_r)) - (1/2) tr(R_rl hat(ω_h^b)) <= (-1/2) k_s λmin((R_rl + R_rlᵀ)) φ(R_lᵀR̄) + k_s φ(R̄_r) - k_s φ(R_rl) + <vee(sk(R_rl)), ω_h^b>.
-    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by field. *)
+    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by computation (SOSCert.mult_psd_9r, SOSCert.link_ok). *)
 
 Import Reals QArith List Lra SO3 SOSCert.
 Import ListNotations.
@@ -543,21 +542,20 @@ Definition S1 : list (Q * list poly) :=
 
 Lemma H1_psd : mult_psd env H1.
 Proof.
-  assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_v_2_R_r_nonzero|]; apply Forall_cons; [exact q_v_3_R_l_nonzero|]; apply Forall_cons; [exact q_v_4_Rbar_nonzero|]; apply Forall_nil).
-  unfold H1. apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ (msub (sym (madd (mmul (mT v_2_R_r) v_3_R_l) (mT (mmul (mT v_2_R_r) v_3_R_l)))) (mscale lam1 I3)) v_1_k_s (denp env 0 [0; 1; 0; 0; 0; 1; 0; 0; 0; 0; 0; 0; 0; 0; 0; 0; 0]%nat));
-    [exact (Rlt_le _ _ v_1_k_s_pos) | apply denp_nonneg | exact lam1_spec |
-     sos_exact [v_1_k_s; (qw q_v_2_R_r); (qx q_v_2_R_r); (qy q_v_2_R_r); (qz q_v_2_R_r); (qw q_v_3_R_l); (qx q_v_3_R_l); (qy q_v_3_R_l); (qz q_v_3_R_l); (qw q_v_4_Rbar); (qx q_v_4_Rbar); (qy q_v_4_Rbar); (qz q_v_4_Rbar); (v1 v_5_omega_h_s); (v2 v_5_omega_h_s); (v3 v_5_omega_h_s); lam1] [1; 5; 9]%nat Hq ..].
+  unfold H1. sos_psd9 [v_1_k_s; (qw q_v_2_R_r); (qx q_v_2_R_r); (qy q_v_2_R_r); (qz q_v_2_R_r); (qw q_v_3_R_l); (qx q_v_3_R_l); (qy q_v_3_R_l); (qz q_v_3_R_l); (qw q_v_4_Rbar); (qx q_v_4_Rbar); (qy q_v_4_Rbar); (qz q_v_4_Rbar); (v1 v_5_omega_h_s); (v2 v_5_omega_h_s); (v3 v_5_omega_h_s); lam1] (v_1_k_s) (msub (sym (madd (mmul (mT v_2_R_r) v_3_R_l) (mT (mmul (mT v_2_R_r) v_3_R_l)))) (mscale lam1 I3)) [0; 1; 0; 0; 0; 1; 0; 0; 0; 0; 0; 0; 0; 0; 0; 0; 0]%nat.
+  - exact (Rlt_le _ _ v_1_k_s_pos).
+  - exact lam1_spec.
 Qed.
 
 Definition blocks : list block := [(mkBlock H1 S1)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_nil env)). Qed.
 
-(** The link, by computation: the statement's slack, unfolded and read as an expression (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
+(** The link, by computation: the statement's slack, read as an expression of the prelude's operations (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
 Lemma link : exists D F, 0 < D /\ 0 <= F /\ ((((((((-1/2) * v_1_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_4_Rbar))) + (v_1_k_s * (phi (mmul (mT v_2_R_r) v_4_Rbar)))) + (- (v_1_k_s * (phi (mmul (mT v_2_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_2_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))) + - ((((-1/2) * v_1_k_s) * (tr (mmul (mmul (mT v_2_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_2_R_r) v_3_R_l)) (mmul (mT v_2_R_r) v_4_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_2_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s)))))))) * D = F * peval env target.
 Proof.
   assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_v_2_R_r_nonzero|]; apply Forall_cons; [exact q_v_3_R_l_nonzero|]; apply Forall_cons; [exact q_v_4_Rbar_nonzero|]; apply Forall_nil).
@@ -579,7 +577,7 @@ Module sos_thm1_V_dot_step3.
 
 (** SOS certificate sos-3c0bd7455cbf7e25ea7e.json, exported to Coq.
     It proves step 3 of the derivation 'thm1.V-dot' (verify.paper_proofs): (-1/2) k_s (λmin((R̄_r + R̄_rᵀ)) + λmin((R_rl + R_rlᵀ))) φ(R_lᵀR̄) <= 0.
-    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by field. *)
+    The certificate's data (target polynomial, multipliers, LDL^T squares) is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and the link from the statement to the target polynomial are proved by computation (SOSCert.mult_psd_9r, SOSCert.link_ok). *)
 
 Import Reals QArith List Lra SO3 SOSCert.
 Import ListNotations.
@@ -663,12 +661,12 @@ Qed.
 Definition blocks : list block := [(mkBlock H1 S1); (mkBlock H2 S2)].
 
 Lemma cert_checked : cert_ok target blocks = true.
-Proof. vm_compute. reflexivity. Qed.
+Proof. vm_cast_no_check (eq_refl true). Qed.
 
 Lemma grounds : blocks_psd env blocks.
 Proof. exact (blocks_psd_cons env (mkBlock H1 S1) _ H1_psd (blocks_psd_cons env (mkBlock H2 S2) _ H2_psd (blocks_psd_nil env))). Qed.
 
-(** The link, by computation: the statement's slack, unfolded and read as an expression (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
+(** The link, by computation: the statement's slack, read as an expression of the prelude's operations (sos_reify), times a positive product of quaternion norms is the target polynomial at the parameters times a non-negative one. *)
 Lemma link : exists D F, 0 < D /\ 0 <= F /\ (0 + - ((((-1/2) * v_1_k_s) * (lam1 + lam2)) * (phi (mmul (mT v_4_R_l) v_3_Rbar)))) * D = F * peval env target.
 Proof.
   assert (Hq : Forall (fun p => qnR env p <> 0) [1; 5; 9]%nat) by (apply Forall_cons; [exact q_v_2_R_r_nonzero|]; apply Forall_cons; [exact q_v_3_Rbar_nonzero|]; apply Forall_cons; [exact q_v_4_R_l_nonzero|]; apply Forall_nil).

@@ -21,10 +21,12 @@ proves it from the certificate with the prelude ``SOSCert.v``:
    ``F >= 0``, so the slack is ``>= 0`` and the step holds.
 
 In a step over rotations, scalars and vectors (the Theorem 1 steps), 3 and 4 are proved
-by computation: the tactic ``sos_reify`` reads the unfolded statement into an expression
-``sx`` (sums, products, integers, parameters, ``/ |q|^2``), Coq computes its value as a
-polynomial over a product of norms and compares it with ``T`` (or ``H``'s entries) by
-``vm_compute`` (``link_ok``, ``exact_ok``: soundness proved once). Otherwise (charts,
+by computation: the tactic ``sos_reify`` reads the statement, as written with the
+prelude's operations (``rot q``, ``mmul``, ``mT``, ``sk``, ``hat``, ``vee``, ``tr``,
+``phi``, ``vdot``, ...), into an expression ``sx`` of those operations, without unfolding
+them; Coq computes its value (each matrix subexpression once, as nine entry polynomials
+over products of norms) and compares it with ``T`` (or ``H``'s entries) by ``vm_compute``
+(``link_ok``, ``mult_psd_9r``: soundness proved once, ``ev_sound``). Otherwise (charts,
 free matrices) ``field`` proves them after unfolding the prelude, or ``lra`` where there
 is no rotation, chart, angle or denominator (the identities are then polynomial).
 
@@ -303,13 +305,10 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
             for key, e in plan.den_exps:
                 d[rot_positions[key][0]] = e
             body += [f"Lemma {lemma} : mult_psd env {hname}.", "Proof.",
-                     f"  assert (Hq : Forall (fun p => qnR env p <> 0) {qs_text}) by "
-                     f"({hq_text}apply Forall_nil).",
-                     f"  unfold {hname}. apply (mult_psd_9 env _ _ _ _ _ _ _ _ _ "
-                     f"{plan.matrix} {plan.scalar} (denp env 0 [{'; '.join(map(str, d))}]%nat));",
-                     f"    [exact {plan.scalar_proof} | apply denp_nonneg | "
-                     f"exact {plan.matrix_proof} |",
-                     f"     sos_exact [{'; '.join(env)}] {qs_text} Hq ..].", "Qed.", ""]
+                     f"  unfold {hname}. sos_psd9 [{'; '.join(env)}] ({plan.scalar}) "
+                     f"{plan.matrix} [{'; '.join(map(str, d))}]%nat.",
+                     f"  - exact {plan.scalar_proof}.", f"  - exact {plan.matrix_proof}.",
+                     "Qed.", ""]
         elif k == 3 and plan.matrix:
             dtext, dpos = plan.den
             c_text = f"({plan.scalar} * {dtext})"
@@ -336,7 +335,9 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
             f"{comment_text(str(st.rhs))}.",
             "    The certificate's data (target polynomial, multipliers, LDL^T squares) "
             "is re-checked by vm_compute (SOSCert.cert_ok); the multipliers' grounds and "
-            "the link from the statement to the target polynomial are proved by field.",
+            "the link from the statement to the target polynomial are proved "
+            + ("by computation (SOSCert.mult_psd_9r, SOSCert.link_ok)." if reflective
+               else "by field."),
             ]
     if unfold_extra:
         head.append("    Charts: a unit vector is stated in its stereographic chart (all but "
@@ -363,9 +364,9 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
                 fe[rot_positions[key][0]] = k
         qs, hq = qs_text, hq_text
         link = [
-            "(** The link, by computation: the statement's slack, unfolded and read as an "
-            "expression (sos_reify), times a positive product of quaternion norms is the "
-            "target polynomial at the parameters times a non-negative one. *)",
+            "(** The link, by computation: the statement's slack, read as an expression of "
+            "the prelude's operations (sos_reify), times a positive product of quaternion "
+            "norms is the target polynomial at the parameters times a non-negative one. *)",
             *link_head,
             f"  assert (Hq : Forall (fun p => qnR env p <> 0) {qs}) by ({hq}apply Forall_nil).",
             f"  sos_link [{'; '.join(env)}] {qs} Hq [{'; '.join(map(str, fe))}]%nat.",
@@ -388,7 +389,9 @@ def sos_unit(step: SosStep, data: dict, *, file_label: str,
         *body,
         f"Definition blocks : list block := [{'; '.join(block_names)}].", "",
         "Lemma cert_checked : cert_ok target blocks = true.",
-        "Proof. vm_compute. reflexivity. Qed.", "",
+        # the check is evaluated once, by the kernel at Qed (vm_compute in the proof
+        # would evaluate it a second time)
+        "Proof. vm_cast_no_check (eq_refl true). Qed.", "",
         "Lemma grounds : blocks_psd env blocks.",
         f"Proof. exact ({grounds_proof}). Qed.", "",
         *link,
