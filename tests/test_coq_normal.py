@@ -138,3 +138,21 @@ def test_the_evaluator_alone_proves_the_step_and_refuses_a_changed_one(tmp_path)
                       alone.theorems, alone.source)
     ok, failed, _ = compile_development(tmp_path / "bad", [bad])
     assert not ok and failed == f"{alone.name}.v"
+
+
+@needs_coqc
+def test_the_evaluator_proves_vector_and_scalar_steps(tmp_path):
+    ctx = Context("evalvs")
+    R = ctx.rotation("R")
+    w = ctx.vector("w")
+    d1 = Derivation("evalvs.vector", R.T * (R * w), ctx).equals(w, by_algebra())
+    d2 = Derivation("evalvs.scalar", dot(R.T * (R * w), w), ctx).equals(dot(w, w),
+                                                                        by_algebra())
+    units = []
+    for d in (d1, d2):
+        unit, fates = derivation_unit(d)
+        assert all(f.theorem for f in fates), fates
+        assert "SOSCert.sos_eq" in unit.text
+        units.append(_evaluator_only(unit))
+    ok, failed, _ = compile_development(tmp_path / "good", units)
+    assert ok, failed
