@@ -88,7 +88,11 @@ def _rotation_units():
 
 def test_identities_in_rotations_are_proved_on_free_matrices():
     cancel, conj = _rotation_units()
-    assert "so3_norm." in cancel.text and "so3_norm_hat." in conj.text
+    assert "so3_norm." in cancel.text  # a free matrix A: the evaluator does not read it
+    # rotations, vectors and scalars only: the evaluator, the normal form as its fallback
+    assert "SOSCert.sos_eq" in conj.text and "so3_norm_hat;" in conj.text
+    assert "From VerifyCoq Require SOSCert." in conj.text
+    assert "SOSCert" not in cancel.text
     for unit in (cancel, conj):
         # every rotation generalised: no entry left to field in quaternion parameters
         assert "field" not in unit.text.split("Proof using", 1)[1]
@@ -108,3 +112,47 @@ def test_normalised_proofs_compile_and_a_changed_statement_fails(tmp_path):
                        cancel.theorems, cancel.source)
     ok, failed, _ = compile_development(tmp_path / "bad", [bad, conj])
     assert not ok and failed == f"{cancel.name}.v"
+
+
+def _evaluator_only(unit):
+    """``unit`` with the evaluator's fallback removed: ``first [ E | F ].`` becomes ``E.``"""
+    lines = []
+    for line in unit.text.splitlines():
+        if line.strip().startswith("first [ SOSCert.sos_eq"):
+            head, _, _ = line.partition(" | ")
+            line = head.replace("first [ ", "", 1) + "."
+        lines.append(line)
+    return type(unit)(unit.name, "\n".join(lines), unit.theorems, unit.source)
+
+
+@needs_coqc
+def test_the_evaluator_alone_proves_the_step_and_refuses_a_changed_one(tmp_path):
+    _, conj = _rotation_units()
+    alone = _evaluator_only(conj)
+    assert "so3_norm" not in alone.text.split("Proof using", 1)[1]
+    ok, failed, _ = compile_development(tmp_path / "good", [alone])
+    assert ok, failed
+    old = "(hat (mvmul (mT v_1_R) v_2_w))"
+    assert old in alone.text
+    bad = type(alone)(alone.name, alone.text.replace(old, "(hat (mvmul v_1_R v_2_w))", 1),
+                      alone.theorems, alone.source)
+    ok, failed, _ = compile_development(tmp_path / "bad", [bad])
+    assert not ok and failed == f"{alone.name}.v"
+
+
+@needs_coqc
+def test_the_evaluator_proves_vector_and_scalar_steps(tmp_path):
+    ctx = Context("evalvs")
+    R = ctx.rotation("R")
+    w = ctx.vector("w")
+    d1 = Derivation("evalvs.vector", R.T * (R * w), ctx).equals(w, by_algebra())
+    d2 = Derivation("evalvs.scalar", dot(R.T * (R * w), w), ctx).equals(dot(w, w),
+                                                                        by_algebra())
+    units = []
+    for d in (d1, d2):
+        unit, fates = derivation_unit(d)
+        assert all(f.theorem for f in fates), fates
+        assert "SOSCert.sos_eq" in unit.text
+        units.append(_evaluator_only(unit))
+    ok, failed, _ = compile_development(tmp_path / "good", units)
+    assert ok, failed

@@ -177,10 +177,17 @@ def test_paper_development_compiles_and_assumes_only_the_reals(tmp_path):
 
 def test_identity_entries_are_split_per_entry():
     ctx = Context("split")
-    R = ctx.rotation("R")
-    d = Derivation("split", R.T * R, ctx).equals(I3, by_algebra())
+    R, A = ctx.rotation("R"), ctx.matrix("A")
+    d = Derivation("split", R.T * R * A, ctx).equals(A, by_algebra())
     (unit,) = _units([d])
     assert unit.text.count("\n  - ") == 9
+    # rotations only: the prelude's evaluator compares the nine entries, the entries split
+    # in its fallback
+    ctx = Context("split2")
+    R = ctx.rotation("R")
+    d = Derivation("split2", R.T * R, ctx).equals(I3, by_algebra())
+    (unit,) = _units([d])
+    assert "SOSCert.sos_eq" in unit.text and "so3_split; so3_poly ]." in unit.text
 
 
 def test_check_exports_only_verified_steps(tmp_path):

@@ -7,7 +7,7 @@
     imports those its unit uses. *)
 
 From Coq Require Reals Lra.
-From VerifyCoq Require SO3 Traj.
+From VerifyCoq Require SO3 SOSCert Traj.
 From Coquelicot Require Hierarchy Derive.
 
 Module lemma1_spectrum.
@@ -187,19 +187,7 @@ Hypothesis v_3_k_s_pos : 0 < v_3_k_s.
     (algebra (hat(R v) = R hat(v) Rᵀ)) *)
 Theorem step1 : (mmul (hat (mvmul (mscale v_3_k_s v_1_Rbar) (vee (sk (mmul (mT v_1_Rbar) v_2_R_l))))) v_1_Rbar) = (mmul (mscale v_3_k_s v_1_Rbar) (sk (mmul (mT v_1_Rbar) v_2_R_l))).
 Proof using q_v_1_Rbar q_v_2_R_l v_3_k_s q_v_1_Rbar_nonzero q_v_2_R_l_nonzero v_3_k_s_pos.
-  so3_norm_hat.
-  generalize (rot q_v_1_Rbar) as G_v_1_Rbar; intro G_v_1_Rbar.
-  generalize (rot q_v_2_R_l) as G_v_2_R_l; intro G_v_2_R_l.
-  so3_split.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
+  first [ SOSCert.sos_eq ((qw q_v_1_Rbar) :: (qx q_v_1_Rbar) :: (qy q_v_1_Rbar) :: (qz q_v_1_Rbar) :: (qw q_v_2_R_l) :: (qx q_v_2_R_l) :: (qy q_v_2_R_l) :: (qz q_v_2_R_l) :: v_3_k_s :: nil)%list (0%nat :: 4%nat :: nil)%list | so3_norm_hat; generalize (rot q_v_1_Rbar) as G_v_1_Rbar; intro G_v_1_Rbar; generalize (rot q_v_2_R_l) as G_v_2_R_l; intro G_v_2_R_l; so3_split; so3_poly ].
 Qed.
 
 End sec3_rbar_dot_form.

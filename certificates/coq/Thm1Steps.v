@@ -5,7 +5,7 @@
     module imports those its unit uses. *)
 
 From Coq Require Reals Lra.
-From VerifyCoq Require SO3 Traj.
+From VerifyCoq Require SO3 SOSCert Traj.
 From Coquelicot Require Hierarchy Derive.
 
 Module thm1_phi.
@@ -32,9 +32,7 @@ Local Notation v_1_R := (rot q_v_1_R).
     (algebra (RᵀR = I)) *)
 Theorem step1 : (phi v_1_R) = ((1/4) * (tr (mmul (mT (madd I3 (mneg v_1_R))) (madd I3 (mneg v_1_R))))).
 Proof using q_v_1_R q_v_1_R_nonzero.
-  so3_norm.
-  generalize (rot q_v_1_R) as G_v_1_R; intro G_v_1_R.
-  so3_poly.
+  first [ SOSCert.sos_eq ((qw q_v_1_R) :: (qx q_v_1_R) :: (qy q_v_1_R) :: (qz q_v_1_R) :: nil)%list (0%nat :: nil)%list | so3_norm; generalize (rot q_v_1_R) as G_v_1_R; intro G_v_1_R; so3_poly ].
 Qed.
 
 End thm1_phi.
@@ -152,7 +150,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s lam1 q_v_1_R_r_nonzero q_v_2_
   assert (P1 : (mT (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))) = (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))).
   { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P2 : (sym (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))).
-  { so3_norm. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  { first [ SOSCert.sos_eq ((qw q_v_1_R_r) :: (qx q_v_1_R_r) :: (qy q_v_1_R_r) :: (qz q_v_1_R_r) :: (qw q_v_2_Rbar) :: (qx q_v_2_Rbar) :: (qy q_v_2_Rbar) :: (qz q_v_2_Rbar) :: (qw q_v_3_R_l) :: (qx q_v_3_R_l) :: (qy q_v_3_R_l) :: (qz q_v_3_R_l) :: v_4_k_s :: lam1 :: nil)%list (0%nat :: 4%nat :: 8%nat :: nil)%list | so3_norm; generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar; generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l; so3_split; so3_poly ]. }
   assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
   assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
   assert (E : (((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_2_Rbar) v_3_R_l))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar))))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l)))) + (- (((((-1/4) * v_4_k_s) * (tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))) + (- (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_2_Rbar))))))) + (((1/2) * v_4_k_s) * (tr (madd I3 (mneg (mmul (mT v_1_R_r) v_3_R_l)))))))) = (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))).
@@ -275,7 +273,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 q_v_1_R_r_
   assert (P1 : (mT (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))) = (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))).
   { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P2 : (sym (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))).
-  { so3_norm. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  { first [ SOSCert.sos_eq ((qw q_v_1_R_r) :: (qx q_v_1_R_r) :: (qy q_v_1_R_r) :: (qz q_v_1_R_r) :: (qw q_v_2_Rbar) :: (qx q_v_2_Rbar) :: (qy q_v_2_Rbar) :: (qz q_v_2_Rbar) :: (qw q_v_3_R_l) :: (qx q_v_3_R_l) :: (qy q_v_3_R_l) :: (qz q_v_3_R_l) :: v_4_k_s :: (v1 v_5_omega_h_s) :: (v2 v_5_omega_h_s) :: (v3 v_5_omega_h_s) :: lam1 :: nil)%list (0%nat :: 4%nat :: 8%nat :: nil)%list | so3_norm; generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l; generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar; so3_split; so3_poly ]. }
   assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
   assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))) by exact (Rmult_le_pos _ _ T2 T3).
   assert (E : ((((((((-1/2) * v_4_k_s) * lam1) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (v_4_k_s * (phi (mmul (mT v_1_R_r) v_2_Rbar)))) + (- (v_4_k_s * (phi (mmul (mT v_1_R_r) v_3_R_l))))) + (vdot (vee (sk (mmul (mT v_1_R_r) v_3_R_l))) (mvmul (mT v_3_R_l) v_5_omega_h_s))) + (- ((((-1/2) * v_4_k_s) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (sk (mmul (mT (mmul (mT v_1_R_r) v_3_R_l)) (mmul (mT v_1_R_r) v_2_Rbar)))))) + (- ((1/2) * (tr (mmul (mmul (mT v_1_R_r) v_3_R_l) (hat (mvmul (mT v_3_R_l) v_5_omega_h_s))))))))) = (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))).
@@ -431,7 +429,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1
   assert (P1 : (mT (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))) = (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))).
   { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P2 : (sym (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))).
-  { so3_norm. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  { first [ SOSCert.sos_eq ((qw q_v_1_R_r) :: (qx q_v_1_R_r) :: (qy q_v_1_R_r) :: (qz q_v_1_R_r) :: (qw q_v_2_Rbar) :: (qx q_v_2_Rbar) :: (qy q_v_2_Rbar) :: (qz q_v_2_Rbar) :: (qw q_v_3_R_l) :: (qx q_v_3_R_l) :: (qy q_v_3_R_l) :: (qz q_v_3_R_l) :: v_4_k_s :: (v1 v_5_omega_h_s) :: (v2 v_5_omega_h_s) :: (v3 v_5_omega_h_s) :: lam1 :: lam2 :: nil)%list (0%nat :: 4%nat :: 8%nat :: nil)%list | so3_norm; generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar; generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l; so3_split; so3_poly ]. }
   assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
   assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
   assert (T5 : 0 <= v_4_k_s) by exact (Rlt_le _ _ v_4_k_s_pos).
@@ -439,7 +437,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1
   assert (P3 : (mT (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))) = (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))).
   { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P4 : (sym (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))).
-  { so3_norm. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  { first [ SOSCert.sos_eq ((qw q_v_1_R_r) :: (qx q_v_1_R_r) :: (qy q_v_1_R_r) :: (qz q_v_1_R_r) :: (qw q_v_2_Rbar) :: (qx q_v_2_Rbar) :: (qy q_v_2_Rbar) :: (qz q_v_2_Rbar) :: (qw q_v_3_R_l) :: (qx q_v_3_R_l) :: (qy q_v_3_R_l) :: (qz q_v_3_R_l) :: v_4_k_s :: (v1 v_5_omega_h_s) :: (v2 v_5_omega_h_s) :: (v3 v_5_omega_h_s) :: lam1 :: lam2 :: nil)%list (0%nat :: 4%nat :: 8%nat :: nil)%list | so3_norm; generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l; generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar; so3_split; so3_poly ]. }
   assert (T7 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam2 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (1/2) lam2 P3 P4 ltac:(lra) lam2_spec).
   assert (T8 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam2 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))) by exact (Rmult_le_pos _ _ T6 T7).
   assert (E : (((((-1/2) * v_4_k_s) * (lam1 + lam2)) * (phi (mmul (mT v_3_R_l) v_2_Rbar))) + (- (((-1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))) = ((((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) + (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam2 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))))).
@@ -557,7 +555,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1
   assert (P1 : (mT (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))) = (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar)))).
   { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P2 : (sym (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))).
-  { so3_norm. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  { first [ SOSCert.sos_eq ((qw q_v_1_R_r) :: (qx q_v_1_R_r) :: (qy q_v_1_R_r) :: (qz q_v_1_R_r) :: (qw q_v_2_Rbar) :: (qx q_v_2_Rbar) :: (qy q_v_2_Rbar) :: (qz q_v_2_Rbar) :: (qw q_v_3_R_l) :: (qx q_v_3_R_l) :: (qy q_v_3_R_l) :: (qz q_v_3_R_l) :: v_4_k_s :: (v1 v_5_omega_h_s) :: (v2 v_5_omega_h_s) :: (v3 v_5_omega_h_s) :: lam1 :: lam2 :: nil)%list (0%nat :: 4%nat :: 8%nat :: nil)%list | so3_norm; generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar; generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l; so3_split; so3_poly ]. }
   assert (T3 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))) (1/2) lam1 P1 P2 ltac:(lra) lam1_spec).
   assert (T4 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))))))) by exact (Rmult_le_pos _ _ T2 T3).
   assert (T5 : 0 <= v_4_k_s) by exact (Rlt_le _ _ v_4_k_s_pos).
@@ -565,7 +563,7 @@ Proof using q_v_1_R_r q_v_2_Rbar q_v_3_R_l v_4_k_s v_5_omega_h_s lam1 lam2 q_v_1
   assert (P3 : (mT (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))) = (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l)))).
   { generalize (rot q_v_1_R_r) as G_v_1_R_r; intro G_v_1_R_r. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
   assert (P4 : (sym (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) = (mscale (1/2) (mmul (mT (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))).
-  { so3_norm. generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l. generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar. so3_split. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. - so3_poly. }
+  { first [ SOSCert.sos_eq ((qw q_v_1_R_r) :: (qx q_v_1_R_r) :: (qy q_v_1_R_r) :: (qz q_v_1_R_r) :: (qw q_v_2_Rbar) :: (qx q_v_2_Rbar) :: (qy q_v_2_Rbar) :: (qz q_v_2_Rbar) :: (qw q_v_3_R_l) :: (qx q_v_3_R_l) :: (qy q_v_3_R_l) :: (qz q_v_3_R_l) :: v_4_k_s :: (v1 v_5_omega_h_s) :: (v2 v_5_omega_h_s) :: (v3 v_5_omega_h_s) :: lam1 :: lam2 :: nil)%list (0%nat :: 4%nat :: 8%nat :: nil)%list | so3_norm; generalize (rot q_v_3_R_l) as G_v_3_R_l; intro G_v_3_R_l; generalize (rot q_v_2_Rbar) as G_v_2_Rbar; intro G_v_2_Rbar; so3_split; so3_poly ]. }
   assert (T7 : 0 <= ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam2 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))) by exact (trace_lower_bound (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))) (1/2) lam2 P3 P4 ltac:(lra) lam2_spec).
   assert (T8 : 0 <= (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam2 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))))))) by exact (Rmult_le_pos _ _ T6 T7).
   assert (E : ((- ((((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul (mscale v_4_k_s v_2_Rbar) (sk (mmul (mT v_2_Rbar) v_3_R_l))))))) + ((1/2) * (tr (mneg (mmul (mT v_1_R_r) (mmul v_3_R_l (hat (vadd (vscale v_4_k_s (vee (sk (mmul (mT v_3_R_l) v_2_Rbar)))) (mvmul (mT v_3_R_l) v_5_omega_h_s))))))))) + (- (vdot (vee (mmul (mT v_1_R_r) v_3_R_l)) (mvmul (mT v_3_R_l) v_5_omega_h_s))))) + (- ((((1/8) * v_4_k_s) * (lam1 + lam2)) * (tr (mmul (mT (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))) = ((((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_2_Rbar) (mT (mmul (mT v_1_R_r) v_2_Rbar))) (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l))))) + (- (lam1 * (tr (madd I3 (mneg (mmul (mT v_2_Rbar) v_3_R_l)))))))) + (((1/4) * v_4_k_s) * ((tr (mmul (madd (mmul (mT v_1_R_r) v_3_R_l) (mT (mmul (mT v_1_R_r) v_3_R_l))) (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar))))) + (- (lam2 * (tr (madd I3 (mneg (mmul (mT v_3_R_l) v_2_Rbar)))))))))).
@@ -681,36 +679,14 @@ Variable v_3_omega_h_s : V3.
     (algebra (sk(I) = 0)) *)
 Theorem step1 : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) v_1_R_l)))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) v_1_R_l) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s v_1_R_l) (sk (mmul (mT v_1_R_l) v_1_R_l))))) = (mneg (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l)).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
-  so3_norm_hat.
-  generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l.
-  so3_split.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
+  first [ SOSCert.sos_eq ((qw q_v_1_R_l) :: (qx q_v_1_R_l) :: (qy q_v_1_R_l) :: (qz q_v_1_R_l) :: v_2_k_s :: (v1 v_3_omega_h_s) :: (v2 v_3_omega_h_s) :: (v3 v_3_omega_h_s) :: nil)%list (0%nat :: nil)%list | so3_norm_hat; generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l; so3_split; so3_poly ].
 Qed.
 
 (** Step 2: -R_lᵀ hat('ω_h^s') R_l = -hat(R_lᵀ 'ω_h^s')
     (algebra (Rᵀ hat(ω) R = hat(Rᵀω))) *)
 Theorem step2 : (mneg (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l)) = (mneg (hat (mvmul (mT v_1_R_l) v_3_omega_h_s))).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s q_v_1_R_l_nonzero v_2_k_s_pos.
-  so3_norm_hat.
-  generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l.
-  so3_split.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
+  first [ SOSCert.sos_eq ((qw q_v_1_R_l) :: (qx q_v_1_R_l) :: (qy q_v_1_R_l) :: (qz q_v_1_R_l) :: v_2_k_s :: (v1 v_3_omega_h_s) :: (v2 v_3_omega_h_s) :: (v3 v_3_omega_h_s) :: nil)%list (0%nat :: nil)%list | so3_norm_hat; generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l; so3_split; so3_poly ].
 Qed.
 
 (** The derivation's claim: (R_l hat(k_s vee(sk(R_lᵀ R_l)) + R_lᵀ 'ω_h^s'))ᵀ R_l + R_lᵀ k_s R_l sk(R_lᵀ R_l) = -hat(R_lᵀ 'ω_h^s') *)
@@ -782,18 +758,7 @@ Hypothesis v_4_xi_unit : vdot v_4_xi v_4_xi = 1.
     (algebra (sk(2ξξᵀ - I) = 0)) *)
 Theorem step1 : (madd (mmul (mT (mmul v_1_R_l (hat (vadd (vscale v_2_k_s (vee (sk (mmul (mT v_1_R_l) (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3))))))) (mvmul (mT v_1_R_l) v_3_omega_h_s))))) (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))) (mmul (mT v_1_R_l) (mmul (mscale v_2_k_s (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))) (sk (mmul (mT (mmul v_1_R_l (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))) v_1_R_l))))) = (mneg (mmul (mmul (mmul (mT v_1_R_l) (hat v_3_omega_h_s)) v_1_R_l) (madd (mscale 2 (outer v_4_xi v_4_xi)) (mneg I3)))).
 Proof using q_v_1_R_l v_2_k_s v_3_omega_h_s v_4_xi q_v_1_R_l_nonzero v_2_k_s_pos v_4_xi_unit.
-  so3_norm_hat.
-  generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l.
-  so3_split.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
-  - so3_poly.
+  first [ SOSCert.sos_eq ((qw q_v_1_R_l) :: (qx q_v_1_R_l) :: (qy q_v_1_R_l) :: (qz q_v_1_R_l) :: v_2_k_s :: (v1 v_3_omega_h_s) :: (v2 v_3_omega_h_s) :: (v3 v_3_omega_h_s) :: (v1 v_4_xi) :: (v2 v_4_xi) :: (v3 v_4_xi) :: nil)%list (0%nat :: nil)%list | so3_norm_hat; generalize (rot q_v_1_R_l) as G_v_1_R_l; intro G_v_1_R_l; so3_split; so3_poly ].
 Qed.
 
 End thm1_lasalle_derivative_from_sk_only.

@@ -16,7 +16,10 @@ prelude's definitions (``SO3.v``):
   the section closes they are premises of the theorem;
 - an equality is proved entry by entry, with rotations generalised to free matrices
   when possible (after the prelude's matrix-level normal form ``so3_norm`` when
-  rotations must meet their transposes, :mod:`verify.coq.normal`); an entry that is a
+  rotations must meet their transposes, :mod:`verify.coq.normal`; a step of at most two
+  rotations that the normal form decides without cofactors is proved instead by the
+  prelude's evaluator ``SOSCert.sos_eq``, the normal form kept as its fallback); an entry
+  that is a
   polynomial identity is decided by ``lra`` (``so3_poly``), one with quaternion norms in
   its denominators by ``field``; cofactors ``lhs - rhs = sum c_k g_k`` enter when it
   needs a unit vector, an angle or a side condition (:mod:`verify.coq.polys` finds
@@ -175,7 +178,9 @@ def derivation_unit(d: Derivation, *, module: str | None = None, source: str = "
             f"    its place in the paper: {comment_text(d.cite)}",
             "    Each theorem below is one step, exactly as the comment above it writes it,",
             "    under the hypotheses its Proof using line names. *)", "",
-            HEADER,
+            HEADER if "SOSCert.sos_eq" not in "\n".join(body)
+            else HEADER.replace("Require Import SO3.\n",
+                                "Require Import SO3.\nFrom VerifyCoq Require SOSCert.\n"),
             f"Section {section}.", ""]
     tail: list[str] = []
     if ddt is not None:
@@ -522,10 +527,81 @@ def _equality_script(sec: _Section, lhs: Expr, rhs: Expr, conds: list[Condition]
         if best is None or size < best[0]:
             best = (size, script)
         if k == 0 or k >= free_attempts - 1:
-            return best[1]
+            return _by_evaluator(sec, lhs, rhs, best[1])
     if best is not None:
-        return best[1]
+        return _by_evaluator(sec, lhs, rhs, best[1])
     raise failure
+
+
+#: The operations the prelude's evaluator reads (``SOSCert.sos_reify``).
+_EVALUATED_OPS = frozenset({"var", "const", "identity", "zero", "lambda_min", "add", "neg",
+                            "scale", "matmul", "transpose", "trace", "sk", "sym", "hat",
+                            "vee", "dot", "outer"})
+_EVALUATED_KINDS = frozenset({"rotation", "vector", "unit_vector", "scalar", "symmetric"})
+_NORMAL_FORMS = ("so3_norm.", "so3_norm_hat.")
+#: Steps with more rotations keep the normal form: the evaluator expands each rotation in
+#: its quaternion's entries, and for three rotations its polynomials cost ``coqc``
+#: more than ``so3_norm`` (measured on the paper's Theorem 1 steps).
+EVALUATOR_ROTATIONS = 2
+
+
+def _by_evaluator(sec: _Section, lhs: Expr, rhs: Expr, script: list[str]) -> list[str]:
+    """``script`` or, when it is the matrix-level normal form followed by plain polynomial
+    identities (no hypothesis but the rotations' non-zero norms), the prelude's evaluator
+    first (``SOSCert.sos_eq``: both sides' entries as polynomials over products of
+    quaternion norms, compared by ``vm_compute``; paper, Lemma 1 and Theorem 1 proofs),
+    with ``script`` as the fallback should the evaluator not read a term. An identity of
+    the normal form with the rotations free holds for every rotation ``rot q``, so the
+    evaluator's comparison succeeds wherever ``script`` does."""
+    if not script or script[0] not in _NORMAL_FORMS:
+        return script
+    rest = [line for line in script[1:] if not line.startswith("generalize (rot ")]
+    if rest and rest[0] == "so3_split.":
+        rest = rest[1:]
+        if any(line != "- so3_poly." for line in rest):
+            return script
+        closer = "so3_split; so3_poly"
+    elif rest == ["so3_poly."]:
+        closer = "so3_poly"
+    else:
+        return script
+    if any(node.op not in _EVALUATED_OPS for node in nodes(lhs, rhs)):
+        return script
+    used = variables_of(lhs, rhs)
+    if any(v.kind not in _EVALUATED_KINDS for v in used):
+        return script
+    if sum(v.kind == "rotation" for v in used) > EVALUATOR_ROTATIONS:
+        return script
+    params, qs = _evaluator_params(sec)
+    steps = [line.rstrip(".") for line in script if line.startswith(("so3_norm", "generalize"))]
+    fallback = "; ".join([*steps, closer])
+    listed = " :: ".join([*params, "nil"])
+    positions = " :: ".join([*(f"{p}%nat" for p in qs), "nil"])
+    return [f"first [ SOSCert.sos_eq ({listed})%list ({positions})%list | {fallback} ]."]
+
+
+def _evaluator_params(sec: _Section) -> tuple[list[str], list[int]]:
+    """The evaluator's parameters (``env``: every entry of the section's rotations'
+    quaternions, vectors, scalars, symmetric matrices and lambda_min atoms) and the
+    positions of the quaternions in it."""
+    params: list[str] = []
+    qs: list[int] = []
+    for v in sec.variables_list:
+        n = sec.naming.variable(v)
+        if v.kind == "rotation":
+            qs.append(len(params))
+            params += [f"(q{c} q_{n})" for c in "wxyz"]
+        elif v.kind in ("vector", "unit_vector"):
+            params += [f"(v{i} {n})" for i in (1, 2, 3)]
+        elif v.kind == "scalar":
+            params.append(n)
+        elif v.kind == "symmetric":
+            params += [f"{n}_{ij}" for ij in ("11", "22", "33", "12", "13", "23")]
+    for node in sec.lambda_nodes:
+        lam = sec.naming.lambda_atom(node)
+        if lam not in params:
+            params.append(lam)
+    return params, qs
 
 
 #: Rotations a step may have for the attempts with some of them free (:func:`_mixed_attempts`).

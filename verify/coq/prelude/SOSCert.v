@@ -1573,3 +1573,119 @@ Ltac sos_psd9 params c M d :=
       refine (mult_psd_9r env rc rM d _ _ _ _ _ _ _ _ _ _ _ _ _ _);
         [sos_leaves | sos_leaves | | | vm_cast_no_check (eq_refl true)]
   end.
+
+(** ** Equalities by computation
+
+    [x = y] when both values, lifted to a common product of norms (non-zero: the
+    quaternions [qs]), have the same numerator.  For matrices and vectors, entry by
+    entry.  This proves the derivations' algebraic steps that are identities in the
+    parameters (paper, Lemma 1 and Theorem 1 proofs), with [rot q^T rot q] cancelled as
+    in [so3_norm]. *)
+Definition sv_eqb (qs : list nat) (a b : sv) : bool :=
+  let m := emax (snd a) (snd b) in
+  exps_ok_from qs 0 m &&
+  poly_zero (lift (fst a) (ediff (snd a) m) ++ pneg (lift (fst b) (ediff (snd b) m))).
+
+Lemma sv_eqb_ok env qs x y a b :
+  Forall (fun p => qnR env p <> 0) qs -> srel env x a -> srel env y b ->
+  sv_eqb qs a b = true -> x = y.
+Proof.
+  unfold sv_eqb, srel. destruct a as [na ea], b as [nb eb]. cbn [fst snd].
+  intros Hq Ha Hb H. apply andb_true_iff in H as [He Hz].
+  pose proof (denp_pos env qs 0 _ Hq He) as Hp.
+  apply (poly_zero_sound env) in Hz. rewrite peval_app in Hz. unfold pneg in Hz.
+  rewrite peval_scale, !peval_lift in Hz.
+  assert (E : Q2R (-1) = -1) by (unfold Q2R; simpl; lra). rewrite E in Hz.
+  assert (E1 : denp env 0 (emax ea eb) = denp env 0 ea * denp env 0 (ediff ea (emax ea eb)))
+    by (rewrite <- denp_eadd, eadd_ediff_l; reflexivity).
+  assert (E2 : denp env 0 (emax ea eb) = denp env 0 eb * denp env 0 (ediff eb (emax ea eb)))
+    by (rewrite <- denp_eadd, (emax_comm ea eb), eadd_ediff_l; reflexivity).
+  apply (Rmult_eq_reg_r (denp env 0 (emax ea eb))); [|lra].
+  rewrite E1 at 1. rewrite E2. rewrite <- !Rmult_assoc, Ha, Hb. lra.
+Qed.
+
+Definition eqs_check (qs : list nat) (r1 r2 : sx) : bool :=
+  sv_eqb qs (evs (simp_s r1)) (evs (simp_s r2)).
+
+Definition eqm_check (qs : list nat) (a1 a2 : mx) : bool :=
+  let a := evm (simp_m a1) in
+  let b := evm (simp_m a2) in
+  sv_eqb qs (e11 a) (e11 b) && sv_eqb qs (e12 a) (e12 b) && sv_eqb qs (e13 a) (e13 b) &&
+  sv_eqb qs (e21 a) (e21 b) && sv_eqb qs (e22 a) (e22 b) && sv_eqb qs (e23 a) (e23 b) &&
+  sv_eqb qs (e31 a) (e31 b) && sv_eqb qs (e32 a) (e32 b) && sv_eqb qs (e33 a) (e33 b).
+
+Definition eqv_check (qs : list nat) (u1 u2 : vx) : bool :=
+  let a := evv (simp_v u1) in
+  let b := evv (simp_v u2) in
+  sv_eqb qs (f1 a) (f1 b) && sv_eqb qs (f2 a) (f2 b) && sv_eqb qs (f3 a) (f3 b).
+
+Theorem eq_by_eval env qs r1 r2 (x y : R) :
+  Forall (fun p => qnR env p <> 0) qs -> sleaves env r1 -> sleaves env r2 ->
+  x = sden env r1 -> y = sden env r2 -> eqs_check qs r1 r2 = true -> x = y.
+Proof.
+  intros Hq H1 H2 -> -> H.
+  destruct (proj2 (proj2 (simp_sound env)) r1 H1) as [H1' E1].
+  destruct (proj2 (proj2 (simp_sound env)) r2 H2) as [H2' E2].
+  rewrite <- E1, <- E2.
+  exact (sv_eqb_ok env qs _ _ _ _ Hq (proj2 (proj2 (ev_sound env)) _ H1')
+           (proj2 (proj2 (ev_sound env)) _ H2') H).
+Qed.
+
+Theorem eqm_by_eval env qs a1 a2 (A B : M3) :
+  Forall (fun p => qnR env p <> 0) qs -> mleaves env a1 -> mleaves env a2 ->
+  A = mden env a1 -> B = mden env a2 -> eqm_check qs a1 a2 = true -> A = B.
+Proof.
+  intros Hq H1 H2 -> -> H.
+  destruct (proj1 (simp_sound env) a1 H1) as [[H1' E1] _].
+  destruct (proj1 (simp_sound env) a2 H2) as [[H2' E2] _].
+  rewrite <- E1, <- E2.
+  pose proof (proj1 (ev_sound env) _ H1') as V1. pose proof (proj1 (ev_sound env) _ H2') as V2.
+  unfold eqm_check in H. cbv zeta in H. do 8 (apply andb_true_iff in H as [H ?]).
+  unfold mrel in V1, V2.
+  destruct V1 as (A11&A12&A13&A21&A22&A23&A31&A32&A33).
+  destruct V2 as (B11&B12&B13&B21&B22&B23&B31&B32&B33).
+  apply m3_ext; eapply sv_eqb_ok; eassumption.
+Qed.
+
+Theorem eqv_by_eval env qs u1 u2 (u w : V3) :
+  Forall (fun p => qnR env p <> 0) qs -> vleaves env u1 -> vleaves env u2 ->
+  u = vden env u1 -> w = vden env u2 -> eqv_check qs u1 u2 = true -> u = w.
+Proof.
+  intros Hq H1 H2 -> -> H.
+  destruct (proj1 (proj2 (simp_sound env)) u1 H1) as [H1' E1].
+  destruct (proj1 (proj2 (simp_sound env)) u2 H2) as [H2' E2].
+  rewrite <- E1, <- E2.
+  pose proof (proj1 (proj2 (ev_sound env)) _ H1') as V1.
+  pose proof (proj1 (proj2 (ev_sound env)) _ H2') as V2.
+  unfold eqv_check in H. cbv zeta in H. do 2 (apply andb_true_iff in H as [H ?]).
+  unfold vrel in V1, V2.
+  destruct V1 as (A1&A2&A3). destruct V2 as (B1&B2&B3).
+  apply v3_ext; eapply sv_eqb_ok; eassumption.
+Qed.
+
+(** The norms' non-vanishing at the positions [qs], from the unit's hypotheses. *)
+Ltac sos_qs :=
+  repeat match goal with
+  | |- Forall _ nil => apply Forall_nil
+  | |- Forall _ (_ :: _) => apply Forall_cons
+  | |- qnR _ _ <> 0 => assumption
+  end.
+
+(** Proves [lhs = rhs] (scalars, matrices or vectors) by computation: [params] is the
+    list [env] stands for, [qs] the positions of the quaternions in it.  The check is
+    evaluated once, by the kernel at [Qed]. *)
+Ltac sos_eq params qs :=
+  lazymatch goal with
+  | |- @eq M3 ?a ?b =>
+      let ra := sos_reify_m params a in let rb := sos_reify_m params b in
+      refine (eqm_by_eval params qs ra rb a b _ _ _ eq_refl eq_refl _);
+        [sos_qs | sos_leaves | sos_leaves | vm_cast_no_check (eq_refl true)]
+  | |- @eq V3 ?a ?b =>
+      let ra := sos_reify_v params a in let rb := sos_reify_v params b in
+      refine (eqv_by_eval params qs ra rb a b _ _ _ eq_refl eq_refl _);
+        [sos_qs | sos_leaves | sos_leaves | vm_cast_no_check (eq_refl true)]
+  | |- @eq R ?a ?b =>
+      let ra := sos_reify params a in let rb := sos_reify params b in
+      refine (eq_by_eval params qs ra rb a b _ _ _ eq_refl eq_refl _);
+        [sos_qs | sos_leaves | sos_leaves | vm_cast_no_check (eq_refl true)]
+  end.
