@@ -214,27 +214,23 @@ Proof. pose proof (sin2_cos2 t) as H. unfold Rsqr in H. lra. Qed.
 Lemma rot_scale_norm (q : quat) : qn q <> 0 -> 2 / qn q * qn q = 2.
 Proof. intro H. field. exact H. Qed.
 
-Lemma rot_orthogonal (q : quat) : qn q <> 0 -> mmul (mT (rot q)) (rot q) = I3.
-Proof.
-  intro H. pose proof (rot_scale_norm q H) as Hs. unfold rot. revert Hs.
-  generalize (2 / qn q); intros s Hs. destruct q as [w x y z].
+(** R^T R and R R^T, with s = 2/|q|^2: both are I + s (2 - s |q|^2) hat(v)^2 entry by entry
+    (a polynomial identity in s, by lra), and s |q|^2 = 2. *)
+Ltac rot_orthogonal_by_scale q :=
+  let H := fresh "H" in let Hs := fresh "Hs" in let s := fresh "s" in
+  intro H; pose proof (rot_scale_norm q H) as Hs; unfold rot; revert Hs;
+  generalize (2 / qn q); intros s Hs; destruct q as [w x y z];
   transitivity (madd I3 (mscale (s * (2 - s * qn (mkQ w x y z)))
-                               (mmul (hat (qvec (mkQ w x y z))) (hat (qvec (mkQ w x y z)))))).
-  - so3_split; so3_unfold; lra.
-  - replace (s * (2 - s * qn (mkQ w x y z))) with 0 by (rewrite Hs; ring).
-    so3_split; so3_unfold; lra.
-Qed.
+                               (mmul (hat (qvec (mkQ w x y z))) (hat (qvec (mkQ w x y z))))));
+  [ so3_split; so3_unfold; lra
+  | replace (s * (2 - s * qn (mkQ w x y z))) with 0 by (rewrite Hs; ring);
+    so3_split; so3_unfold; lra ].
+
+Lemma rot_orthogonal (q : quat) : qn q <> 0 -> mmul (mT (rot q)) (rot q) = I3.
+Proof. rot_orthogonal_by_scale q. Qed.
 
 Lemma rot_orthogonal_r (q : quat) : qn q <> 0 -> mmul (rot q) (mT (rot q)) = I3.
-Proof.
-  intro H. pose proof (rot_scale_norm q H) as Hs. unfold rot. revert Hs.
-  generalize (2 / qn q); intros s Hs. destruct q as [w x y z].
-  transitivity (madd I3 (mscale (s * (2 - s * qn (mkQ w x y z)))
-                               (mmul (hat (qvec (mkQ w x y z))) (hat (qvec (mkQ w x y z)))))).
-  - so3_split; so3_unfold; lra.
-  - replace (s * (2 - s * qn (mkQ w x y z))) with 0 by (rewrite Hs; ring).
-    so3_split; so3_unfold; lra.
-Qed.
+Proof. rot_orthogonal_by_scale q. Qed.
 
 Lemma rot_det (q : quat) : qn q <> 0 -> det (rot q) = 1.
 Proof.
