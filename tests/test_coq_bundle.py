@@ -132,3 +132,18 @@ def test_a_unit_may_import_an_earlier_module_of_its_bundle(tmp_path):
     folder = compile_prelude(tmp_path)
     ok, failed, output = compile_development(folder, [units[0], later])
     assert ok, (failed, output)
+
+
+def test_a_comment_line_that_reads_like_a_require_stays_in_its_comment():
+    units = _units()
+    text = units[0].text.replace(
+        "(** Exported from", "(** a line of a comment:\nFrom Coq Require Import Extraction.\n"
+        "   Exported from", 1)
+    assert "\nFrom Coq Require Import Extraction.\n" in text
+    header, modules = module_texts(bundle_text("Pair", [replace(units[0], text=text),
+                                                        units[1]]))
+    assert "Extraction" not in header
+    module = modules[units[0].name]
+    assert "\nFrom Coq Require Import Extraction.\n" in module  # still in the comment
+    assert not any(line.startswith("Import") and "Extraction" in line
+                   for line in module.splitlines())

@@ -18,6 +18,7 @@ import re
 import textwrap
 from collections.abc import Sequence
 
+from verify.coq.audit import strip_comments
 from verify.coq.unit import CoqUnit, comment_text
 
 #: A unit's own ``Require`` line as the exporters write it (``From <root> Require
@@ -31,13 +32,15 @@ def _split_requires(unit: CoqUnit, siblings: set[str]) -> tuple[list[tuple[str, 
     """(root, library) pairs the unit loads, and its text with its ``Require`` lines
     replaced by one ``Import`` (where the first of them was) of the libraries it
     imports. A sibling module (a unit of the same bundle, defined earlier in the file)
-    is not loaded: an ``Import`` of it names the module itself."""
+    is not loaded: an ``Import`` of it names the module itself. Only lines of code count:
+    a comment's line that reads like a ``Require`` stays in the comment."""
+    code = set(strip_comments(unit.text).splitlines())
     loads: list[tuple[str, str]] = []
     imports: list[str] = []
     kept: list[str] = []
     at = -1
     for line in unit.text.splitlines():
-        match = _REQUIRE_LINE.match(line)
+        match = _REQUIRE_LINE.match(line) if line in code else None
         if match is None:
             kept.append(line)
             continue

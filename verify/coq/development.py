@@ -135,7 +135,7 @@ def render_development(units: Sequence[CoqUnit], *,
         raise ValueError("two Coq units share a module name")
     groups = _files_of_units(units)
     prelude = prelude_sources()
-    clash = (set(names) | set(groups)) & set(prelude) | ({"All"} & (set(names) | set(groups)))
+    clash = (set(names) | set(groups)) & {*prelude, "All"}
     if clash:
         raise ValueError(f"Coq unit names clash with the prelude: {sorted(clash)}")
     if units:
